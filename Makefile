@@ -1,0 +1,37 @@
+# femgear: `make demo` and `make test` work on a fresh clone (they create .venv).
+PY      ?= python3
+VENV    := .venv
+BIN     := $(VENV)/bin
+STAMP   := $(VENV)/.installed
+OUT     ?= out
+
+.PHONY: demo test test-slow bench clean sysdeps
+
+$(STAMP): pyproject.toml
+	@$(MAKE) --no-print-directory sysdeps
+	$(PY) -m venv $(VENV)
+	$(BIN)/pip install -q --upgrade pip
+	$(BIN)/pip install -q -e '.[test]'
+	@touch $(STAMP)
+
+# gmsh's shared library needs a few X/GL libraries; install them when missing (root + apt only).
+sysdeps:
+	@if command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ] && ! ldconfig -p | grep -q libGLU.so.1; then \
+		echo "installing gmsh system libraries"; \
+		apt-get update -qq && apt-get install -y -qq libglu1-mesa libxcursor1 libxft2 libxinerama1 libgl1 >/dev/null; \
+	fi
+
+demo: $(STAMP)
+	$(BIN)/femgear run studies/paper_baseline.toml --out $(OUT)/paper_baseline
+
+test: $(STAMP)
+	$(BIN)/python -m pytest -q
+
+test-slow: $(STAMP)
+	$(BIN)/python -m pytest -q -m slow
+
+bench: $(STAMP)
+	@for f in studies/benchmarks/*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
+
+clean:
+	rm -rf $(OUT) .pytest_cache build *.egg-info
