@@ -1,0 +1,22 @@
+"""Involute helical gear-pair geometry and kinematics (pure numpy, SI units).
+
+- ``gear``        dimensions, contact ratios and feasibility checks (ISO 21771).
+- ``kinematics``  radii of curvature and velocities along the path of contact,
+                  contact lines of each helix, mesh frequency.
+"""
+
+from femgear.geometry.gear import GearPair, inv, inv_inverse
+from femgear.geometry.kinematics import (
+    ContactLines,
+    PathKinematics,
+    contact_lines,
+    double_helical_contact,
+    kinematics,
+    mesh_frequency,
+    path_positions,
+)
+
+__all__ = [
+    "ContactLines", "GearPair", "PathKinematics", "contact_lines", "double_helical_contact",
+    "inv", "inv_inverse", "kinematics", "mesh_frequency", "path_positions",
+]

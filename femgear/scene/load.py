@@ -1,0 +1,89 @@
+"""Loading a scene: TOML -> overrides -> validated :class:`Scene` -> feasibility checks.
+
+Every failure is a :class:`femgear.errors.SceneError` naming the key, so the CLI can
+print one line.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+from typing import Any
+
+from pydantic import ValidationError
+
+from femgear.errors import SceneError
+from femgear.scene.schema import Scene
+
+
+def parse_override(text: str) -> tuple[list[str], Any]:
+    """Split ``a.b=value``; the value is read as a TOML value, else kept as a string."""
+    if "=" not in text:
+        raise SceneError(text, "an override must look like KEY=VALUE (e.g. operating.torque=150)")
+    key, raw = (part.strip() for part in text.split("=", 1))
+    if not key or any(not part for part in key.split(".")):
+        raise SceneError(key or text, "empty key in override")
+    try:
+        value = tomllib.loads(f"v = {raw}")["v"]
+    except tomllib.TOMLDecodeError:
+        value = raw
+    return key.split("."), value
+
+
+def apply_overrides(data: Mapping[str, Any], overrides: Iterable[str]) -> dict[str, Any]:
+    """Return a copy of the raw scene dictionary with ``--set`` overrides applied."""
+    out: dict[str, Any] = _deep_copy(data)
+    for text in overrides:
+        path, value = parse_override(text)
+        node = out
+        for i, part in enumerate(path[:-1]):
+            child = node.setdefault(part, {})
+            if not isinstance(child, dict):
+                raise SceneError(".".join(path[: i + 1]), "is a value, not a table; cannot set a key below it")
+            node = child
+        node[path[-1]] = value
+    return out
+
+
+def _deep_copy(data: Mapping[str, Any]) -> dict[str, Any]:
+    return {k: _deep_copy(v) if isinstance(v, Mapping) else v for k, v in data.items()}
+
+
+def _first_error(exc: ValidationError) -> SceneError:
+    err = exc.errors()[0]
+    key = ".".join(str(p) for p in err["loc"]) or "scene"
+    message = err["msg"].removeprefix("Value error, ")
+    if err["type"] not in ("missing", "extra_forbidden") and "input" in err:
+        message += f" (got {err['input']!r})"
+    if err["type"] == "extra_forbidden":
+        message = "unknown key"
+    more = len(exc.errors()) - 1
+    if more:
+        message += f"; and {more} more error{'s' if more > 1 else ''}"
+    return SceneError(key, message)
+
+
+def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = ()) -> Scene:
+    """Validate a raw scene dictionary (plus overrides) and check the gear is feasible."""
+    from femgear.geometry import GearPair  # the feasibility checks are geometry's
+
+    raw = apply_overrides(data, overrides)
+    try:
+        scene = Scene.model_validate(raw)
+    except ValidationError as exc:
+        raise _first_error(exc) from None
+    GearPair.from_scene(scene)  # raises SceneError for an impossible gear
+    return scene
+
+
+def load_scene(path: str | Path, overrides: Iterable[str] = ()) -> Scene:
+    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it."""
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise SceneError(str(path), "scene file not found") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(str(path), f"not valid TOML: {exc}") from None
+    return scene_from_dict(data, overrides)
