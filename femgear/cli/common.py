@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 from typing import Any
 
-import numpy as np
+from femgear.io.results import to_plain
 
 
 def add_scene_arguments(parser: argparse.ArgumentParser) -> None:
@@ -19,20 +18,6 @@ def add_scene_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def _plain(obj: Any) -> Any:
-    if isinstance(obj, dict):
-        return {str(k): _plain(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [_plain(v) for v in obj]
-    if isinstance(obj, np.ndarray):
-        return _plain(obj.tolist())
-    if isinstance(obj, np.generic):
-        return _plain(obj.item())
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return None
-    return obj
-
-
 def emit_json(payload: dict[str, Any]) -> None:
     """Print ``payload`` as one JSON line (numpy values converted, non-finite -> null)."""
-    print(json.dumps(_plain(payload), separators=(",", ":")))
+    print(json.dumps(to_plain(payload), separators=(",", ":")))

@@ -1,0 +1,1 @@
+"""Figures from results (matplotlib is imported inside the functions, never at import)."""

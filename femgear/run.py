@@ -1,0 +1,48 @@
+"""``femgear run``: run what a scene's ``[physics]`` asks for and write its outputs.
+
+Today that is the quasi-static geometry and contact pass along the path of contact
+(Hertz pressure, film thickness, sliding) — the levels ``lubrication = none |
+constant | formula`` with no dynamics.  Further levels plug in here as they land.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from femgear.contact.path import contact_along_path
+from femgear.geometry import GearPair
+from femgear.io import write_json
+from femgear.summary import scene_summary
+
+
+@dataclass(frozen=True)
+class RunResult:
+    summary: dict[str, Any]
+    files: dict[str, Path] = field(default_factory=dict)
+
+
+def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
+    """Run ``scene`` and write ``results.json`` (and PNGs) into ``out_dir``."""
+    out_dir = Path(out_dir)
+    pair = GearPair.from_scene(scene)
+    contact = contact_along_path(scene, pair=pair)
+    summary = scene_summary(scene, pair, contact)
+    summary["physics"] = scene.physics.model_dump()
+    k = contact.kin
+    along_path = {
+        "s": k.s, "radius_pinion": k.r1, "radius_gear": k.r2, "R": k.R, "v1": k.v1, "v2": k.v2,
+        "entrainment_speed": k.ue, "sliding_speed": k.vs, "slide_to_roll": k.srr,
+        "hertz_pressure": contact.hertz_pressure, "hertz_half_width": contact.hertz_half_width,
+        "film_central": contact.film_central, "film_minimum": contact.film_minimum,
+    }
+    files = {"results": write_json(out_dir / "results.json", {
+        "summary": summary, "scene": scene.model_dump(), "along_path": along_path,
+    })}
+    if plots:
+        from femgear.plot.path import plot_contact_path
+
+        files["contact_path_png"] = plot_contact_path(contact, out_dir / "contact_path.png", title=scene.meta.name)
+    summary = {**summary, "outputs": {k: str(v) for k, v in files.items()}}
+    return RunResult(summary=summary, files=files)
