@@ -18,7 +18,7 @@ LEVELS: dict[str, tuple[str, ...]] = {
 }
 
 AVAILABLE: dict[str, frozenset[str]] = {
-    "stiffness": frozenset({"constant"}),
+    "stiffness": frozenset({"constant", "iso6336", "pem"}),
     "lubrication": frozenset({"none", "constant", "formula"}),
     "thermal": frozenset({"none"}),
     "wear": frozenset({"none"}),
