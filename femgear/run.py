@@ -2,7 +2,8 @@
 
 Today that is the quasi-static geometry and contact pass along the path of contact
 (Hertz pressure, film thickness, sliding) — the levels ``lubrication = none |
-constant | formula`` with no dynamics.  Further levels plug in here as they land.
+constant | formula`` with no dynamics — and, with ``wear = "archard"``, the wear
+depth of both flanks after ``wear.cycles``.  Further levels plug in here as they land.
 """
 
 from __future__ import annotations
@@ -37,6 +38,11 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         "hertz_pressure": contact.hertz_pressure, "hertz_half_width": contact.hertz_half_width,
         "film_central": contact.film_central, "film_minimum": contact.film_minimum,
     }
+    if scene.physics.wear == "archard":
+        state = _wear(scene, pair, contact, out_dir)
+        along_path.update(wear_pinion=state.h1, wear_gear=state.h2)
+        summary["wear"] = {"cycles": state.cycles, "steps": state.steps,
+                           "max_depth_pinion": float(state.h1.max()), "max_depth_gear": float(state.h2.max())}
     files = {"results": write_json(out_dir / "results.json", {
         "summary": summary, "scene": scene.model_dump(), "along_path": along_path,
     })}
@@ -46,3 +52,11 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         files["contact_path_png"] = plot_contact_path(contact, out_dir / "contact_path.png", title=scene.meta.name)
     summary = {**summary, "outputs": {k: str(v) for k, v in files.items()}}
     return RunResult(summary=summary, files=files)
+
+
+def _wear(scene, pair, contact, out_dir: Path):
+    """Archard wear over ``wear.cycles``, checkpointed in ``out_dir`` so a rerun resumes."""
+    from femgear.wear import WearSetup, run_wear
+
+    setup = WearSetup.from_scene(scene, contact.kin, pair)
+    return run_wear(setup, scene.wear.cycles, checkpoint=out_dir / "wear_checkpoint.npz")

@@ -21,7 +21,7 @@ AVAILABLE: dict[str, frozenset[str]] = {
     "stiffness": frozenset({"constant", "iso6336", "pem"}),
     "lubrication": frozenset({"none", "constant", "formula"}),
     "thermal": frozenset({"none"}),
-    "wear": frozenset({"none"}),
+    "wear": frozenset({"none", "archard"}),
     "dynamics": frozenset({"none"}),
     "coupling": frozenset({"one-way"}),
 }

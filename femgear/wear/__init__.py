@@ -1,0 +1,11 @@
+"""Archard wear of the flanks.
+
+- ``load_sharing``  load per unit length along the contact lines with flank deviations.
+- ``archard``       single-point-observation wear per load cycle, stable update steps,
+                    checkpoint/resume of long runs.
+"""
+
+from femgear.wear.archard import WearSetup, WearState, run_wear, wear_rates, wear_steps
+from femgear.wear.load_sharing import LoadMap, load_map
+
+__all__ = ["LoadMap", "WearSetup", "WearState", "load_map", "run_wear", "wear_rates", "wear_steps"]
