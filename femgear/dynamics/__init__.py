@@ -1,0 +1,26 @@
+"""Gear-rotor dynamics of the double-helical pair (24 DOF: pinion-L/R, gear-L/R × 6).
+
+- ``layout``     DOF numbering, frame, rigid-body point Jacobians, the rigid-shaft tie.
+- ``timoshenko`` 12×12 Timoshenko shaft element (stiffness, consistent mass), Guyan.
+- ``mesh``       line-of-action vectors per helix, mesh-stiffness tables (constant,
+                 contact-line TVMS; any TVMS plugs in as a :class:`MeshStiffness`),
+                 friction tables with the regularised sliding sign.
+- ``model``      assembly of a scene into a frozen :class:`GearRotorModel`
+                 (levels ``lumped`` and ``timoshenko``), damping, excitation.
+- ``integrate``  fixed-step RK4 (paper) and implicit HHT-α/Newmark with exact Newton
+                 on the gap; RK4 stability limit; :class:`Simulation` results.
+- ``response``   amplitudes (half peak-to-peak), mesh forces, bearing accelerations,
+                 Hanning spectra with mesh orders; frozen :class:`Response`.
+- ``modal``      linearised (mean-stiffness) modal analysis with modal energy per DOF group.
+- ``sdof``       Kahraman–Singh single-DOF backlash oscillator and frequency sweeps.
+- ``plot``       PNG plots (matplotlib imported lazily) and results files.
+"""
+
+from femgear.dynamics.integrate import Simulation, simulate, stability_limit
+from femgear.dynamics.mesh import MeshStiffness, constant_stiffness, contact_line_stiffness
+from femgear.dynamics.model import GearRotorModel, build_model
+
+__all__ = [
+    "GearRotorModel", "MeshStiffness", "Simulation", "build_model", "constant_stiffness",
+    "contact_line_stiffness", "simulate", "stability_limit",
+]

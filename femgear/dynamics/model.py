@@ -1,0 +1,402 @@
+"""Assembly of the gear-rotor model: bodies, shafts, bearings, damping, mesh, excitation.
+
+Levels (``physics.dynamics``):
+
+- ``lumped``: the four helical halves (pinion-L/R, gear-L/R; 24 DOF) tied rigidly
+  per member (a rigid shaft between the halves), integrated in the 12 rigid-member
+  coordinates and reported in all 24.  Bearings: the scene's support stiffness and
+  damping per direction, split equally between two bearings at z = ±bearing_span/2.
+- ``timoshenko``: each member's halves and its two bearing stations joined by
+  Timoshenko shaft elements (bearing–half, half–half, half–bearing); the bearing
+  stations are condensed statically (Guyan), leaving the 24 DOF of the halves.
+
+Half bodies: mass m/2, polar inertia I/2, diametral inertia I/4 + (m/2) b²/12 (thin
+solid disc, b the helix width) — the scene gives only m and I per member.
+
+Damping: bearing dashpots (scene ``support_damping``), Rayleigh damping
+a0 M + a1 K_struct with a0, a1 chosen so that the two lowest flexible modes of the
+mean-stiffness system have the ratio ``rayleigh_ratio`` (paper: 0.03), and mesh
+damping c_s = 2 ζ_m sqrt(k̄_s m_eq,s) along each line of action with
+m_eq,s = 1/Σ_j g_sj²/m_j over the DOFs of the mesh (notes §7; ζ_m from
+``stiffness.damping_ratio``).  Rayleigh damping is applied to the structural
+stiffness only so that the mesh damping is not counted twice.
+
+Equations of motion (reduced coordinates q, full = T q):
+
+    M q̈ + C q̇ + K q = f(t) − Σ_s [ G_sᵀ N_s + μ |N_s| (A_s H0_s + B_s H1_s)ᵀ ]
+    δ_s = G_s q − e_s(t),   N_s = k_s(t) f_gap(δ_s) + c_s χ_s δ̇_s
+
+with χ_s the contact indicator (the mesh damper acts only while a flank is in
+contact, unlike the paper's form, which damps across the gap too).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.linalg import eigh
+
+from femgear.dynamics.layout import NDOF, point_jacobian, tie_matrix
+from femgear.dynamics.mesh import (
+    FrictionTable,
+    MeshGeometry,
+    MeshStiffness,
+    constant_stiffness,
+    contact_line_stiffness,
+    friction_table,
+    mesh_geometry,
+)
+from femgear.dynamics.timoshenko import ShaftSection, guyan, shaft_element
+from femgear.errors import SceneError
+from femgear.excitation import Eccentricity, ProfileError, RandomError, Unbalance
+from femgear.geometry import GearPair, mesh_frequency
+
+LEVELS = ("lumped", "timoshenko")
+
+
+@dataclass(frozen=True)
+class GearRotorModel:
+    """A linear structure with two nonlinear, time-varying mesh couplings (frozen)."""
+
+    level: str
+    pair: GearPair
+    M: np.ndarray            #: reduced mass matrix (n×n) [kg, kg m^2]
+    K: np.ndarray            #: structural stiffness (bearings + shafts) (n×n)
+    C: np.ndarray            #: structural damping (bearings + Rayleigh) (n×n)
+    T: np.ndarray            #: full (24) = T @ reduced
+    G: np.ndarray            #: (2, n) mesh gradients ∂δ_s/∂q
+    H0: np.ndarray           #: (2, n) friction direction at the pitch point
+    H1: np.ndarray           #: (2, n) its gradient along the path [1/m]
+    stiffness: MeshStiffness
+    mesh_damping: np.ndarray  #: (2,) c_s [N s/m]
+    backlash: float          #: b [m]
+    mu: float                #: friction coefficient [-]
+    friction: FrictionTable | None
+    mesh_frequency: float    #: f_m [Hz]
+    omega: tuple[float, float]  #: signed speeds of pinion and gear [rad/s]
+    torque_full: np.ndarray  #: (24,) constant external torques on the halves [N m]
+    bearing_map: np.ndarray  #: (3·4, n) displacement of the bearing stations (pinion L, R, gear L, R)
+    stagger: float
+    profile_errors: tuple[ProfileError, ProfileError]
+    random_errors: tuple[RandomError, RandomError]
+    eccentricities: tuple[Eccentricity, Eccentricity]
+    unbalances: tuple[Unbalance, Unbalance]
+    rayleigh: tuple[float, float]   #: (a0, a1)
+    info: dict = field(default_factory=dict, compare=False)
+
+    @property
+    def n(self) -> int:
+        return self.M.shape[0]
+
+    @property
+    def mesh_period(self) -> float:
+        return 1.0 / self.mesh_frequency
+
+    # ---------- excitation, vectorised over time ----------
+    def mesh_phase(self, t: np.ndarray) -> np.ndarray:
+        return self.mesh_frequency * np.asarray(t, dtype=float)
+
+    def errors(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Transmission errors e_s(t) and their rates, shape (2,) + t.shape [m, m/s]."""
+        t = np.asarray(t, dtype=float)
+        e = np.zeros((2,) + t.shape)
+        ed = np.zeros((2,) + t.shape)
+        ecc1, ecc2 = self.eccentricities
+        r = ecc1.offset(t) - ecc2.offset(t)            # (..., 2) relative centre offset
+        rd = ecc1.offset_rate(t) - ecc2.offset_rate(t)
+        gx = self._g_translation
+        for s in range(2):
+            # geometric centre offsets act like bearing translations of the members
+            e[s] = -(r @ gx[s])
+            ed[s] = -(rd @ gx[s])
+            e[s] += self.profile_errors[s].value(t) + self.random_errors[s].value(t)
+            ed[s] += self.profile_errors[s].rate(t) + self.random_errors[s].rate(t)
+        return e, ed
+
+    @property
+    def _g_translation(self) -> np.ndarray:
+        """(2, 2): d δ_s / d(x, y) of a pinion-centre offset (= −d/d gear offset)."""
+        return self.info["g_xy"]
+
+    def external_force(self, t: np.ndarray) -> np.ndarray:
+        """Reduced external force f(t): torques + unbalance, shape t.shape + (n,) [N, N m]."""
+        t = np.asarray(t, dtype=float)
+        full = np.broadcast_to(self.torque_full, t.shape + (NDOF,)).copy()
+        for member, unb in enumerate(self.unbalances):
+            if unb.unbalance == 0.0:
+                continue
+            F = unb.force(t)
+            for side in range(2):
+                b = 6 * (2 * member + side)
+                full[..., b] += 0.5 * F[..., 0]
+                full[..., b + 1] += 0.5 * F[..., 1]
+        return full @ self.T
+
+    # ---------- mesh forces ----------
+    def mesh_forces(self, t, q, v):
+        """Mesh deflections, normal forces and generalised forces for arrays of states.
+
+        ``q``, ``v`` have shape t.shape + (n,).  Returns (δ, N, Q) with δ, N of shape
+        t.shape + (2,) and Q (the generalised mesh + friction force) like ``q``.
+        """
+        from femgear.excitation import contact_indicator, gap_function
+
+        t = np.asarray(t, dtype=float)
+        ph = self.mesh_phase(t)
+        kL, kR = self.stiffness(ph)
+        k = np.stack([kL, kR], axis=-1)
+        e, ed = self.errors(t)
+        delta = q @ self.G.T - np.moveaxis(e, 0, -1)
+        ddot = v @ self.G.T - np.moveaxis(ed, 0, -1)
+        N = k * gap_function(delta, self.backlash) + self.mesh_damping * contact_indicator(delta, self.backlash) * ddot
+        Q = -(N @ self.G)
+        if self.mu > 0 and self.friction is not None:
+            A, B = self.friction(ph)
+            aN = self.mu * np.abs(N)
+            Q = Q - (aN * np.moveaxis(A, 0, -1)) @ self.H0 - (aN * np.moveaxis(B, 0, -1)) @ self.H1
+        return delta, N, Q
+
+    def acceleration(self, t, q, v) -> np.ndarray:
+        """q̈ from the equations of motion (vectorised; for post-processing)."""
+        _, _, Q = self.mesh_forces(t, q, v)
+        rhs = self.external_force(t) + Q - q @ self.K.T - v @ self.C.T
+        return np.linalg.solve(self.M, np.moveaxis(rhs, -1, 0).reshape(self.n, -1)).T.reshape(np.shape(q))
+
+    def mean_stiffness_matrix(self, contact: bool = True) -> np.ndarray:
+        """K + Σ k̄_s G_sᵀ G_s (flanks in contact) — the linearised stiffness."""
+        K = self.K.copy()
+        if contact:
+            for s, k in enumerate(self.stiffness.mean):
+                K += k * np.outer(self.G[s], self.G[s])
+        return K
+
+    def static_state(self) -> np.ndarray:
+        """Static equilibrium q0 of the mean system under the torques (drive flanks in contact).
+
+        Includes the mean friction force (period-averaged A, B).  Solved in the
+        least-squares sense: the free rigid rotation of the gear train is a null
+        direction of K, orthogonal to the balanced torques (minimum-norm q0).
+        """
+        Km = self.mean_stiffness_matrix()
+        kbar = np.array(self.stiffness.mean)
+        f = self.torque_full @ self.T + (kbar * self.backlash) @ self.G
+        if self.mu > 0 and self.friction is not None:
+            for s in range(2):
+                w = self.mu * (self.friction.A[s].mean() * self.H0[s] + self.friction.B[s].mean() * self.H1[s])
+                Km = Km + kbar[s] * np.outer(w, self.G[s])
+                f = f + kbar[s] * self.backlash * w
+        q0, *_ = np.linalg.lstsq(Km, f, rcond=None)
+        return q0
+
+
+def _positive(value: float, key: str) -> float:
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+        raise SceneError(key, f"must be positive (got {value!r})")
+    return float(value)
+
+
+def _half_bodies(scene, pair: GearPair) -> np.ndarray:
+    """Diagonal 24×24 mass matrix of the four halves."""
+    M = np.zeros(NDOF)
+    for member, name in enumerate(("pinion", "gear")):
+        mem = getattr(scene, name)
+        m = _positive(mem.mass, f"{name}.mass") / 2
+        Ip = _positive(mem.inertia, f"{name}.inertia") / 2
+        Id = Ip / 2 + m * pair.b**2 / 12
+        for side in range(2):
+            b = 6 * (2 * member + side)
+            M[b:b + 3] = m
+            M[b + 3:b + 5] = Id
+            M[b + 5] = Ip
+    return np.diag(M)
+
+
+def rayleigh_coefficients(omega_i: float, omega_j: float, ratio: float) -> tuple[float, float]:
+    """a0, a1 with ζ(ω) = a0/(2ω) + a1 ω/2 equal to ``ratio`` at ω_i and ω_j [rad/s]."""
+    if ratio == 0.0:
+        return 0.0, 0.0
+    return 2 * ratio * omega_i * omega_j / (omega_i + omega_j), 2 * ratio / (omega_i + omega_j)
+
+
+def build_model(
+    scene,
+    level: str | None = None,
+    *,
+    stiffness: MeshStiffness | str | None = None,
+    rayleigh_ratio: float = 0.03,
+    mesh_damping_ratio: float | None = None,
+    friction_coefficient: float | None = None,
+    v_reg: float = 0.01,
+    bearing_span: float = 0.10,
+    shaft_diameter: tuple[float, float] = (0.040, 0.040),
+    backlash: float | None = None,
+) -> GearRotorModel:
+    """Assemble the model of a scene.
+
+    ``level``: "lumped" or "timoshenko" (default: the scene's ``physics.dynamics``, and
+    "lumped" when that is "none").  ``stiffness``: a :class:`MeshStiffness` table (any
+    TVMS model), "constant" (c_γ b) or "contact-line" (contact-line-length TVMS);
+    default follows ``physics.stiffness`` ("constant").  ``friction_coefficient``
+    default: ``friction.coefficient`` unless ``physics.lubrication = "none"``.
+    ``bearing_span`` [m] (distance of the two bearings of a member) and
+    ``shaft_diameter`` [m] (pinion, gear) are not scene keys yet.
+    """
+    pair = GearPair.from_scene(scene)
+    if level is None:
+        level = scene.physics.dynamics if scene.physics.dynamics in LEVELS else "lumped"
+    if level not in LEVELS:
+        raise SceneError("physics.dynamics", f"unknown dynamics level {level!r}; choose one of {', '.join(LEVELS)}")
+    half = 0.5 * (pair.b + scene.pair.groove_width)
+    if not bearing_span > 2 * half:
+        raise ValueError(f"bearing_span must exceed the distance of the helix centres {2 * half:.4g} m (got {bearing_span!r})")
+    if not 0 <= rayleigh_ratio < 1:
+        raise ValueError(f"rayleigh_ratio must be in [0, 1) (got {rayleigh_ratio!r})")
+
+    # ---------- speeds ----------
+    op = scene.operating
+    n_drv = _positive(op.speed_rpm, "operating.speed_rpm")
+    rpm1 = n_drv if op.driver == "pinion" else n_drv * pair.z2 / pair.z1
+    w1 = 2 * math.pi * rpm1 / 60
+    w2 = w1 * pair.z1 / pair.z2
+    sense = 1.0 if op.driver == "pinion" else -1.0     # pinion CCW when driving (layout docstring)
+    omega = (sense * w1, -sense * w2)
+    fm = mesh_frequency(pair, rpm1)
+
+    # ---------- bodies, bearings, shafts (full 24 DOF) ----------
+    M24 = _half_bodies(scene, pair)
+    zb = bearing_span / 2
+    Kb_list, Cb_list = [], []
+    for name in ("pinion", "gear"):
+        mem = getattr(scene, name)
+        Kb_list.append(_positive(mem.support_stiffness, f"{name}.support_stiffness") / 2)
+        if mem.support_damping < 0:
+            raise SceneError(f"{name}.support_damping", "must be non-negative")
+        Cb_list.append(mem.support_damping / 2)
+
+    if level == "lumped":
+        T = tie_matrix(half)
+        M = T.T @ M24 @ T
+        K = np.zeros((12, 12))
+        Cb = np.zeros((12, 12))
+        bearing_map = np.zeros((12, 12))
+        for member in range(2):
+            sl = slice(6 * member, 6 * member + 6)
+            for j, z in enumerate((-zb, zb)):
+                J = point_jacobian(np.array([0.0, 0.0, z]))
+                K[sl, sl] += Kb_list[member] * J.T @ J
+                Cb[sl, sl] += Cb_list[member] * J.T @ J
+                row = 3 * (2 * member + j)
+                bearing_map[row:row + 3, sl] = J
+    else:
+        # per member nodes: bearing_L, half_L, half_R, bearing_R → 4 × 6 DOF
+        Kfull = np.zeros((48, 48))
+        Mfull = np.zeros((48, 48))
+        Cfull = np.zeros((48, 48))
+        keep, bearing_nodes = [], []
+        for member, name in enumerate(("pinion", "gear")):
+            sec = ShaftSection(_positive(shaft_diameter[member], "shaft_diameter"), scene.material.youngs_modulus,
+                               scene.material.poisson_ratio, scene.material.density)
+            zs = (-zb, -half, half, zb)
+            base = 24 * member
+            for e in range(3):
+                Ke, Me = shaft_element(sec, zs[e + 1] - zs[e])
+                idx = np.arange(base + 6 * e, base + 6 * e + 12)
+                Kfull[np.ix_(idx, idx)] += Ke
+                Mfull[np.ix_(idx, idx)] += Me
+            for side in range(2):
+                node = base + 6 * (1 + side)
+                body = 6 * (2 * member + side)
+                Mfull[node:node + 6, node:node + 6] += M24[body:body + 6, body:body + 6]
+                keep.extend(range(node, node + 6))
+            for j, node in enumerate((base, base + 18)):
+                for d in range(3):
+                    Kfull[node + d, node + d] += Kb_list[member]
+                    Cfull[node + d, node + d] += Cb_list[member]
+                bearing_nodes.append(node)
+        K, M, Tg = guyan(Kfull, Mfull, np.array(keep))
+        Cb = Tg.T @ Cfull @ Tg
+        T = np.eye(NDOF)
+        bearing_map = np.vstack([Tg[node:node + 3] for node in bearing_nodes])
+
+    # ---------- mesh ----------
+    geom: MeshGeometry = mesh_geometry(pair, half)
+    G, H0, H1 = geom.g @ T, geom.h0 @ T, geom.h1 @ T
+    c_gamma = scene.stiffness.mesh_stiffness_per_width
+    if stiffness is None:
+        stiffness = scene.physics.stiffness
+    if isinstance(stiffness, str):
+        if stiffness == "constant":
+            stiffness = constant_stiffness(pair, c_gamma)
+        elif stiffness == "contact-line":
+            stiffness = contact_line_stiffness(pair, c_gamma, scene.pair.stagger)
+        else:
+            raise SceneError("physics.stiffness", f"level {stiffness!r}: pass its MeshStiffness table to build_model(stiffness=...)")
+    zeta_m = scene.stiffness.damping_ratio if mesh_damping_ratio is None else mesh_damping_ratio
+    if not 0 <= zeta_m < 1:
+        raise ValueError(f"mesh_damping_ratio must be in [0, 1) (got {zeta_m!r})")
+    mdiag = np.diag(M24)
+    c_mesh = np.array([
+        2 * zeta_m * math.sqrt(k * 1.0 / np.sum(geom.g[s] ** 2 / mdiag)) for s, k in enumerate(stiffness.mean)
+    ])
+    b0 = scene.pair.backlash if backlash is None else backlash
+    if b0 < 0:
+        raise ValueError(f"backlash must be non-negative (got {b0!r})")
+
+    # ---------- torques: drive and load balance the mean mesh force ----------
+    torque = np.zeros(NDOF)
+    T_drv = _positive(op.torque, "operating.torque")
+    T1 = T_drv if op.driver == "pinion" else T_drv * pair.z1 / pair.z2
+    T2 = T1 * pair.rb2 / pair.rb1
+    for side in range(2):
+        torque[6 * side + 5] = T1 / 2
+        torque[6 * (2 + side) + 5] = T2 / 2
+
+    # ---------- friction ----------
+    if friction_coefficient is None:
+        friction_coefficient = 0.0 if scene.physics.lubrication == "none" else scene.friction.coefficient
+    if friction_coefficient < 0:
+        raise ValueError(f"friction_coefficient must be non-negative (got {friction_coefficient!r})")
+    qdot_nom = np.zeros(NDOF)
+    for side in range(2):
+        qdot_nom[6 * side + 5] = omega[0]
+        qdot_nom[6 * (2 + side) + 5] = omega[1]
+    ftab = None
+    if friction_coefficient > 0:
+        ftab = friction_table(pair, geom.h0 @ qdot_nom, geom.h1 @ qdot_nom, scene.pair.stagger, v_reg)
+        # the load torque absorbs the mean friction torque, so the free rotation does not drift
+        N0 = T1 / 2 / geom.g[0, 5]
+        Qf = -friction_coefficient * N0 * (ftab.A.mean(axis=1) @ geom.h0 + ftab.B.mean(axis=1) @ geom.h1)
+        rigid = qdot_nom / omega[0]
+        loss = Qf @ rigid                       # mean friction power per unit pinion speed [N m]
+        gear_dofs = [6 * 2 + 5, 6 * 3 + 5]
+        for d in gear_dofs:
+            torque[d] -= loss / (2 * rigid[d])
+
+    # ---------- errors ----------
+    err = scene.errors
+    profile = tuple(ProfileError(err.profile_error, fm, err.profile_error_orders, math.radians(err.profile_error_phase_deg),
+                                 off) for off in (0.0, scene.pair.stagger))
+    rnd = tuple(RandomError(err.random, fm, pair.z1, pair.z2, err.seed, off) for off in (0.0, scene.pair.stagger))
+    ecc = (Eccentricity(scene.pinion.eccentricity, omega[0], math.radians(scene.pinion.eccentricity_phase_deg)),
+           Eccentricity(scene.gear.eccentricity, omega[1], math.radians(scene.gear.eccentricity_phase_deg)))
+    unb = (Unbalance(scene.pinion.unbalance, omega[0], math.radians(scene.pinion.eccentricity_phase_deg)),
+           Unbalance(scene.gear.unbalance, omega[1], math.radians(scene.gear.eccentricity_phase_deg)))
+
+    # ---------- Rayleigh damping from the two lowest flexible modes of the mean system ----------
+    Kmean = K + sum(k * np.outer(G[s], G[s]) for s, k in enumerate(stiffness.mean))
+    w2 = eigh(Kmean, M, eigvals_only=True)
+    wflex = np.sqrt(w2[w2 > 1e-6 * w2.max()])
+    a0, a1 = rayleigh_coefficients(wflex[0], wflex[1], rayleigh_ratio)
+    C = Cb + a0 * M + a1 * K
+
+    return GearRotorModel(
+        level=level, pair=pair, M=M, K=K, C=C, T=T, G=G, H0=H0, H1=H1, stiffness=stiffness,
+        mesh_damping=c_mesh, backlash=float(b0), mu=float(friction_coefficient), friction=ftab,
+        mesh_frequency=fm, omega=omega, torque_full=torque, bearing_map=bearing_map, stagger=scene.pair.stagger,
+        profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb, rayleigh=(a0, a1),
+        info={"g_xy": geom.g[:, 0:2].copy(), "bearing_span": bearing_span, "shaft_diameter": shaft_diameter,
+              "half_spacing": half, "mesh_damping_ratio": zeta_m, "v_reg": v_reg,
+              "flexible_modes_hz": (wflex / (2 * math.pi)).tolist()},
+    )
