@@ -1,0 +1,168 @@
+"""Running a sweep: local process pool or a Dask distributed cluster, resumable.
+
+Each case writes its outputs into a temporary folder that is renamed to
+``cases/<case_id>`` only when complete, so a folder that exists is a finished case
+(atomic rename); a rerun skips those.  A failing case records its error in the table
+and in ``cases/<case_id>.error.json`` and does not stop the sweep; it is retried on
+the next run.  The table ``results.csv`` has one row per case: its overrides, its
+status, and the scalar summary figures of its run.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import shutil
+import time
+import uuid
+from collections.abc import Callable
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from femgear.io import write_json
+from femgear.sweep.spec import Case, SweepSpec
+
+
+def run_case(base: str, overrides: tuple[str, ...], case_dir: str, plots: bool = False) -> dict[str, Any]:
+    """Run one case (in a worker).  Never raises: returns a row with ``status`` and figures."""
+    from femgear.run import run_scene
+    from femgear.scene import load_scene
+
+    final = Path(case_dir)
+    tmp = final.parent / f".{final.name}.tmp-{uuid.uuid4().hex[:8]}"
+    row: dict[str, Any] = {"case": final.name, "overrides": " ".join(overrides)}
+    start = time.perf_counter()
+    try:
+        scene = load_scene(base, overrides)
+        summary = dict(run_scene(scene, tmp, plots=plots).summary)
+        summary.pop("outputs", None)
+        row.update(status="done", seconds=time.perf_counter() - start, **flatten(summary))
+        write_json(tmp / "case.json", row)
+        os.replace(tmp, final)
+        final.with_name(final.name + ".error.json").unlink(missing_ok=True)
+    except Exception as exc:  # a failing case must not stop the sweep
+        shutil.rmtree(tmp, ignore_errors=True)
+        row.update(status="failed", error=f"{type(exc).__name__}: {exc}", seconds=time.perf_counter() - start)
+        write_json(final.with_name(final.name + ".error.json"), row)
+    return row
+
+
+def flatten(d: dict[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Scalar leaves of a nested dict as ``a.b.c`` columns (lists are left out)."""
+    out: dict[str, Any] = {}
+    for key, value in d.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(flatten(value, name + "."))
+        elif isinstance(value, (str, int, float, bool)) or value is None:
+            out[name] = value
+    return out
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    rows: tuple[dict[str, Any], ...]
+    table: Path
+    ran: int
+    skipped: int
+
+    @property
+    def failed(self) -> int:
+        return sum(r["status"] == "failed" for r in self.rows)
+
+
+def _write_table(path: Path, rows: list[dict[str, Any]]) -> None:
+    columns = ["case", "status", "overrides", "error", "seconds"]
+    columns += sorted({k for r in rows for k in r} - set(columns))
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, fieldnames=columns, extrasaction="ignore")
+    writer.writeheader()
+    writer.writerows(sorted(rows, key=lambda r: r["case"]))
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(buf.getvalue(), encoding="utf-8")
+    os.replace(tmp, path)
+
+
+def _submitter(workers: int, scheduler: str | None):
+    """(submit, as_completed, close) for a local pool or a Dask cluster."""
+    if scheduler:
+        from distributed import Client
+        from distributed import as_completed as dask_completed
+
+        client = Client(scheduler)
+        return (lambda *a: client.submit(run_case, *a, pure=False)), dask_completed, client.close
+    pool = ProcessPoolExecutor(max_workers=workers)
+    return (lambda *a: pool.submit(run_case, *a)), as_completed, pool.shutdown
+
+
+def run_sweep(spec: SweepSpec, out_root: str | Path, workers: int = 2, scheduler: str | None = None,
+              plots: bool = False, progress: bool = True,
+              on_row: Callable[[dict[str, Any]], None] | None = None) -> SweepResult:
+    """Run the unfinished cases of ``spec`` and write ``<out_root>/<name>/results.csv``."""
+    if workers < 1:
+        raise ValueError(f"workers must be ≥ 1 (got {workers})")
+    out = Path(out_root) / spec.name
+    cases_dir = out / "cases"
+    cases_dir.mkdir(parents=True, exist_ok=True)
+    for stale in cases_dir.glob(".*.tmp-*"):   # outputs of cases killed mid-way (one sweep per folder)
+        shutil.rmtree(stale, ignore_errors=True)
+    rows: dict[str, dict[str, Any]] = {}
+    todo: list[Case] = []
+    for case in spec.cases:
+        done = cases_dir / case.case_id / "case.json"
+        if done.exists():
+            rows[case.case_id] = json.loads(done.read_text())
+        else:
+            todo.append(case)
+    table = out / "results.csv"
+    if todo:
+        submit, completed, close = _submitter(workers, scheduler)
+        try:
+            futures = [submit(str(spec.base), c.overrides, str(cases_dir / c.case_id), plots) for c in todo]
+            with _progress(progress, len(spec.cases), len(rows)) as advance:
+                for fut in completed(futures):
+                    row = fut.result()
+                    rows[row["case"]] = row
+                    _write_table(table, list(rows.values()))
+                    advance(row["status"] == "failed")
+                    if on_row:
+                        on_row(row)
+        finally:
+            close()
+    _write_table(table, list(rows.values()))
+    return SweepResult(rows=tuple(rows[c.case_id] for c in spec.cases), table=table,
+                       ran=len(todo), skipped=len(spec.cases) - len(todo))
+
+
+class _progress:
+    """A rich progress bar with cases done, failed and the estimated time left."""
+
+    def __init__(self, enabled: bool, total: int, already: int):
+        self.enabled, self.total, self.already, self.failed = enabled, total, already, 0
+
+    def __enter__(self):
+        if not self.enabled:
+            return lambda failed: None
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+        self.bar = Progress(TextColumn("sweep"), BarColumn(), MofNCompleteColumn(),
+                            TextColumn("failed {task.fields[failed]}"), TimeRemainingColumn(),
+                            console=Console(stderr=True))
+        self.bar.__enter__()
+        self.task = self.bar.add_task("sweep", total=self.total, completed=self.already, failed=0)
+
+        def advance(failed: bool) -> None:
+            self.failed += failed
+            self.bar.update(self.task, advance=1, failed=self.failed)
+
+        return advance
+
+    def __exit__(self, *exc):
+        if self.enabled:
+            self.bar.__exit__(*exc)
+        return False

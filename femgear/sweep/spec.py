@@ -1,0 +1,102 @@
+"""Sweep files: a base scene plus a grid and/or a list of overrides.
+
+```toml
+base = "paper_baseline.toml"          # relative to the sweep file
+name = "rig15"                        # output folder out/sweeps/<name> (default: file stem)
+
+[grid]                                # full factorial over these keys
+"operating.speed_rpm" = [100, 200, 300, 400, 500]
+"operating.torque" = [100, 150, 200]
+
+[[case]]                              # extra cases, each a table of overrides
+"operating.torque" = 0.0              # (an impossible case is reported, not fatal)
+```
+
+Every case is a tuple of ``KEY=VALUE`` overrides with a stable identifier derived
+from them, so that a rerun recognises cases it has already finished.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+from femgear.errors import SceneError
+
+
+@dataclass(frozen=True)
+class Case:
+    """One load case of a sweep."""
+
+    overrides: tuple[str, ...]
+
+    @property
+    def case_id(self) -> str:
+        """Readable and stable: the overridden values plus a short hash of the overrides."""
+        values = "_".join(o.split("=", 1)[1] for o in self.overrides)
+        slug = re.sub(r"[^A-Za-z0-9.+-]+", "-", values).strip("-")[:60] or "base"
+        digest = hashlib.sha1("\n".join(self.overrides).encode()).hexdigest()[:8]
+        return f"{slug}-{digest}"
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """A parsed sweep file."""
+
+    name: str
+    base: Path
+    cases: tuple[Case, ...]
+
+
+def _as_override(key: str, value) -> str:
+    return f"{key}={json.dumps(value) if isinstance(value, str) else _toml_value(value)}"
+
+
+def _toml_value(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    raise SceneError("sweep", f"unsupported override value {value!r}")
+
+
+def parse_sweep(path: str | Path) -> SweepSpec:
+    """Read a sweep file; errors name the offending key."""
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise SceneError(str(path), "sweep file not found") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(str(path), f"not valid TOML: {exc}") from None
+    unknown = set(data) - {"base", "name", "grid", "case"}
+    if unknown:
+        raise SceneError(sorted(unknown)[0], "unknown key in sweep file (use base, name, grid, case)")
+    if "base" not in data:
+        raise SceneError("base", "the sweep file must name its base scene")
+    base = (path.parent / data["base"]).resolve()
+    if not base.exists():
+        raise SceneError("base", f"base scene {base} not found")
+    grid = data.get("grid", {})
+    for key, values in grid.items():
+        if not isinstance(values, list) or not values:
+            raise SceneError(f"grid.{key}", "a grid entry must be a non-empty list of values")
+    cases = [
+        Case(tuple(_as_override(k, v) for k, v in zip(grid, combo)))
+        for combo in itertools.product(*grid.values())
+    ] if grid else []
+    for i, table in enumerate(data.get("case", [])):
+        if not isinstance(table, dict):
+            raise SceneError(f"case[{i}]", "each [[case]] must be a table of overrides")
+        cases.append(Case(tuple(_as_override(k, v) for k, v in table.items())))
+    if not cases:
+        raise SceneError("grid", "the sweep has no cases (add a [grid] or [[case]] tables)")
+    ids = [c.case_id for c in cases]
+    if len(set(ids)) != len(ids):
+        raise SceneError("grid", "the sweep lists the same case twice")
+    return SweepSpec(name=data.get("name", path.stem), base=base, cases=tuple(cases))

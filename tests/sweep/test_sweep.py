@@ -1,0 +1,97 @@
+"""Sweeps: grid expansion, local pool vs Dask, failing cases, kill-and-resume."""
+
+import csv
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from femgear.errors import SceneError
+from femgear.sweep import parse_sweep, run_sweep
+
+RIG = Path(__file__).resolve().parents[2] / "studies" / "rig15_sweep.toml"
+
+
+def write_sweep(tmp_path, body: str) -> Path:
+    base = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
+    path = tmp_path / "sweep.toml"
+    path.write_text(f'base = "{base}"\nname = "t"\n' + body)
+    return path
+
+
+def numeric(rows):
+    return [{k: v for k, v in r.items() if k not in ("seconds",)} for r in rows]
+
+
+def test_rig_sweep_has_the_15_conditions():
+    spec = parse_sweep(RIG)
+    assert len(spec.cases) == 15
+    assert len({c.case_id for c in spec.cases}) == 15
+    assert spec.cases[0].overrides == ("operating.speed_rpm=100.0", "operating.torque=100.0")
+    assert parse_sweep(RIG).cases == spec.cases        # ids are stable
+
+
+@pytest.mark.parametrize("body,key", [("[grid]\n\"a.b\" = 3\n", "grid.a.b"), ("foo = 1\n", "foo"), ("", "grid")])
+def test_bad_sweep_files_name_the_key(tmp_path, body, key):
+    with pytest.raises(SceneError) as info:
+        parse_sweep(write_sweep(tmp_path, body))
+    assert info.value.key == key
+
+
+def test_local_pool_and_dask_cluster_give_identical_results(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    spec = parse_sweep(RIG)
+    local = run_sweep(spec, tmp_path / "local", workers=2, progress=False)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        dask = run_sweep(spec, tmp_path / "dask", scheduler=cluster.scheduler_address, progress=False)
+    assert local.failed == dask.failed == 0
+    assert numeric(local.rows) == numeric(dask.rows)
+    with open(local.table) as fh:
+        assert len(list(csv.DictReader(fh))) == 15
+
+
+def test_an_impossible_case_is_reported_and_the_others_complete(tmp_path):
+    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 0.0, 200.0]\n'
+                                 '[[case]]\n"pair.no_such_key" = 1\n')
+    result = run_sweep(parse_sweep(path), tmp_path / "out", workers=2, progress=False)
+    status = {r["overrides"]: r for r in result.rows}
+    assert status["operating.torque=100.0"]["status"] == "done"
+    assert status["operating.torque=200.0"]["status"] == "done"
+    assert "operating.torque" in status["operating.torque=0.0"]["error"]
+    assert "pair.no_such_key" in status["pair.no_such_key=1"]["error"]
+    assert result.failed == 2
+    # failed cases leave no finished folder, only their error record
+    cases = tmp_path / "out" / "t" / "cases"
+    assert sorted(p.name.endswith(".error.json") for p in cases.iterdir()).count(True) == 2
+
+
+def test_killed_sweep_resumes_without_recomputing(tmp_path):
+    speeds = ", ".join(str(float(s)) for s in range(100, 900, 100))
+    path = write_sweep(tmp_path, '[grid]\n"physics.wear" = ["archard"]\n"wear.cycles" = [2e6]\n'
+                                 f'"operating.speed_rpm" = [{speeds}]\n')
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(out), "--workers", "1",
+           "--no-progress", "--json"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+    cases = out / "t" / "cases"
+    deadline = time.time() + 120
+    while time.time() < deadline and len(list(cases.glob("*/case.json")) if cases.exists() else []) < 2:
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+    finished = {p.parent.name: p.stat().st_mtime_ns for p in cases.glob("*/case.json")}
+    assert 2 <= len(finished) < 8, "the sweep was not interrupted midway"
+    rerun = subprocess.run(cmd, capture_output=True, text=True, check=True)
+    summary = json.loads(rerun.stdout.strip().splitlines()[-1])
+    assert summary["skipped"] == len(finished) and summary["ran"] == 8 - len(finished)
+    assert summary["failed"] == 0
+    for name, mtime in finished.items():   # finished cases were not recomputed
+        assert (cases / name / "case.json").stat().st_mtime_ns == mtime
+    assert len(list(cases.glob("*/case.json"))) == 8
+    assert not list(cases.glob(".*.tmp-*"))      # partial outputs of the killed case are gone
