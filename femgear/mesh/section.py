@@ -1,0 +1,236 @@
+"""gmsh meshes of transverse gear sections and simple reference domains → skfem meshes.
+
+The only module of femgear that imports gmsh (inside the functions).  Every mesh comes
+back as a :class:`skfem.MeshTri` whose ``boundaries`` dict carries the named physical
+groups (``flank``, ``fillet``, ``tip``, ``bore``, ``sides``; ``inner``/``outer`` for an
+annulus) — integer tags never leave this module.
+
+Mesh size is one knob ``h`` [m]; ``refine_at`` (x, y) adds a Distance/Threshold field
+that shrinks the size to ``h * refine_ratio`` within ``h`` of that point (the contact
+point of a compliance solve).
+"""
+
+from __future__ import annotations
+
+import math
+from contextlib import contextmanager
+
+import numpy as np
+
+from femgear.geometry.gear import GearPair
+from femgear.geometry.profile import tooth_profile
+
+
+@contextmanager
+def _gmsh_session(name: str):
+    import gmsh
+
+    gmsh.initialize(["-noenv"], readConfigFiles=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.option.setNumber("General.NumThreads", 1)
+        gmsh.model.add(name)
+        yield gmsh
+    finally:
+        gmsh.finalize()
+
+
+def _to_skfem(gmsh, groups: dict[str, int]):
+    """Linear triangles of the current gmsh model → MeshTri with named boundaries."""
+    import skfem
+
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    xy = coords.reshape(-1, 3)[:, :2]
+    index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
+    index[tags.astype(np.int64)] = np.arange(tags.size)
+    etypes, _, enodes = gmsh.model.mesh.getElements(2)
+    tri = [index[n.astype(np.int64)].reshape(-1, 3) for et, n in zip(etypes, enodes) if et == 2]
+    t = np.vstack(tri)
+    used = np.unique(t)
+    remap = np.full(xy.shape[0], -1, dtype=np.int64)
+    remap[used] = np.arange(used.size)
+    p = xy[used].T.copy()
+    t = remap[t].T.copy()
+    mesh = skfem.MeshTri(p, t)
+    facet_key = {tuple(sorted(f)): i for i, f in enumerate(mesh.facets.T)}
+    boundaries = {}
+    for name, tag in groups.items():
+        ids = []
+        for ent in gmsh.model.getEntitiesForPhysicalGroup(1, tag):
+            ets, _, ens = gmsh.model.mesh.getElements(1, ent)
+            for et, en in zip(ets, ens):
+                if et != 1:
+                    continue
+                for a, b in remap[index[en.astype(np.int64)]].reshape(-1, 2):
+                    ids.append(facet_key[(min(a, b), max(a, b))])
+        boundaries[name] = np.unique(np.array(ids, dtype=np.int64))
+    return skfem.MeshTri(mesh.p, mesh.t, _boundaries=boundaries)
+
+
+def _size_field(gmsh, h: float, refine_at, refine_ratio: float, extra_points=()):
+    if refine_at is None:
+        gmsh.option.setNumber("Mesh.MeshSizeMin", h)
+        gmsh.option.setNumber("Mesh.MeshSizeMax", h)
+        return
+    geo = gmsh.model.geo
+    pt = geo.addPoint(refine_at[0], refine_at[1], 0.0, h)
+    geo.synchronize()
+    f = gmsh.model.mesh.field
+    d = f.add("Distance")
+    f.setNumbers(d, "PointsList", [pt])
+    th = f.add("Threshold")
+    f.setNumber(th, "InField", d)
+    f.setNumber(th, "SizeMin", h * refine_ratio)
+    f.setNumber(th, "SizeMax", h)
+    f.setNumber(th, "DistMin", 0.5 * h)
+    f.setNumber(th, "DistMax", 3 * h)
+    f.setAsBackgroundMesh(th)
+    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+
+
+def annulus(r_in: float, r_out: float, h: float):
+    """Annulus r_in < r < r_out (r_in = 0: full disc) with boundaries ``inner``/``outer``."""
+    if not 0 <= r_in < r_out:
+        raise ValueError(f"need 0 ≤ r_in < r_out, got r_in={r_in}, r_out={r_out}")
+    if not 0 < h < (r_out - r_in):
+        raise ValueError(f"mesh size h={h} must be positive and below the wall thickness {r_out - r_in}")
+    with _gmsh_session("annulus") as gmsh:
+        geo = gmsh.model.geo
+        c = geo.addPoint(0, 0, 0, h)
+
+        def circle(r):
+            return _circle(geo, c, r, h)
+
+        outer = circle(r_out)
+        loops = [geo.addCurveLoop(outer)]
+        inner = []
+        if r_in > 0:
+            inner = circle(r_in)
+            loops.append(geo.addCurveLoop(inner))
+        s = geo.addPlaneSurface(loops)
+        geo.synchronize()
+        if r_in == 0:
+            gmsh.model.mesh.embed(0, [c], 2, s)
+        groups = {"outer": gmsh.model.addPhysicalGroup(1, outer)}
+        if inner:
+            groups["inner"] = gmsh.model.addPhysicalGroup(1, inner)
+        gmsh.model.addPhysicalGroup(2, [s])
+        _size_field(gmsh, h, None, 1.0)
+        gmsh.model.mesh.generate(2)
+        return _to_skfem(gmsh, groups)
+
+
+def _circle(geo, c, r, h):
+    """Circle of radius r as four arcs with nodes at 0, π/2, π, 3π/2 (support points)."""
+    pts = [geo.addPoint(r * math.cos(a), r * math.sin(a), 0, h) for a in np.arange(4) * math.pi / 2]
+    return [geo.addCircleArc(pts[i], c, pts[(i + 1) % 4]) for i in range(4)]
+
+
+def _rot(x, y, a):
+    c, s = math.cos(a), math.sin(a)
+    return c * x - s * y, s * x + c * y
+
+
+def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3, bore_radius: float | None = None,
+                 refine_at: tuple[float, float] | None = None, refine_ratio: float = 0.2):
+    """Transverse section of ``member`` (1 pinion, 2 gear): ``n_teeth`` teeth down to the bore.
+
+    Tooth 0 is centred on the +y axis; ``n_teeth=None`` meshes the whole gear.  A
+    sector is cut along radial lines through the middle of the tooth spaces (boundary
+    ``sides``).  ``bore_radius`` defaults to half the root radius (a gear on a shaft).
+    Raises ValueError (naming ``h``) if ``h`` does not give at least two elements
+    across the tooth tip, or ``bore_radius`` leaves no rim.
+    """
+    prof = tooth_profile(pair, member)
+    z = prof.z
+    rf = prof.rf
+    r_bore = 0.5 * rf if bore_radius is None or bore_radius <= 0 else bore_radius
+    if not 0 < r_bore < rf - 2 * pair.m_n:
+        raise ValueError(f"bore_radius={r_bore:.4g} m leaves a rim thinner than 2 m_n below the root circle")
+    tip_arc = 2 * prof.ra * float(prof.half_angle(np.array([prof.ra * (1 - 1e-9)]))[0])
+    if not 0 < h <= tip_arc / 2:
+        raise ValueError(
+            f"mesh size h={h:.3g} m is too coarse: the tooth tip is {tip_arc * 1e3:.3f} mm wide and needs "
+            f"two elements across (h ≤ {tip_arc / 2:.3g} m)"
+        )
+    full = n_teeth is None or n_teeth >= z
+    nt = z if full else int(n_teeth)
+    if nt < 1:
+        raise ValueError(f"n_teeth must be ≥ 1, got {n_teeth}")
+    pitch = 2 * math.pi / z
+    fil = prof.part <= 1
+    inv_ = (prof.part == 2)
+    xf, yf = prof.x[fil], prof.y[fil]
+    xi = np.concatenate([[prof.x[fil][-1]], prof.x[inv_]])
+    yi = np.concatenate([[prof.y[fil][-1]], prof.y[inv_]])
+    # tooth frame: centre line along +x; rotate to +y and by k·pitch
+    with _gmsh_session("gear_section") as gmsh:
+        geo = gmsh.model.geo
+        c = geo.addPoint(0, 0, 0, h)
+
+        def pts(xs, ys, a):
+            out = []
+            for x, y in zip(xs, ys):
+                X, Y = _rot(x, y, a + math.pi / 2)
+                out.append(geo.addPoint(X, Y, 0, h))
+            return out
+
+        curves, flanks, fillets, tips = [], [], [], []
+        offsets = [(k - (nt - 1) / 2) * pitch for k in range(nt)] if not full else [k * pitch for k in range(nt)]
+        # walk clockwise in angle? build each tooth from its right space centre (−π/z) to its left (+π/z)
+        first_space = last_space = None
+        prev_end = None
+        for a in offsets:
+            # right half has y ≥ 0 in the tooth frame → rotated, it lies at larger angle; mirror y → −y first
+            right_space = geo.addPoint(*_rot(rf * math.cos(-pitch / 2), rf * math.sin(-pitch / 2), a + math.pi / 2), 0, h) \
+                if prev_end is None else prev_end
+            if first_space is None:
+                first_space = right_space
+            pf_r = pts(xf, -yf, a)                         # fillet, mirrored half (angle −)
+            pi_r = pts(xi[1:], -yi[1:], a)
+            fillets.append(geo.addCircleArc(right_space, c, pf_r[0]))
+            fillets.append(geo.addSpline(pf_r))
+            flanks.append(geo.addSpline([pf_r[-1]] + pi_r))
+            pi_l = pts(xi[1:][::-1], yi[1:][::-1], a)
+            pf_l = pts(xf[::-1], yf[::-1], a)
+            tips.append(geo.addCircleArc(pi_r[-1], c, pi_l[0]))
+            flanks.append(geo.addSpline(pi_l + [pf_l[0]]))
+            fillets.append(geo.addSpline(pf_l))
+            if full and a == offsets[-1]:
+                left_space = first_space
+            else:
+                left_space = geo.addPoint(*_rot(rf * math.cos(pitch / 2), rf * math.sin(pitch / 2), a + math.pi / 2), 0, h)
+            fillets.append(geo.addCircleArc(pf_l[-1], c, left_space))
+            prev_end = left_space
+            last_space = left_space
+        outline = []
+        for k in range(nt):
+            outline += [fillets[4 * k], fillets[4 * k + 1], flanks[2 * k], tips[k], flanks[2 * k + 1],
+                        fillets[4 * k + 2], fillets[4 * k + 3]]
+        groups_curves = {"flank": flanks, "fillet": fillets, "tip": tips}
+        if full:
+            bore = _circle(geo, c, r_bore, h)
+            loops = [geo.addCurveLoop(outline), geo.addCurveLoop(bore)]
+            sides = []
+        else:
+            a_last = offsets[-1] + pitch / 2 + math.pi / 2
+            a_first = offsets[0] - pitch / 2 + math.pi / 2
+            bl = geo.addPoint(r_bore * math.cos(a_last), r_bore * math.sin(a_last), 0, h)
+            bf = geo.addPoint(r_bore * math.cos(a_first), r_bore * math.sin(a_first), 0, h)
+            s1 = geo.addLine(last_space, bl)
+            arc = geo.addCircleArc(bl, c, bf)
+            s2 = geo.addLine(bf, first_space)
+            bore, sides = [arc], [s1, s2]
+            loops = [geo.addCurveLoop(outline + [s1, arc, s2])]
+        surf = geo.addPlaneSurface(loops)
+        geo.synchronize()
+        groups_curves["bore"] = bore
+        if sides:
+            groups_curves["sides"] = sides
+        groups = {name: gmsh.model.addPhysicalGroup(1, cs) for name, cs in groups_curves.items()}
+        gmsh.model.addPhysicalGroup(2, [surf])
+        _size_field(gmsh, h, refine_at, refine_ratio)
+        gmsh.model.mesh.generate(2)
+        return _to_skfem(gmsh, groups)
