@@ -89,6 +89,21 @@ class MeshStiffness:
         return float(max(self.k_left.max(), self.k_right.max()))
 
 
+def as_mesh_stiffness(source, samples: int = 256) -> MeshStiffness:
+    """A :class:`MeshStiffness` from any TVMS: itself, or any callable phase -> (k_L, k_R).
+
+    Callables (e.g. :class:`femgear.stiffness.MeshStiffness`) are sampled at
+    ``samples`` equidistant phases of one mesh period (base pitches, phase = f_m t).
+    """
+    if isinstance(source, MeshStiffness):
+        return source
+    if not callable(source):
+        raise TypeError(f"mesh stiffness must be a MeshStiffness or a callable phase -> (k_left, k_right), got {type(source)!r}")
+    phases = np.arange(samples) / samples
+    kl, kr = source(phases)
+    return MeshStiffness(np.asarray(kl, float), np.asarray(kr, float), label=str(getattr(source, "level", "callable")))
+
+
 def constant_stiffness(pair: GearPair, c_gamma: float) -> MeshStiffness:
     """``constant`` level: k = c_γ b per helix (c_γ [N/m per m of face width])."""
     if not c_gamma > 0:

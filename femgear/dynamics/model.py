@@ -43,6 +43,7 @@ from femgear.dynamics.mesh import (
     FrictionTable,
     MeshGeometry,
     MeshStiffness,
+    as_mesh_stiffness,
     constant_stiffness,
     contact_line_stiffness,
     friction_table,
@@ -331,8 +332,11 @@ def build_model(
             stiffness = constant_stiffness(pair, c_gamma)
         elif stiffness == "contact-line":
             stiffness = contact_line_stiffness(pair, c_gamma, scene.pair.stagger)
-        else:
-            raise SceneError("physics.stiffness", f"level {stiffness!r}: pass its MeshStiffness table to build_model(stiffness=...)")
+        else:  # iso6336 / pem / fe: the stiffness package's TVMS of this scene
+            from femgear.stiffness import mesh_stiffness_from_scene
+
+            stiffness = mesh_stiffness_from_scene(scene, level=stiffness)
+    stiffness = as_mesh_stiffness(stiffness)
     zeta_m = scene.stiffness.damping_ratio if mesh_damping_ratio is None else mesh_damping_ratio
     if not 0 <= zeta_m < 1:
         raise ValueError(f"mesh_damping_ratio must be in [0, 1) (got {zeta_m!r})")
@@ -396,7 +400,7 @@ def build_model(
         mesh_damping=c_mesh, backlash=float(b0), mu=float(friction_coefficient), friction=ftab,
         mesh_frequency=fm, omega=omega, torque_full=torque, bearing_map=bearing_map, stagger=scene.pair.stagger,
         profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb, rayleigh=(a0, a1),
-        info={"g_xy": geom.g[:, 0:2].copy(), "bearing_span": bearing_span, "shaft_diameter": shaft_diameter,
+        info={"g_xy": np.array([geom.g[s, 6 * s: 6 * s + 2] for s in range(2)]), "bearing_span": bearing_span, "shaft_diameter": shaft_diameter,
               "half_spacing": half, "mesh_damping_ratio": zeta_m, "v_reg": v_reg,
               "flexible_modes_hz": (wflex / (2 * math.pi)).tolist()},
     )
