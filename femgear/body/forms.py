@@ -32,7 +32,9 @@ def lame(youngs_modulus: float, poisson_ratio: float, plane: str) -> tuple[float
 def thermal_modulus(youngs_modulus: float, poisson_ratio: float, expansion: float, plane: str) -> float:
     """β_T such that the thermal stress is −β_T ΔT I [Pa/K]."""
     lam, mu = lame(youngs_modulus, poisson_ratio, plane)
-    return 2 * (lam + mu) * expansion
+    if plane == "stress":
+        return 2 * (lam + mu) * expansion          # = E λ_T/(1−ν)
+    return (3 * lam + 2 * mu) * expansion          # = E λ_T/(1−2ν)
 
 
 def conduction(k: float) -> BilinearForm:
