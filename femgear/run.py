@@ -1,8 +1,9 @@
 """``femgear run``: run what a scene's ``[physics]`` asks for and write its outputs.
 
 Today that is the quasi-static geometry and contact pass along the path of contact
-(Hertz pressure, film thickness, sliding) — the levels ``lubrication = none |
-constant | formula`` with no dynamics — and, with ``wear = "archard"``, the wear
+(Hertz pressure, film thickness, sliding) with friction and contact temperature from
+the ``lubrication`` level (``none``, ``constant`` μ, or ``formula``: thermal Eyring
+traction of the Hertzian film, :mod:`femgear.friction`) — and, with ``wear = "archard"``, the wear
 depth of both flanks after ``wear.cycles``.  Further levels plug in here as they land.
 """
 
@@ -11,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+import numpy as np
 
 from femgear.contact.path import contact_along_path
 from femgear.geometry import GearPair
@@ -38,6 +41,14 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         "hertz_pressure": contact.hertz_pressure, "hertz_half_width": contact.hertz_half_width,
         "film_central": contact.film_central, "film_minimum": contact.film_minimum,
     }
+    friction = friction_of(scene, contact)
+    if friction is not None:
+        along_path.update(friction_coefficient=friction["mu"], temperature_rise=friction["temperature_rise"])
+        summary["friction"] = {
+            "mu_pitch": friction["mu"][contact.pitch_index], "mu_min": float(np.min(friction["mu"])),
+            "mu_max": float(np.max(friction["mu"])), "mu_mean": float(np.mean(friction["mu"])),
+            "max_temperature_rise": float(np.max(friction["temperature_rise"])),
+        }
     if scene.physics.wear == "archard":
         state = _wear(scene, pair, contact, out_dir)
         along_path.update(wear_pinion=state.h1, wear_gear=state.h2)
@@ -50,8 +61,28 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         from femgear.plot.path import plot_contact_path
 
         files["contact_path_png"] = plot_contact_path(contact, out_dir / "contact_path.png", title=scene.meta.name)
+        if friction is not None:
+            from femgear.plot.path import plot_friction_path
+
+            files["friction_path_png"] = plot_friction_path(
+                contact.kin.s, friction["mu"], friction["temperature_rise"], out_dir / "friction_path.png",
+                title=f"{scene.meta.name}: lubrication = {scene.physics.lubrication}")
     summary = {**summary, "outputs": {k: str(v) for k, v in files.items()}}
     return RunResult(summary=summary, files=files)
+
+
+def friction_of(scene, contact) -> dict[str, np.ndarray] | None:
+    """μ and the contact temperature rise along the path for the scene's lubrication level."""
+    level = scene.physics.lubrication
+    n = contact.kin.u.size
+    if level == "none":
+        return None
+    if level == "constant":
+        return {"mu": np.full(n, scene.friction.coefficient), "temperature_rise": np.zeros(n)}
+    from femgear.friction.path import friction_along_path
+
+    r = friction_along_path(scene, contact)
+    return {"mu": r.mu, "temperature_rise": r.film_max}
 
 
 def _wear(scene, pair, contact, out_dir: Path):

@@ -40,3 +40,29 @@ def plot_contact_path(result: ContactPath, path: str | Path, title: str = "") ->
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
+
+
+def plot_friction_path(s, mu, temperature_rise, path: str | Path, title: str = "") -> Path:
+    """Friction coefficient and maximum contact temperature rise along the path."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(2, 1, figsize=(6.5, 5.5), sharex=True)
+    axes[0].plot(s * 1e3, mu, "k-")
+    axes[0].set_ylabel("friction coefficient μ [-]")
+    axes[1].plot(s * 1e3, temperature_rise, "r-")
+    axes[1].set_ylabel("max oil temperature rise [K]")
+    axes[1].set_xlabel("distance from the pitch point along the line of action [mm]")
+    for ax in axes:
+        ax.axvline(0, color="0.6", lw=0.8, ls=":")
+        ax.grid(alpha=0.3)
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path

@@ -95,6 +95,9 @@ class Oil(_Frozen):
     )
     thermal_expansion: NonNeg = Field(6.5e-4, description="density-temperature coefficient ε [1/K]")
     eyring_stress: Pos = Field(5.0e6, description="Eyring stress τ0 for non-Newtonian traction [Pa]")
+    limiting_shear_coeff: NonNeg = Field(
+        0.0, description="limiting shear stress τ_L = Λ p as the coefficient Λ; 0 switches it off [-]"
+    )
 
 
 class Operating(_Frozen):
