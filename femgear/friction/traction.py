@@ -73,15 +73,17 @@ def shear_stress(eta, rate, model: str, tau0: float):
     raise ValueError(f"traction model must be 'newtonian' or 'eyring' (got {model!r})")
 
 
-def hertz_traction(w, b, p_h, h, v1, v2, T_bulk: float, oil: OilLaw, solids: Solids, model: str = "eyring",
+def hertz_traction(w, b, p_h, h, v1, v2, T_bulk, oil: OilLaw, solids: Solids, model: str = "eyring",
                    tau0: float = 5e6, limiting_shear: float = 0.0, n: int = 48, tol: float = 1e-6,
                    max_iter: int = 300) -> TractionResult:
     """Sliding traction of Hertzian EHL line contacts (arrays over contacts).
 
     ``w`` load per length [N/m], ``b`` Hertz half-width [m], ``p_h`` Hertz pressure [Pa],
-    ``h`` film [m], ``v1``, ``v2`` surface speeds [m/s], ``T_bulk`` [K].
+    ``h`` film [m], ``v1``, ``v2`` surface speeds [m/s], ``T_bulk`` oil inlet/bulk temperature [K].
     """
-    w, b, p_h, h, v1, v2 = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, b, p_h, h, v1, v2)))
+    w, b, p_h, h, v1, v2, T_bulk = np.broadcast_arrays(
+        *(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, b, p_h, h, v1, v2, T_bulk)))
+    T_bulk = T_bulk[:, None]
     if np.any(h <= 0) or np.any(b <= 0):
         raise ValueError("film thickness and half-width must be positive")
     xi = -1 + (2 * np.arange(n) + 1) / n                      # cell centres on [−1, 1]
@@ -89,7 +91,7 @@ def hertz_traction(w, b, p_h, h, v1, v2, T_bulk: float, oil: OilLaw, solids: Sol
     vs = np.abs(v1 - v2)[:, None]
     rate = vs / h[:, None]
     A = abel_matrix(n)
-    T = np.full(p.shape, T_bulk)
+    T = np.broadcast_to(T_bulk, p.shape).copy()
     dT_surface = np.zeros(p.shape)
     for it in range(1, max_iter + 1):
         tau = shear_stress(oil.viscosity(p, T), rate, model, tau0)
@@ -112,3 +114,26 @@ def hertz_traction(w, b, p_h, h, v1, v2, T_bulk: float, oil: OilLaw, solids: Sol
         raise ConvergenceError("hertz_traction", "non-finite traction", {"iterations": [it]})
     return TractionResult(mu=mu, traction=traction, flash_max=dT_surface.max(axis=1),
                           film_max=(T - T_bulk).max(axis=1), film_thickness=h, iterations=it)
+
+
+def line_contact_friction(w, R, ue, srr, T_bulk, oil: OilLaw, E_red: float, solids: Solids, model: str = "eyring",
+                          tau0: float = 5e6, limiting_shear: float = 0.0, n: int = 48) -> TractionResult:
+    """Friction of EHL line contacts from operating data alone (arrays broadcast).
+
+    ``w`` load per length [N/m], ``R`` reduced radius [m], ``ue`` entrainment speed [m/s],
+    ``srr`` slide-to-roll ratio (v1 − v2)/ue [-], ``T_bulk`` [K].  Hertz half-width and
+    pressure, the Moes (1992) central film at the inlet viscosity η(0, T_bulk) times
+    Gupta's thermal factor, then :func:`hertz_traction`.
+    """
+    from femgear.contact.film import line_film
+
+    w, R, ue, srr, T_bulk = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr, T_bulk)))
+    if np.any(w <= 0) or np.any(R <= 0) or np.any(ue <= 0):
+        raise ValueError("load, radius and entrainment speed must be positive")
+    b = np.sqrt(8 * w * R / (np.pi * E_red))
+    p_h = 2 * w / (np.pi * b)
+    eta_in = oil.viscosity(0.0, T_bulk)
+    h = line_film(w, R, ue, E_red, eta_in, oil.alpha)["central_moes"]
+    h = h * gupta_thermal_factor(p_h, E_red, srr, ue, eta_in, oil.beta_t, solids.k_oil)
+    return hertz_traction(w, b, p_h, h, ue * (1 + srr / 2), ue * (1 - srr / 2), T_bulk, oil, solids,
+                          model=model, tau0=tau0, limiting_shear=limiting_shear, n=n)
