@@ -7,6 +7,23 @@ from pathlib import Path
 from femgear.contact.path import ContactPath
 
 
+def _finish(fig, axes, path: str | Path, title: str) -> Path:
+    """Mark the pitch point, add a grid and the title, save as PNG and close."""
+    import matplotlib.pyplot as plt
+
+    for ax in axes:
+        ax.axvline(0, color="0.6", lw=0.8, ls=":")
+        ax.grid(alpha=0.3)
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def plot_contact_path(result: ContactPath, path: str | Path, title: str = "") -> Path:
     """Hertz pressure, film thickness and sliding speed against the position on the path."""
     import matplotlib
@@ -29,17 +46,7 @@ def plot_contact_path(result: ContactPath, path: str | Path, title: str = "") ->
     axes[2].set_ylabel("speed [m/s]")
     axes[2].set_xlabel("distance from the pitch point along the line of action [mm]")
     axes[2].legend(fontsize=8)
-    for ax in axes:
-        ax.axvline(0, color="0.6", lw=0.8, ls=":")
-        ax.grid(alpha=0.3)
-    if title:
-        fig.suptitle(title)
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return _finish(fig, axes, path, title)
 
 
 def plot_friction_path(s, mu, temperature_rise, path: str | Path, title: str = "") -> Path:
@@ -55,14 +62,4 @@ def plot_friction_path(s, mu, temperature_rise, path: str | Path, title: str = "
     axes[1].plot(s * 1e3, temperature_rise, "r-")
     axes[1].set_ylabel("max oil temperature rise [K]")
     axes[1].set_xlabel("distance from the pitch point along the line of action [mm]")
-    for ax in axes:
-        ax.axvline(0, color="0.6", lw=0.8, ls=":")
-        ax.grid(alpha=0.3)
-    if title:
-        fig.suptitle(title)
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return _finish(fig, axes, path, title)

@@ -77,13 +77,17 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = ()) -> S
     return scene
 
 
-def load_scene(path: str | Path, overrides: Iterable[str] = ()) -> Scene:
-    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it."""
+def read_toml(path: str | Path, what: str = "scene") -> dict[str, Any]:
+    """Parse a TOML file; a missing or malformed file is a :class:`SceneError` naming it."""
     path = Path(path)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        return tomllib.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
-        raise SceneError(str(path), "scene file not found") from None
+        raise SceneError(str(path), f"{what} file not found") from None
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(str(path), f"not valid TOML: {exc}") from None
-    return scene_from_dict(data, overrides)
+
+
+def load_scene(path: str | Path, overrides: Iterable[str] = ()) -> Scene:
+    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it."""
+    return scene_from_dict(read_toml(path), overrides)

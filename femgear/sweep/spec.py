@@ -22,11 +22,11 @@ import hashlib
 import itertools
 import json
 import re
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
 from femgear.errors import SceneError
+from femgear.scene.load import read_toml
 
 
 @dataclass(frozen=True)
@@ -68,12 +68,7 @@ def _toml_value(value) -> str:
 def parse_sweep(path: str | Path) -> SweepSpec:
     """Read a sweep file; errors name the offending key."""
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise SceneError(str(path), "sweep file not found") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError(str(path), f"not valid TOML: {exc}") from None
+    data = read_toml(path, "sweep")
     unknown = set(data) - {"base", "name", "grid", "case"}
     if unknown:
         raise SceneError(sorted(unknown)[0], "unknown key in sweep file (use base, name, grid, case)")
