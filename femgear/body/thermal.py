@@ -233,3 +233,18 @@ def gear_thermo_elastic(pair: GearPair, member: int, dT_flank: float, dT_shaft: 
     full = "sides" not in mesh.boundaries
     return thermo_elastic(mesh, temp, youngs_modulus, poisson_ratio, expansion,
                           support="free" if full else "rollers", bore_radius=rbore)
+
+
+def flank_deviation_from_scene(scene, member: int, u, level: str | None = None, h: float | None = None):
+    """:func:`flank_deviation` with the scene's pair, material, bores and ``[thermal]`` rises.
+
+    ``level`` defaults to ``physics.thermal``; the flank rise is
+    ``thermal.flank_temperature_rise`` (a lubrication model may pass its own through
+    :func:`flank_deviation`).
+    """
+    pair = GearPair.from_scene(scene)
+    mat = scene.material
+    bore = scene.pinion.bore_radius if member == 1 else scene.gear.bore_radius
+    return flank_deviation(pair, member, u, level or scene.physics.thermal, scene.thermal.flank_temperature_rise,
+                           scene.thermal.shaft_temperature_rise, mat.thermal_expansion, mat.youngs_modulus,
+                           mat.poisson_ratio, mat.conductivity, bore, h)

@@ -67,7 +67,7 @@ def _to_skfem(gmsh, groups: dict[str, int]):
     return skfem.MeshTri(mesh.p, mesh.t, _boundaries=boundaries)
 
 
-def _size_field(gmsh, h: float, refine_at, refine_ratio: float, extra_points=()):
+def _size_field(gmsh, h: float, refine_at, refine_ratio: float, refine_radius: float | None = None):
     if refine_at is None:
         gmsh.option.setNumber("Mesh.MeshSizeMin", h)
         gmsh.option.setNumber("Mesh.MeshSizeMax", h)
@@ -82,8 +82,9 @@ def _size_field(gmsh, h: float, refine_at, refine_ratio: float, extra_points=())
     f.setNumber(th, "InField", d)
     f.setNumber(th, "SizeMin", h * refine_ratio)
     f.setNumber(th, "SizeMax", h)
-    f.setNumber(th, "DistMin", 0.5 * h)
-    f.setNumber(th, "DistMax", 3 * h)
+    rr = 0.5 * h if refine_radius is None else refine_radius
+    f.setNumber(th, "DistMin", rr)
+    f.setNumber(th, "DistMax", rr + 3 * h)
     f.setAsBackgroundMesh(th)
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
@@ -134,7 +135,8 @@ def _rot(x, y, a):
 
 
 def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3, bore_radius: float | None = None,
-                 refine_at: tuple[float, float] | None = None, refine_ratio: float = 0.2):
+                 refine_at: tuple[float, float] | None = None, refine_ratio: float = 0.2,
+                 refine_radius: float | None = None):
     """Transverse section of ``member`` (1 pinion, 2 gear): ``n_teeth`` teeth down to the bore.
 
     Tooth 0 is centred on the +y axis; ``n_teeth=None`` meshes the whole gear.  A
@@ -231,6 +233,6 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
             groups_curves["sides"] = sides
         groups = {name: gmsh.model.addPhysicalGroup(1, cs) for name, cs in groups_curves.items()}
         gmsh.model.addPhysicalGroup(2, [surf])
-        _size_field(gmsh, h, refine_at, refine_ratio)
+        _size_field(gmsh, h, refine_at, refine_ratio, refine_radius)
         gmsh.model.mesh.generate(2)
         return _to_skfem(gmsh, groups)

@@ -18,9 +18,9 @@ LEVELS: dict[str, tuple[str, ...]] = {
 }
 
 AVAILABLE: dict[str, frozenset[str]] = {
-    "stiffness": frozenset({"constant", "iso6336", "pem"}),
+    "stiffness": frozenset({"constant", "iso6336", "pem", "fe"}),
     "lubrication": frozenset({"none", "constant", "formula"}),
-    "thermal": frozenset({"none"}),
+    "thermal": frozenset({"none", "analytic", "fe"}),
     "wear": frozenset({"none", "archard"}),
     "dynamics": frozenset({"none"}),
     "coupling": frozenset({"one-way"}),

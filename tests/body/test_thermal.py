@@ -117,3 +117,17 @@ def test_analytic_uniform_is_lambda_dT_rho():
     np.testing.assert_allclose(ur, LAM * 30 * r, rtol=1e-12)
     z = flank_deviation(p, 1, u, "analytic", 30.0, 30.0, LAM)
     np.testing.assert_allclose(z, LAM * 30 * rho * math.cos(p.beta_b), rtol=1e-12)
+
+
+def test_scene_entry_point():
+    from pathlib import Path
+
+    from femgear.body.thermal import flank_deviation_from_scene
+    from femgear.scene import load_scene
+
+    sc = load_scene(Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml",
+                    overrides=["thermal.flank_temperature_rise=35", "physics.thermal=analytic"])
+    p = GearPair.from_scene(sc)
+    u = np.linspace(p.u_start, p.u_end, 4)
+    z = flank_deviation_from_scene(sc, 1, u)
+    assert np.all(z > 0) and np.all(np.isfinite(z))

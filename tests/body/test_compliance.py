@@ -1,0 +1,55 @@
+"""FE tooth compliance (``fe`` level) against the potential energy method."""
+
+import numpy as np
+import pytest
+
+from femgear.body.compliance import ToothFE, fe_pair_stiffness_per_width
+from femgear.geometry.gear import GearPair
+from femgear.mesh.section import gear_section
+from femgear.stiffness.pem import pair_stiffness_per_width
+from pathlib import Path
+
+BASELINE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
+
+
+@pytest.fixture(scope="module")
+def pair():
+    from femgear.scene import load_scene
+
+    return GearPair.from_scene(load_scene(BASELINE))
+
+
+def test_pem_within_10_percent_of_fe_in_single_pair_zone(pair):
+    u0, u1 = pair.u_end - pair.p_bt, pair.u_start + pair.p_bt
+    u = np.linspace(u0, u1, 3)
+    k_fe, info = fe_pair_stiffness_per_width(pair, u, 210e9, 0.3, h=pair.m_n / 2.5, refine_ratio=0.3)
+    k_pem = pair_stiffness_per_width(pair, u, 210e9, 0.3)
+    dev = k_pem / k_fe - 1
+    assert np.all(np.abs(dev) < 0.10), dev
+    assert all(n > 20000 for n in info["ndofs"])
+
+
+def test_compliance_linear_in_load_and_grows_to_tip(pair):
+    m = ToothFE(pair, 1, 210e9, 0.3, h=pair.m_n / 2.5, refine_ratio=0.5)
+    c1 = m.compliance(pair.u_pitch, force=1e4)
+    c2 = m.compliance(pair.u_pitch, force=3e5)
+    assert c1 == pytest.approx(c2, rel=1e-9)
+    c_root, c_tip = m.compliance(pair.u_start), m.compliance(pair.u_end)
+    assert c_root < c1 < c_tip
+
+
+def test_mesh_size_too_coarse_named(pair):
+    with pytest.raises(ValueError, match="mesh size h"):
+        gear_section(pair, 1, h=pair.m_n, n_teeth=3)
+    with pytest.raises(ValueError, match="bore_radius"):
+        gear_section(pair, 1, h=pair.m_n / 3, n_teeth=3, bore_radius=pair.rf1 - pair.m_n)
+
+
+@pytest.mark.slow
+def test_fe_compliance_converges_under_refinement(pair):
+    """Self-convergence of the pitch-point compliance (P2): successive differences shrink."""
+    cs = []
+    for h in (pair.m_n / 2.5, pair.m_n / 4, pair.m_n / 6.5):
+        cs.append(ToothFE(pair, 1, 210e9, 0.3, h=h, refine_ratio=0.5).compliance(pair.u_pitch))
+    d1, d2 = abs(cs[1] - cs[0]), abs(cs[2] - cs[1])
+    assert d2 < d1 and d2 < 0.01 * cs[2]
