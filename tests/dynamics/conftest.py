@@ -1,0 +1,17 @@
+"""Fixtures of the dynamics tests: baseline models at both levels."""
+
+import pytest
+
+
+@pytest.fixture(scope="module")
+def lumped(baseline_scene):
+    from femgear.dynamics import build_model
+
+    return build_model(baseline_scene, "lumped", stiffness="contact-line")
+
+
+@pytest.fixture(scope="module")
+def timoshenko(baseline_scene):
+    from femgear.dynamics import build_model
+
+    return build_model(baseline_scene, "timoshenko", stiffness="contact-line")
