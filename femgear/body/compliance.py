@@ -76,11 +76,14 @@ class ToothFE:
         return P, -n, section
 
     def compliance(self, u: float, force: float = 1.0e5, patch: float | None = None) -> float:
-        """Tooth compliance per unit face width at path position ``u`` [m/N · m]."""
+        """Tooth compliance per unit face width at path position ``u`` [m/N · m].
+
+        ``patch``: half-length of the loaded flank strip (default 0.15 m_n, independent of h).
+        """
         from skfem import FacetBasis
 
         P, d, section = self._geometry(u)
-        a = patch or max(0.6 * self.h, 0.1 * self.pair.m_n)
+        a = patch or 0.15 * self.pair.m_n
         dist = np.hypot(self._flank_mid[0] - P[0], self._flank_mid[1] - P[1])
         facets = self._flank[dist <= a]
         if facets.size == 0:
