@@ -82,7 +82,7 @@ def plot_phase_planes(res: Response, path) -> Path:
     return _save(fig, path)
 
 
-def plot_spectra(res: Response, path, max_order: float = 10.0) -> Path:
+def plot_spectra(res: Response, path, max_order: float = 32.0) -> Path:
     """Hanning spectra of the DTE and of the gear's y acceleration at a bearing, with mesh orders."""
     plt = _pyplot()
     dt = float(np.median(np.diff(res.t)))

@@ -22,7 +22,7 @@ AVAILABLE: dict[str, frozenset[str]] = {
     "lubrication": frozenset({"none", "constant", "formula"}),
     "thermal": frozenset({"none", "analytic", "fe"}),
     "wear": frozenset({"none", "archard"}),
-    "dynamics": frozenset({"none"}),
+    "dynamics": frozenset({"none", "lumped", "timoshenko"}),
     "coupling": frozenset({"one-way"}),
 }
 
