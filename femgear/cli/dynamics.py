@@ -15,7 +15,8 @@ def register(sub) -> None:
                    help="dynamics level (default: physics.dynamics, or lumped)")
     p.add_argument("--stiffness", default=None,
                    help="mesh stiffness: constant, contact-line, iso6336, pem, fe (default: physics.stiffness)")
-    p.add_argument("--method", choices=("expo", "rk4", "newmark"), default="expo", help="integrator")
+    p.add_argument("--method", choices=("expo", "rk4", "newmark"), default=None,
+                   help="integrator (default: expo for lumped, rk4 for timoshenko)")
     p.add_argument("--dt", type=float, default=None, help="time step [s] (default per integrator)")
     p.add_argument("--cycles", type=float, default=100.0, help="mesh periods to simulate")
     p.add_argument("--transient", type=float, default=50.0, help="mesh periods dropped as transient")
