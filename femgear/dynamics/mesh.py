@@ -25,13 +25,18 @@ TVMS model (ISO 6336, potential energy, FE) plugs in by producing such a table, 
 any object with the same ``__call__(phase) -> (k_L, k_R)``.
 
 Friction (paper: τ = sgn(v_s) μ F): it acts along the sliding direction t (normal to
-the plane of action, across the contact lines) with the sign of the sliding speed,
-regularised as tanh(v_s/v_reg) near the pitch point, where v_s changes sign.  Along a
-helical contact line v_s changes with the position u on the path, so the net friction
-force and moment per helix are averaged over the contact lines (load per unit length
-uniform): A(φ) = ⟨tanh(v_s/v_reg)⟩, B(φ) = ⟨(u − u_C) tanh(v_s/v_reg)⟩, and the
-generalised friction force is −μ |N_s| (A h0_s + B h1_s), h(u) = h0 + (u − u_C) h1 being
-the gradient of the relative displacement along t at the point u of the path.
+the plane of action, across the contact lines), opposing the sliding velocity ẇ of the
+pinion flank relative to the gear flank along t (in this frame ẇ = −v_s, v_s = ω1 ρ1 −
+ω2 ρ2 of :func:`femgear.geometry.kinematics`), with sgn regularised as tanh(ẇ/v_reg)
+near the pitch point, where ẇ changes sign.  Along a helical contact line ẇ changes with
+the position u on the path, so the net friction force and moment per helix are
+averaged over the contact lines (load per unit length uniform, friction of both signs
+on a line that crosses the pitch point): A(φ) = ⟨tanh(ẇ/v_reg)⟩,
+B(φ) = ⟨(u − u_C) tanh(ẇ/v_reg)⟩, and the generalised friction force is
+−μ |N_s| (A h0_s + B h1_s), h(u) = h0 + (u − u_C) h1 being the gradient of the relative
+displacement along t at the point u of the path.  ẇ uses the nominal rotation (the
+vibratory sliding is orders of magnitude smaller), so friction is a state-dependent
+excitation through |N_s|, as in the paper.
 """
 
 from __future__ import annotations
@@ -44,6 +49,18 @@ import numpy as np
 
 from femgear.dynamics.layout import point_jacobian
 from femgear.geometry import GearPair, double_helical_contact
+
+
+def periodic_interp(samples: np.ndarray, phase: np.ndarray) -> np.ndarray:
+    """Linear interpolation of ``samples`` taken at phases i/n (one period) at any real ``phase``."""
+    phase = np.asarray(phase, dtype=float)
+    n = samples.size
+    if n == 1:
+        return np.full(phase.shape, samples[0])
+    x = np.mod(phase, 1.0) * n
+    i = np.floor(x).astype(np.int64) % n
+    f = x - np.floor(x)
+    return samples[i] * (1 - f) + samples[(i + 1) % n] * f
 
 
 @dataclass(frozen=True)
@@ -70,15 +87,7 @@ class MeshStiffness:
         object.__setattr__(self, "k_right", kr)
 
     def __call__(self, phase: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        phase = np.asarray(phase, dtype=float)
-        n = self.k_left.size
-        if n == 1:
-            return np.full(phase.shape, self.k_left[0]), np.full(phase.shape, self.k_right[0])
-        x = np.mod(phase, 1.0) * n
-        i = np.floor(x).astype(np.int64) % n
-        f = x - np.floor(x)
-        j = (i + 1) % n
-        return (self.k_left[i] * (1 - f) + self.k_left[j] * f, self.k_right[i] * (1 - f) + self.k_right[j] * f)
+        return periodic_interp(self.k_left, phase), periodic_interp(self.k_right, phase)
 
     @property
     def mean(self) -> tuple[float, float]:
@@ -181,12 +190,8 @@ class FrictionTable:
 
     def __call__(self, phase: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """A, B at mesh ``phase`` (arrays of shape (2,) + phase.shape)."""
-        n = self.A.shape[1]
-        x = np.mod(np.asarray(phase, dtype=float), 1.0) * n
-        i = np.floor(x).astype(np.int64) % n
-        f = x - np.floor(x)
-        j = (i + 1) % n
-        return self.A[:, i] * (1 - f) + self.A[:, j] * f, self.B[:, i] * (1 - f) + self.B[:, j] * f
+        return (np.stack([periodic_interp(a, phase) for a in self.A]),
+                np.stack([periodic_interp(b, phase) for b in self.B]))
 
 
 def friction_table(pair: GearPair, rate0: np.ndarray, rate1: np.ndarray, stagger: float = 0.0,

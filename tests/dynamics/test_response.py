@@ -1,0 +1,65 @@
+"""Post-processing, friction power, results files and the command line."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+from femgear.dynamics.response import half_peak_to_peak, spectrum
+
+
+def test_spectrum_and_amplitude_of_a_sine():
+    dt, f0 = 1e-4, 250.0
+    t = np.arange(4000) * dt
+    x = 3.0 + 2e-6 * np.sin(2 * np.pi * f0 * t)
+    sp = spectrum(x, dt, mesh_frequency=125.0)
+    i = np.argmax(sp.amplitude)
+    assert np.isclose(sp.frequency[i], f0) and np.isclose(sp.order[i], 2.0)
+    assert np.isclose(sp.amplitude[i], 2e-6, rtol=2e-2)
+    assert np.isclose(half_peak_to_peak(x), 2e-6, rtol=1e-3)
+
+
+def test_friction_dissipates_power_on_average(baseline_scene):
+    """Mean power of the friction forces on the nominal rotation is negative (a loss), and it
+    is ≈ μ N times the mean |sliding speed| over the contact lines."""
+    from femgear.dynamics import build_model
+    from femgear.dynamics.layout import BODIES, dof
+
+    m = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient=0.05)
+    qdot = np.zeros(24)
+    for side in range(2):
+        qdot[dof(BODIES[side], "rz")] = m.omega[0]
+        qdot[dof(BODIES[2 + side], "rz")] = m.omega[1]
+    qd = np.linalg.lstsq(m.T, qdot, rcond=None)[0]
+    phases = np.arange(256) / 256
+    A, B = m.friction(phases)
+    N = 2000.0
+    power = -m.mu * N * (A.T @ m.H0 @ qd + B.T @ m.H1 @ qd)     # per helix, over the mesh period
+    assert np.all(power <= 1e-9)
+    assert power.mean() < -1.0
+
+
+def test_run_dynamics_writes_results_and_plots(baseline_scene, tmp_path):
+    from femgear.dynamics.run import run_dynamics
+
+    r = run_dynamics(baseline_scene, tmp_path, stiffness="contact-line", method="rk4", dt=2e-5, cycles=20,
+                     transient_cycles=10)
+    for key in ("json", "npz", "time_histories", "mesh_force", "phase_planes", "spectra"):
+        assert r.files[key].exists() and r.files[key].stat().st_size > 0
+    data = json.loads(r.files["json"].read_text())
+    assert data["amplitudes"]["gear.displacement.y"] > 0
+    assert np.isfinite(r.response.displacement).all()
+
+
+def test_cli_prints_json_last(baseline_path, tmp_path):
+    out = subprocess.run([sys.executable, "-m", "femgear.cli", "dynamics", str(baseline_path), "--stiffness",
+                          "contact-line", "--cycles", "12", "--transient", "6", "--dt", "2e-4", "--no-plots", "--out", str(tmp_path),
+                          "--json"], capture_output=True, text=True, check=True,
+                         env={**os.environ, "OPENBLAS_NUM_THREADS": "1"}).stdout
+    payload = json.loads(out.strip().splitlines()[-1])
+    assert payload["level"] == "lumped" and payload["method"] == "expo"
+    bad = subprocess.run([sys.executable, "-m", "femgear.cli", "dynamics", str(baseline_path), "--set",
+                          "pinion.mass=-1"], capture_output=True, text=True)
+    assert bad.returncode == 2 and "pinion.mass" in bad.stderr
