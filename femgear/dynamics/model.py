@@ -233,6 +233,7 @@ def build_model(
     bearing_span: float = 0.10,
     shaft_diameter: tuple[float, float] = (0.040, 0.040),
     backlash: float | None = None,
+    load_stiffness: float = 0.0,
 ) -> GearRotorModel:
     """Assemble the model of a scene.
 
@@ -242,7 +243,11 @@ def build_model(
     default follows ``physics.stiffness`` ("constant").  ``friction_coefficient``
     default: ``friction.coefficient`` unless ``physics.lubrication = "none"``.
     ``bearing_span`` [m] (distance of the two bearings of a member) and
-    ``shaft_diameter`` [m] (pinion, gear) are not scene keys yet.
+    ``shaft_diameter`` [m] (pinion, gear) are not scene keys yet.  ``load_stiffness``
+    [N m/rad]: torsional stiffness of a closed power loop (FZG-type rig: pinion shaft,
+    slave gearbox, gear shaft), referred to the gear shaft, resisting the relative twist
+    θz_gear + (r_b1/r_b2) θz_pinion; 0 (default, the paper's equations: prescribed
+    torques) leaves pinion and gear free to rotate against each other at low frequency.
     """
     pair = GearPair.from_scene(scene)
     if level is None:
@@ -321,6 +326,19 @@ def build_model(
         T = np.eye(NDOF)
         bearing_map = np.vstack([Tg[node:node + 3] for node in bearing_nodes])
 
+    if load_stiffness < 0:
+        raise ValueError(f"load_stiffness must be non-negative (got {load_stiffness!r})")
+    K_free = K                 # structure without the load spring: the Rayleigh fit uses its modes
+    if load_stiffness > 0:
+        # power loop: twist φ = θz_gear + (r_b1/r_b2) θz_pinion (means over the halves) vanishes for the
+        # free rotation of the train; the loop resists it with k_loop (referred to the gear shaft)
+        w = np.zeros(NDOF)
+        for side in range(2):
+            w[6 * side + 5] = 0.5 * pair.rb1 / pair.rb2
+            w[6 * (2 + side) + 5] = 0.5
+        wr = w @ T
+        K = K + load_stiffness * np.outer(wr, wr)
+
     # ---------- mesh ----------
     geom: MeshGeometry = mesh_geometry(pair, half)
     G, H0, H1 = geom.g @ T, geom.h0 @ T, geom.h1 @ T
@@ -389,7 +407,7 @@ def build_model(
            Unbalance(scene.gear.unbalance, omega[1], math.radians(scene.gear.eccentricity_phase_deg)))
 
     # ---------- Rayleigh damping from the two lowest flexible modes of the mean system ----------
-    Kmean = K + sum(k * np.outer(G[s], G[s]) for s, k in enumerate(stiffness.mean))
+    Kmean = K_free + sum(k * np.outer(G[s], G[s]) for s, k in enumerate(stiffness.mean))
     w2 = eigh(Kmean, M, eigvals_only=True)
     wflex = np.sqrt(w2[w2 > 1e-6 * w2.max()])
     a0, a1 = rayleigh_coefficients(wflex[0], wflex[1], rayleigh_ratio)
@@ -402,5 +420,5 @@ def build_model(
         profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb, rayleigh=(a0, a1),
         info={"g_xy": np.array([geom.g[s, 6 * s: 6 * s + 2] for s in range(2)]), "bearing_span": bearing_span, "shaft_diameter": shaft_diameter,
               "half_spacing": half, "mesh_damping_ratio": zeta_m, "v_reg": v_reg,
-              "flexible_modes_hz": (wflex / (2 * math.pi)).tolist()},
+              "flexible_modes_hz": (wflex / (2 * math.pi)).tolist(), "load_stiffness": load_stiffness},
     )
