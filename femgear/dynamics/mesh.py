@@ -181,6 +181,9 @@ def mesh_geometry(pair: GearPair, half_spacing: float) -> MeshGeometry:
     return MeshGeometry(g=g, h0=h0, h1=h1, normal=np.array(normals), pitch_point=np.array(points))
 
 
+MuFunction = Callable[[np.ndarray], np.ndarray]
+
+
 @dataclass(frozen=True)
 class FrictionTable:
     """Contact-line averages A(φ), B(φ) per helix over one mesh period (see module doc)."""
@@ -195,7 +198,8 @@ class FrictionTable:
 
 
 def friction_table(pair: GearPair, rate0: np.ndarray, rate1: np.ndarray, stagger: float = 0.0,
-                   v_reg: float = 0.01, samples: int = 256, points_per_line: int = 64) -> FrictionTable:
+                   v_reg: float = 0.01, samples: int = 256, points_per_line: int = 64,
+                   mu_of_u: MuFunction | None = None) -> FrictionTable:
     """Tables A, B of the regularised sliding sign over one mesh period.
 
     ``rate0[s]``, ``rate1[s]``: nominal sliding velocity of the pinion relative to the
@@ -203,7 +207,8 @@ def friction_table(pair: GearPair, rate0: np.ndarray, rate1: np.ndarray, stagger
     h0_s·q̇_nom and h1_s·q̇_nom for the nominal rotation q̇_nom; so ẇ(u) = rate0 +
     (u − u_C) rate1, which vanishes at the pitch point C.  tanh(ẇ/v_reg) replaces
     sgn(ẇ) (regularisation speed ``v_reg`` [m/s]), so a contact line crossing the
-    pitch point feels friction of both signs.
+    pitch point feels friction of both signs.  ``mu_of_u``: friction coefficient along
+    the path (u [m] -> μ [-]); it is then folded into A and B (use μ_ref = 1 with them).
     """
     from femgear.geometry import contact_lines
 
@@ -221,9 +226,9 @@ def friction_table(pair: GearPair, rate0: np.ndarray, rate1: np.ndarray, stagger
             w = np.repeat(lines.length[:, None], points_per_line, axis=1) / points_per_line
             du = u - pair.u_pitch
             sg = np.tanh((rate0[s] + du * rate1[s]) / v_reg)
+            if mu_of_u is not None:
+                sg = sg * mu_of_u(u)
             A[s, i] = np.sum(w * sg) / lines.total_length
             B[s, i] = np.sum(w * sg * du) / lines.total_length
     return FrictionTable(A=A, B=B)
 
-
-MuFunction = Callable[[np.ndarray], np.ndarray]

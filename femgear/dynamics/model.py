@@ -239,9 +239,12 @@ def build_model(
 
     ``level``: "lumped" or "timoshenko" (default: the scene's ``physics.dynamics``, and
     "lumped" when that is "none").  ``stiffness``: a :class:`MeshStiffness` table (any
-    TVMS model), "constant" (c_γ b) or "contact-line" (contact-line-length TVMS);
-    default follows ``physics.stiffness`` ("constant").  ``friction_coefficient``
-    default: ``friction.coefficient`` unless ``physics.lubrication = "none"``.
+    TVMS model), "constant" (c_γ b) or "contact-line" (contact-line-length TVMS), or
+    a level of :mod:`femgear.stiffness` ("iso6336", "pem", "fe"); default follows
+    ``physics.stiffness``.  ``friction_coefficient``: a number, or "formula" for the
+    thermal-Eyring μ(u) along the path of :func:`femgear.friction.path.friction_along_path`
+    (U-shaped, zero at the pitch point); default ``friction.coefficient`` unless
+    ``physics.lubrication = "none"``.
     ``bearing_span`` [m] (distance of the two bearings of a member) and
     ``shaft_diameter`` [m] (pinion, gear) are not scene keys yet.  ``load_stiffness``
     [N m/rad]: torsional stiffness of a closed power loop (FZG-type rig: pinion shaft,
@@ -376,8 +379,19 @@ def build_model(
         torque[6 * (2 + side) + 5] = T2 / 2
 
     # ---------- friction ----------
+    mu_of_u = None
     if friction_coefficient is None:
         friction_coefficient = 0.0 if scene.physics.lubrication == "none" else scene.friction.coefficient
+    elif isinstance(friction_coefficient, str):
+        if friction_coefficient != "formula":
+            raise ValueError(f"friction_coefficient must be a number or 'formula' (got {friction_coefficient!r})")
+        from femgear.contact.path import contact_along_path
+        from femgear.friction.path import friction_along_path
+
+        contact = contact_along_path(scene, pair=pair)
+        u_tab, mu_tab = contact.kin.u, friction_along_path(scene, contact).mu
+        mu_of_u = lambda u: np.interp(u, u_tab, mu_tab)  # noqa: E731
+        friction_coefficient = 1.0                        # μ(u) is folded into the tables
     if friction_coefficient < 0:
         raise ValueError(f"friction_coefficient must be non-negative (got {friction_coefficient!r})")
     qdot_nom = np.zeros(NDOF)
@@ -386,7 +400,8 @@ def build_model(
         qdot_nom[6 * (2 + side) + 5] = omega[1]
     ftab = None
     if friction_coefficient > 0:
-        ftab = friction_table(pair, geom.h0 @ qdot_nom, geom.h1 @ qdot_nom, scene.pair.stagger, v_reg)
+        ftab = friction_table(pair, geom.h0 @ qdot_nom, geom.h1 @ qdot_nom, scene.pair.stagger, v_reg,
+                              mu_of_u=mu_of_u)
         # the load torque absorbs the mean friction torque, so the free rotation does not drift
         N0 = T1 / 2 / geom.g[0, 5]
         Qf = -friction_coefficient * N0 * (ftab.A.mean(axis=1) @ geom.h0 + ftab.B.mean(axis=1) @ geom.h1)

@@ -63,3 +63,14 @@ def test_cli_prints_json_last(baseline_path, tmp_path):
     bad = subprocess.run([sys.executable, "-m", "femgear.cli", "dynamics", str(baseline_path), "--set",
                           "pinion.mass=-1"], capture_output=True, text=True)
     assert bad.returncode == 2 and "pinion.mass" in bad.stderr
+
+
+def test_formula_friction_along_the_path(baseline_scene):
+    """μ(u) from the friction package (U-shaped, zero at the pitch point) folded into the tables."""
+    from femgear.dynamics import build_model
+
+    m = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient="formula")
+    c = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient=0.05)
+    assert m.mu == 1.0
+    assert np.abs(m.friction.A).max() < 0.06 and np.abs(m.friction.B).max() < 0.06 * np.abs(c.friction.B).max() / 0.05 * 1.5
+    assert np.abs(m.friction.B).max() > 0
