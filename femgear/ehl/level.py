@@ -29,14 +29,15 @@ class Level:
 
     def __init__(self, rheology: Rheology, lam_bar: float, load: float, *,
                  grid: Grid | None = None, x: np.ndarray | None = None,
-                 ellipticity: float = 1.0, rigid: bool = False, ad_factor: float = 1.0):
+                 ratio: float = 1.0, rigid: bool = False, ad_factor: float = 1.0,
+                 sd_factor: float = 0.0):
         self.grid, self.load, self.rigid = grid, load, rigid
         self._dense = None
         self._local: dict[int, sp.csr_matrix] = {}
         if grid is not None:
             X, Y = grid.coords()
             self.X, self.Y = X, Y
-            self.geometry = 0.5 * X**2 + 0.5 * ellipticity * Y**2
+            self.geometry = 0.5 * X**2 + 0.5 * ratio * Y**2
             self.interior = grid.interior()
             self.defl = PointDeflection(grid.nx, grid.ny, grid.h)
             self.shape = (grid.ny, grid.nx)
@@ -51,7 +52,7 @@ class Level:
             self.shape = (self.X.size,)
         beta = (self.defl.K[0, 0] if self.dim == 2 else self._K[0, 0]) / self.h
         self.reynolds = ReynoldsFE(rheology, lam_bar, grid=grid, x=x, beta=beta,
-                                   ad_factor=ad_factor)
+                                   ad_factor=ad_factor, sd_factor=sd_factor)
         self.n = self.X.size
         self.m = self.reynolds.mass[self.interior]
 

@@ -31,6 +31,10 @@ from femgear.ehl.grid import prolongation
 from femgear.ehl.level import Level
 
 MAX_DP = 1.0
+MAX_LOG_ETA = 4.0
+WATCHDOG = 4
+ILU_DROP, ILU_FILL = 1e-4, 8.0
+REBUILD_KRYLOV = 12  # rebuild the preconditioner when GMRES needed more iterations
 
 
 @dataclass
@@ -44,30 +48,38 @@ class History:
     level: list = field(default_factory=list)
 
     def as_dict(self) -> dict:
-        return {k: list(v) for k, v in self.__dict__.items()}
+        return {k: list(v) for k, v in self.__dict__.items() if isinstance(v, list)}
 
     def extend(self, other: "History") -> None:
-        for k, v in other.__dict__.items():
+        for k, v in other.as_dict().items():
             getattr(self, k).extend(v)
 
 
 def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case: str):
-    """Backtracking on ||scale F||; returns the accepted (PI, H0, F, lin, H, act, alpha)."""
+    """Backtracking on ||scale F||; returns the accepted (PI, H0, F, lin, H, act, alpha).
+
+    When no trial decreases the (non-monotone) merit, the best admissible trial (finite,
+    positive film) is accepted anyway up to ``WATCHDOG`` times in a row (a watchdog
+    step: the min-NCP merit is not smooth where the cavitation set changes)."""
     merit0 = max([np.linalg.norm(scale * F)] + hist.residual[-5:])
     big = np.max(np.abs(dP)) if dP.size else 0.0
-    alpha = min(1.0, MAX_DP / big) if big > 0 else 1.0
+    # cap |dP| so that the viscosity changes by at most e^MAX_LOG_ETA anywhere
+    cap = min(MAX_DP, MAX_LOG_ETA / max(level.reynolds.rheology.alpha_bar, 1e-12))
+    alpha = min(1.0, cap / big) if big > 0 else 1.0
     best = None
-    for _ in range(12):
+    for _ in range(10):
         Pt, H0t = PI + alpha * dP, H0 + alpha * dH0
         Ft, lin, H, _, act = level.evaluate(Pt, H0t, s)
         if np.all(np.isfinite(Ft)) and H.min() > 0.0:
             merit = np.linalg.norm(scale * Ft)
             if merit <= (1.0 - 1e-4 * alpha) * merit0:
+                hist.watchdog = 0
                 return Pt, H0t, Ft, lin, H, act, alpha
             if best is None or merit < best[0]:
                 best = (merit, (Pt, H0t, Ft, lin, H, act, alpha))
         alpha *= 0.5
-    if best is not None and best[0] < 2.0 * merit0:  # mildly non-monotone acceptance
+    hist.watchdog = getattr(hist, "watchdog", 0) + 1
+    if best is not None and hist.watchdog <= WATCHDOG:
         return best[1]
     raise ConvergenceError(case, "line search failed (residual does not decrease)", hist.as_dict())
 
@@ -129,7 +141,7 @@ class _PrecLevel:
     level, a dense LU."""
 
     def __init__(self, level: Level, PI: np.ndarray, H0: float, dense: bool, radius: int,
-                 lin=None, act=None):
+                 lin=None, act=None, factor: bool = True):
         self.level = level
         if lin is None:
             _, lin, _, _, act = level.evaluate(PI, H0)
@@ -140,16 +152,17 @@ class _PrecLevel:
         self.colH = np.asarray(self.JH.sum(axis=1)).ravel()
         self.colH[act] = 0.0
         self.lu = self.ilu = None
+        if not factor:
+            return
         if dense:
             J = level.dense_jacobian(lin, np.ones(PI.size), act, level.dense_kernel())
             self.lu = sla.lu_factor(J, check_finite=False)
         else:
-            Jl = (self.JP + self.JH @ level.local_kernel(radius)).tolil()
-            ia = np.nonzero(act)[0]
-            Jl = Jl.tocsr()
+            Jl = (self.JP + self.JH @ level.local_kernel(radius)).tocsr()
             keep = sp.diags((~act).astype(float))
             Jl = (keep @ Jl + sp.diags(act.astype(float))).tocsc()
-            self.ilu = spla.spilu(Jl, drop_tol=1e-6, fill_factor=20, permc_spec="NATURAL")
+            self.ilu = spla.spilu(Jl, drop_tol=ILU_DROP, fill_factor=ILU_FILL,
+                                  permc_spec="NATURAL")
 
     def matvec(self, v: np.ndarray) -> np.ndarray:
         lv = self.level
@@ -217,9 +230,15 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
     fine = levels[-1]
     transfers = [_transfer(levels[k], levels[k + 1]) for k in range(len(levels) - 1)]
 
+    cache: dict = {}
+
     def direction(PI, H0, F, lin, s, act):
-        prec = MultilevelPreconditioner(levels, transfers, PI, H0, lin, act)
-        Jf = prec.lv[-1]
+        if "prec" not in cache or cache["its"] > REBUILD_KRYLOV:
+            cache["prec"] = MultilevelPreconditioner(levels, transfers, PI, H0, lin, act)
+            Jf = cache["prec"].lv[-1]
+        else:
+            Jf = _PrecLevel(fine, PI, H0, dense=False, radius=0, lin=lin, act=act, factor=False)
+        prec = cache["prec"]
         # unscaled Newton system: rows of inactive nodes divided by s
         rhs = -F.copy()
         rhs[:-1] = np.where(act, rhs[:-1], rhs[:-1] / s)
@@ -236,6 +255,7 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
                               maxiter=maxiter_krylov, callback=cb, callback_type="pr_norm")
         if info < 0:
             raise ConvergenceError(case, "GMRES breakdown")
+        cache["its"] = count[0] if info == 0 else 10**6
         return dx, count[0]
 
     return _newton(fine, PI, H0, direction, max_iter, tol, case)

@@ -48,8 +48,13 @@ def _diffusion(u, v, w):
 
 @BilinearForm
 def _coef_grad(u, v, w):
-    # int c u (grad P . grad v)
-    return w["c"] * u * (w["gx"] * v.grad[0] + w["gy"] * v.grad[1])
+    # int u (a . grad v)
+    return u * (w["ax"] * v.grad[0] + w["ay"] * v.grad[1])
+
+
+@BilinearForm
+def _streamline(u, v, w):
+    return w["delta"] * u.grad[0] * v.grad[0]
 
 
 @BilinearForm
@@ -59,7 +64,7 @@ def _wedge(u, v, w):
 
 @BilinearForm
 def _coef_grad_1d(u, v, w):
-    return w["c"] * u * w["gx"] * v.grad[0]
+    return u * w["ax"] * v.grad[0]
 
 
 @LinearForm
@@ -104,9 +109,9 @@ class ReynoldsFE:
 
     def __init__(self, rheology: Rheology, lam_bar: float, grid: Grid | None = None,
                  x: np.ndarray | None = None, beta: float = BETA_SELF,
-                 ad_factor: float = 1.0):
+                 ad_factor: float = 1.0, sd_factor: float = 0.0):
         self.rheology, self.lam_bar = rheology, lam_bar
-        self.beta, self.ad_factor = beta, ad_factor
+        self.beta, self.ad_factor, self.sd_factor = beta, ad_factor, sd_factor
         if grid is not None:
             X, Y = grid.coords()
             ii, jj = np.meshgrid(np.arange(grid.nx - 1), np.arange(grid.ny - 1))
@@ -132,17 +137,28 @@ class ReynoldsFE:
         eps_art = self.ad_factor * 0.5 * self.beta * rho_q * self.h**2 * xi
         g = 1.0 - self.ad_factor * p2xi  # d(eps + eps_art)/d eps
         A = asm(_diffusion, b, c=eps + eps_art)
-        if self.dim == 2:
-            gx, gy = Pq.grad[0], Pq.grad[1]
-            EP = asm(_coef_grad, b, c=g * deps_P, gx=gx, gy=gy)
-            EH = asm(_coef_grad, b, c=g * deps_H, gx=gx, gy=gy)
-        else:
-            gx = Pq.grad[0]
-            EP = asm(_coef_grad_1d, b, c=g * deps_P, gx=gx)
-            EH = asm(_coef_grad_1d, b, c=g * deps_H, gx=gx)
-        W = self.W
         rho, drho = rh.density(P)
-        R = A @ P + W @ (rho * H)
+        Q = rho * H
+        W = self.W
+        # streamline diffusion of Q (optional): delta = sd (h/2) xi(Pe), differentiated
+        # through eps: d delta/d eps = -sd Pe^2 xi'(Pe) / (beta rho h)
+        sd = self.sd_factor
+        if sd > 0.0:
+            delta = sd * 0.5 * self.h * xi
+            ddelta = -sd * p2xi / (self.beta * rho_q * self.h)
+            Qx = b.interpolate(Q).grad[0]
+            W = W + asm(_streamline, b, delta=delta)
+        else:
+            ddelta, Qx = 0.0, 0.0
+        gx = Pq.grad[0]
+        if self.dim == 2:
+            gy = Pq.grad[1]
+            EP = asm(_coef_grad, b, ax=deps_P * (g * gx + ddelta * Qx), ay=deps_P * g * gy)
+            EH = asm(_coef_grad, b, ax=deps_H * (g * gx + ddelta * Qx), ay=deps_H * g * gy)
+        else:
+            EP = asm(_coef_grad_1d, b, ax=deps_P * (g * gx + ddelta * Qx))
+            EH = asm(_coef_grad_1d, b, ax=deps_H * (g * gx + ddelta * Qx))
+        R = A @ P + W @ Q
         JP = (A + EP + W @ sp.diags(drho * H)).tocsr()
         JH = (EH + W @ sp.diags(rho)).tocsr()
         return Linearization(R, JP, JH, np.abs(A.diagonal()))

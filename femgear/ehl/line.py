@@ -1,0 +1,89 @@
+"""Line contact EHL (1D): P1 Reynolds (scikit-fem), log-kernel deflection, dense Newton.
+
+Hertzian line scaling (Venner & Lubrecht 2000, sec. 2.2): X = x/b, P = p/p_h,
+H = h R/b^2, H(X) = H0 + X^2/2 - (1/pi) int ln|X - X'| P dX', load int P = pi/2,
+lam_bar = 3 pi^2/(8 M^2), alpha_bar = L sqrt(M/(2 pi)) (Moes line groups, :mod:`params`).
+Nested iteration over levels (``16 * 2**level`` intervals); each level is solved by dense
+Newton (cheap for n <= ~4000), with continuation in alpha_bar when a direct start fails.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from femgear.contact.film import moes_line_central
+from femgear.errors import ConvergenceError
+from femgear.ehl import params as pr
+from femgear.ehl.grid import prolongation_1d
+from femgear.ehl.level import Level
+from femgear.ehl.newton import History, newton_dense
+from femgear.ehl.point import CONTINUATION, _result
+from femgear.ehl.rheology import Rheology
+
+
+def solve_line(M: float, L: float, *, level: int = 6, coarse_level: int = 4,
+               x0: float = -4.5, x1: float = 1.5, viscosity: str = "barus",
+               compressible: bool = False, ph: float | None = None, z: float = 0.68,
+               ad_factor: float = 1.0, sd_factor: float = 1.0, tol: float = 1e-8,
+               max_iter: int = 60):
+    """Isothermal line-contact EHL in Moes line groups (M, L); returns EHLResult.
+
+    Domain X in [x0, x1]; level ``k`` has ``16 * 2**k`` intervals. Options as in
+    :func:`femgear.ehl.point.solve_point`.
+    """
+    if M <= 0 or L < 0:
+        raise ValueError("need M > 0 and L >= 0")
+    if not x0 < -1.0 < 1.0 < x1:
+        raise ValueError("the domain must contain the Hertzian contact [-1, 1]")
+    t0 = time.perf_counter()
+    case = f"ehl line M={M:g} L={L:g} level={level}"
+    fac = pr.line_h_moes_factor(M)
+
+    def make(frac: float, lev: int) -> Level:
+        rheo = Rheology(pr.line_alpha_bar(M, L) * frac, viscosity=viscosity, ph=ph, z=z,
+                        compressible=compressible)
+        x = np.linspace(x0, x1, 16 * 2**lev + 1)
+        return Level(rheo, pr.line_lam_bar(M), pr.LINE_LOAD, x=x, ad_factor=ad_factor,
+                     sd_factor=sd_factor)
+
+    lv = make(1.0, coarse_level)
+    hist = History()
+    P = np.sqrt(np.maximum(1.0 - lv.X**2, 0.0))[lv.interior]
+    P *= lv.load / (lv.m @ P)
+    i0 = int(np.argmin(np.abs(lv.X)))
+    H0 = float(moes_line_central(M, L)) / fac - float(lv.deflection(lv.full(P))[i0])
+    P_start, H0_start = P.copy(), H0
+    try:
+        P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=tol, case=case)
+        hist.extend(h)
+    except ConvergenceError as exc:
+        hist.extend(History(**exc.history))
+        P, H0 = P_start, H0_start
+        for frac in CONTINUATION:
+            stage = lv if frac == 1.0 else make(frac, coarse_level)
+            try:
+                P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=tol, case=case)
+            except ConvergenceError as exc2:
+                hist.extend(History(**exc2.history))
+                raise ConvergenceError(case, f"alpha continuation failed at {frac}",
+                                       hist.as_dict()) from exc2
+            hist.extend(h)
+    per_level = [_line_summary(lv, P, H0, fac, len(hist.residual), t0)]
+    for k in range(coarse_level + 1, level + 1):
+        fine = make(1.0, k)
+        P = (prolongation_1d(lv.n) @ lv.full(P))[fine.interior]
+        P, H0, h = newton_dense(fine, P, H0, max_iter=max_iter, tol=tol, case=case)
+        hist.extend(h)
+        lv = fine
+        per_level.append(_line_summary(lv, P, H0, fac, len(h.residual), t0))
+    return _result("line", M, L, lv, P, H0, fac, hist, per_level, time.perf_counter() - t0)
+
+
+def _line_summary(level: Level, PI, H0, fac, its, t0) -> dict:
+    P, H = level.film(PI, H0)
+    i0 = int(np.argmin(np.abs(level.X)))
+    return {"nodes": level.n, "h": level.h, "Hc": float(H[i0] * fac),
+            "Hmin": float(H.min() * fac), "Pmax": float(P.max()), "iterations": its,
+            "seconds": time.perf_counter() - t0}
