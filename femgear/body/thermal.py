@@ -247,4 +247,4 @@ def flank_deviation_from_scene(scene, member: int, u, level: str | None = None, 
     bore = scene.pinion.bore_radius if member == 1 else scene.gear.bore_radius
     return flank_deviation(pair, member, u, level or scene.physics.thermal, scene.thermal.flank_temperature_rise,
                            scene.thermal.shaft_temperature_rise, mat.thermal_expansion, mat.youngs_modulus,
-                           mat.poisson_ratio, mat.conductivity, bore, h)
+                           mat.poisson_ratio, mat.conductivity, bore, h if h is not None else scene.thermal.mesh_size)

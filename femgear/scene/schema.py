@@ -132,6 +132,9 @@ class Stiffness(_Frozen):
         2.0e10, description="mean mesh stiffness per unit face width c_γ [N/m per m], ISO typical 20 N/(mm µm)"
     )
     damping_ratio: float = Field(0.07, ge=0, lt=1, description="mesh damping ratio ζ_m [-]")
+    n_slices: int = Field(100, ge=1, le=2000, description="slices along the face width (pem, fe levels) [-]")
+    n_positions: int = Field(200, ge=2, le=5000, description="mesh phases sampled per mesh period [-]")
+    fe_mesh_size: Pos | None = Field(None, description="FE tooth mesh size (fe level) [m]; default m_n/2.5")
 
 
 class Wear(_Frozen):
@@ -150,6 +153,7 @@ class Thermal(_Frozen):
         0.0, description="flank temperature rise over ambient, if not from the lubrication model [K]"
     )
     shaft_temperature_rise: NonNeg = Field(0.0, description="shaft/bore temperature rise over ambient [K]")
+    mesh_size: Pos | None = Field(None, description="FE gear-section mesh size (fe level) [m]; default m_n/5")
 
 
 class Numerics(_Frozen):

@@ -168,16 +168,18 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
     return MeshStiffness(level, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)
 
 
-def mesh_stiffness_from_scene(scene, n_positions: int = 200, n_slices: int = 100, level: str | None = None,
-                              **kw) -> MeshStiffness:
-    """:func:`mesh_stiffness` with the pair, level, stagger, material and bores of a scene."""
+def mesh_stiffness_from_scene(scene, level: str | None = None, **kw) -> MeshStiffness:
+    """:func:`mesh_stiffness` with the pair, level, stagger, material, bores and ``[stiffness]`` knobs of a scene."""
     from femgear.geometry.gear import GearPair as _GP
 
     pair = _GP.from_scene(scene)
-    lv = level or scene.physics.stiffness
-    return mesh_stiffness(
-        pair, lv, n_positions=n_positions, stagger=scene.pair.stagger, n_slices=n_slices,
-        youngs_modulus=scene.material.youngs_modulus, poisson_ratio=scene.material.poisson_ratio,
-        bore_radius=(scene.pinion.bore_radius, scene.gear.bore_radius),
-        constant_per_width=scene.stiffness.mesh_stiffness_per_width, **kw,
-    )
+    st = scene.stiffness
+    fe_options = dict(kw.pop("fe_options", None) or {})
+    if st.fe_mesh_size is not None:
+        fe_options.setdefault("h", st.fe_mesh_size)
+    args = dict(n_positions=st.n_positions, stagger=scene.pair.stagger, n_slices=st.n_slices,
+                youngs_modulus=scene.material.youngs_modulus, poisson_ratio=scene.material.poisson_ratio,
+                bore_radius=(scene.pinion.bore_radius, scene.gear.bore_radius),
+                constant_per_width=st.mesh_stiffness_per_width, fe_options=fe_options or None)
+    args.update(kw)
+    return mesh_stiffness(pair, level or scene.physics.stiffness, **args)
