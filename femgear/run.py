@@ -3,8 +3,10 @@
 Today that is the quasi-static geometry and contact pass along the path of contact
 (Hertz pressure, film thickness, sliding) with friction and contact temperature from
 the ``lubrication`` level (``none``, ``constant`` μ, or ``formula``: thermal Eyring
-traction of the Hertzian film, :mod:`femgear.friction`) — and, with ``wear = "archard"``, the wear
-depth of both flanks after ``wear.cycles``.  Further levels plug in here as they land.
+traction of the Hertzian film, :mod:`femgear.friction`); the mesh stiffness of the
+``stiffness`` level over one mesh period; with ``thermal`` on, the thermal flank
+deviation of both members for ``thermal.flank_temperature_rise``; with ``wear =
+"archard"``, the wear depth of both flanks after ``wear.cycles``.
 """
 
 from __future__ import annotations
@@ -49,6 +51,17 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
             "mu_max": float(np.max(friction["mu"])), "mu_mean": float(np.mean(friction["mu"])),
             "max_temperature_rise": float(np.max(friction["temperature_rise"])),
         }
+    if scene.physics.thermal != "none":
+        from femgear.body.thermal import flank_deviation_from_scene
+
+        z1, z2 = (flank_deviation_from_scene(scene, m, k.u) for m in (1, 2))
+        along_path.update(thermal_deviation_pinion=z1, thermal_deviation_gear=z2)
+        summary["thermal"] = {"flank_temperature_rise": scene.thermal.flank_temperature_rise,
+                              "deviation_pitch_pinion": float(np.interp(0.0, k.s, z1)),
+                              "deviation_pitch_gear": float(np.interp(0.0, k.s, z2)),
+                              "max_deviation": float(max(np.max(np.abs(z1)), np.max(np.abs(z2))))}
+    stiffness = _stiffness(scene)
+    summary["stiffness"] = stiffness["summary"]
     if scene.physics.wear == "archard":
         state = _wear(scene, pair, contact, out_dir)
         along_path.update(wear_pinion=state.h1, wear_gear=state.h2)
@@ -56,6 +69,7 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
                            "max_depth_pinion": float(state.h1.max()), "max_depth_gear": float(state.h2.max())}
     files = {"results": write_json(out_dir / "results.json", {
         "summary": summary, "scene": scene.model_dump(), "along_path": along_path,
+        "mesh_stiffness": stiffness["table"],
     })}
     if plots:
         from femgear.plot.path import plot_contact_path
@@ -83,6 +97,18 @@ def friction_of(scene, contact) -> dict[str, np.ndarray] | None:
 
     r = friction_along_path(scene, contact)
     return {"mu": r.mu, "temperature_rise": r.film_max}
+
+
+def _stiffness(scene) -> dict[str, Any]:
+    """The mesh stiffness of the scene's level over one mesh period, per helix."""
+    from femgear.stiffness.tvms import mesh_stiffness_from_scene
+
+    ms = mesh_stiffness_from_scene(scene)
+    return {
+        "summary": {"level": ms.level, "mean_total": ms.mean, "mean_per_helix": [ms.mean_left, ms.mean_right],
+                    "ripple_total": ms.ripple(), "seconds": ms.seconds},
+        "table": {"phase": ms.phase, "k_left": ms.k_left, "k_right": ms.k_right},
+    }
 
 
 def _wear(scene, pair, contact, out_dir: Path):
