@@ -15,7 +15,7 @@ import sys
 
 from femgear.errors import FemgearError
 
-_COMMAND_MODULES = ("info", "run", "sweep", "dynamics")
+_COMMAND_MODULES = ("info", "run", "sweep", "dynamics", "ehl")
 
 
 def build_parser() -> argparse.ArgumentParser:

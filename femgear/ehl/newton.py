@@ -34,7 +34,7 @@ MAX_DP = 1.0
 MAX_LOG_ETA = 4.0
 WATCHDOG = 4
 ILU_DROP, ILU_FILL = 1e-4, 8.0
-REBUILD_KRYLOV = 12  # rebuild the preconditioner when GMRES needed more iterations
+REBUILD_KRYLOV = 8  # rebuild the preconditioner when GMRES needed more iterations
 
 
 @dataclass
