@@ -183,7 +183,7 @@ def _rk4(model, steps, dt, q, v, record_every, record_from) -> Simulation:
     e0, e1, ed0, ed1 = e[0].tolist(), e[1].tolist(), ed[0].tolist(), ed[1].tolist()
     mu = model.mu
     A0, A1, B0, B1 = A[0].tolist(), A[1].tolist(), B[0].tolist(), B[1].tolist()
-    b = model.backlash
+    bb = model.backlash_at(th).tolist()
     c0, c1 = float(model.mesh_damping[0]), float(model.mesh_damping[1])
     n2 = 2 * n
 
@@ -192,6 +192,7 @@ def _rk4(model, steps, dt, q, v, record_every, record_from) -> Simulation:
         d0, d1, dd0, dd1 = r[n2:].tolist()
         d0 -= e0[j]
         d1 -= e1[j]
+        b = bb[j]
         if d0 > b:
             N0 = kL[j] * (d0 - b) + c0 * (dd0 - ed0[j])
         elif d0 < -b:
@@ -271,7 +272,7 @@ def _hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> 
     AA = (A[0].tolist(), A[1].tolist())
     BB = (B[0].tolist(), B[1].tolist())
     mu = model.mu
-    b = model.backlash
+    bb = model.backlash_at(tt).tolist()
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
 
     # initial acceleration from the equations of motion
@@ -309,6 +310,7 @@ def _hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> 
         if alpha != 0.0:
             x = x - alpha * (Nprev[0] * PWprev[0] + Nprev[1] * PWprev[1])
             gx0, gx1 = (np.array([gx0, gx1]) - alpha * (Nprev[0] * (G @ PWprev[0]) + Nprev[1] * (G @ PWprev[1]))).tolist()
+        b = bb[j]
         for it in range(max_iter):
             iters_total += 1
             kap = [0.0, 0.0]
@@ -499,7 +501,8 @@ def _expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> S
     AA = (A[0].tolist(), A[1].tolist())
     BB = (B[0].tolist(), B[1].tolist())
     mu = model.mu
-    b = model.backlash
+    bt = model.backlash_at(tt)
+    bb = bt.tolist()
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
     switches = 0
     t_setup = time.perf_counter()
@@ -508,7 +511,7 @@ def _expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> S
             cache[(j, (1, 1))] = _expo_matrices(model, kstep[j], (1, 1), dt)
     # fast path (both drive flanks in contact): the known inputs of every step, precomputed per phase
     known = np.empty((steps, n2))
-    ecols = np.stack([e[0] + b, e[1] + b], axis=1)            # u_s = e_s + b on the drive flank
+    ecols = np.stack([e[0] + bt, e[1] + bt], axis=1)          # u_s = e_s + b(t) on the drive flank
     dcols = np.stack([cm[0] * ed[0], cm[1] * ed[1]], axis=1)
     Wfr = []
     for j in range(min(per, steps)):
@@ -542,6 +545,7 @@ def _expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> S
         kj = kstep[j]
         i2 = 2 * i
         gq0, gq1, gv0, gv1 = (Gz @ y).tolist()
+        b = bb[i2]
         side = [0, 0]
         Nn = [0.0, 0.0]
         for s, (gq, gv) in enumerate(((gq0, gv0), (gq1, gv1))):
@@ -582,7 +586,6 @@ def _expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> S
         # general path: known inputs at t_n, t_n+h/2, t_n+h: u_s = e_s ± b (through the sub-steps'
         # stiffness), c ė_s; friction: μ|N| extrapolated linearly from the last two steps, A and B at the nodes
         c0, c1 = chi[0] * cm[0], chi[1] * cm[1]
-        sb0, sb1 = side[0] * b, side[1] * b
         F = []
         for o, w in ((0, 0.0), (1, 0.5), (2, 1.0)):
             ii = i2 + o
@@ -590,8 +593,7 @@ def _expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> S
             a1 = Nn[1] + w * (Nn[1] - N_prev[1])
             F.append(Fe[ii] + Bw @ (c0 * eed[0][ii], c1 * eed[1][ii], a0 * AA[0][ii], a0 * BB[0][ii],
                                     a1 * AA[1][ii], a1 * BB[1][ii]))
-        u = (ee[0][i2] + sb0, ee[0][i2 + 1] + sb0, ee[0][i2 + 2] + sb0,
-             ee[1][i2] + sb1, ee[1][i2 + 1] + sb1, ee[1][i2 + 2] + sb1)
+        u = tuple(ee[s][i2 + o] + side[s] * bb[i2 + o] for s in range(2) for o in range(3))
         y = Phi @ y + W0 @ F[0] + Wh @ F[1] + W1 @ F[2] + U @ u
         N_prev = Nn
     seconds = time.perf_counter() - t0

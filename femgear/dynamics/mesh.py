@@ -63,6 +63,16 @@ def periodic_interp(samples: np.ndarray, phase: np.ndarray) -> np.ndarray:
     return samples[i] * (1 - f) + samples[(i + 1) % n] * f
 
 
+def periodic_slope(samples: np.ndarray, phase: np.ndarray) -> np.ndarray:
+    """d/dphase of :func:`periodic_interp` (piecewise constant)."""
+    phase = np.asarray(phase, dtype=float)
+    n = samples.size
+    if n == 1:
+        return np.zeros(phase.shape)
+    i = np.floor(np.mod(phase, 1.0) * n).astype(np.int64) % n
+    return (samples[(i + 1) % n] - samples[i]) * n
+
+
 @dataclass(frozen=True)
 class MeshStiffness:
     """Mesh stiffness of the left and right helix over one mesh period [N/m].

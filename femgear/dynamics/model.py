@@ -45,6 +45,8 @@ from femgear.dynamics.mesh import (
     MeshStiffness,
     as_mesh_stiffness,
     constant_stiffness,
+    periodic_interp,
+    periodic_slope,
     contact_line_stiffness,
     friction_table,
     mesh_geometry,
@@ -85,6 +87,10 @@ class GearRotorModel:
     eccentricities: tuple[Eccentricity, Eccentricity]
     unbalances: tuple[Unbalance, Unbalance]
     rayleigh: tuple[float, float]   #: (a0, a1)
+    #: (e_L, e_R) samples over one mesh period [m]: profile deviations from wear / thermal expansion
+    profile_deviation: tuple[np.ndarray, np.ndarray] | None = None
+    #: Δb samples over one mesh period [m]: the dynamic backlash b(t) = b0 + Δb(φ) (paper's b(t))
+    backlash_variation: np.ndarray | None = None
     info: dict = field(default_factory=dict, compare=False)
 
     @property
@@ -98,6 +104,13 @@ class GearRotorModel:
     # ---------- excitation, vectorised over time ----------
     def mesh_phase(self, t: np.ndarray) -> np.ndarray:
         return self.mesh_frequency * np.asarray(t, dtype=float)
+
+    def backlash_at(self, t: np.ndarray) -> np.ndarray:
+        """Dynamic backlash b(t) = b0 + Δb(f_m t) [m], shape of ``t``."""
+        t = np.asarray(t, dtype=float)
+        if self.backlash_variation is None:
+            return np.full(t.shape, self.backlash)
+        return self.backlash + periodic_interp(self.backlash_variation, self.mesh_phase(t))
 
     def errors(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Transmission errors e_s(t) and their rates, shape (2,) + t.shape [m, m/s]."""
@@ -114,6 +127,10 @@ class GearRotorModel:
             ed[s] = -(rd @ gx[s])
             e[s] += self.profile_errors[s].value(t) + self.random_errors[s].value(t)
             ed[s] += self.profile_errors[s].rate(t) + self.random_errors[s].rate(t)
+            if self.profile_deviation is not None:
+                ph = self.mesh_phase(t)
+                e[s] += periodic_interp(self.profile_deviation[s], ph)
+                ed[s] += self.mesh_frequency * periodic_slope(self.profile_deviation[s], ph)
         return e, ed
 
     @property
@@ -151,7 +168,8 @@ class GearRotorModel:
         e, ed = self.errors(t)
         delta = q @ self.G.T - np.moveaxis(e, 0, -1)
         ddot = v @ self.G.T - np.moveaxis(ed, 0, -1)
-        N = k * gap_function(delta, self.backlash) + self.mesh_damping * contact_indicator(delta, self.backlash) * ddot
+        b = self.backlash_at(t)[..., None]
+        N = k * gap_function(delta, b) + self.mesh_damping * contact_indicator(delta, b) * ddot
         Q = -(N @ self.G)
         if self.mu > 0 and self.friction is not None:
             A, B = self.friction(ph)
@@ -234,6 +252,8 @@ def build_model(
     shaft_diameter: tuple[float, float] = (0.040, 0.040),
     backlash: float | None = None,
     load_stiffness: float = 0.0,
+    profile_deviation: tuple[np.ndarray, np.ndarray] | None = None,
+    backlash_variation: np.ndarray | None = None,
 ) -> GearRotorModel:
     """Assemble the model of a scene.
 
@@ -251,6 +271,9 @@ def build_model(
     slave gearbox, gear shaft), referred to the gear shaft, resisting the relative twist
     θz_gear + (r_b1/r_b2) θz_pinion; 0 (default, the paper's equations: prescribed
     torques) leaves pinion and gear free to rotate against each other at low frequency.
+    ``profile_deviation`` = (e_L, e_R) and ``backlash_variation`` Δb: samples [m] at the
+    phases i/n of one mesh period — where the wear and thermal sub-models enter (the
+    paper's ζ_h, ζ_T in δ_m and its b(t) = b0 + δ_e + w1 + w2 − ζ_T1 − ζ_T2).
     """
     pair = GearPair.from_scene(scene)
     if level is None:
@@ -369,6 +392,20 @@ def build_model(
     if b0 < 0:
         raise ValueError(f"backlash must be non-negative (got {b0!r})")
 
+    def _table(a, name):
+        a = np.atleast_1d(np.asarray(a, dtype=float))
+        if a.ndim != 1 or not np.all(np.isfinite(a)):
+            raise ValueError(f"{name} must be a finite 1-D array of samples over one mesh period")
+        return a
+
+    if profile_deviation is not None:
+        profile_deviation = (_table(profile_deviation[0], "profile_deviation[0]"),
+                             _table(profile_deviation[1], "profile_deviation[1]"))
+    if backlash_variation is not None:
+        backlash_variation = _table(backlash_variation, "backlash_variation")
+        if np.any(b0 + backlash_variation < 0):
+            raise ValueError("backlash + backlash_variation must stay non-negative")
+
     # ---------- torques: drive and load balance the mean mesh force ----------
     torque = np.zeros(NDOF)
     T_drv = _positive(op.torque, "operating.torque")
@@ -433,6 +470,7 @@ def build_model(
         mesh_damping=c_mesh, backlash=float(b0), mu=float(friction_coefficient), friction=ftab,
         mesh_frequency=fm, omega=omega, torque_full=torque, bearing_map=bearing_map, stagger=scene.pair.stagger,
         profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb, rayleigh=(a0, a1),
+        profile_deviation=profile_deviation, backlash_variation=backlash_variation,
         info={"g_xy": np.array([geom.g[s, 6 * s: 6 * s + 2] for s in range(2)]), "bearing_span": bearing_span, "shaft_diameter": shaft_diameter,
               "half_spacing": half, "mesh_damping_ratio": zeta_m, "v_reg": v_reg,
               "flexible_modes_hz": (wflex / (2 * math.pi)).tolist(), "load_stiffness": load_stiffness},
