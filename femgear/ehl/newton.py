@@ -33,8 +33,9 @@ from femgear.ehl.level import Level
 MAX_DP = 1.0
 MAX_LOG_ETA = 4.0
 WATCHDOG = 4
-ILU_DROP, ILU_FILL = 1e-4, 8.0
-REBUILD_KRYLOV = 8  # rebuild the preconditioner when GMRES needed more iterations
+ILU_DROP, ILU_FILL = 1e-4, 3.0
+LOCAL_RADIUS = 2  # elastic kernel kept in the local (smoother) Jacobian
+REBUILD_KRYLOV = 0  # rebuild the preconditioner when GMRES needed more iterations (0: always)
 
 
 @dataclass
@@ -161,8 +162,12 @@ class _PrecLevel:
             Jl = (self.JP + self.JH @ level.local_kernel(radius)).tocsr()
             keep = sp.diags((~act).astype(float))
             Jl = (keep @ Jl + sp.diags(act.astype(float))).tocsc()
-            self.ilu = spla.spilu(Jl, drop_tol=ILU_DROP, fill_factor=ILU_FILL,
-                                  permc_spec="NATURAL")
+            try:  # natural (flow-wise) ordering is the most effective when it works
+                self.ilu = spla.spilu(Jl, drop_tol=ILU_DROP, fill_factor=ILU_FILL,
+                                      permc_spec="NATURAL")
+            except RuntimeError:  # zero pivot: let SuperLU pivot and reorder
+                self.ilu = spla.spilu(Jl, drop_tol=ILU_DROP * 0.1, fill_factor=2 * ILU_FILL,
+                                      permc_spec="COLAMD", diag_pivot_thresh=1.0)
 
     def matvec(self, v: np.ndarray) -> np.ndarray:
         lv = self.level
@@ -196,8 +201,9 @@ class MultilevelPreconditioner:
     its transpose as restriction. Applied to unscaled residuals."""
 
     def __init__(self, levels: list[Level], transfers: list[sp.csr_matrix], PI, H0,
-                 lin, act, radius: int = 2):
+                 lin, act, radius: int | None = None):
         self.transfers = transfers
+        radius = LOCAL_RADIUS if radius is None else radius
         states = [PI]
         for k in range(len(levels) - 1, 0, -1):
             states.insert(0, _inject(levels[k - 1], levels[k], states[0]))
@@ -224,7 +230,7 @@ class MultilevelPreconditioner:
 
 
 def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: int = 30,
-                  tol: float = 1e-7, krylov_rtol: float = 1e-4, restart: int = 60,
+                  tol: float = 1e-7, krylov_rtol: float = 1e-4, restart: int = 30,
                   maxiter_krylov: int = 300, case: str = "ehl"):
     """Newton on the finest of ``levels`` with GMRES + :class:`MultilevelPreconditioner`."""
     fine = levels[-1]

@@ -130,8 +130,8 @@ class ReynoldsFE:
     def linearize(self, P: np.ndarray, H: np.ndarray) -> Linearization:
         b, rh = self.basis, self.rheology
         Pq, Hq = b.interpolate(P), b.interpolate(H)
-        eps, deps_P, deps_H = rh.epsilon(Pq.value, Hq.value, self.lam_bar)
-        rho_q, _ = rh.density(Pq.value)
+        eps, deps_P, deps_H = rh.epsilon(np.asarray(Pq), np.asarray(Hq), self.lam_bar)
+        rho_q, _ = rh.density(np.asarray(Pq))
         Pe = self.beta * rho_q * self.h**2 / (2.0 * np.maximum(eps, 1e-300))
         xi, p2xi = upwind_weight(Pe)
         eps_art = self.ad_factor * 0.5 * self.beta * rho_q * self.h**2 * xi
