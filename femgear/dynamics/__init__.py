@@ -7,13 +7,18 @@
                  friction tables with the regularised sliding sign.
 - ``model``      assembly of a scene into a frozen :class:`GearRotorModel`
                  (levels ``lumped`` and ``timoshenko``), damping, excitation.
-- ``integrate``  fixed-step RK4 (paper) and implicit HHT-α/Newmark with exact Newton
-                 on the gap; RK4 stability limit; :class:`Simulation` results.
+- ``integrate``  :func:`simulate`, one entry point for the integrators:
+  ``rk4``        fixed-step RK4 (paper) and its stability limit;
+  ``expo``       exponential integrator, exact propagators per mesh phase (the fast one);
+  ``hht``        implicit HHT-α/Newmark with exact Newton on the gap;
+  ``simulation`` the recorded :class:`Simulation` and shared input helpers.
 - ``response``   amplitudes (half peak-to-peak), mesh forces, bearing accelerations,
                  Hanning spectra with mesh orders; frozen :class:`Response`.
 - ``modal``      linearised (mean-stiffness) modal analysis with modal energy per DOF group.
+- ``sweep``      time-domain speed sweeps (DTE RMS vs mesh frequency).
 - ``sdof``       Kahraman–Singh single-DOF backlash oscillator and frequency sweeps.
-- ``plot``       PNG plots (matplotlib imported lazily) and results files.
+- ``run``        one dynamic run of a scene (model → integration → response → modes → files).
+- ``plot``, ``output``  PNG plots (matplotlib imported lazily) and results files.
 """
 
 from femgear.dynamics.integrate import Simulation, simulate, stability_limit

@@ -1,17 +1,9 @@
 """Assembly of the gear-rotor model: bodies, shafts, bearings, damping, mesh, excitation.
 
-Levels (``physics.dynamics``):
-
-- ``lumped``: the four helical halves (pinion-L/R, gear-L/R; 24 DOF) tied rigidly
-  per member (a rigid shaft between the halves), integrated in the 12 rigid-member
-  coordinates and reported in all 24.  Bearings: the scene's support stiffness and
-  damping per direction, split equally between two bearings at z = ±bearing_span/2.
-- ``timoshenko``: each member's halves and its two bearing stations joined by
-  Timoshenko shaft elements (bearing–half, half–half, half–bearing); the bearing
-  stations are condensed statically (Guyan), leaving the 24 DOF of the halves.
-
-Half bodies: mass m/2, polar inertia I/2, diametral inertia I/4 + (m/2) b²/12 (thin
-solid disc, b the helix width) — the scene gives only m and I per member.
+Levels (``physics.dynamics``), assembled by :mod:`femgear.dynamics.structure`:
+``lumped`` (the four helical halves, 24 DOF, tied rigidly per member and integrated in
+12 rigid-member coordinates) and ``timoshenko`` (halves and bearing stations joined by
+Timoshenko shaft elements, bearing stations condensed, 24 DOF).
 
 Damping: bearing dashpots (scene ``support_damping``), Rayleigh damping
 a0 M + a1 K_struct with a0, a1 chosen so that the two lowest flexible modes of the
@@ -38,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.linalg import eigh
 
-from femgear.dynamics.layout import NDOF, point_jacobian, tie_matrix
+from femgear.dynamics.layout import NDOF
 from femgear.dynamics.mesh import (
     FrictionTable,
     MeshGeometry,
@@ -51,7 +43,7 @@ from femgear.dynamics.mesh import (
     friction_table,
     mesh_geometry,
 )
-from femgear.dynamics.timoshenko import ShaftSection, guyan, shaft_element
+from femgear.dynamics.structure import require_positive, assemble_structure
 from femgear.errors import SceneError
 from femgear.excitation import Eccentricity, ProfileError, RandomError, Unbalance
 from femgear.geometry import GearPair, mesh_frequency
@@ -210,28 +202,6 @@ class GearRotorModel:
         return q0
 
 
-def _positive(value: float, key: str) -> float:
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-        raise SceneError(key, f"must be positive (got {value!r})")
-    return float(value)
-
-
-def _half_bodies(scene, pair: GearPair) -> np.ndarray:
-    """Diagonal 24×24 mass matrix of the four halves."""
-    M = np.zeros(NDOF)
-    for member, name in enumerate(("pinion", "gear")):
-        mem = getattr(scene, name)
-        m = _positive(mem.mass, f"{name}.mass") / 2
-        Ip = _positive(mem.inertia, f"{name}.inertia") / 2
-        Id = Ip / 2 + m * pair.b**2 / 12
-        for side in range(2):
-            b = 6 * (2 * member + side)
-            M[b:b + 3] = m
-            M[b + 3:b + 5] = Id
-            M[b + 5] = Ip
-    return np.diag(M)
-
-
 def rayleigh_coefficients(omega_i: float, omega_j: float, ratio: float) -> tuple[float, float]:
     """a0, a1 with ζ(ω) = a0/(2ω) + a1 ω/2 equal to ``ratio`` at ω_i and ω_j [rad/s]."""
     if ratio == 0.0:
@@ -288,7 +258,7 @@ def build_model(
 
     # ---------- speeds ----------
     op = scene.operating
-    n_drv = _positive(op.speed_rpm, "operating.speed_rpm")
+    n_drv = require_positive(op.speed_rpm, "operating.speed_rpm")
     rpm1 = n_drv if op.driver == "pinion" else n_drv * pair.z2 / pair.z1
     w1 = 2 * math.pi * rpm1 / 60
     w2 = w1 * pair.z1 / pair.z2
@@ -296,61 +266,9 @@ def build_model(
     omega = (sense * w1, -sense * w2)
     fm = mesh_frequency(pair, rpm1)
 
-    # ---------- bodies, bearings, shafts (full 24 DOF) ----------
-    M24 = _half_bodies(scene, pair)
-    zb = bearing_span / 2
-    Kb_list, Cb_list = [], []
-    for name in ("pinion", "gear"):
-        mem = getattr(scene, name)
-        Kb_list.append(_positive(mem.support_stiffness, f"{name}.support_stiffness") / 2)
-        if mem.support_damping < 0:
-            raise SceneError(f"{name}.support_damping", "must be non-negative")
-        Cb_list.append(mem.support_damping / 2)
-
-    if level == "lumped":
-        T = tie_matrix(half)
-        M = T.T @ M24 @ T
-        K = np.zeros((12, 12))
-        Cb = np.zeros((12, 12))
-        bearing_map = np.zeros((12, 12))
-        for member in range(2):
-            sl = slice(6 * member, 6 * member + 6)
-            for j, z in enumerate((-zb, zb)):
-                J = point_jacobian(np.array([0.0, 0.0, z]))
-                K[sl, sl] += Kb_list[member] * J.T @ J
-                Cb[sl, sl] += Cb_list[member] * J.T @ J
-                row = 3 * (2 * member + j)
-                bearing_map[row:row + 3, sl] = J
-    else:
-        # per member nodes: bearing_L, half_L, half_R, bearing_R → 4 × 6 DOF
-        Kfull = np.zeros((48, 48))
-        Mfull = np.zeros((48, 48))
-        Cfull = np.zeros((48, 48))
-        keep, bearing_nodes = [], []
-        for member, name in enumerate(("pinion", "gear")):
-            sec = ShaftSection(_positive(shaft_diameter[member], "shaft_diameter"), scene.material.youngs_modulus,
-                               scene.material.poisson_ratio, scene.material.density)
-            zs = (-zb, -half, half, zb)
-            base = 24 * member
-            for e in range(3):
-                Ke, Me = shaft_element(sec, zs[e + 1] - zs[e])
-                idx = np.arange(base + 6 * e, base + 6 * e + 12)
-                Kfull[np.ix_(idx, idx)] += Ke
-                Mfull[np.ix_(idx, idx)] += Me
-            for side in range(2):
-                node = base + 6 * (1 + side)
-                body = 6 * (2 * member + side)
-                Mfull[node:node + 6, node:node + 6] += M24[body:body + 6, body:body + 6]
-                keep.extend(range(node, node + 6))
-            for j, node in enumerate((base, base + 18)):
-                for d in range(3):
-                    Kfull[node + d, node + d] += Kb_list[member]
-                    Cfull[node + d, node + d] += Cb_list[member]
-                bearing_nodes.append(node)
-        K, M, Tg = guyan(Kfull, Mfull, np.array(keep))
-        Cb = Tg.T @ Cfull @ Tg
-        T = np.eye(NDOF)
-        bearing_map = np.vstack([Tg[node:node + 3] for node in bearing_nodes])
+    # ---------- bodies, bearings, shafts ----------
+    st = assemble_structure(scene, pair, level, bearing_span, shaft_diameter, half)
+    M, K, Cb, T, bearing_map, M24 = st.M, st.K, st.C, st.T, st.bearing_map, st.M24
 
     if load_stiffness < 0:
         raise ValueError(f"load_stiffness must be non-negative (got {load_stiffness!r})")
@@ -408,7 +326,7 @@ def build_model(
 
     # ---------- torques: drive and load balance the mean mesh force ----------
     torque = np.zeros(NDOF)
-    T_drv = _positive(op.torque, "operating.torque")
+    T_drv = require_positive(op.torque, "operating.torque")
     T1 = T_drv if op.driver == "pinion" else T_drv * pair.z1 / pair.z2
     T2 = T1 * pair.rb2 / pair.rb1
     for side in range(2):
