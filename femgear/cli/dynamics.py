@@ -23,6 +23,13 @@ def register(sub) -> None:
     p.add_argument("--out", type=Path, default=None, help="output folder (default: out/<meta.name>/dynamics)")
     p.add_argument("--no-plots", action="store_true", help="skip PNG figures")
     p.add_argument("--json", action="store_true", help="print one JSON summary as the last line")
+    p.add_argument("--modes", action="store_true", help="print the natural frequencies and modal energies")
+    p.add_argument("--sweep", metavar="RPM0:RPM1:N", default=None,
+                   help="instead of one run: time-domain speed sweep of the driver speed, DTE RMS vs mesh "
+                        "frequency beside the natural frequencies (writes dynamics_sweep.png)")
+    p.add_argument("--kahraman-singh", action="store_true",
+                   help="instead of one run: up/down frequency sweeps of the Kahraman-Singh backlash oscillator "
+                        "(writes kahraman_singh.png)")
     p.set_defaults(func=_run)
 
 
@@ -32,6 +39,10 @@ def _run(args: argparse.Namespace) -> int:
 
     scene = load_scene(args.scene, args.overrides)
     out = args.out or Path("out") / scene.meta.name / "dynamics"
+    if args.sweep:
+        return _sweep(scene, args, out)
+    if args.kahraman_singh:
+        return _kahraman_singh(args, out)
     run = run_dynamics(scene, out, level=args.level, stiffness=args.stiffness, method=args.method, dt=args.dt,
                        cycles=args.cycles, transient_cycles=args.transient, plots=not args.no_plots)
     if args.json:
@@ -46,4 +57,78 @@ def _run(args: argparse.Namespace) -> int:
                   f"{a[member + '.velocity.x'] * 1e3:.4f}/{a[member + '.velocity.y'] * 1e3:.4f} mm/s (half peak-to-peak)")
         for name, path in run.files.items():
             print(f"{name}: {path}")
+    if args.modes and not args.json:
+        _print_modes(run.modal)
+    return 0
+
+
+def _print_modes(modal) -> None:
+    print(f"{'mode':>4s} {'f [Hz]':>9s} {'mesh energy':>11s}  dominant kinetic-energy group")
+    for i, f in enumerate(modal.frequencies):
+        print(f"{i:4d} {f:9.1f} {modal.energy['mesh'][i]:11.2f}  {modal.dominant_group(i)}")
+
+
+def _sweep(scene, args, out: Path) -> int:
+    import numpy as np
+
+    from femgear.dynamics import build_model
+    from femgear.dynamics.modal import modal_analysis
+    from femgear.dynamics.sweep import speed_sweep
+    from femgear.errors import FemgearError
+
+    try:
+        a, b, n = args.sweep.split(":")
+        rpm = np.linspace(float(a), float(b), int(n))
+    except ValueError:
+        raise FemgearError(f"--sweep: expected RPM0:RPM1:N, got {args.sweep!r}") from None
+    kw = {"level": args.level, "stiffness": args.stiffness}
+    sw = speed_sweep(scene, rpm, method=args.method or "rk4", **kw)
+    modal = modal_analysis(build_model(scene, **kw))
+    files = {}
+    if not args.no_plots:
+        from femgear.dynamics.plot import plot_sweep
+
+        files["sweep"] = plot_sweep(sw, out / "dynamics_sweep.png", modal)
+    if args.json:
+        from femgear.cli.common import emit_json
+
+        emit_json({"speed_rpm": sw.speed_rpm, "mesh_frequency": sw.mesh_frequency, "dte_rms": sw.dte_rms,
+                   "natural_frequencies_hz": modal.frequencies, "mesh_energy": modal.energy["mesh"],
+                   "files": {k: str(v) for k, v in files.items()}})
+        return 0
+    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s}")
+    for r, f, d in zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms):
+        print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f}")
+    _print_modes(modal)
+    for name, path in files.items():
+        print(f"{name}: {path}")
+    return 0
+
+
+def _kahraman_singh(args, out: Path) -> int:
+    import numpy as np
+
+    from femgear.dynamics.sdof import kahraman_singh_sweep
+
+    w = np.linspace(0.6, 1.3, 36)
+    up, down = kahraman_singh_sweep(w, direction="up"), kahraman_singh_sweep(w, direction="down")
+    files = {}
+    if not args.no_plots:
+        from femgear.dynamics.plot import plot_branches
+
+        files["branches"] = plot_branches(up, down, out / "kahraman_singh.png")
+    a_down, loss_down = down.amplitude[::-1], down.contact_loss[::-1]
+    if args.json:
+        from femgear.cli.common import emit_json
+
+        emit_json({"frequency": up.frequency, "amplitude_up": up.amplitude, "amplitude_down": a_down,
+                   "contact_loss_up": up.contact_loss, "contact_loss_down": loss_down,
+                   "files": {k: str(v) for k, v in files.items()}})
+        return 0
+    print("Kahraman-Singh oscillator, ζ = 0.05, F_m = 0.1, F_a = 0.02 (lengths over the backlash b)")
+    print(f"{'Ω':>6s} {'amp up':>8s} {'amp down':>9s} {'loss up':>8s} {'loss down':>9s}")
+    for i, om in enumerate(up.frequency):
+        print(f"{om:6.3f} {up.amplitude[i]:8.4f} {a_down[i]:9.4f} {up.contact_loss[i]:8.2f} {loss_down[i]:9.2f}")
+    for name, path in files.items():
+        print(f"{name}: {path}")
     return 0

@@ -74,3 +74,11 @@ def test_formula_friction_along_the_path(baseline_scene):
     assert m.mu == 1.0
     assert np.abs(m.friction.A).max() < 0.06 and np.abs(m.friction.B).max() < 0.06 * np.abs(c.friction.B).max() / 0.05 * 1.5
     assert np.abs(m.friction.B).max() > 0
+
+
+def test_cli_kahraman_singh_json(baseline_path, tmp_path):
+    out = subprocess.run([sys.executable, "-m", "femgear.cli", "dynamics", str(baseline_path), "--kahraman-singh",
+                          "--no-plots", "--json", "--out", str(tmp_path)], capture_output=True, text=True, check=True)
+    payload = json.loads(out.stdout.strip().splitlines()[-1])
+    gap = np.array(payload["amplitude_down"]) - np.array(payload["amplitude_up"])
+    assert gap.max() > 0.05
