@@ -122,6 +122,9 @@ def main(argv: list[str]) -> int:
     for r in rows:
         print(f"{r['method']:8s} {r['dt']:10.3g} {r['steps_per_mesh_period']:9.1f} {r['max_amplitude_error']:8.2%} "
               f"{r['seconds_per_100_periods']:10.3f} {r['setup_seconds']:15.3f}")
+    print("step-size convergence (steps per mesh period: max amplitude error):")
+    for r in rows:
+        print(f"  {r['method']:8s} " + ", ".join(f"{model.mesh_period / dt:.0f}: {err:.2%}" for dt, err in r["history"]))
     print(json.dumps({"benchmark": "dynamics", "quick": quick, **{
         f"{r['method']}_s_per_100_periods": round(r["seconds_per_100_periods"], 4) for r in rows}, **{
         f"{r['method']}_dt": r["dt"] for r in rows}, "expo_setup_s": round(rows[1]["setup_seconds"], 4)}))
