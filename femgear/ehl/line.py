@@ -48,28 +48,39 @@ def solve_line(M: float, L: float, *, level: int = 6, coarse_level: int = 4,
         return Level(rheo, pr.line_lam_bar(M), pr.LINE_LOAD, x=x, ad_factor=ad_factor,
                      sd_factor=sd_factor)
 
-    lv = make(1.0, coarse_level)
     hist = History()
-    P = np.sqrt(np.maximum(1.0 - lv.X**2, 0.0))[lv.interior]
-    P *= lv.load / (lv.m @ P)
-    i0 = int(np.argmin(np.abs(lv.X)))
-    H0 = float(moes_line_central(M, L)) / fac - float(lv.deflection(lv.full(P))[i0])
-    P_start, H0_start = P.copy(), H0
-    try:
-        P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=tol, case=case)
-        hist.extend(h)
-    except ConvergenceError as exc:
-        hist.extend(History(**exc.history))
-        P, H0 = P_start, H0_start
-        for frac in CONTINUATION:
-            stage = lv if frac == 1.0 else make(frac, coarse_level)
-            try:
-                P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=tol, case=case)
-            except ConvergenceError as exc2:
-                hist.extend(History(**exc2.history))
-                raise ConvergenceError(case, f"alpha continuation failed at {frac}",
-                                       hist.as_dict()) from exc2
+
+    def direct(lev: int):
+        lv = make(1.0, lev)
+        P = np.sqrt(np.maximum(1.0 - lv.X**2, 0.0))[lv.interior]
+        P *= lv.load / (lv.m @ P)
+        i0 = int(np.argmin(np.abs(lv.X)))
+        H0 = float(moes_line_central(M, L)) / fac - float(lv.deflection(lv.full(P))[i0])
+        P_start, H0_start = P.copy(), H0
+        try:
+            P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=tol, case=case)
             hist.extend(h)
+            return lv, P, H0
+        except ConvergenceError as exc:
+            hist.extend(History(**exc.history))
+        P, H0 = P_start, H0_start
+        for frac in CONTINUATION:  # continuation in alpha_bar
+            stage = lv if frac == 1.0 else make(frac, lev)
+            P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=tol, case=case)
+            hist.extend(h)
+        return lv, P, H0
+
+    # a coarse grid cannot carry a very thin film (high M): refine the start level
+    for start in range(min(coarse_level, level), level + 1):
+        try:
+            lv, P, H0 = direct(start)
+            break
+        except ConvergenceError as exc:
+            hist.extend(History(**exc.history))
+            if start == level:
+                raise ConvergenceError(case, "no convergence from a Hertzian start on any "
+                                       "level", hist.as_dict()) from exc
+    coarse_level = start
     per_level = [_line_summary(lv, P, H0, fac, len(hist.residual), t0)]
     for k in range(coarse_level + 1, level + 1):
         fine = make(1.0, k)

@@ -142,6 +142,8 @@ def _result(kind, M, L, level: Level, PI, H0, fac, hist: History, per_level, sec
     P, H = level.film(PI, H0)
     if not (np.all(np.isfinite(P)) and np.all(np.isfinite(H))):
         raise ConvergenceError(f"ehl {kind}", "non-finite solution", hist.as_dict())
+    # the active set holds P = 0 up to round-off of the last Newton update
+    P = np.where(np.abs(P) <= 1e-12 * max(P.max(), 1.0), np.maximum(P, 0.0), P)
     if level.dim == 2:
         g = level.grid
         x, y = g.x, g.y
