@@ -82,3 +82,13 @@ def test_cli_kahraman_singh_json(baseline_path, tmp_path):
     payload = json.loads(out.stdout.strip().splitlines()[-1])
     gap = np.array(payload["amplitude_down"]) - np.array(payload["amplitude_up"])
     assert gap.max() > 0.05
+
+
+def test_hermite_amplitude_of_a_coarsely_sampled_sine():
+    from femgear.dynamics.response import hermite_half_peak_to_peak
+
+    w = 2 * np.pi / 8                                          # 8 samples per period, arbitrary phase
+    for phase in np.linspace(0, 1, 5):
+        k = np.arange(100)
+        x, dx = 3e-6 * np.sin(w * k + phase), 3e-6 * w * np.cos(w * k + phase)
+        assert abs(hermite_half_peak_to_peak(x, dx, 1.0) / 3e-6 - 1) < 3e-3
