@@ -33,5 +33,7 @@ def test_line_dimensional_hertz_width():
     r = solve_line_dimensional(2.0e5, R, UM, E, OIL, level=5)
     Wl = 2.0e5 / (E * R)
     assert r.a == pytest.approx(R * (8 * Wl / 3.141592653589793) ** 0.5, rel=1e-12)
-    assert 0.8 * r.ph < r.pmax < 1.5 * r.ph
+    assert r.pmax > 0.8 * r.ph  # (a low-M case: the outlet spike reaches ~2 p_h)
+    dx = r.x[1] - r.x[0]
+    assert r.p.sum() * dx == pytest.approx(2.0e5, rel=1e-6)  # load balance in N/m
     assert 0 < r.hmin < r.hc
