@@ -5,6 +5,7 @@
 - ``mesh``       line-of-action vectors per helix, mesh-stiffness tables (constant,
                  contact-line TVMS; any TVMS plugs in as a :class:`MeshStiffness`),
                  friction tables with the regularised sliding sign.
+- ``structure``  half bodies, bearings and shafts per level (rigid tie or Timoshenko + Guyan).
 - ``model``      assembly of a scene into a frozen :class:`GearRotorModel`
                  (levels ``lumped`` and ``timoshenko``), damping, excitation.
 - ``integrate``  :func:`simulate`, one entry point for the integrators:
@@ -23,9 +24,13 @@
 
 from femgear.dynamics.integrate import Simulation, simulate, stability_limit
 from femgear.dynamics.mesh import MeshStiffness, constant_stiffness, contact_line_stiffness
+from femgear.dynamics.modal import ModalResult, modal_analysis
 from femgear.dynamics.model import GearRotorModel, build_model
+from femgear.dynamics.response import Response, analyse
+from femgear.dynamics.run import DynamicsRun, run_dynamics
 
 __all__ = [
-    "GearRotorModel", "MeshStiffness", "Simulation", "build_model", "constant_stiffness",
-    "contact_line_stiffness", "simulate", "stability_limit",
+    "DynamicsRun", "GearRotorModel", "MeshStiffness", "ModalResult", "Response", "Simulation", "analyse",
+    "build_model", "constant_stiffness", "contact_line_stiffness", "modal_analysis", "run_dynamics", "simulate",
+    "stability_limit",
 ]
