@@ -10,6 +10,7 @@ Nijenbanning, Venner & Moes 1994).
 
 from __future__ import annotations
 
+import math
 import time
 
 import numpy as np
@@ -75,50 +76,58 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
     coarse = levels[0]
     hist = History()
 
-    def coarse_solve(M_: float, lv: Level, depth: int = 0):
-        """Direct start; else continuation in alpha_bar; else continuation in M."""
+    def hertz(lv: Level, M_: float):
         PI = _hertz_start(lv, ratio)
-        fac_ = pr.point_h_moes_factor(M_)
-        H0 = float(nvm_central(M_, L, ratio)) / fac_ - float(
+        H0 = float(nvm_central(M_, L, ratio)) / pr.point_h_moes_factor(M_) - float(
             lv.deflection(lv.full(PI))[np.argmin(lv.X**2 + lv.Y**2)])
-        try:
-            PI, H0, h = newton_dense(lv, PI, H0, max_iter=max_iter, tol=tol, case=case)
-            hist.extend(h)
-            return PI, H0
-        except ConvergenceError as exc:
-            hist.extend(History(**exc.history))
-        try:  # continuation in alpha_bar from the isoviscous problem
-            for frac in CONTINUATION:
-                stage = lv if frac == 1.0 else make(M_, frac, coarse_level)
-                PI, H0, h = newton_dense(stage, PI, H0, max_iter=max_iter, tol=tol, case=case)
-                hist.extend(h)
-            return PI, H0
-        except ConvergenceError as exc:
-            hist.extend(History(**exc.history))
-        if M_ <= 20.0 or depth > 4:
-            raise ConvergenceError(case, "no convergence on the coarse level (direct start, "
-                                   "alpha and load continuation)", hist.as_dict())
-        # continuation in the load: solve at M/2 and restart from it (Hertzian units)
-        PI, H0 = coarse_solve(M_ / 2.0, make(M_ / 2.0, 1.0, coarse_level), depth + 1)
-        PI, H0, h = newton_dense(lv, PI, H0, max_iter=max_iter, tol=tol, case=case)
+        return PI, H0
+
+    def solve_on(lvs: list[Level], PI, H0):
+        if len(lvs) == 1:
+            PI, H0, h = newton_dense(lvs[0], PI, H0, max_iter=max_iter, tol=tol, case=case)
+        else:
+            PI, H0, h = newton_krylov(lvs, PI, H0, max_iter=max_iter, tol=tol, case=case)
         hist.extend(h)
         return PI, H0
 
-    start = 1
-    try:
-        PI, H0 = coarse_solve(M, coarse)
-    except ConvergenceError:
-        if len(levels) < 2:
-            raise
-        # the coarse grid cannot carry this case (thin film at high M): start the next
-        # level from Hertz with Newton-Krylov; the coarse level still preconditions it
-        nxt = levels[1]
-        PI = _hertz_start(nxt, ratio)
-        H0 = float(nvm_central(M, L, ratio)) / fac - float(
-            nxt.deflection(nxt.full(PI))[np.argmin(nxt.X**2 + nxt.Y**2)])
-        PI, H0, h = newton_krylov(levels[:2], PI, H0, max_iter=max_iter, tol=tol, case=case)
-        hist.extend(h)
-        start = 2
+    def attempt(lvs, PI, H0):
+        try:
+            return solve_on(lvs, PI, H0)
+        except ConvergenceError as exc:
+            hist.extend(History(**exc.history))
+            return None
+
+    def start_solve(M_: float, depth: int = 0):
+        """(PI, H0, n) for load M_ on the n-th level: (1) dense Newton on the coarse level
+        from Hertz, (2) with continuation in alpha_bar, (3) Newton-Krylov on the next
+        level from Hertz (a coarse grid cannot carry a very thin film), (4) continuation
+        in the load from M_/sqrt(2) (solutions in Hertzian units are close)."""
+        lvs = levels if M_ == M else [make(M_, 1.0, k) for k in range(coarse_level, level + 1)]
+        got = attempt(lvs[:1], *hertz(lvs[0], M_))
+        if got:
+            return (*got, 1)
+        PI, H0 = hertz(lvs[0], M_)
+        for frac in CONTINUATION:
+            stage = lvs[0] if frac == 1.0 else make(M_, frac, coarse_level)
+            got = attempt([stage], PI, H0)
+            if not got:
+                break
+            PI, H0 = got
+        else:
+            return PI, H0, 1
+        if len(lvs) > 1:
+            got = attempt(lvs[:2], *hertz(lvs[1], M_))
+            if got:
+                return (*got, 2)
+        if M_ > 20.0 and depth < 8:
+            PI, H0, n = start_solve(M_ / math.sqrt(2.0), depth + 1)
+            got = attempt(lvs[:n], PI, H0)
+            if got:
+                return (*got, n)
+        raise ConvergenceError(case, f"no start at M={M_:g} (direct, alpha and load "
+                               "continuation, next-level Newton-Krylov)", hist.as_dict())
+
+    PI, H0, start = start_solve(M)
     per_level = [_level_summary(levels[start - 1], PI, H0, fac, len(hist.residual), t0)]
     for k in range(start, len(levels)):
         fine, prev = levels[k], levels[k - 1]
