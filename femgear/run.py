@@ -6,7 +6,8 @@ the ``lubrication`` level (``none``, ``constant`` μ, or ``formula``: thermal Ey
 traction of the Hertzian film, :mod:`femgear.friction`); the mesh stiffness of the
 ``stiffness`` level over one mesh period; with ``thermal`` on, the thermal flank
 deviation of both members for ``thermal.flank_temperature_rise``; with ``wear =
-"archard"``, the wear depth of both flanks after ``wear.cycles``.
+"archard"``, the wear depth of both flanks after ``wear.cycles``; with ``dynamics`` on,
+the gear-rotor dynamics (:func:`femgear.dynamics.run.run_dynamics`).
 """
 
 from __future__ import annotations
@@ -67,10 +68,17 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         along_path.update(wear_pinion=state.h1, wear_gear=state.h2)
         summary["wear"] = {"cycles": state.cycles, "steps": state.steps,
                            "max_depth_pinion": float(state.h1.max()), "max_depth_gear": float(state.h2.max())}
-    files = {"results": write_json(out_dir / "results.json", {
+    files: dict[str, Path] = {}
+    if scene.physics.dynamics != "none":
+        from femgear.dynamics.run import run_dynamics
+
+        dyn = run_dynamics(scene, out_dir, plots=plots)
+        summary["dynamics"] = dyn.summary
+        files.update({f"dynamics_{k}": v for k, v in dyn.files.items()})
+    files["results"] = write_json(out_dir / "results.json", {
         "summary": summary, "scene": scene.model_dump(), "along_path": along_path,
         "mesh_stiffness": stiffness["table"],
-    })}
+    })
     if plots:
         from femgear.plot.path import plot_contact_path
 

@@ -3,7 +3,7 @@
 - ``layout``     DOF numbering, frame, rigid-body point Jacobians, the rigid-shaft tie.
 - ``timoshenko`` 12×12 Timoshenko shaft element (stiffness, consistent mass), Guyan.
 - ``mesh``       line-of-action vectors per helix, mesh-stiffness tables (constant,
-                 contact-line TVMS; any TVMS plugs in as a :class:`MeshStiffness`),
+                 contact-line TVMS; any TVMS plugs in as a :class:`StiffnessTable`),
                  friction tables with the regularised sliding sign.
 - ``structure``  half bodies, bearings and shafts per level (rigid tie or Timoshenko + Guyan).
 - ``model``      assembly of a scene into a frozen :class:`GearRotorModel`
@@ -23,14 +23,14 @@
 """
 
 from femgear.dynamics.integrate import Simulation, simulate, stability_limit
-from femgear.dynamics.mesh import MeshStiffness, constant_stiffness, contact_line_stiffness
+from femgear.dynamics.mesh import StiffnessTable, constant_stiffness, contact_line_stiffness
 from femgear.dynamics.modal import ModalResult, modal_analysis
 from femgear.dynamics.model import GearRotorModel, build_model
 from femgear.dynamics.response import Response, analyse
 from femgear.dynamics.run import DynamicsRun, run_dynamics
 
 __all__ = [
-    "DynamicsRun", "GearRotorModel", "MeshStiffness", "ModalResult", "Response", "Simulation", "analyse",
+    "DynamicsRun", "GearRotorModel", "StiffnessTable", "ModalResult", "Response", "Simulation", "analyse",
     "build_model", "constant_stiffness", "contact_line_stiffness", "modal_analysis", "run_dynamics", "simulate",
     "stability_limit",
 ]

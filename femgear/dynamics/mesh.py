@@ -19,7 +19,7 @@ axial force at two different points and breaks action = reaction.  The generalis
 mesh force is −F_s g_s, so action = reaction and energy conservation hold by
 construction.
 
-Mesh stiffness enters as a :class:`MeshStiffness`: k_L, k_R over ONE mesh period,
+Mesh stiffness enters as a :class:`StiffnessTable`: k_L, k_R over ONE mesh period,
 sampled at equidistant mesh phases φ ∈ [0, 1) and interpolated periodically — any
 TVMS model (ISO 6336, potential energy, FE) plugs in by producing such a table, or by
 any object with the same ``__call__(phase) -> (k_L, k_R)``.
@@ -74,7 +74,7 @@ def periodic_slope(samples: np.ndarray, phase: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class MeshStiffness:
+class StiffnessTable:
     """Mesh stiffness of the left and right helix over one mesh period [N/m].
 
     ``k_left``/``k_right`` are samples at phases ``i/n`` (i = 0..n−1) of one mesh
@@ -90,9 +90,9 @@ class MeshStiffness:
         kl = np.atleast_1d(np.asarray(self.k_left, dtype=float))
         kr = np.atleast_1d(np.asarray(self.k_right, dtype=float))
         if kl.shape != kr.shape or kl.ndim != 1:
-            raise ValueError("MeshStiffness: k_left and k_right must be 1-D arrays of equal length")
+            raise ValueError("StiffnessTable: k_left and k_right must be 1-D arrays of equal length")
         if not (np.all(kl > 0) and np.all(kr > 0)) or not np.all(np.isfinite(kl + kr)):
-            raise ValueError("MeshStiffness: mesh stiffness must be positive and finite (k_left/k_right)")
+            raise ValueError("StiffnessTable: mesh stiffness must be positive and finite (k_left/k_right)")
         object.__setattr__(self, "k_left", kl)
         object.__setattr__(self, "k_right", kr)
 
@@ -108,30 +108,30 @@ class MeshStiffness:
         return float(max(self.k_left.max(), self.k_right.max()))
 
 
-def as_mesh_stiffness(source, samples: int = 256) -> MeshStiffness:
-    """A :class:`MeshStiffness` from any TVMS: itself, or any callable phase -> (k_L, k_R).
+def as_stiffness_table(source, samples: int = 256) -> StiffnessTable:
+    """A :class:`StiffnessTable` from any TVMS: itself, or any callable phase -> (k_L, k_R).
 
     Callables (e.g. :class:`femgear.stiffness.MeshStiffness`) are sampled at
     ``samples`` equidistant phases of one mesh period (base pitches, phase = f_m t).
     """
-    if isinstance(source, MeshStiffness):
+    if isinstance(source, StiffnessTable):
         return source
     if not callable(source):
-        raise TypeError(f"mesh stiffness must be a MeshStiffness or a callable phase -> (k_left, k_right), got {type(source)!r}")
+        raise TypeError(f"mesh stiffness must be a StiffnessTable or a callable phase -> (k_left, k_right), got {type(source)!r}")
     phases = np.arange(samples) / samples
     kl, kr = source(phases)
-    return MeshStiffness(np.asarray(kl, float), np.asarray(kr, float), label=str(getattr(source, "level", "callable")))
+    return StiffnessTable(np.asarray(kl, float), np.asarray(kr, float), label=str(getattr(source, "level", "callable")))
 
 
-def constant_stiffness(pair: GearPair, c_gamma: float) -> MeshStiffness:
+def constant_stiffness(pair: GearPair, c_gamma: float) -> StiffnessTable:
     """``constant`` level: k = c_γ b per helix (c_γ [N/m per m of face width])."""
     if not c_gamma > 0:
         raise ValueError(f"c_gamma (stiffness.mesh_stiffness_per_width) must be positive (got {c_gamma!r})")
     k = c_gamma * pair.b
-    return MeshStiffness(np.array([k]), np.array([k]), label="constant")
+    return StiffnessTable(np.array([k]), np.array([k]), label="constant")
 
 
-def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0, samples: int = 256) -> MeshStiffness:
+def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0, samples: int = 256) -> StiffnessTable:
     """Contact-line-length TVMS: k_s(φ) = c_γ b · L_s(φ) / L̄, L̄ = ε_α b / cos β_b.
 
     Stiffness per unit length of contact line is taken constant (ISO 6336-1's c_γ is a
@@ -146,7 +146,7 @@ def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0,
     c = double_helical_contact(pair, phases, stagger)
     mean_length = pair.mean_contact_length
     scale = c_gamma * pair.b / mean_length
-    return MeshStiffness(scale * c["length_left"], scale * c["length_right"], label="contact-line")
+    return StiffnessTable(scale * c["length_left"], scale * c["length_right"], label="contact-line")
 
 
 @dataclass(frozen=True)

@@ -34,8 +34,8 @@ from femgear.dynamics.layout import NDOF
 from femgear.dynamics.mesh import (
     FrictionTable,
     MeshGeometry,
-    MeshStiffness,
-    as_mesh_stiffness,
+    StiffnessTable,
+    as_stiffness_table,
     constant_stiffness,
     periodic_interp,
     periodic_slope,
@@ -64,7 +64,7 @@ class GearRotorModel:
     G: np.ndarray            #: (2, n) mesh gradients ∂δ_s/∂q
     H0: np.ndarray           #: (2, n) friction direction at the pitch point
     H1: np.ndarray           #: (2, n) its gradient along the path [1/m]
-    stiffness: MeshStiffness
+    stiffness: StiffnessTable
     mesh_damping: np.ndarray  #: (2,) c_s [N s/m]
     backlash: float          #: b [m]
     mu: float                #: friction coefficient [-]
@@ -213,30 +213,32 @@ def build_model(
     scene,
     level: str | None = None,
     *,
-    stiffness: MeshStiffness | str | None = None,
-    rayleigh_ratio: float = 0.03,
+    stiffness: StiffnessTable | str | None = None,
+    rayleigh_ratio: float | None = None,
     mesh_damping_ratio: float | None = None,
     friction_coefficient: float | None = None,
-    v_reg: float = 0.01,
-    bearing_span: float = 0.10,
-    shaft_diameter: tuple[float, float] = (0.040, 0.040),
+    v_reg: float | None = None,
+    bearing_span: tuple[float, float] | None = None,
+    shaft_diameter: tuple[float, float] | None = None,
     backlash: float | None = None,
-    load_stiffness: float = 0.0,
+    load_stiffness: float | None = None,
     profile_deviation: tuple[np.ndarray, np.ndarray] | None = None,
     backlash_variation: np.ndarray | None = None,
 ) -> GearRotorModel:
     """Assemble the model of a scene.
 
     ``level``: "lumped" or "timoshenko" (default: the scene's ``physics.dynamics``, and
-    "lumped" when that is "none").  ``stiffness``: a :class:`MeshStiffness` table (any
+    "lumped" when that is "none").  ``stiffness``: a :class:`StiffnessTable` table (any
     TVMS model), "constant" (c_γ b) or "contact-line" (contact-line-length TVMS), or
     a level of :mod:`femgear.stiffness` ("iso6336", "pem", "fe"); default follows
-    ``physics.stiffness``.  ``friction_coefficient``: a number, or "formula" for the
+    ``physics.stiffness``.  ``friction_coefficient``: a number, a callable μ(u) of the path position u [m], or "formula" for the
     thermal-Eyring μ(u) along the path of :func:`femgear.friction.path.friction_along_path`
-    (U-shaped, zero at the pitch point); default ``friction.coefficient`` unless
-    ``physics.lubrication = "none"``.
-    ``bearing_span`` [m] (distance of the two bearings of a member) and
-    ``shaft_diameter`` [m] (pinion, gear) are not scene keys yet.  ``load_stiffness``
+    (U-shaped, zero at the pitch point); default from ``physics.lubrication``: 0 for
+    ``none``, ``friction.coefficient`` for ``constant``, "formula" otherwise.
+    ``bearing_span``, ``shaft_diameter`` [m] (pinion, gear), ``rayleigh_ratio``,
+    ``v_reg`` and ``load_stiffness`` default to the scene keys ``<member>.bearing_span``,
+    ``<member>.shaft_diameter``, ``stiffness.rayleigh_ratio``,
+    ``friction.regularisation_speed`` and ``operating.loop_stiffness``.  ``load_stiffness``
     [N m/rad]: torsional stiffness of a closed power loop (FZG-type rig: pinion shaft,
     slave gearbox, gear shaft), referred to the gear shaft, resisting the relative twist
     θz_gear + (r_b1/r_b2) θz_pinion; 0 (default, the paper's equations: prescribed
@@ -250,9 +252,18 @@ def build_model(
         level = scene.physics.dynamics if scene.physics.dynamics in LEVELS else "lumped"
     if level not in LEVELS:
         raise SceneError("physics.dynamics", f"unknown dynamics level {level!r}; choose one of {', '.join(LEVELS)}")
+    if bearing_span is None:
+        bearing_span = (scene.pinion.bearing_span, scene.gear.bearing_span)
+    if shaft_diameter is None:
+        shaft_diameter = (scene.pinion.shaft_diameter, scene.gear.shaft_diameter)
+    rayleigh_ratio = scene.stiffness.rayleigh_ratio if rayleigh_ratio is None else rayleigh_ratio
+    v_reg = scene.friction.regularisation_speed if v_reg is None else v_reg
+    load_stiffness = scene.operating.loop_stiffness if load_stiffness is None else load_stiffness
     half = 0.5 * (pair.b + scene.pair.groove_width)
-    if not bearing_span > 2 * half:
-        raise ValueError(f"bearing_span must exceed the distance of the helix centres {2 * half:.4g} m (got {bearing_span!r})")
+    for name, span in zip(("pinion", "gear"), bearing_span):
+        if not span > 2 * half:
+            raise SceneError(f"{name}.bearing_span",
+                             f"must exceed the distance of the helix centres {2 * half:.4g} m (got {span!r})")
     if not 0 <= rayleigh_ratio < 1:
         raise ValueError(f"rayleigh_ratio must be in [0, 1) (got {rayleigh_ratio!r})")
 
@@ -298,7 +309,7 @@ def build_model(
             from femgear.stiffness import mesh_stiffness_from_scene
 
             stiffness = mesh_stiffness_from_scene(scene, level=stiffness)
-    stiffness = as_mesh_stiffness(stiffness)
+    stiffness = as_stiffness_table(stiffness)
     zeta_m = scene.stiffness.damping_ratio if mesh_damping_ratio is None else mesh_damping_ratio
     if not 0 <= zeta_m < 1:
         raise ValueError(f"mesh_damping_ratio must be in [0, 1) (got {zeta_m!r})")
@@ -336,7 +347,10 @@ def build_model(
     # ---------- friction ----------
     mu_of_u = None
     if friction_coefficient is None:
-        friction_coefficient = 0.0 if scene.physics.lubrication == "none" else scene.friction.coefficient
+        lub = scene.physics.lubrication
+        friction_coefficient = {"none": 0.0, "constant": scene.friction.coefficient}.get(lub, "formula")
+    if callable(friction_coefficient):              # μ(u) along the path, e.g. from the coupling loop
+        mu_of_u, friction_coefficient = friction_coefficient, 1.0
     elif isinstance(friction_coefficient, str):
         if friction_coefficient != "formula":
             raise ValueError(f"friction_coefficient must be a number or 'formula' (got {friction_coefficient!r})")

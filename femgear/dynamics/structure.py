@@ -58,12 +58,13 @@ def _half_bodies(scene, pair: GearPair) -> np.ndarray:
     return np.diag(M)
 
 
-def assemble_structure(scene, pair: GearPair, level: str, bearing_span: float,
+def assemble_structure(scene, pair: GearPair, level: str, bearing_span: tuple[float, float],
                        shaft_diameter: tuple[float, float], half: float) -> Structure:
-    """The structure of a scene at ``level`` ("lumped" or "timoshenko"); ``half`` = z of the helix centres."""
-        # ---------- bodies, bearings, shafts (full 24 DOF) ----------
+    """The structure of a scene at ``level`` ("lumped" or "timoshenko"); ``half`` = z of the helix centres.
+
+    ``bearing_span`` and ``shaft_diameter`` are (pinion, gear) values [m].
+    """
     M24 = _half_bodies(scene, pair)
-    zb = bearing_span / 2
     Kb_list, Cb_list = [], []
     for name in ("pinion", "gear"):
         mem = getattr(scene, name)
@@ -80,6 +81,7 @@ def assemble_structure(scene, pair: GearPair, level: str, bearing_span: float,
         bearing_map = np.zeros((12, 12))
         for member in range(2):
             sl = slice(6 * member, 6 * member + 6)
+            zb = bearing_span[member] / 2
             for j, z in enumerate((-zb, zb)):
                 J = point_jacobian(np.array([0.0, 0.0, z]))
                 K[sl, sl] += Kb_list[member] * J.T @ J
@@ -95,6 +97,7 @@ def assemble_structure(scene, pair: GearPair, level: str, bearing_span: float,
         for member, name in enumerate(("pinion", "gear")):
             sec = ShaftSection(require_positive(shaft_diameter[member], "shaft_diameter"), scene.material.youngs_modulus,
                                scene.material.poisson_ratio, scene.material.density)
+            zb = bearing_span[member] / 2
             zs = (-zb, -half, half, zb)
             base = 24 * member
             for e in range(3):

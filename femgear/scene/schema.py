@@ -67,6 +67,8 @@ class Member(_Frozen):
     eccentricity: NonNeg = Field(0.0, description="geometric eccentricity e_r [m]")
     eccentricity_phase_deg: float = Field(0.0, description="phase θ of the eccentricity [deg]")
     unbalance: NonNeg = Field(0.0, description="mass unbalance m·e [kg m]")
+    bearing_span: Pos = Field(0.10, description="distance between the member's two bearings [m]")
+    shaft_diameter: Pos = Field(0.040, description="solid shaft diameter (timoshenko level) [m]")
 
 
 class Material(_Frozen):
@@ -107,6 +109,9 @@ class Operating(_Frozen):
     speed_rpm: Pos = Field(description="speed of the driving member [rev/min]")
     torque: Pos = Field(description="torque on the driving member [N m]")
     ambient_temperature: Pos = Field(313.0, description="ambient and oil supply temperature [K]")
+    loop_stiffness: NonNeg = Field(
+        0.0, description="torsional stiffness of a closed power loop (FZG rig), referred to the gear shaft; "
+                         "0 = prescribed torques as in the paper [N m/rad]")
 
 
 class Errors(_Frozen):
@@ -123,6 +128,7 @@ class Friction(_Frozen):
     """``[friction]``: used when ``physics.lubrication = "constant"``."""
 
     coefficient: float = Field(0.05, ge=0, le=0.5, description="friction coefficient μ [-]")
+    regularisation_speed: Pos = Field(0.01, description="v_reg of the sliding sign tanh(v_s/v_reg) [m/s]")
 
 
 class Stiffness(_Frozen):
@@ -132,6 +138,7 @@ class Stiffness(_Frozen):
         2.0e10, description="mean mesh stiffness per unit face width c_γ [N/m per m], ISO typical 20 N/(mm µm)"
     )
     damping_ratio: float = Field(0.07, ge=0, lt=1, description="mesh damping ratio ζ_m [-]")
+    rayleigh_ratio: float = Field(0.03, ge=0, lt=1, description="Rayleigh damping ratio of the two lowest modes [-]")
     n_slices: int = Field(100, ge=1, le=2000, description="slices along the face width (pem, fe levels) [-]")
     n_positions: int = Field(200, ge=2, le=5000, description="mesh phases sampled per mesh period [-]")
     fe_mesh_size: Pos | None = Field(None, description="FE tooth mesh size (fe level) [m]; default m_n/2.5")
@@ -160,6 +167,11 @@ class Numerics(_Frozen):
     """``[numerics]``: resolution knobs shared by the pass along the path of contact."""
 
     path_points: int = Field(41, ge=3, le=10001, description="positions along the path of contact [-]")
+    dynamics_method: Literal["expo", "rk4", "newmark"] | None = Field(
+        None, description="integrator; default expo for lumped, rk4 for timoshenko")
+    steps_per_mesh_period: int = Field(200, ge=10, le=100000, description="time steps per mesh period [-]")
+    dynamics_cycles: Pos = Field(100.0, description="simulated mesh periods [-]")
+    transient_cycles: NonNeg = Field(50.0, description="mesh periods dropped as transient (paper: 50) [-]")
 
 
 class Physics(_Frozen):

@@ -29,10 +29,10 @@ def test_non_positive_values_refused_by_the_assembly(baseline_scene):
 
 
 def test_bad_mesh_stiffness_refused():
-    from femgear.dynamics import MeshStiffness
+    from femgear.dynamics import StiffnessTable
 
     with pytest.raises(ValueError, match="positive"):
-        MeshStiffness(np.array([1e8, -1.0]), np.array([1e8, 1e8]))
+        StiffnessTable(np.array([1e8, -1.0]), np.array([1e8, 1e8]))
 
 
 def test_step_above_the_rk4_stability_limit_refused(lumped):
