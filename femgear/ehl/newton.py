@@ -165,9 +165,17 @@ class _PrecLevel:
             try:  # natural (flow-wise) ordering is the most effective when it works
                 self.ilu = spla.spilu(Jl, drop_tol=ILU_DROP, fill_factor=ILU_FILL,
                                       permc_spec="NATURAL")
-            except RuntimeError:  # zero pivot: let SuperLU pivot and reorder
-                self.ilu = spla.spilu(Jl, drop_tol=ILU_DROP * 0.1, fill_factor=2 * ILU_FILL,
-                                      permc_spec="COLAMD", diag_pivot_thresh=1.0)
+            except RuntimeError:  # zero pivot: let SuperLU pivot and reorder, then exact LU
+                try:
+                    self.ilu = spla.spilu(Jl, drop_tol=ILU_DROP * 0.1,
+                                          fill_factor=2 * ILU_FILL, permc_spec="COLAMD",
+                                          diag_pivot_thresh=1.0)
+                except RuntimeError:
+                    try:
+                        self.ilu = spla.splu(Jl)
+                    except RuntimeError as exc:
+                        raise ConvergenceError(
+                            "ehl preconditioner", f"singular local Jacobian ({exc})") from exc
 
     def matvec(self, v: np.ndarray) -> np.ndarray:
         lv = self.level
