@@ -1,13 +1,17 @@
 """``femgear run``: run what a scene's ``[physics]`` asks for and write its outputs.
 
-Today that is the quasi-static geometry and contact pass along the path of contact
-(Hertz pressure, film thickness, sliding) with friction and contact temperature from
-the ``lubrication`` level (``none``, ``constant`` μ, or ``formula``: thermal Eyring
-traction of the Hertzian film, :mod:`femgear.friction`); the mesh stiffness of the
-``stiffness`` level over one mesh period; with ``thermal`` on, the thermal flank
-deviation of both members for ``thermal.flank_temperature_rise``; with ``wear =
-"archard"``, the wear depth of both flanks after ``wear.cycles``; with ``dynamics`` on,
-the gear-rotor dynamics (:func:`femgear.dynamics.run.run_dynamics`).
+Always: the quasi-static geometry and contact pass along the path of contact (Hertz
+pressure, film thickness, sliding) and the mesh stiffness of the ``stiffness`` level.
+
+Without dynamics (``dynamics = "none"``), the sub-models run once at the static load:
+friction and contact temperature from the ``lubrication`` level (``none``, ``constant``
+μ, or ``formula``: thermal Eyring traction of the Hertzian film, :mod:`femgear.friction`),
+the thermal flank deviation (``thermal``) for ``thermal.flank_temperature_rise`` and
+the wear depth after ``wear.cycles`` (``wear = "archard"``).
+
+With dynamics, everything goes through the coupling loop of :mod:`femgear.coupling`:
+``coupling = "one-way"`` stops after the first dynamic pass (static load → lubrication,
+thermal, wear → dynamics), ``"bidirectional"`` iterates to convergence.
 """
 
 from __future__ import annotations
@@ -44,53 +48,109 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         "hertz_pressure": contact.hertz_pressure, "hertz_half_width": contact.hertz_half_width,
         "film_central": contact.film_central, "film_minimum": contact.film_minimum,
     }
+    files: dict[str, Path] = {}
+    extra: dict[str, Any] = {}
+    if scene.physics.dynamics == "none":
+        tribology = _static_passes(scene, pair, contact, out_dir)
+        stiffness = _stiffness(scene)
+        summary["stiffness"] = stiffness["summary"]
+        extra["mesh_stiffness"] = stiffness["table"]
+    else:
+        tribology, coupled = _coupled(scene, out_dir, plots, files)
+        summary.update(coupled["summary"])
+        extra.update(coupled["extra"])
+    summary.update(tribology["summary"])
+    if "s" in tribology["along_path"]:
+        along_path = tribology["along_path"]      # the coupling's own (finer) path grid
+    else:
+        along_path.update(tribology["along_path"])
+    files["results"] = write_json(out_dir / "results.json", {
+        "summary": summary, "scene": scene.model_dump(), "along_path": along_path, **extra,
+    })
+    if plots:
+        from femgear.plot.path import plot_contact_path, plot_friction_path
+
+        files["contact_path_png"] = plot_contact_path(contact, out_dir / "contact_path.png", title=scene.meta.name)
+        if "friction_coefficient" in along_path:
+            files["friction_path_png"] = plot_friction_path(
+                np.asarray(along_path["s"]), along_path["friction_coefficient"], along_path["temperature_rise"],
+                out_dir / "friction_path.png", title=f"{scene.meta.name}: lubrication = {scene.physics.lubrication}")
+    summary = {**summary, "outputs": {k: str(v) for k, v in files.items()}}
+    return RunResult(summary=summary, files=files)
+
+
+def _friction_summary(mu: np.ndarray, dT: np.ndarray, s: np.ndarray) -> dict[str, float]:
+    return {"mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)), "mu_max": float(np.max(mu)),
+            "mu_mean": float(np.mean(mu)), "max_temperature_rise": float(np.max(dT))}
+
+
+def _static_passes(scene, pair, contact, out_dir: Path) -> dict[str, dict]:
+    """Friction, thermal deviation and wear once, at the static load."""
+    summary: dict[str, Any] = {}
+    along: dict[str, Any] = {}
+    k = contact.kin
     friction = friction_of(scene, contact)
     if friction is not None:
-        along_path.update(friction_coefficient=friction["mu"], temperature_rise=friction["temperature_rise"])
-        summary["friction"] = {
-            "mu_pitch": friction["mu"][contact.pitch_index], "mu_min": float(np.min(friction["mu"])),
-            "mu_max": float(np.max(friction["mu"])), "mu_mean": float(np.mean(friction["mu"])),
-            "max_temperature_rise": float(np.max(friction["temperature_rise"])),
-        }
+        along.update(friction_coefficient=friction["mu"], temperature_rise=friction["temperature_rise"])
+        summary["friction"] = _friction_summary(friction["mu"], friction["temperature_rise"], k.s)
     if scene.physics.thermal != "none":
         from femgear.body.thermal import flank_deviation_from_scene
 
         z1, z2 = (flank_deviation_from_scene(scene, m, k.u) for m in (1, 2))
-        along_path.update(thermal_deviation_pinion=z1, thermal_deviation_gear=z2)
-        summary["thermal"] = {"flank_temperature_rise": scene.thermal.flank_temperature_rise,
-                              "deviation_pitch_pinion": float(np.interp(0.0, k.s, z1)),
-                              "deviation_pitch_gear": float(np.interp(0.0, k.s, z2)),
-                              "max_deviation": float(max(np.max(np.abs(z1)), np.max(np.abs(z2))))}
-    stiffness = _stiffness(scene)
-    summary["stiffness"] = stiffness["summary"]
+        along.update(thermal_deviation_pinion=z1, thermal_deviation_gear=z2)
+        summary["thermal"] = _thermal_summary(scene.thermal.flank_temperature_rise, z1, z2, k.s)
     if scene.physics.wear == "archard":
-        state = _wear(scene, pair, contact, out_dir)
-        along_path.update(wear_pinion=state.h1, wear_gear=state.h2)
+        from femgear.wear import WearSetup, run_wear
+
+        state = run_wear(WearSetup.from_scene(scene, k, pair), scene.wear.cycles,
+                         checkpoint=out_dir / "wear_checkpoint.npz")
+        along.update(wear_pinion=state.h1, wear_gear=state.h2)
         summary["wear"] = {"cycles": state.cycles, "steps": state.steps,
                            "max_depth_pinion": float(state.h1.max()), "max_depth_gear": float(state.h2.max())}
-    files: dict[str, Path] = {}
-    if scene.physics.dynamics != "none":
-        from femgear.dynamics.run import run_dynamics
+    return {"summary": summary, "along_path": along}
 
-        dyn = run_dynamics(scene, out_dir, plots=plots)
-        summary["dynamics"] = dyn.summary
-        files.update({f"dynamics_{k}": v for k, v in dyn.files.items()})
-    files["results"] = write_json(out_dir / "results.json", {
-        "summary": summary, "scene": scene.model_dump(), "along_path": along_path,
-        "mesh_stiffness": stiffness["table"],
-    })
-    if plots:
-        from femgear.plot.path import plot_contact_path
 
-        files["contact_path_png"] = plot_contact_path(contact, out_dir / "contact_path.png", title=scene.meta.name)
-        if friction is not None:
-            from femgear.plot.path import plot_friction_path
+def _thermal_summary(rise: float, z1: np.ndarray, z2: np.ndarray, s: np.ndarray) -> dict[str, float]:
+    return {"flank_temperature_rise": float(rise), "deviation_pitch_pinion": float(np.interp(0.0, s, z1)),
+            "deviation_pitch_gear": float(np.interp(0.0, s, z2)),
+            "max_deviation": float(max(np.max(np.abs(z1)), np.max(np.abs(z2))))}
 
-            files["friction_path_png"] = plot_friction_path(
-                contact.kin.s, friction["mu"], friction["temperature_rise"], out_dir / "friction_path.png",
-                title=f"{scene.meta.name}: lubrication = {scene.physics.lubrication}")
-    summary = {**summary, "outputs": {k: str(v) for k, v in files.items()}}
-    return RunResult(summary=summary, files=files)
+
+def _coupled(scene, out_dir: Path, plots: bool, files: dict) -> tuple[dict, dict]:
+    """Dynamics through the coupling loop; writes the final pass's dynamics outputs."""
+    from femgear.coupling import CouplingSetup, run_coupled
+    from femgear.dynamics.run import write_outputs
+
+    setup = CouplingSetup.from_scene(scene)
+    result = run_coupled(setup, one_way=scene.physics.coupling == "one-way")
+    st = result.state
+    run = write_outputs(st.dynamics, out_dir, plots)
+    files.update({f"dynamics_{k}": v for k, v in run.files.items()})
+    s = setup.kin.s
+    along = {"s": s, "R": setup.kin.R, "entrainment_speed": setup.kin.ue, "sliding_speed": setup.kin.vs,
+             "slide_to_roll": setup.kin.srr, "load_per_length": st.load_per_length,
+             "friction_coefficient": st.mu, "temperature_rise": st.temperature_rise,
+             "thermal_deviation_pinion": st.thermal_deviation[0], "thermal_deviation_gear": st.thermal_deviation[1],
+             "wear_pinion": st.wear[0], "wear_gear": st.wear[1]}
+    trib: dict[str, Any] = {}
+    if scene.physics.lubrication != "none":
+        trib["friction"] = _friction_summary(st.mu, st.temperature_rise, s)
+    if scene.physics.thermal != "none":
+        trib["thermal"] = _thermal_summary(st.flank_temperature_rise, *st.thermal_deviation, s)
+    if scene.physics.wear != "none":
+        trib["wear"] = {"cycles": scene.wear.cycles, "max_depth_pinion": float(st.wear[0].max()),
+                        "max_depth_gear": float(st.wear[1].max())}
+    ms = setup.stiffness
+    coupled = {
+        "summary": {
+            "dynamics": run.summary,
+            "stiffness": {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()},
+            "coupling": {"mode": scene.physics.coupling, "converged": result.converged,
+                         "iterations": st.iteration, "seconds": result.seconds, "history": result.history},
+        },
+        "extra": {"mesh_force_per_phase": {"left": st.mesh_force[0], "right": st.mesh_force[1]}},
+    }
+    return {"summary": trib, "along_path": along}, coupled
 
 
 def friction_of(scene, contact) -> dict[str, np.ndarray] | None:
@@ -117,11 +177,3 @@ def _stiffness(scene) -> dict[str, Any]:
                     "ripple_total": ms.ripple(), "seconds": ms.seconds},
         "table": {"phase": ms.phase, "k_left": ms.k_left, "k_right": ms.k_right},
     }
-
-
-def _wear(scene, pair, contact, out_dir: Path):
-    """Archard wear over ``wear.cycles``, checkpointed in ``out_dir`` so a rerun resumes."""
-    from femgear.wear import WearSetup, run_wear
-
-    setup = WearSetup.from_scene(scene, contact.kin, pair)
-    return run_wear(setup, scene.wear.cycles, checkpoint=out_dir / "wear_checkpoint.npz")

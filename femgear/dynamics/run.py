@@ -60,20 +60,28 @@ def run_dynamics(scene, out: str | Path | None = None, *, level: str | None = No
     sim = simulate(model, cycles * model.mesh_period, step, method)
     res = analyse(sim, transient_cycles)
     modal = modal_analysis(model)
-    from femgear.dynamics.output import summary, write_results
+    from femgear.dynamics.output import summary
 
     info = summary(sim, res)
     info["modes"] = [{"frequency_hz": float(f), "dominant": modal.dominant_group(i), "mesh_energy": float(modal.energy["mesh"][i])}
                      for i, f in enumerate(modal.frequencies)]
-    files: dict = {}
-    if out is not None:
-        files.update(write_results(sim, res, out))
-        if plots:
-            from femgear.dynamics import plot
+    run = DynamicsRun(simulation=sim, response=res, modal=modal, summary=info)
+    return write_outputs(run, out, plots) if out is not None else run
 
-            out = Path(out)
-            files["time_histories"] = plot.plot_time_histories(res, out / "dynamics_time.png")
-            files["mesh_force"] = plot.plot_mesh_force(res, out / "dynamics_mesh_force.png")
-            files["phase_planes"] = plot.plot_phase_planes(res, out / "dynamics_phase.png")
-            files["spectra"] = plot.plot_spectra(res, out / "dynamics_spectra.png")
-    return DynamicsRun(simulation=sim, response=res, modal=modal, summary=info, files=files)
+
+def write_outputs(run: DynamicsRun, out: str | Path, plots: bool = True) -> DynamicsRun:
+    """Write the results files (and PNGs) of ``run`` into ``out``; returns it with ``files`` set."""
+    from femgear.dynamics.output import write_results
+
+    out = Path(out)
+    files = dict(write_results(run.simulation, run.response, out))
+    if plots:
+        from femgear.dynamics import plot
+
+        res = run.response
+        files["time_histories"] = plot.plot_time_histories(res, out / "dynamics_time.png")
+        files["mesh_force"] = plot.plot_mesh_force(res, out / "dynamics_mesh_force.png")
+        files["phase_planes"] = plot.plot_phase_planes(res, out / "dynamics_phase.png")
+        files["spectra"] = plot.plot_spectra(res, out / "dynamics_spectra.png")
+    return DynamicsRun(simulation=run.simulation, response=run.response, modal=run.modal, summary=run.summary,
+                       files=files)

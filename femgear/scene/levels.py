@@ -23,7 +23,7 @@ AVAILABLE: dict[str, frozenset[str]] = {
     "thermal": frozenset({"none", "analytic", "fe"}),
     "wear": frozenset({"none", "archard"}),
     "dynamics": frozenset({"none", "lumped", "timoshenko"}),
-    "coupling": frozenset({"one-way"}),
+    "coupling": frozenset({"one-way", "bidirectional"}),
 }
 
 

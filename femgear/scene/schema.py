@@ -192,6 +192,13 @@ class Physics(_Frozen):
             raise ValueError(message)
         return level
 
+    @field_validator("coupling")
+    @classmethod
+    def _coupling_needs_dynamics(cls, level: str, info: ValidationInfo) -> str:
+        if level == "bidirectional" and info.data.get("dynamics") == "none":
+            raise ValueError("bidirectional coupling needs a dynamics level (set physics.dynamics)")
+        return level
+
 
 class Scene(_Frozen):
     """A whole scene file."""

@@ -1,0 +1,9 @@
+"""The bidirectional coupling of dynamics, lubrication, thermal expansion and wear.
+
+- ``profile``  flank deviations along the path → mesh excitation and dynamic backlash.
+- ``loop``     the outer loop as a generator of immutable states; :func:`run_coupled`.
+"""
+
+from femgear.coupling.loop import CoupledResult, CouplingSetup, CouplingState, coupling_iterations, run_coupled
+
+__all__ = ["CoupledResult", "CouplingSetup", "CouplingState", "coupling_iterations", "run_coupled"]

@@ -1,0 +1,74 @@
+"""The bidirectional loop: excitation tables, convergence with history, failure with history."""
+
+import numpy as np
+import pytest
+
+from femgear.coupling import CouplingSetup, coupling_iterations, run_coupled
+from femgear.coupling.profile import excitation_tables, phase_table
+from femgear.errors import ConvergenceError
+from femgear.geometry import path_positions
+from femgear.scene import load_scene
+
+FAST = ['physics.dynamics="lumped"', "numerics.dynamics_cycles=40", "numerics.transient_cycles=20"]
+
+
+def test_uniform_deviation_gives_a_uniform_table_and_backlash(baseline_pair):
+    u = path_positions(baseline_pair, 81)
+    (eL, eR), db = excitation_tables(baseline_pair, u, np.full(u.size, 3e-6), stagger=0.3, n_phase=64)
+    assert np.allclose(eL, 3e-6) and np.allclose(eR, 3e-6) and np.allclose(db, 3e-6)
+
+
+def test_tables_are_the_contact_line_mean(baseline_pair):
+    p = baseline_pair
+    u = path_positions(p, 401)
+    linear = 1e-6 * (u - p.u_pitch) / p.g_alpha
+    table = phase_table(p, u, linear, 32)
+    # the contact lines sweep the whole path in one period: the phase mean of the table
+    # equals the mean of the deviation weighted by how often each position is loaded
+    assert abs(table.mean() - np.average(linear)) < 0.1 * np.ptp(linear)
+    assert np.ptp(table) > 0          # and it varies over the mesh period
+
+
+@pytest.fixture(scope="module")
+def setup(baseline_path):
+    scene = load_scene(baseline_path, FAST + ['physics.thermal="analytic"', 'physics.wear="archard"',
+                                              "wear.cycles=1e6", 'physics.coupling="bidirectional"'])
+    return CouplingSetup.from_scene(scene, n_path=41, n_phase=64)
+
+
+def test_the_loop_converges_to_the_papers_tolerance_with_a_history(setup):
+    result = run_coupled(setup, tol_force=1e-6, tol_mu=1e-6, max_iter=12)
+    h = result.history
+    assert result.converged and result.state.iteration <= 8
+    assert h["mesh_force_change"][-1] < 1e-6 and h["mu_change"][-1] < 1e-6
+    changes = h["mesh_force_change"][1:]
+    assert changes[-1] < changes[0] * 1e-3          # contraction, not a lucky stop
+    st = result.state
+    assert np.all(np.isfinite(st.mu)) and st.wear.max() > 1e-6 and st.thermal_deviation.max() > 0
+    # the dynamic mesh force carries the static load on average
+    assert st.mesh_force.mean() == pytest.approx(setup.static_force, rel=0.02)
+
+
+def test_a_loop_that_cannot_converge_raises_with_its_history(setup):
+    with pytest.raises(ConvergenceError) as info:
+        run_coupled(setup, tol_force=1e-14, tol_mu=1e-14, max_iter=2)
+    assert len(info.value.history["mesh_force_change"]) == 3
+    assert "coupling" in str(info.value)
+
+
+def test_one_way_is_the_first_pass_of_the_bidirectional_loop(setup):
+    one = run_coupled(setup, one_way=True).state
+    first = next(s for s in coupling_iterations(setup) if s.iteration == 1)
+    assert np.array_equal(one.mesh_force, first.mesh_force)
+
+
+def test_bad_relaxation_is_refused(setup):
+    with pytest.raises(ValueError, match="relax"):
+        next(coupling_iterations(setup, relax=0.0))
+
+
+def test_bidirectional_without_dynamics_is_a_scene_error(baseline_path):
+    from femgear.errors import SceneError
+
+    with pytest.raises(SceneError, match="physics.coupling"):
+        load_scene(baseline_path, ['physics.coupling="bidirectional"'])
