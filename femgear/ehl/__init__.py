@@ -1,13 +1,22 @@
 """Isothermal elastohydrodynamic lubrication (EHL): point/elliptical and line contacts.
 
+Entry points: :func:`femgear.ehl.point.solve_point`, :func:`femgear.ehl.line.solve_line`
+(Moes groups in, :class:`femgear.ehl.results.EHLResult` out) and
+:mod:`femgear.ehl.dimensional` (SI in, metres and pascals out).
+
 Modules
 -------
-params     Moes groups <-> Hertzian dimensionless parameters (lam_bar, alpha_bar, H scaling).
-rheology   Barus / Roelands viscosity, Dowson-Higginson density (dimensionless, with d/dP).
-grid       uniform nested node grids, skfem meshes, bilinear prolongation.
-elastic    DC-FFT half-space deflection (point), log-kernel matrix (line).
-reynolds   Q1/P1 Reynolds residual and Jacobian blocks with artificial diffusion (skfem).
-level      one discretisation level: film, complementarity residual, dense Jacobian.
-newton     dense Newton (coarse grids, line) and Newton-Krylov with a multilevel
-           preconditioner (fine grids); histories; ConvergenceError on failure.
+params       Moes groups <-> Hertzian dimensionless parameters (lam_bar, alpha_bar, H scaling).
+rheology     Barus / Roelands viscosity, Dowson-Higginson density (dimensionless, with d/dP).
+grid         uniform nested node grids, bilinear prolongation.
+elastic      DC-FFT half-space deflection (point), log-kernel matrix (line).
+reynolds     Q1/P1 Reynolds residual and Jacobian blocks (scikit-fem) with artificial
+             diffusion and streamline diffusion, both differentiated exactly.
+level        one discretisation level: film, complementarity (cavitation) residual, dense Jacobian.
+newton       dense Newton (coarse grids, line) and Newton-Krylov with a multilevel
+             preconditioner (fine grids); histories; ConvergenceError on failure.
+point, line  drivers: nested iteration, continuation strategies, result assembly.
+results      frozen EHLResult and centre-line quantities.
+output       VTK (pyvista) and centre-line PNG (matplotlib), imported lazily.
+dimensional  SI entry for point and line contacts.
 """
