@@ -35,7 +35,7 @@ MAX_LOG_ETA = 4.0
 WATCHDOG = 4
 ILU_DROP, ILU_FILL = 1e-4, 3.0
 LOCAL_RADIUS = 2  # elastic kernel kept in the local (smoother) Jacobian
-REBUILD_KRYLOV = 0  # rebuild the preconditioner when GMRES needed more iterations (0: always)
+REBUILD_KRYLOV = 10  # rebuild the preconditioner when GMRES needed more iterations
 
 
 @dataclass

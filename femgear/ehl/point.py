@@ -47,7 +47,7 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
                 ratio: float = 1.0, domain: Domain | None = None, viscosity: str = "barus",
                 compressible: bool = False, ph: float | None = None, z: float = 0.68,
                 rigid: bool = False, ad_factor: float = 1.0, sd_factor: float = 1.0,
-                tol: float = 1e-6,
+                tol: float = 1e-5,
                 max_iter: int = 40) -> EHLResult:
     """Isothermal point-contact EHL in Moes groups (M, L); returns :class:`EHLResult`.
 
