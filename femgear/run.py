@@ -60,10 +60,10 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         summary.update(coupled["summary"])
         extra.update(coupled["extra"])
     summary.update(tribology["summary"])
-    if "s" in tribology["along_path"]:
-        along_path = tribology["along_path"]      # the coupling's own (finer) path grid
-    else:
+    if scene.physics.dynamics == "none":
         along_path.update(tribology["along_path"])
+    else:
+        extra["coupled_path"] = tribology["along_path"]      # the coupling's own path grid
     files["results"] = write_json(out_dir / "results.json", {
         "summary": summary, "scene": scene.model_dump(), "along_path": along_path, **extra,
     })
@@ -71,9 +71,10 @@ def run_scene(scene, out_dir: str | Path, plots: bool = True) -> RunResult:
         from femgear.plot.path import plot_contact_path, plot_friction_path
 
         files["contact_path_png"] = plot_contact_path(contact, out_dir / "contact_path.png", title=scene.meta.name)
-        if "friction_coefficient" in along_path:
+        trib = extra.get("coupled_path", along_path)
+        if "friction_coefficient" in trib:
             files["friction_path_png"] = plot_friction_path(
-                np.asarray(along_path["s"]), along_path["friction_coefficient"], along_path["temperature_rise"],
+                np.asarray(trib["s"]), trib["friction_coefficient"], trib["temperature_rise"],
                 out_dir / "friction_path.png", title=f"{scene.meta.name}: lubrication = {scene.physics.lubrication}")
     summary = {**summary, "outputs": {k: str(v) for k, v in files.items()}}
     return RunResult(summary=summary, files=files)

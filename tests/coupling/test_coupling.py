@@ -71,4 +71,4 @@ def test_bidirectional_without_dynamics_is_a_scene_error(baseline_path):
     from femgear.errors import SceneError
 
     with pytest.raises(SceneError, match="physics.coupling"):
-        load_scene(baseline_path, ['physics.coupling="bidirectional"'])
+        load_scene(baseline_path, ['physics.coupling="bidirectional"', 'physics.dynamics="none"'])

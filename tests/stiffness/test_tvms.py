@@ -62,7 +62,7 @@ def test_levels_and_bad_arguments(baseline_pair, baseline_scene):
 
     iso = mesh_stiffness(baseline_pair, "iso6336", n_positions=8)
     assert iso.ripple() == 0 and iso.mean > 0
-    const = mesh_stiffness_from_scene(baseline_scene, n_positions=8)
+    const = mesh_stiffness_from_scene(baseline_scene, level="constant", n_positions=8)
     assert const.mean_left == pytest.approx(baseline_scene.stiffness.mesh_stiffness_per_width * baseline_pair.b)
     with pytest.raises(ValueError, match="level"):
         mesh_stiffness(baseline_pair, "weber")

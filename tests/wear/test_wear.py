@@ -90,7 +90,8 @@ def test_run_with_archard_wear_reports_depths(baseline_path, tmp_path):
     from femgear.run import run_scene
     from femgear.scene import load_scene
 
-    scene = load_scene(baseline_path, ['physics.wear="archard"', "wear.cycles=2e5"])
+    scene = load_scene(baseline_path, ['physics.wear="archard"', "wear.cycles=2e5", 'physics.dynamics="none"',
+                                       'physics.coupling="one-way"'])
     summary = run_scene(scene, tmp_path, plots=False).summary
     assert summary["wear"]["cycles"] == pytest.approx(2e5)
     assert 0 < summary["wear"]["max_depth_pinion"] < 1e-5
