@@ -118,7 +118,7 @@ def amplitude_table(cases: list[dict], labels: list[str], paper: dict | None = N
             cells = []
             for i, (_, q, ax) in enumerate(AMPLITUDE_KEYS[:4]):
                 p = paper[member].get(lab) if paper else None
-                cells.append(f"{amplitude(c, member, q, ax):10.4g} {p[i] if p else float('nan'):6.3f}")
+                cells.append(f"{amplitude(c, member, q, ax):10.4g} " + (f"{p[i]:6.3f}" if p else f"{'-':>6s}"))
             lines.append(f"{member:6s} {str(lab):>12s} | " + " | ".join(cells))
     return "\n".join(lines)
 
