@@ -169,3 +169,18 @@ def parse_args(argv: list[str]) -> dict:
     opts["coarse"] = bool(opts.get("coarse", False))
     opts["workers"] = int(opts.get("workers", 2))
     return opts
+
+
+#: the paper's Figs 4–5 cases: label → overrides (wear 1e6 cycles, flank temperature rise 30 K)
+FLANK_CASES = {
+    "none": ["wear.cycles=0.0", 'physics.thermal="none"'],
+    "wear": ["wear.cycles=1e6", 'physics.thermal="none"'],
+    "thermal": ["wear.cycles=0.0", "thermal.flank_temperature_rise=30.0"],
+    "wear+thermal": ["wear.cycles=1e6", "thermal.flank_temperature_rise=30.0"],
+}
+
+
+def flank_cases(coarse: bool = False, workers: int = 2) -> dict[str, dict]:
+    """The four flank-deviation cases; coarse = the quasi-static start (no dynamics), else converged."""
+    cases = run_cases(list(FLANK_CASES.values()), coarse=coarse, static=coarse, workers=workers, series=False)
+    return dict(zip(FLANK_CASES, cases))
