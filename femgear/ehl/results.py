@@ -50,6 +50,8 @@ class EHLResult:
             "load_error": self.load_error, "converged": self.converged,
             "iterations": self.iterations, "nodes": self.nodes, "seconds": self.seconds,
             "levels": list(self.levels),
+            "residual_history": list(self.history.get("residual", [])),
+            "load_error_history": list(self.history.get("load_error", [])),
         }
 
 
