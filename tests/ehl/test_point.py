@@ -95,3 +95,10 @@ def test_grid_convergence_m20():
     r = solve_point(20.0, 10.0, level=4)
     hc = [lv["Hc"] for lv in r.levels]
     assert abs(hc[-1] / hc[-2] - 1) < 0.01
+
+
+def test_elliptical_contact_nvm():
+    """lambda = Rx/Ry = 0.5 (wide contact) against the NVM elliptic formula."""
+    r = solve_point(20.0, 10.0, level=2, ratio=0.5)
+    assert r.Hc == pytest.approx(float(nvm_central(20.0, 10.0, 0.5)), rel=0.04)
+    assert r.load_error < 1e-4
