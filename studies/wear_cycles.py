@@ -14,14 +14,19 @@ the path per wear level (Fig. 16).
 Reading of the results (see the README):
 - wear deepens with cycles, least at the pitch point (zero sliding) and most at the
   pinion root, as the paper's Fig. 15;
-- femgear's amplitudes grow with wear, velocity more than displacement, as the paper
-  says — but far more strongly: the worn profile (several µm, i.e. comparable to the
-  mesh deflection ≈ 10 µm) is a large meshing error at the mesh frequency and its
-  harmonics; the paper's +8 % / +50 % are for an error the paper does not quantify;
-- μ(u) is U-shaped (minimum at the pitch point); the Hertz-level friction model sees
-  wear only through the load redistribution (the lubrication regime is not degraded
-  by wear in femgear: no roughness-evolution model), so the curve does not shift
-  upward as a whole as in the paper's Fig. 16.
+- femgear's amplitudes grow with wear, velocity slightly more than displacement (the
+  paper's ranking) — but far more strongly than the paper's +8 % / +50 %: the new
+  gear's only excitation is the small PEM stiffness ripple of the two helices (±2.5 %),
+  while the worn profile, averaged over the contact lines, adds a meshing error of
+  ≈ 0.8 µm peak-to-peak per 10⁶ cycles at the mesh frequency
+  (studies/meshing_error.py), many times the ripple's transmission error;
+- μ(u) is U-shaped with μ = 0 at the pitch point.  Wear removes most material where
+  sliding is fastest (the ends of the path), so the worn ends carry less load and the
+  load concentrates near the pitch point: μ and the contact temperature rise increase
+  near the pitch point and *decrease* at the ends — the paper's Fig. 16 instead shifts
+  the whole curve upward, attributing it to lubrication degraded by wear (thinner
+  film, mixed friction), which femgear's smooth-surface traction model does not have
+  (no roughness evolution, no asperity load share).
 """
 
 from __future__ import annotations
