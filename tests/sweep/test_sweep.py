@@ -17,10 +17,13 @@ from femgear.sweep import parse_sweep, run_sweep
 RIG = Path(__file__).resolve().parents[2] / "studies" / "rig15_sweep.toml"
 
 
-def write_sweep(tmp_path, body: str) -> Path:
+STATIC = '"physics.dynamics" = ["none"]\n"physics.coupling" = ["one-way"]\n'   # quasi-static cases: fast
+
+
+def write_sweep(tmp_path, body: str, name: str = "t") -> Path:
     base = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
-    path = tmp_path / "sweep.toml"
-    path.write_text(f'base = "{base}"\nname = "t"\n' + body)
+    path = tmp_path / f"{name}.toml"
+    path.write_text(f'base = "{base}"\nname = "{name}"\n' + body)
     return path
 
 
@@ -44,9 +47,16 @@ def test_bad_sweep_files_name_the_key(tmp_path, body, key):
     assert info.value.key == key
 
 
-def test_local_pool_and_dask_cluster_give_identical_results(tmp_path):
+def rig_spec(tmp_path, full: bool):
+    """The 15 rig conditions, with the baseline's coupled physics (full) or quasi-static."""
+    grid = RIG.read_text().split("[grid]", 1)[1]
+    return parse_sweep(write_sweep(tmp_path, "[grid]" + grid + ("" if full else STATIC), "rig15"))
+
+
+@pytest.mark.parametrize("full", [False, pytest.param(True, marks=pytest.mark.slow)])
+def test_local_pool_and_dask_cluster_give_identical_results(tmp_path, full):
     distributed = pytest.importorskip("distributed")
-    spec = parse_sweep(RIG)
+    spec = rig_spec(tmp_path, full)
     local = run_sweep(spec, tmp_path / "local", workers=2, progress=False)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster:
@@ -58,10 +68,10 @@ def test_local_pool_and_dask_cluster_give_identical_results(tmp_path):
 
 
 def test_an_impossible_case_is_reported_and_the_others_complete(tmp_path):
-    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 0.0, 200.0]\n'
+    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 0.0, 200.0]\n' + STATIC +
                                  '[[case]]\n"pair.no_such_key" = 1\n')
     result = run_sweep(parse_sweep(path), tmp_path / "out", workers=2, progress=False)
-    status = {r["overrides"]: r for r in result.rows}
+    status = {r["overrides"].split(" ")[0]: r for r in result.rows}
     assert status["operating.torque=100.0"]["status"] == "done"
     assert status["operating.torque=200.0"]["status"] == "done"
     assert "operating.torque" in status["operating.torque=0.0"]["error"]
@@ -74,7 +84,7 @@ def test_an_impossible_case_is_reported_and_the_others_complete(tmp_path):
 
 def test_killed_sweep_resumes_without_recomputing(tmp_path):
     speeds = ", ".join(str(float(s)) for s in range(100, 900, 100))
-    path = write_sweep(tmp_path, '[grid]\n"physics.wear" = ["archard"]\n"wear.cycles" = [2e6]\n'
+    path = write_sweep(tmp_path, '[grid]\n"physics.wear" = ["archard"]\n"wear.cycles" = [2e6]\n' + STATIC +
                                  f'"operating.speed_rpm" = [{speeds}]\n')
     out = tmp_path / "out"
     cmd = [sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(out), "--workers", "1",
