@@ -156,16 +156,14 @@ def _coupled(scene, out_dir: Path, plots: bool, files: dict) -> tuple[dict, dict
 
 def friction_of(scene, contact) -> dict[str, np.ndarray] | None:
     """μ and the contact temperature rise along the path for the scene's lubrication level."""
-    level = scene.physics.lubrication
-    n = contact.kin.u.size
-    if level == "none":
+    if scene.physics.lubrication == "none":
         return None
-    if level == "constant":
-        return {"mu": np.full(n, scene.friction.coefficient), "temperature_rise": np.zeros(n)}
-    from femgear.friction.path import friction_along_path
+    from femgear.coupling.loop import lubrication_solver
 
-    r = friction_along_path(scene, contact)
-    return {"mu": r.mu, "temperature_rise": r.film_max}
+    k = contact.kin
+    mu, dT = lubrication_solver(scene)(w=np.full(k.u.shape, contact.load_per_length), R=k.R, ue=k.ue,
+                                       srr=np.abs(k.srr), T=np.full(k.u.shape, scene.operating.ambient_temperature))
+    return {"mu": np.asarray(mu, dtype=float), "temperature_rise": np.asarray(dT, dtype=float)}
 
 
 def _stiffness(scene) -> dict[str, Any]:

@@ -24,3 +24,10 @@ def test_lubrication_levels(baseline_path, tmp_path):
                       tmp_path, plots=False).summary
     assert "friction" not in none
     assert const["friction"]["mu_mean"] == pytest.approx(0.07)
+
+
+def test_ehl_line_level_gives_a_u_shaped_friction(baseline_path, tmp_path):
+    scene = load_scene(baseline_path, ['physics.lubrication="ehl-line"', 'physics.dynamics="none"',
+                                       'physics.coupling="one-way"', "numerics.path_points=9", "numerics.ehl_level=4"])
+    f = run_scene(scene, tmp_path, plots=False).summary["friction"]
+    assert f["mu_pitch"] < 1e-3 < 0.01 < f["mu_max"] < 0.1

@@ -71,7 +71,12 @@ class CouplingSetup:
 
 
 def lubrication_solver(scene) -> Lubrication:
-    """The contact solver of the scene's ``physics.lubrication`` level, map signature."""
+    """The contact solver of the scene's ``physics.lubrication`` level, map signature.
+
+    ``none``/``constant``: μ = 0 / ``friction.coefficient``, no heating; ``formula``: thermal
+    Eyring traction of the Hertzian film (:mod:`femgear.friction`); ``ehl-line``: FE line
+    EHL with Eyring traction and Blok's flash temperature (:mod:`femgear.ehl.path`).
+    """
     level = scene.physics.lubrication
     if level in ("none", "constant"):
         mu0 = 0.0 if level == "none" else scene.friction.coefficient
@@ -81,6 +86,10 @@ def lubrication_solver(scene) -> Lubrication:
             return np.full(shape, mu0), np.zeros(shape)
 
         return constant
+    if level == "ehl-line":
+        from femgear.ehl.path import ehl_line_solver
+
+        return ehl_line_solver(scene)
     from femgear.friction.map import hertz_level_solver
 
     return hertz_level_solver(scene)

@@ -231,10 +231,10 @@ def build_model(
     "lumped" when that is "none").  ``stiffness``: a :class:`StiffnessTable` table (any
     TVMS model), "constant" (c_γ b) or "contact-line" (contact-line-length TVMS), or
     a level of :mod:`femgear.stiffness` ("iso6336", "pem", "fe"); default follows
-    ``physics.stiffness``.  ``friction_coefficient``: a number, a callable μ(u) of the path position u [m], or "formula" for the
-    thermal-Eyring μ(u) along the path of :func:`femgear.friction.path.friction_along_path`
-    (U-shaped, zero at the pitch point); default from ``physics.lubrication``: 0 for
-    ``none``, ``friction.coefficient`` for ``constant``, "formula" otherwise.
+    ``physics.stiffness``.  ``friction_coefficient``: a number, a callable μ(u) of the path position u [m], or "scene" for the
+    μ(u) of the scene's lubrication level at the static load (:func:`femgear.run.friction_of`;
+    U-shaped, zero at the pitch point); default from ``physics.lubrication``: 0 for
+    ``none``, ``friction.coefficient`` for ``constant``, "scene" otherwise.
     ``bearing_span``, ``shaft_diameter`` [m] (pinion, gear), ``rayleigh_ratio``,
     ``v_reg`` and ``load_stiffness`` default to the scene keys ``<member>.bearing_span``,
     ``<member>.shaft_diameter``, ``stiffness.rayleigh_ratio``,
@@ -348,17 +348,17 @@ def build_model(
     mu_of_u = None
     if friction_coefficient is None:
         lub = scene.physics.lubrication
-        friction_coefficient = {"none": 0.0, "constant": scene.friction.coefficient}.get(lub, "formula")
+        friction_coefficient = {"none": 0.0, "constant": scene.friction.coefficient}.get(lub, "scene")
     if callable(friction_coefficient):              # μ(u) along the path, e.g. from the coupling loop
         mu_of_u, friction_coefficient = friction_coefficient, 1.0
     elif isinstance(friction_coefficient, str):
-        if friction_coefficient != "formula":
-            raise ValueError(f"friction_coefficient must be a number or 'formula' (got {friction_coefficient!r})")
+        if friction_coefficient != "scene":
+            raise ValueError(f"friction_coefficient must be a number, a callable or 'scene' (got {friction_coefficient!r})")
         from femgear.contact.path import contact_along_path
-        from femgear.friction.path import friction_along_path
+        from femgear.run import friction_of
 
         contact = contact_along_path(scene, pair=pair)
-        u_tab, mu_tab = contact.kin.u, friction_along_path(scene, contact).mu
+        u_tab, mu_tab = contact.kin.u, friction_of(scene, contact)["mu"]
         mu_of_u = lambda u: np.interp(u, u_tab, mu_tab)  # noqa: E731
         friction_coefficient = 1.0                        # μ(u) is folded into the tables
     if friction_coefficient < 0:

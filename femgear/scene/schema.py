@@ -167,6 +167,7 @@ class Numerics(_Frozen):
     """``[numerics]``: resolution knobs shared by the pass along the path of contact."""
 
     path_points: int = Field(41, ge=3, le=10001, description="positions along the path of contact [-]")
+    ehl_level: int = Field(5, ge=2, le=9, description="grid level of the FE line EHL (16·2^level cells) [-]")
     dynamics_method: Literal["expo", "rk4", "newmark"] | None = Field(
         None, description="integrator; default expo for lumped, rk4 for timoshenko")
     steps_per_mesh_period: int = Field(200, ge=10, le=100000, description="time steps per mesh period [-]")

@@ -69,7 +69,7 @@ def test_formula_friction_along_the_path(baseline_scene):
     """μ(u) from the friction package (U-shaped, zero at the pitch point) folded into the tables."""
     from femgear.dynamics import build_model
 
-    m = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient="formula")
+    m = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient="scene")
     c = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient=0.05)
     assert m.mu == 1.0
     assert np.abs(m.friction.A).max() < 0.06 and np.abs(m.friction.B).max() < 0.06 * np.abs(c.friction.B).max() / 0.05 * 1.5
