@@ -2,6 +2,7 @@
 
 - ``schema``  the models, every key documented with its unit.
 - ``levels``  fidelity levels per sub-model and which exist today.
+- ``presets`` named fidelity presets (fast, balanced, accurate).
 - ``load``    reading, ``--set`` overrides, error messages naming the key.
 """
 

@@ -14,6 +14,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from femgear.errors import SceneError
+from femgear.scene.presets import expand_preset
 from femgear.scene.schema import Scene
 
 
@@ -68,7 +69,7 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = ()) -> S
     """Validate a raw scene dictionary (plus overrides) and check the gear is feasible."""
     from femgear.geometry import GearPair  # the feasibility checks are geometry's
 
-    raw = apply_overrides(data, overrides)
+    raw = expand_preset(apply_overrides(data, overrides))
     try:
         scene = Scene.model_validate(raw)
     except ValidationError as exc:

@@ -176,7 +176,13 @@ class Numerics(_Frozen):
 
 
 class Physics(_Frozen):
-    """``[physics]``: one fidelity level per sub-model (see :mod:`femgear.scene.levels`)."""
+    """``[physics]``: one fidelity level per sub-model (see :mod:`femgear.scene.levels`).
+
+    ``preset`` ("fast", "balanced", "accurate"; :mod:`femgear.scene.presets`) fills in the
+    levels and resolution knobs it names; keys given explicitly win.
+    """
+
+    preset: Literal["fast", "balanced", "accurate"] | None = None
 
     stiffness: str = "constant"
     lubrication: str = "formula"
@@ -185,7 +191,7 @@ class Physics(_Frozen):
     dynamics: str = "none"
     coupling: str = "one-way"
 
-    @field_validator("*")
+    @field_validator("stiffness", "lubrication", "thermal", "wear", "dynamics", "coupling")
     @classmethod
     def _level_exists(cls, level: str, info: ValidationInfo) -> str:
         message = check_level(info.field_name, level)

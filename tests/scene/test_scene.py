@@ -76,3 +76,19 @@ def test_bad_override_syntax(baseline_path):
 def test_missing_file_is_a_scene_error(tmp_path):
     with pytest.raises(SceneError, match="not found"):
         load_scene(tmp_path / "nope.toml")
+
+
+def test_presets_fill_in_levels_and_explicit_keys_win(baseline_path):
+    data = raw(baseline_path)
+    data["physics"] = {"preset": "accurate", "wear": "none", "thermal": "analytic"}
+    s = scene_from_dict(data)
+    assert (s.physics.stiffness, s.physics.lubrication, s.physics.dynamics) == ("fe", "ehl-line", "timoshenko")
+    assert s.physics.thermal == "analytic" and s.numerics.steps_per_mesh_period == 400
+    fast = scene_from_dict(data, ['physics.preset="fast"', "numerics.path_points=33"])
+    assert fast.physics.stiffness == "pem" and fast.numerics.path_points == 33
+
+
+def test_unknown_preset_names_the_key(baseline_path):
+    with pytest.raises(SceneError) as info:
+        load_scene(baseline_path, ['physics.preset="turbo"'])
+    assert info.value.key == "physics.preset"
