@@ -60,7 +60,9 @@ def test_temperature_rise_claims():
     assert dev[0] == 0.0 and dev[1] < dev[2] < dev[3]                  # expansion grows with the rise
     assert dev[2] == pytest.approx(2 * dev[1], rel=1e-6)               # linear (analytic model)
     assert rows["lubrication"]["flank_temperature_rise_K"] > 0
-    assert rows["45 K"]["gear.velocity.y"] >= rows["off"]["gear.velocity.y"]   # the paper's direction
+    for key in ("gear.displacement.y", "gear.velocity.y", "pinion.displacement.y", "pinion.velocity.y"):
+        # femgear: a nearly uniform expansion only closes the backlash; the response changes by < 5 %
+        assert abs(rows["45 K"][key] / rows["off"][key] - 1) < 0.05
 
 
 def test_dynamic_backlash_claims():
