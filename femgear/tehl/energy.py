@@ -1,0 +1,191 @@
+"""Energy equation of a line-contact film between two moving semi-infinite solids.
+
+Film (reduced form, documented): ``nz`` layers across the film (mapped coordinate
+ζ = z/h, body 1 at z = 0 moving at v1, body 2 at z = h moving at v2) on ``nt`` cells
+along x; conservative finite volumes, first-order upwind in x and across the layers
+(upwinding of the energy equation, notes §7.6), conduction across the film, conduction
+along x neglected (high Péclet number).  Velocity per layer: the Couette profile of the
+layer shear rates (Ree–Eyring or Newtonian, the shear stress τ_c constant across the
+film, so that τ_c = τ0 asinh(η_e γ̇/τ0) with η_e the harmonic cross-film mean
+viscosity — Johnson & Tevaarwerk 1977) plus the Newtonian Poiseuille parabola at the
+film-mean viscosity.  The layer mass fluxes are the local flow split times the constant
+Reynolds mass flux ρ h u at the pressure maximum, so that discrete continuity holds
+exactly (the cross-layer fluxes close at the walls) and the scheme conserves energy to
+round-off: heat generated = heat into the solids + heat convected out (tested).
+
+Heat sources: viscous dissipation of the Couette (τ_c γ̇_k) and Poiseuille
+((z − h/2)² p'² / η_k) flows; compression heating ε' T u p' (ε' = −(1/ρ)∂ρ/∂T of the
+thermally expanding Dowson–Higginson density), implicit in T.
+
+Solids: moving semi-infinite bodies at high Péclet number, exact Jaeger/Carslaw & Jaeger
+moving-heat-source solution as a boundary operator (Carslaw & Jaeger, *Conduction of
+Heat in Solids*, 2nd ed. 1959, §10.7; Jaeger 1942): the surface temperature rise of body j is
+θ_j(x) = ∫ q_j(ξ)/√(x − ξ) dξ / (B_j √(π |v_j|)), B_j = √(k ρ c), upstream side first
+(the Abel matrix of :mod:`femgear.friction.flash`).  q_j = 2 k_f (θ_wall cell − θ_j)/Δz.
+All relations are linear in the temperature once viscosities are frozen: one sparse
+solve per thermal iteration.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from femgear.errors import ConvergenceError
+from femgear.friction.flash import abel_matrix
+from femgear.friction.oil import OilLaw
+from femgear.friction.traction import shear_stress
+
+
+@dataclass(frozen=True)
+class ThermalProps:
+    """Thermal data: oil conductivity k_f [W/(m K)], oil specific heat c_f [J/(kg K)],
+    solid effusivities B1, B2 = √(kρc) [W s^½/(m² K)]."""
+
+    k_oil: float
+    c_oil: float
+    B1: float
+    B2: float
+
+
+@dataclass(frozen=True)
+class EnergyState:
+    """Temperatures and heat flows of one energy solve (cells along x)."""
+
+    theta: np.ndarray        #: film temperature rise (nt, nz) [K]
+    surface1: np.ndarray     #: surface temperature rise of body 1 (nt,) [K]
+    surface2: np.ndarray     #: surface temperature rise of body 2 (nt,) [K]
+    tau_couette: np.ndarray  #: Couette shear stress (nt,) [Pa], sign of v2 − v1
+    tau_poiseuille: np.ndarray  #: Poiseuille wall stress magnitude h p'/2 (nt,) [Pa]
+    heat: dict               #: W/m: generated, shear, compression, solid1, solid2, convected, balance_error
+
+
+def jaeger_matrix(nt: int, length: float, B: float, v: float) -> np.ndarray:
+    """θ = J q for a solid moving at ``v`` under a heat flux q on ``nt`` equal cells of
+    a band of total ``length`` [m] (upstream side is x0 for v > 0, x1 for v < 0)."""
+    if abs(v) <= 0.0:
+        raise ConvergenceError("tehl energy", "a surface at rest: the steady temperature of a stationary "
+                               "semi-infinite body under a line source is unbounded (pure sliding)")
+    J = abel_matrix(nt) * math.sqrt(length / 2.0) / (B * math.sqrt(math.pi * abs(v)))
+    return J if v > 0 else J[::-1, ::-1]
+
+
+def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, v1: float, v2: float,
+                 T_bulk: float, theta: np.ndarray, oil: OilLaw, props: ThermalProps, J1: np.ndarray,
+                 J2: np.ndarray, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
+                 heat: bool = True) -> EnergyState:
+    """One linear energy solve with viscosities frozen at the previous film temperatures
+    ``T_bulk + theta`` (nt, nz).  Arrays in SI units; ``x_faces`` uniform (nt + 1,)."""
+    nt, nz = theta.shape
+    dx = float(x_faces[1] - x_faces[0])
+    p = 0.5 * (p_faces[:-1] + p_faces[1:])
+    dpdx = np.diff(p_faces) / dx
+    h = h_cells
+    dz = h / nz
+    T_old = T_bulk + theta
+    T_mean = T_bulk + theta.mean(axis=1)
+    eta = oil.viscosity(p[:, None], T_old)                       # (nt, nz)
+    eta_e = nz / np.sum(1.0 / eta, axis=1)                       # harmonic mean
+    du = v2 - v1
+    tau_c = shear_stress(eta_e, du / h, model, tau0)
+    if limiting_shear > 0:
+        tau_c = np.sign(tau_c) * np.minimum(np.abs(tau_c), limiting_shear * p)
+    if model == "eyring":
+        rate = (tau0 / eta) * np.sinh(tau_c / tau0)[:, None]
+    else:
+        rate = tau_c[:, None] / eta
+    S = np.sum(rate, axis=1) * dz
+    rate = np.where(np.abs(S)[:, None] > 0, rate * (du / np.where(S == 0, 1.0, S))[:, None], 0.0)
+    # layer velocities and fluxes [m²/s]
+    zf = dz[:, None] * np.arange(nz + 1)[None, :]
+    za, zb = zf[:, :-1], zf[:, 1:]
+    cum = np.concatenate([np.zeros((nt, 1)), np.cumsum(rate * dz[:, None], axis=1)[:, :-1]], axis=1)
+    phi_c = (v1 + cum + 0.5 * rate * dz[:, None]) * dz[:, None]
+    eta_m = oil.viscosity(p, T_mean)
+    phi_p = -(dpdx / (2 * eta_m))[:, None] * (h[:, None] * (zb**2 - za**2) / 2 - (zb**3 - za**3) / 3)
+    phi = phi_c + phi_p
+    total = phi.sum(axis=1)
+    if np.any(total <= 0):
+        raise ConvergenceError("tehl energy", "non-positive film flux (reversed net entrainment)")
+    split = phi / total[:, None]
+    i_star = int(np.argmax(p))
+    m_tot = float(oil.density(p[i_star], T_mean[i_star]) * total[i_star])
+    s_f = np.empty((nt + 1, nz))
+    s_f[1:-1] = 0.5 * (split[:-1] + split[1:])
+    s_f[0], s_f[-1] = split[0], split[-1]
+    m = m_tot * s_f                                              # (nt+1, nz) kg/(m s)
+    G = np.zeros((nt, nz + 1))                                   # upward mass flux between layers
+    G[:, 1:] = np.cumsum(m[:-1] - m[1:], axis=1)
+    G[:, -1] = 0.0                                               # exact up to round-off
+    # sources [W/m per cell]
+    layer_sq = ((zb - h[:, None] / 2) ** 3 - (za - h[:, None] / 2) ** 3) / 3
+    src_shear = (tau_c[:, None] * rate * dz[:, None] + dpdx[:, None] ** 2 * layer_sq / eta) * dx
+    eps_t = oil.expansion / np.maximum(1.0 - oil.expansion * (T_old - oil.T0), 1e-3)
+    a_comp = eps_t * phi * dpdx[:, None] * dx                    # compression power = a (T_b + θ)
+    if not heat:
+        src_shear = np.zeros_like(src_shear)
+        a_comp = np.zeros_like(a_comp)
+    c = props.c_oil
+    k_f = props.k_oil
+    n_u = nz + 2
+    N = nt * n_u
+    idx = np.arange(nt)[:, None] * n_u + np.arange(nz)[None, :]  # theta unknowns
+    iq1, iq2 = np.arange(nt) * n_u + nz, np.arange(nt) * n_u + nz + 1
+    rows, cols, vals = [], [], []
+
+    def add(r, cc, v):
+        r, cc, v = np.broadcast_arrays(r, cc, v)
+        rows.append(r.ravel()), cols.append(cc.ravel()), vals.append(v.ravel())
+
+    diag = np.zeros((nt, nz))
+    # horizontal advection: face f between cell f-1 and f
+    mr = m[1:]                                                   # right faces of cells
+    ml = m[:-1]                                                  # left faces
+    diag += c * np.maximum(mr, 0) - c * np.minimum(ml, 0)
+    add(idx[:-1], idx[1:], c * np.minimum(mr[:-1], 0))          # inflow from the right neighbour
+    add(idx[1:], idx[:-1], -c * np.maximum(ml[1:], 0))          # inflow from the left neighbour
+    # vertical advection
+    Gt, Gb = G[:, 1:], G[:, :-1]
+    diag += c * np.maximum(Gt, 0) - c * np.minimum(Gb, 0)
+    add(idx[:, :-1], idx[:, 1:], c * np.minimum(Gt[:, :-1], 0))
+    add(idx[:, 1:], idx[:, :-1], -c * np.maximum(Gb[:, 1:], 0))
+    # conduction between layers
+    Cz = (k_f * dx / dz)[:, None] * np.ones((1, max(nz - 1, 0)))
+    diag[:, :-1] += Cz
+    diag[:, 1:] += Cz
+    add(idx[:, :-1], idx[:, 1:], -Cz)
+    add(idx[:, 1:], idx[:, :-1], -Cz)
+    diag -= a_comp
+    add(idx, idx, diag)
+    # walls: heat leaving the film into the solids, and q_j = g (theta_edge - J_j q_j)
+    g = 2 * k_f / dz
+    add(idx[:, 0], iq1, dx)
+    add(idx[:, -1], iq2, dx)
+    for iq, J, edge in ((iq1, J1, idx[:, 0]), (iq2, J2, idx[:, -1])):
+        gJ = g[:, None] * J
+        gJ[np.diag_indices(nt)] += 1.0
+        r, cc = np.nonzero(gJ)
+        add(iq[r], iq[cc], gJ[r, cc])
+        add(iq, edge, -g)
+    rhs = np.zeros(N)
+    rhs[idx] = src_shear + a_comp * T_bulk
+    A = sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(N, N))
+    sol = spla.spsolve(A, rhs)
+    if not np.all(np.isfinite(sol)):
+        raise ConvergenceError("tehl energy", "non-finite temperatures")
+    th = sol[idx]
+    q1, q2 = sol[iq1], sol[iq2]
+    gen_shear = float(src_shear.sum())
+    gen_comp = float(np.sum(a_comp * (T_bulk + th)))
+    conv = float(c * (np.sum(np.maximum(m[-1], 0) * th[-1]) - np.sum(np.minimum(m[0], 0) * th[0])))
+    s1, s2 = float(q1.sum() * dx), float(q2.sum() * dx)
+    gen = gen_shear + gen_comp
+    scale = max(abs(gen_shear), abs(s1) + abs(s2) + abs(conv), 1e-300)
+    heat_d = {"generated": gen, "shear": gen_shear, "compression": gen_comp, "solid1": s1, "solid2": s2,
+              "convected": conv, "balance_error": (gen - s1 - s2 - conv) / scale}
+    return EnergyState(theta=th, surface1=J1 @ q1, surface2=J2 @ q2, tau_couette=tau_c,
+                       tau_poiseuille=0.5 * h * dpdx, heat=heat_d)
