@@ -1,0 +1,73 @@
+"""The ``tehl`` lubrication level in the map signature, and a friction map built from it.
+
+``solver(w=, R=, ue=, srr=, T=) -> (mu, temperature_rise)`` as every lubrication level
+(:mod:`femgear.friction.map`): μ is the sliding friction |μ_couette| of
+:func:`solve_tehl_line`, the temperature rise is the maximum film temperature rise [K].
+The isothermal start is shared between points that differ only in SRR (cached per call).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from femgear.contact.hertz import reduced_modulus
+from femgear.friction.map import FrictionMap
+from femgear.friction.oil import OilLaw
+from femgear.friction.path import solids_of
+from femgear.tehl.energy import ThermalProps
+from femgear.tehl.line import solve_tehl_line
+
+
+def thermal_props(scene) -> ThermalProps:
+    """Oil conductivity and specific heat, solid effusivities of a scene (same steel both)."""
+    s = solids_of(scene)
+    return ThermalProps(k_oil=s.k_oil, c_oil=scene.oil.specific_heat, B1=s.B1, B2=s.B2)
+
+
+def tehl_setup(scene) -> dict:
+    """Keyword arguments of :func:`solve_tehl_line` taken from a scene."""
+    return {"oil": OilLaw.from_scene(scene), "props": thermal_props(scene),
+            "E_red": reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio),
+            "tau0": scene.oil.eyring_stress, "limiting_shear": scene.oil.limiting_shear_coeff}
+
+
+def tehl_line_solver(scene, level: int | None = None, **options):
+    """Direct TEHL solves (one per point) in the map signature; ``options`` go to
+    :func:`solve_tehl_line` (e.g. ``cells``, ``nz``, ``model``)."""
+    setup = {**tehl_setup(scene), **options}
+    level = scene.numerics.ehl_level if level is None else level
+
+    def solve(w, R, ue, srr, T):
+        w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
+                                                 for a in (w, R, ue, srr, T)))
+        mu, dT = np.empty(w.shape), np.empty(w.shape)
+        for i in np.ndindex(w.shape):
+            r = solve_tehl_line(float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), float(T[i]),
+                                level=level, **setup)
+            mu[i], dT[i] = r.mu, r.dT_max
+        return mu, dT
+
+    return solve
+
+
+def tehl_map_axes(scene, load_range=(0.5, 2.0), temperature_span: float = 40.0) -> dict[str, np.ndarray]:
+    """Small map axes over a scene's path (3 x 2 x 2 x 7 x 2 = 168 TEHL solves)."""
+    from femgear.contact.path import contact_along_path
+
+    c = contact_along_path(scene, n=21)
+    k = c.kin
+    T0 = scene.operating.ambient_temperature
+    smax = 1.05 * float(np.max(np.abs(k.srr)))
+    return {"w": c.load_per_length * np.geomspace(*load_range, 3),
+            "R": np.array([0.98 * k.R.min(), 1.02 * k.R.max()]),
+            "ue": np.array([0.95 * k.ue.min(), 1.05 * k.ue.max()]),
+            "srr": np.r_[0.0, smax * np.array([0.01, 0.04, 0.12, 0.3, 0.6, 1.0])],
+            "T": np.array([T0, T0 + temperature_span])}
+
+
+def tehl_map(scene, axes: dict | None = None, level: int = 4, validate: int = 0, seed: int = 0) -> FrictionMap:
+    """A :class:`FrictionMap` of TEHL solves (grid ``level``); ``validate`` > 0 measures its
+    error against that many fresh TEHL solves at random envelope points."""
+    solver = tehl_line_solver(scene, level=level)
+    fmap = FrictionMap.build(solver, axes or tehl_map_axes(scene))
+    return fmap.validate(solver, samples=validate, seed=seed) if validate else fmap

@@ -1,0 +1,16 @@
+"""Shared operating point: the paper's oil and steel (studies/paper_baseline.toml) at a
+contact near the middle of the baseline path."""
+
+from pathlib import Path
+
+from femgear.contact.hertz import reduced_modulus
+from femgear.friction.oil import OilLaw
+from femgear.scene import load_scene
+from femgear.tehl.solver import thermal_props
+
+SCENE = load_scene(Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml")
+OIL = OilLaw.from_scene(SCENE)
+PROPS = thermal_props(SCENE)
+E_RED = reduced_modulus(SCENE.material.youngs_modulus, SCENE.material.poisson_ratio)
+W, R, UE, T0 = 84332.0, 0.0123, 1.09, 313.0
+TAU0 = SCENE.oil.eyring_stress

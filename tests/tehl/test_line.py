@@ -1,0 +1,101 @@
+"""Line-contact TEHL: exact isothermal recovery, the thermal hook, global energy balance,
+Jaeger operator vs Blok, thermal film reduction vs Gupta et al. (1992)."""
+
+import importlib.util
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from femgear.ehl import params as pr
+from femgear.ehl.dimensional import solve_line_dimensional
+from femgear.ehl.level import Level
+from femgear.ehl.rheology import Rheology
+from femgear.friction.flash import blok_flash_temperature
+from femgear.friction.traction import gupta_thermal_factor
+from femgear.tehl import solve_tehl_line
+from femgear.tehl.energy import jaeger_matrix
+from femgear.tehl.line import ehl_oil_at
+from femgear.tehl.rheology import ThermalRheology
+
+_spec = importlib.util.spec_from_file_location("_case", Path(__file__).with_name("_case.py"))
+case = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(case)
+
+
+def _solve(srr, level=4, **kw):
+    return solve_tehl_line(case.W, case.R, kw.pop("ue", case.UE), srr, kw.pop("T", case.T0), case.OIL, case.E_RED,
+                           case.PROPS, tau0=case.TAU0, level=level, **kw)
+
+
+def test_heat_off_recovers_isothermal_exactly():
+    r = _solve(0.5, level=4, heat=False)
+    iso = solve_line_dimensional(case.W, case.R, case.UE, case.E_RED, ehl_oil_at(case.OIL, case.T0), level=4)
+    assert np.array_equal(r.p, iso.p) and np.array_equal(r.h, iso.h)
+    assert r.hc == iso.hc and r.dT_max == 0.0 and np.all(r.T_film == case.T0)
+
+
+def test_thermal_rheology_hook_is_exact_at_bulk_and_active_otherwise():
+    iso = solve_line_dimensional(case.W, case.R, case.UE, case.E_RED, ehl_oil_at(case.OIL, case.T0), level=3)
+    res = iso.result
+    oil = ehl_oil_at(case.OIL, case.T0)
+    args = (pr.line_alpha_bar(res.M, res.L),)
+    kw = dict(viscosity="roelands", ph=iso.ph, z=oil.z, compressible=True)
+    X = np.linspace(-4.5, 1.5, 16 * 2**3 + 1)
+    plain = Level(Rheology(*args, **kw), pr.line_lam_bar(res.M), pr.LINE_LOAD, x=X, sd_factor=1.0)
+    th = ThermalRheology(*args, **kw, T_bulk=case.T0, s0=case.OIL.s0, expansion=case.OIL.expansion,
+                         T_ref=case.OIL.T0)
+    hot = Level(th, pr.line_lam_bar(res.M), pr.LINE_LOAD, x=X, sd_factor=1.0)
+    T = np.full(X.size, case.T0)
+    th.state.update(node=T, quad=np.asarray(hot.reynolds.basis.interpolate(T)))
+    PI = res.P[plain.interior]
+    F0, F1 = plain.evaluate(PI, res.H0)[0], hot.evaluate(PI, res.H0)[0]
+    assert np.array_equal(F0, F1)
+    T = case.T0 + 20.0 * np.exp(-X**2)
+    th.state.update(node=T, quad=np.asarray(hot.reynolds.basis.interpolate(T)))
+    assert np.max(np.abs(hot.evaluate(PI, res.H0)[0][:-1] - F0[:-1])) > 1e-3 * np.max(np.abs(PI))
+
+
+@pytest.mark.parametrize("srr", [0.0, 0.6])
+def test_global_energy_balance(srr):
+    r = _solve(srr)
+    q = r.heat
+    assert abs(q["balance_error"]) < 0.01
+    assert q["generated"] > 0 and q["solid1"] > 0 and q["solid2"] > 0
+    assert q["convected"] > 0.002 * q["generated"]     # the film does carry heat out
+    assert r.dT_max > 0 and np.all(np.isfinite(r.T_film))
+
+
+def test_jaeger_operator_reproduces_blok_for_a_semielliptic_source():
+    n, b, v1, v2, B = 400, 2e-4, 3.0, 1.0, case.PROPS.B1
+    x = -1 + (2 * np.arange(n) + 1) / n
+    mu, w, vs = 0.05, 1e5, abs(v1 - v2)
+    q = 2 * mu * w * vs / (np.pi * b) * np.sqrt(1 - x**2)
+    J1, J2 = jaeger_matrix(n, 2 * b, B, v1), jaeger_matrix(n, 2 * b, B, v2)
+    share = B * np.sqrt(v1) / (B * np.sqrt(v1) + B * np.sqrt(v2))   # Blok's equal-temperature partition
+    t1, t2 = J1 @ (share * q), J2 @ ((1 - share) * q)
+    assert np.allclose(t1, t2, rtol=1e-10)
+    blok = blok_flash_temperature(mu, w, vs, b, v1, v2, B, B)
+    assert t1.max() == pytest.approx(blok, rel=0.02)
+
+
+def test_flash_temperature_against_blok():
+    """The frictional part of the surface temperature (minus the rolling one) against Blok
+    with femgear's μ: same order, higher because the Eyring heat peaks near the outlet
+    (measured ratio ≈ 1.5)."""
+    base = _solve(0.0).dT_surface
+    for srr in (0.3, 1.0):
+        r = _solve(srr)
+        v1, v2 = case.UE * (1 + srr / 2), case.UE * (1 - srr / 2)
+        blok = float(blok_flash_temperature(r.mu, case.W, abs(v1 - v2), r.b, v1, v2, case.PROPS.B1, case.PROPS.B2))
+        assert 0.8 < (r.dT_surface - base) / blok < 2.2
+
+
+def test_thermal_film_reduction_against_gupta():
+    """φ_T = h_c / h_c,iso at u_e = 3 and 10 m/s, rolling: within 10 % of Gupta et al. (1992)."""
+    for ue in (3.0, 10.0):
+        r = _solve(0.0, ue=ue)
+        g = float(gupta_thermal_factor(r.ph, case.E_RED, 0.0, ue, case.OIL.viscosity(0.0, case.T0),
+                                       case.OIL.beta_t, case.PROPS.k_oil))
+        phi = r.hc / r.hc_isothermal
+        assert phi < 0.97 and abs(phi / g - 1) < 0.1
