@@ -161,8 +161,14 @@ def friction_of(scene, contact) -> dict[str, np.ndarray] | None:
     from femgear.coupling.loop import lubrication_solver
 
     k = contact.kin
-    mu, dT = lubrication_solver(scene)(w=np.full(k.u.shape, contact.load_per_length), R=k.R, ue=k.ue,
-                                       srr=np.abs(k.srr), T=np.full(k.u.shape, scene.operating.ambient_temperature))
+    if scene.physics.lubrication == "tehl":  # direct thermal EHL solves at every path position
+        from femgear.tehl.solver import tehl_line_solver
+
+        solver = tehl_line_solver(scene)
+    else:
+        solver = lubrication_solver(scene)
+    mu, dT = solver(w=np.full(k.u.shape, contact.load_per_length), R=k.R, ue=k.ue,
+                    srr=np.abs(k.srr), T=np.full(k.u.shape, scene.operating.ambient_temperature))
     return {"mu": np.asarray(mu, dtype=float), "temperature_rise": np.asarray(dT, dtype=float)}
 
 

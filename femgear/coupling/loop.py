@@ -75,7 +75,8 @@ def lubrication_solver(scene) -> Lubrication:
 
     ``none``/``constant``: μ = 0 / ``friction.coefficient``, no heating; ``formula``: thermal
     Eyring traction of the Hertzian film (:mod:`femgear.friction`); ``ehl-line``: FE line
-    EHL with Eyring traction and Blok's flash temperature (:mod:`femgear.ehl.path`).
+    EHL with Eyring traction and Blok's flash temperature (:mod:`femgear.ehl.path`); ``tehl``:
+    a friction map of thermal EHL solves (:func:`femgear.tehl.solver.tehl_map_solver`).
     """
     level = scene.physics.lubrication
     if level in ("none", "constant"):
@@ -90,6 +91,10 @@ def lubrication_solver(scene) -> Lubrication:
         from femgear.ehl.path import ehl_line_solver
 
         return ehl_line_solver(scene)
+    if level == "tehl":
+        from femgear.tehl.solver import tehl_map_solver
+
+        return tehl_map_solver(scene)
     from femgear.friction.map import hertz_level_solver
 
     return hertz_level_solver(scene)

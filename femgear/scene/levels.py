@@ -19,7 +19,7 @@ LEVELS: dict[str, tuple[str, ...]] = {
 
 AVAILABLE: dict[str, frozenset[str]] = {
     "stiffness": frozenset({"constant", "iso6336", "pem", "fe"}),
-    "lubrication": frozenset({"none", "constant", "formula", "ehl-line"}),
+    "lubrication": frozenset({"none", "constant", "formula", "ehl-line", "tehl"}),
     "thermal": frozenset({"none", "analytic", "fe"}),
     "wear": frozenset({"none", "archard"}),
     "dynamics": frozenset({"none", "lumped", "timoshenko"}),

@@ -81,7 +81,8 @@ def ehl_oil_at(oil: OilLaw, T_bulk: float, compressible: bool = True) -> EHLOil:
 def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oil: OilLaw, E_red: float,
                     props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
                     level: int = 5, nz: int = 8, cells: int = 192, heat: bool = True, compressible: bool = True,
-                    tol: float = 0.02, relax: float = 0.8, max_iter: int = 60, max_rise: float = 400.0) -> TEHLResult:
+                    tol: float = 0.02, relax: float = 0.8, max_iter: int = 60, max_rise: float = 400.0,
+                    max_step: float = 25.0) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m],
     entrainment speed ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature [K].
 
@@ -114,7 +115,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     J1 = jaeger_matrix(cells, (X1 - X0) * b, props.B1, v1)
     J2 = jaeger_matrix(cells, (X1 - X0) * b, props.B2, v2)
     theta = np.zeros((cells, nz))
-    newton_its, history = 0, []
+    newton_its, history, omega = 0, [], relax
     P, H = res.P, res.H
     for it in range(1, max_iter + 1):
         st = solve_energy(xf, np.interp(xf, X * b, P * ph), np.interp(xc, X * b, H * hs), v1, v2, T_bulk,
@@ -122,13 +123,21 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                           heat=heat)
         change = float(np.max(np.abs(st.theta - theta)))
         history.append(change)
-        if not np.isfinite(change) or float(np.max(np.abs(st.theta))) > max_rise:
-            raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
-                                   {"temperature_change": history})
+        if not np.isfinite(change):
+            raise ConvergenceError(case, "non-finite temperatures", {"temperature_change": history})
         if change < tol:
             theta = st.theta
             break
-        theta = theta + relax * (st.theta - theta)
+        # relaxed update, capped at max_step [K] per iteration: the first energy solve sees the
+        # cold (bulk) viscosities and overshoots by hundreds of K at high sliding
+        # (adaptive: halve the relaxation when the change grows — the layer shear rates of a
+        # hot film can oscillate between layers)
+        if len(history) > 1 and change > history[-2]:
+            omega = max(0.5 * omega, 0.05)
+        theta = theta + np.clip(omega * (st.theta - theta), -max_step, max_step)
+        if float(np.max(np.abs(theta))) > max_rise:
+            raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
+                                   {"temperature_change": history})
         T_nodes = T_bulk + np.interp(X * b, xc, theta.mean(axis=1))
         rheo.state["node"] = T_nodes
         rheo.state["quad"] = np.asarray(lv.reynolds.basis.interpolate(T_nodes))

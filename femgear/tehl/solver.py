@@ -71,3 +71,22 @@ def tehl_map(scene, axes: dict | None = None, level: int = 4, validate: int = 0,
     solver = tehl_line_solver(scene, level=level)
     fmap = FrictionMap.build(solver, axes or tehl_map_axes(scene))
     return fmap.validate(solver, samples=validate, seed=seed) if validate else fmap
+
+
+def tehl_map_solver(scene, level: int = 4, axes: dict | None = None):
+    """The ``tehl`` level for the coupling loop: a :func:`tehl_map` built on first use
+    (≈ 170 TEHL solves), queried by interpolation.  Queries outside the envelope are
+    clamped to its edges (the dynamic load may leave the 0.5–2 × nominal band briefly
+    at the ends of the path)."""
+    cache: dict = {}
+
+    def solve(w, R, ue, srr, T):
+        if "map" not in cache:
+            cache["map"] = tehl_map(scene, axes=axes, level=level)
+        fmap = cache["map"]
+        args = [np.clip(np.abs(a) if k == "srr" else np.asarray(a, dtype=float), fmap.axes[k][0], fmap.axes[k][-1])
+                for k, a in zip(("w", "R", "ue", "srr", "T"), (w, R, ue, srr, T))]
+        return fmap(*args)
+
+    solve.cache = cache
+    return solve

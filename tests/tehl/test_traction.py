@@ -59,4 +59,4 @@ def test_cold_and_hot_oil(T):
 def test_runaway_fails_with_convergence_error_not_nan():
     with pytest.raises(ConvergenceError):
         solve_tehl_line(case.W, case.R, 10.0, 1.0, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0,
-                        level=4, max_iter=40)
+                        level=4, max_rise=50.0)
