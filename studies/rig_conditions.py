@@ -110,11 +110,11 @@ def plot(res: dict, name: str = "rig_conditions"):
         for k, T in enumerate(TORQUES):
             idx = [i for i, c in enumerate(res["conditions"]) if c[1] == T]
             rpm = [res["conditions"][i][0] for i in idx]
-            line, = a.plot(rpm, res["test"][idx, p], "o--", mfc="none", label=f"test {T:.0f} N m")
-            for name, v in res["variants"].items():
-                a.plot(rpm, v["scale"] * v["acceleration"][idx, p], "s-" if name == "free" else "^:",
-                       color=line.get_color(), label=f"femgear {name} × {v['scale']:.2g}, {T:.0f} N m")
-        a.set(title=f"measuring point {p + 1} ({'pinion' if p == 0 else 'gear'} bearing): max acceleration (Table 7)",
+            line, = a.plot(rpm, np.asarray(res["test"])[idx, p], "o--", mfc="none", label=f"test {T:.0f} N m")
+            for variant, v in res["variants"].items():
+                a.plot(rpm, v["scale"] * np.asarray(v["acceleration"])[idx, p], "s-" if variant == "free" else "^:",
+                       color=line.get_color(), label=f"femgear {variant} × {v['scale']:.2g}, {T:.0f} N m")
+        a.set(title=f"point {p + 1} ({'pinion' if p == 0 else 'gear'} bearing), max |a|, Table 7",
               xlabel="input speed [rpm]", ylabel="[m/s²]", yscale="log")
         a.legend(fontsize=6)
     return C.save(fig, "rig_conditions", f"{name}.png")

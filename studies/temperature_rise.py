@@ -69,13 +69,18 @@ def table(res: dict) -> str:
 
 
 def plot(res: dict) -> list:
-    fig, ax = C.figure(1, 1, (9, 4))
+    fig, ax = C.figure(2, 1, (9, 7))
+    ref = res["cases"][0]["series"]
     for label, c in zip(RISES, res["cases"]):
         s = c["series"]
         ax[0][0].plot(s["t"] * 1e3, s["mesh_force"], lw=0.8, label=label)
+        n = min(len(s["t"]), len(ref["t"]))
+        ax[1][0].plot(s["t"][:n] * 1e3, s["mesh_force"][:n] - ref["mesh_force"][:n], lw=0.8, label=label)
     ax[0][0].set(title="dynamic mesh force (both helices), last 10 mesh periods (Fig. 12)", xlabel="t [ms]",
                  ylabel="F [N]")
-    ax[0][0].legend(fontsize=7)
+    ax[1][0].set(title="difference from thermal off", xlabel="t [ms]", ylabel="ΔF [N]")
+    for a in ax[:, 0]:
+        a.legend(fontsize=7)
     paths = [C.save(fig, "temperature_rise", "mesh_force.png")]
     fig, ax = C.figure(1, 2)
     for label, c in zip(RISES, res["cases"]):
