@@ -1,0 +1,93 @@
+"""Benchmark: cost of a line-contact TEHL solve against the isothermal one, and a TEHL map.
+
+    python studies/benchmarks/tehl.py [--levels 4,5,6] [--repeats 3] [--samples 12] [--quick]
+
+1. At a mid-path contact of the paper baseline (w' = 84.3 kN/m, R = 12.3 mm, u_e = 1.09 m/s,
+   oil at 313 K) and SRR 0, 0.3, 1.0: median wall time of the isothermal FE line EHL
+   (:func:`femgear.ehl.dimensional.solve_line_dimensional`) and of the TEHL solve
+   (:func:`femgear.tehl.solve_tehl_line`, which includes its isothermal start) per grid level,
+   and their ratio (issue 5 target: ≤ ~5×).
+2. A friction/temperature map of TEHL solves over the baseline envelope
+   (:func:`femgear.tehl.solver.tehl_map`, level 4): build time, and its interpolation error
+   against ``--samples`` fresh TEHL solves at random points; the time of one map query.
+Prints tables and one JSON line.
+"""
+
+from __future__ import annotations
+
+import os
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import argparse  # noqa: E402
+import json  # noqa: E402
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+W, R, UE, T0 = 84332.0, 0.0123, 1.09, 313.0
+
+
+def _median_time(fn, repeats):
+    ts = []
+    for _ in range(repeats):
+        t = time.perf_counter()
+        v = fn()
+        ts.append(time.perf_counter() - t)
+    return float(np.median(ts)), v
+
+
+def main() -> dict:
+    from femgear.ehl.dimensional import solve_line_dimensional
+    from femgear.scene import load_scene
+    from femgear.tehl import solve_tehl_line
+    from femgear.tehl.line import ehl_oil_at
+    from femgear.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes, tehl_setup
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--levels", default="4,5,6")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--samples", type=int, default=12)
+    ap.add_argument("--quick", action="store_true", help="level 4, one repeat, a 32-point map (CI)")
+    args = ap.parse_args()
+    levels = [4] if args.quick else [int(v) for v in args.levels.split(",")]
+    repeats = 1 if args.quick else args.repeats
+    scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
+    setup = tehl_setup(scene)
+    oil = ehl_oil_at(setup["oil"], T0)
+    rows = []
+    print(f"{'level':>5} {'SRR':>5} {'iso [s]':>8} {'tehl [s]':>8} {'ratio':>6} {'thermal its':>11} {'dT [K]':>7} {'mu':>7}")
+    for lev in levels:
+        t_iso, _ = _median_time(lambda: solve_line_dimensional(W, R, UE, setup["E_red"], oil, level=lev), repeats)
+        for srr in (0.0, 0.3, 1.0):
+            t_th, r = _median_time(lambda: solve_tehl_line(W, R, UE, srr, T0, level=lev, **setup), repeats)
+            rows.append({"level": lev, "srr": srr, "isothermal_s": t_iso, "tehl_s": t_th, "ratio": t_th / t_iso,
+                         "thermal_iterations": r.iterations, "dT_max": r.dT_max, "mu": r.mu})
+            print(f"{lev:5d} {srr:5.2f} {t_iso:8.3f} {t_th:8.3f} {t_th / t_iso:6.2f} {r.iterations:11d} "
+                  f"{r.dT_max:7.1f} {r.mu:7.4f}")
+    axes = tehl_map_axes(scene)
+    if args.quick:
+        axes = {k: v[[0, -1]] if k != "srr" else v[[0, 2, -1]] for k, v in axes.items()}
+    fmap = tehl_map(scene, axes=axes, level=4)
+    n = int(np.prod([v.size for v in axes.values()]))
+    err = fmap.validate(tehl_line_solver(scene, level=4), samples=args.samples).error
+    q = {k: np.array([float(np.mean(v))]) for k, v in axes.items()}
+    t = time.perf_counter()
+    for _ in range(1000):
+        fmap(**q)
+    t_query = (time.perf_counter() - t) / 1000
+    mp = {"solves": n, "build_s": fmap.build_seconds, "per_solve_s": fmap.build_seconds / n, "samples": err.samples,
+          "mu_max_abs": err.mu_max_abs, "mu_rms_abs": err.mu_rms_abs, "mu_max_rel": err.mu_max_rel,
+          "dT_max_abs": err.dT_max_abs, "query_us": t_query * 1e6}
+    print(f"map: {n} TEHL solves in {fmap.build_seconds:.1f} s ({mp['per_solve_s']:.2f} s each); error vs "
+          f"{err.samples} fresh solves: |Δμ| max {err.mu_max_abs:.4f} (rms {err.mu_rms_abs:.4f}, rel {err.mu_max_rel:.2f}),"
+          f" |ΔT| max {err.dT_max_abs:.2f} K; query {t_query * 1e6:.0f} µs")
+    out = {"solve": rows, "map": mp}
+    print(json.dumps(out))
+    return out
+
+
+if __name__ == "__main__":
+    main()
