@@ -18,27 +18,32 @@ from typing import Any
 @dataclass(frozen=True)
 class Measurement:
     seconds: float        #: median wall time [s]
-    peak_bytes: int       #: peak traced allocation of one call (numpy buffers included) [B]
+    peak_bytes: int       #: peak traced allocation of one call (numpy buffers included; 0 if not traced) [B]
     repeats: int
     value: Any            #: what the last call returned
 
 
-def measure(fn: Callable[[], Any], repeats: int = 3) -> Measurement:
-    """Call ``fn`` ``repeats`` times; the first call also traces its peak memory."""
+def measure(fn: Callable[[], Any], repeats: int = 3, trace_memory: bool = True) -> Measurement:
+    """Median wall time of ``repeats`` plain calls; peak memory from one more, traced call.
+
+    Timing and tracing are separate because tracemalloc slows allocation-heavy Python
+    loops several-fold.
+    """
     if repeats < 1:
         raise ValueError(f"repeats must be ≥ 1 (got {repeats})")
-    tracemalloc.start()
-    try:
-        t = time.perf_counter()
-        value = fn()
-        times = [time.perf_counter() - t]
-        peak = tracemalloc.get_traced_memory()[1]
-    finally:
-        tracemalloc.stop()
-    for _ in range(repeats - 1):
+    times = []
+    for _ in range(repeats):
         t = time.perf_counter()
         value = fn()
         times.append(time.perf_counter() - t)
+    peak = 0
+    if trace_memory:
+        tracemalloc.start()
+        try:
+            fn()
+            peak = tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
     return Measurement(seconds=statistics.median(times), peak_bytes=peak, repeats=repeats, value=value)
 
 
