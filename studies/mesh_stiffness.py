@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from femgear.geometry.gear import GearPair
+from femgear.plot import save_figure
 from femgear.scene import load_scene
 from femgear.stiffness import iso6336_stiffness, mesh_stiffness_from_scene
 
@@ -86,12 +87,7 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "mesh_stiffness.png") -> P
     ax.legend(fontsize=8, loc="lower center")
     ax.grid(alpha=0.3)
     fig.suptitle(f"Mesh stiffness, z = {pair.z1}/{pair.z2}, β = {math.degrees(pair.beta):.0f}°, b = {pair.b * 1e3:g} mm per helix")
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def summary(res: dict) -> dict:

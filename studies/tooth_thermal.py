@@ -21,6 +21,7 @@ import numpy as np
 
 from femgear.body.thermal import analytic_radial_displacement, flank_displacement, gear_thermo_elastic
 from femgear.geometry.gear import GearPair
+from femgear.plot import save_figure
 from femgear.scene import load_scene
 from femgear.stiffness.pem import contact_geometry
 
@@ -82,12 +83,7 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "tooth_thermal.png") -> Pa
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle("Thermal flank deviation along the normal line of action")
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 if __name__ == "__main__":

@@ -5,23 +5,17 @@ from __future__ import annotations
 from pathlib import Path
 
 from femgear.contact.path import ContactPath
+from femgear.plot import save_figure
 
 
 def _finish(fig, axes, path: str | Path, title: str) -> Path:
     """Mark the pitch point, add a grid and the title, save as PNG and close."""
-    import matplotlib.pyplot as plt
-
     for ax in axes:
         ax.axvline(0, color="0.6", lw=0.8, ls=":")
         ax.grid(alpha=0.3)
     if title:
         fig.suptitle(title)
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def plot_contact_path(result: ContactPath, path: str | Path, title: str = "") -> Path:
