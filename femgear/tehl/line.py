@@ -82,10 +82,14 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
                     level: int = 5, nz: int = 8, cells: int = 192, heat: bool = True, compressible: bool = True,
                     tol: float = 0.02, relax: float = 0.8, max_iter: int = 60, max_rise: float = 400.0,
-                    max_step: float = 25.0) -> TEHLResult:
+                    max_step: float = 25.0, newton_tol: float = 1e-8) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m],
     entrainment speed ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature [K].
 
+    Numerics: ``level`` of the EHL grid (16·2^level cells on [−4.5 b, 1.5 b]), ``cells`` x ``nz``
+    thermal finite volumes, thermal loop to ``tol`` [K] with relaxation ``relax`` (halved when
+    the change grows) and at most ``max_step`` [K] per iteration, Newton tolerance
+    ``newton_tol`` per EHL re-solve.  ``heat=False`` switches all heat sources off.
     Raises :class:`ConvergenceError` when the isothermal start, the Newton solves or the
     thermal loop fail (or temperatures run away beyond ``max_rise``); never returns NaN.
     """
@@ -134,14 +138,23 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
         # hot film can oscillate between layers)
         if len(history) > 1 and change > history[-2]:
             omega = max(0.5 * omega, 0.05)
-        theta = theta + np.clip(omega * (st.theta - theta), -max_step, max_step)
-        if float(np.max(np.abs(theta))) > max_rise:
+        step = np.clip(omega * (st.theta - theta), -max_step, max_step)
+        if float(np.max(np.abs(theta + step))) > max_rise:
             raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
                                    {"temperature_change": history})
-        T_nodes = T_bulk + np.interp(X * b, xc, theta.mean(axis=1))
-        rheo.state["node"] = T_nodes
-        rheo.state["quad"] = np.asarray(lv.reynolds.basis.interpolate(T_nodes))
-        PI, H0, hist = newton_dense(lv, PI, H0, tol=1e-8, case=case)
+        for attempt in range(4):  # a Newton stall (active-set cycling) -> a shorter temperature step
+            T_nodes = T_bulk + np.interp(X * b, xc, (theta + step).mean(axis=1))
+            rheo.state["node"] = T_nodes
+            rheo.state["quad"] = np.asarray(lv.reynolds.basis.interpolate(T_nodes))
+            try:
+                PI_new, H0_new, hist = newton_dense(lv, PI, H0, tol=newton_tol, case=case)
+                break
+            except ConvergenceError as exc:
+                if attempt == 3:
+                    raise ConvergenceError(case, f"EHL re-solve failed in the thermal loop: {exc}",
+                                           {"temperature_change": history}) from exc
+                step = 0.5 * step
+        theta, PI, H0 = theta + step, PI_new, H0_new
         newton_its += len(hist.residual)
         P, H = lv.film(PI, H0)
     else:

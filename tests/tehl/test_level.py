@@ -1,0 +1,63 @@
+"""The ``tehl`` lubrication level: registry, coupling solver (a TEHL map), static path
+of ``femgear run`` and the along-path study helpers."""
+
+import importlib.util
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from femgear.contact.path import contact_along_path
+from femgear.scene import load_scene
+from femgear.scene.levels import check_level
+from femgear.tehl.path import tehl_along_path, write_thermal_vtk
+from femgear.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes
+
+BASELINE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
+
+
+@pytest.fixture(scope="module")
+def scene():
+    return load_scene(BASELINE, ["physics.lubrication=tehl", "numerics.ehl_level=3"])
+
+
+def test_level_is_available_and_selected(scene):
+    from femgear.coupling.loop import lubrication_solver
+
+    assert check_level("lubrication", "tehl") is None
+    solve = lubrication_solver(scene)
+    assert hasattr(solve, "cache") and "map" not in solve.cache   # a lazily built TEHL map
+
+
+def test_map_of_tehl_solves_and_its_measured_error(scene):
+    axes = tehl_map_axes(scene)
+    axes = {k: v[[0, -1]] for k, v in axes.items()}
+    solver = tehl_line_solver(scene, level=3)
+    fmap = tehl_map(scene, axes=axes, level=3, validate=2)
+    assert fmap.mu.shape == (2, 2, 2, 2, 2) and np.all(np.isfinite(fmap.mu))
+    assert fmap.error.samples == 2 and fmap.error.mu_max_abs < 0.02
+    mu, dT = fmap(**{k: v[:1] for k, v in axes.items()})
+    mu_ref, dT_ref = solver(**{k: v[:1] for k, v in axes.items()})
+    assert mu == pytest.approx(mu_ref, abs=1e-12) and dT == pytest.approx(dT_ref, abs=1e-9)
+
+
+def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, tmp_path):
+    contact = contact_along_path(scene, n=5)
+    path = tehl_along_path(scene, contact, level=3)
+    i_pitch = int(np.argmin(np.abs(path.s)))
+    assert int(np.argmin(path.mu)) == i_pitch
+    assert np.all(np.diff(path.mu[: i_pitch + 1]) < 0) and np.all(np.diff(path.mu[i_pitch:]) > 0)
+    assert 5.0 < path.dT_max.max() < 100.0                            # tens of K
+    f = write_thermal_vtk(path.results[0], tmp_path / "t.vtr")
+    pv = pytest.importorskip("pyvista")
+    g = pv.read(str(f))
+    assert np.max(g.cell_data["temperature"]) == pytest.approx(path.dT_max[0] + scene.operating.ambient_temperature)
+
+
+def test_friction_of_reports_tehl_figures(scene):
+    from femgear.run import friction_of
+
+    contact = contact_along_path(scene, n=3)
+    fr = friction_of(scene, contact)
+    direct = tehl_along_path(scene, contact, level=3)
+    assert fr["mu"] == pytest.approx(direct.mu) and fr["temperature_rise"] == pytest.approx(direct.dT_max)
