@@ -17,6 +17,10 @@ point) and thermal expansion (≈ 6 µm at 30 K, growing toward the tip) have di
 shapes along the path, so their sum changes sign along the path; whether b(t) crosses
 b0 within a mesh cycle depends on how many contact lines average it (a helical mesh
 with ε_γ ≈ 2.4 averages strongly: the curves are much flatter than the paper's).
+Result: wear 1e6 → b ≈ 57.1 µm (+7.1), 30 K → 41.4 µm (−8.6), both → 48.5 µm, always
+below b0 (no crossing); b crosses b0 within the cycle only near the balance rise
+≈ 25 K (row ``balanced``, derived linearly from the single cases, not run), where the
+±0.3 µm intra-cycle wear ripple straddles b0.
 """
 
 from __future__ import annotations
