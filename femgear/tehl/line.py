@@ -33,6 +33,7 @@ from femgear.ehl.newton import newton_dense
 from femgear.ehl.rheology import ROELANDS_P0
 from femgear.friction.oil import OilLaw
 from femgear.tehl.energy import EnergyState, ThermalProps, jaeger_matrix, solve_energy
+from femgear.tehl.loop import thermal_loop
 from femgear.tehl.rheology import ThermalRheology
 
 X0, X1 = -4.5, 1.5  # domain in units of the Hertz half-width (as femgear.ehl.solve_line)
@@ -113,53 +114,29 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                            beta_t=oil.beta_t, expansion=oil.expansion, T_ref=oil.T0)
     X = np.linspace(X0, X1, 16 * 2**level + 1)
     lv = Level(rheo, pr.line_lam_bar(res.M), pr.LINE_LOAD, x=X, ad_factor=1.0, sd_factor=1.0)
-    PI, H0 = res.P[lv.interior].copy(), res.H0
     xf = np.linspace(X0, X1, cells + 1) * b
     xc = 0.5 * (xf[:-1] + xf[1:])
     J1 = jaeger_matrix(cells, (X1 - X0) * b, props.B1, v1)
     J2 = jaeger_matrix(cells, (X1 - X0) * b, props.B2, v2)
-    theta = np.zeros((cells, nz))
-    newton_its, history, omega = 0, [], relax
-    P, H = res.P, res.H
-    for it in range(1, max_iter + 1):
-        st = solve_energy(xf, np.interp(xf, X * b, P * ph), np.interp(xc, X * b, H * hs), v1, v2, T_bulk,
-                          theta, oil, props, J1, J2, model=model, tau0=tau0, limiting_shear=limiting_shear,
+    sol = {"PI": res.P[lv.interior].copy(), "H0": res.H0, "P": res.P, "H": res.H}
+
+    def energy(theta):
+        st = solve_energy(xf, np.interp(xf, X * b, sol["P"] * ph), np.interp(xc, X * b, sol["H"] * hs), v1, v2,
+                          T_bulk, theta, oil, props, J1, J2, model=model, tau0=tau0, limiting_shear=limiting_shear,
                           heat=heat)
-        change = float(np.max(np.abs(st.theta - theta)))
-        history.append(change)
-        if not np.isfinite(change):
-            raise ConvergenceError(case, "non-finite temperatures", {"temperature_change": history})
-        if change < tol:
-            theta = st.theta
-            break
-        # relaxed update, capped at max_step [K] per iteration: the first energy solve sees the
-        # cold (bulk) viscosities and overshoots by hundreds of K at high sliding
-        # (adaptive: halve the relaxation when the change grows — the layer shear rates of a
-        # hot film can oscillate between layers)
-        if len(history) > 1 and change > history[-2]:
-            omega = max(0.5 * omega, 0.05)
-        step = np.clip(omega * (st.theta - theta), -max_step, max_step)
-        if float(np.max(np.abs(theta + step))) > max_rise:
-            raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
-                                   {"temperature_change": history})
-        for attempt in range(4):  # a Newton stall (active-set cycling) -> a shorter temperature step
-            T_nodes = T_bulk + np.interp(X * b, xc, (theta + step).mean(axis=1))
-            rheo.state["node"] = T_nodes
-            rheo.state["quad"] = np.asarray(lv.reynolds.basis.interpolate(T_nodes))
-            try:
-                PI_new, H0_new, hist = newton_dense(lv, PI, H0, tol=newton_tol, case=case)
-                break
-            except ConvergenceError as exc:
-                if attempt == 3:
-                    raise ConvergenceError(case, f"EHL re-solve failed in the thermal loop: {exc}",
-                                           {"temperature_change": history}) from exc
-                step = 0.5 * step
-        theta, PI, H0 = theta + step, PI_new, H0_new
-        newton_its += len(hist.residual)
-        P, H = lv.film(PI, H0)
-    else:
-        raise ConvergenceError(case, f"thermal loop: no convergence in {max_iter} iterations",
-                               {"temperature_change": history})
+        return st, st.theta
+
+    def resolve(theta):
+        T_nodes = T_bulk + np.interp(X * b, xc, theta.mean(axis=1))
+        rheo.state["node"] = T_nodes
+        rheo.state["quad"] = np.asarray(lv.reynolds.basis.interpolate(T_nodes))
+        sol["PI"], sol["H0"], hist = newton_dense(lv, sol["PI"], sol["H0"], tol=newton_tol, case=case)
+        sol["P"], sol["H"] = lv.film(sol["PI"], sol["H0"])
+        return len(hist.residual)
+
+    st, theta, it, newton_its = thermal_loop(energy, resolve, np.zeros((cells, nz)), tol=tol, relax=relax,
+                                             max_step=max_step, max_rise=max_rise, max_iter=max_iter, case=case)
+    P, H = sol["P"], sol["H"]
     return _result(st, theta, iso, X, P, H, b, ph, hs, xf, xc, w, T_bulk, it, newton_its, t0, t_iso)
 
 
