@@ -7,7 +7,10 @@
    (:func:`femgear.ehl.dimensional.solve_line_dimensional`) and of the TEHL solve
    (:func:`femgear.tehl.solve_tehl_line`, which includes its isothermal start) per grid level,
    and their ratio (issue 5 target: ≤ ~5×).
-2. A friction/temperature map of TEHL solves over the baseline envelope
+2. Point contact at the seed paper's benchmark condition (500 N, 10 m/s, 80 °C, R = 20 mm
+   assumed): isothermal FE point EHL vs :func:`femgear.tehl.point.solve_tehl_point` at grid
+   level ``--point-level`` (2 = 65 x 65), SRR 0 and 0.3.
+3. A friction/temperature map of TEHL solves over the baseline envelope
    (:func:`femgear.tehl.solver.tehl_map`, level 4): build time, and its interpolation error
    against ``--samples`` fresh TEHL solves at random points; the time of one map query.
 Prints tables and one JSON line.
@@ -50,6 +53,7 @@ def main() -> dict:
     ap.add_argument("--levels", default="4,5,6")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--samples", type=int, default=12)
+    ap.add_argument("--point-level", type=int, default=2)
     ap.add_argument("--quick", action="store_true", help="level 4, one repeat, a 32-point map (CI)")
     args = ap.parse_args()
     levels = [4] if args.quick else [int(v) for v in args.levels.split(",")]
@@ -67,6 +71,21 @@ def main() -> dict:
                          "thermal_iterations": r.iterations, "dT_max": r.dT_max, "mu": r.mu})
             print(f"{lev:5d} {srr:5.2f} {t_iso:8.3f} {t_th:8.3f} {t_th / t_iso:6.2f} {r.iterations:11d} "
                   f"{r.dT_max:7.1f} {r.mu:7.4f}")
+    from femgear.ehl.dimensional import solve_point_dimensional
+    from femgear.tehl.point import solve_tehl_point
+
+    plev = 1 if args.quick else args.point_level
+    poil = ehl_oil_at(setup["oil"], 353.0)
+    t_iso_p, _ = _median_time(lambda: solve_point_dimensional(500.0, 0.02, None, 10.0, setup["E_red"], poil,
+                                                              level=plev), repeats)
+    point_rows = []
+    for srr in (0.0, 0.3):
+        t_p, r = _median_time(lambda: solve_tehl_point(500.0, 0.02, 10.0, srr, 353.0, level=plev, **setup), repeats)
+        point_rows.append({"level": plev, "srr": srr, "isothermal_s": t_iso_p, "tehl_s": t_p, "ratio": t_p / t_iso_p,
+                           "hc_um": r.hc * 1e6, "hc_iso_um": r.hc_isothermal * 1e6, "dT_max": r.dT_max, "mu": r.mu})
+        print(f"point level {plev} SRR {srr:.2f}: iso {t_iso_p:.2f} s, tehl {t_p:.2f} s, ratio {t_p / t_iso_p:.2f}; "
+              f"h_c {r.hc * 1e6:.3f} µm (iso {r.hc_isothermal * 1e6:.3f}; paper 0.82), dT {r.dT_max:.1f} K, "
+              f"mu {r.mu:.4f} (paper 0.042)")
     axes = tehl_map_axes(scene)
     if args.quick:
         axes = {k: v[[0, -1]] if k != "srr" else v[[0, 2, -1]] for k, v in axes.items()}
@@ -84,7 +103,7 @@ def main() -> dict:
     print(f"map: {n} TEHL solves in {fmap.build_seconds:.1f} s ({mp['per_solve_s']:.2f} s each); error vs "
           f"{err.samples} fresh solves: |Δμ| max {err.mu_max_abs:.4f} (rms {err.mu_rms_abs:.4f}, rel {err.mu_max_rel:.2f}),"
           f" |ΔT| max {err.dT_max_abs:.2f} K; query {t_query * 1e6:.0f} µs")
-    out = {"solve": rows, "map": mp}
+    out = {"solve": rows, "point": point_rows, "map": mp}
     print(json.dumps(out))
     return out
 
