@@ -51,7 +51,7 @@ class CouplingSetup:
     c_l: float                    #: mesh stiffness per unit contact-line length [N/m²]
     static_force: float           #: normal force per helix [N]
     n_phase: int = 128
-    method: str = "rk4"
+    method: str | None = None     #: integrator; None: the dynamics' default for the scene
 
     @classmethod
     def from_scene(cls, scene, n_path: int = 61, n_phase: int = 128, lubrication: Lubrication | None = None,
@@ -67,7 +67,7 @@ class CouplingSetup:
         F0 = pinion_torque(scene) / (pair.rb1 * math.cos(pair.beta_b)) / 2
         return cls(scene=scene, pair=pair, kin=kin, stiffness=stiffness,
                    lubrication=lubrication or lubrication_solver(scene), c_l=c_l, static_force=F0,
-                   n_phase=n_phase, method=method or scene.numerics.dynamics_method or "rk4")
+                   n_phase=n_phase, method=method)
 
 
 def lubrication_solver(scene) -> Lubrication:

@@ -29,13 +29,15 @@ class DynamicsRun:
 
 def default_step(model, method: str, steps_per_period: int = 200) -> float:
     """The step for ``steps_per_period`` steps per mesh period (200: amplitudes converged to
-    < 0.5 %, see the benchmark); ``rk4`` at most 0.9× its stability limit, ``newmark``
+    < 0.5 % at 500 rpm, see the benchmark); ``rk4`` at most a quarter of its stability limit,
+    so that the highest mesh modes stay resolved at low speed (long mesh periods), where
+    accelerations would otherwise depend on the step; ``newmark``
     :data:`NEWMARK_STEP_FACTOR` times finer."""
     h = model.mesh_period / steps_per_period
     if method == "expo":
         return expo_step(model, h)[0]
     if method == "rk4":
-        return min(h, 0.9 * stability_limit(model))
+        return min(h, 0.25 * stability_limit(model))
     return h / NEWMARK_STEP_FACTOR
 
 
