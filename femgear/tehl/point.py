@@ -61,7 +61,7 @@ class TEHLPointResult:
 
 def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float, oil: OilLaw, E_red: float,
                      props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
-                     level: int = 2, nz: int = 6, heat: bool = True, compressible: bool = True, tol: float = 0.05,
+                     level: int = 2, nz: int = 6, heat: bool = True, compressible: bool = True, tol: float = 0.1,
                      relax: float = 0.8, max_iter: int = 40, max_rise: float = 400.0, max_step: float = 25.0,
                      newton_tol: float = 1e-5) -> TEHLPointResult:
     """Thermal EHL of a circular contact: load [N], radius R [m], entrainment speed, SRR,
