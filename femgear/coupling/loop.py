@@ -173,14 +173,30 @@ def _dynamics(setup: CouplingSetup, state: CouplingState):
     mu = (lambda u: np.interp(u, u_tab, mu_tab)) if np.any(mu_tab > 0) else 0.0
     run = run_dynamics(setup.scene, None, stiffness=setup.stiffness, method=setup.method, plots=False,
                        friction_coefficient=mu, profile_deviation=(eL, eR), backlash_variation=db)
-    res = run.response
+    return phase_average(run.response, setup.n_phase), run
+
+
+def phase_average(res, n_phase: int) -> np.ndarray:
+    """Mesh force per helix averaged over the recorded mesh periods, at phases i/n_phase.
+
+    Samples are binned by mesh phase (at most as many bins as samples per period, so
+    no bin is empty) and the bin means interpolated periodically onto the n_phase grid.
+    """
     phase = np.mod(res.t * res.mesh_frequency, 1.0)
-    bins = np.minimum((phase * setup.n_phase).astype(int), setup.n_phase - 1)
-    count = np.bincount(bins, minlength=setup.n_phase)
-    if np.any(count == 0):
-        raise ValueError("too few recorded samples per mesh period for the phase average")
-    force = np.array([np.bincount(bins, res.mesh_force[:, s], setup.n_phase) / count for s in range(2)])
-    return force, run
+    per_period = res.t.size / max(res.mesh_frequency * (res.t[-1] - res.t[0]), 1.0)
+    n_bins = int(min(n_phase, np.floor(per_period)))
+    if n_bins < 8:
+        raise ValueError(f"too few recorded samples per mesh period ({per_period:.1f}) for the phase average")
+    bins = np.minimum((phase * n_bins).astype(int), n_bins - 1)
+    count = np.bincount(bins, minlength=n_bins)
+    centres = (np.arange(n_bins) + 0.5) / n_bins
+    grid = np.arange(n_phase) / n_phase
+    out = []
+    for s in range(2):
+        mean = np.bincount(bins, res.mesh_force[:, s], n_bins) / np.maximum(count, 1)
+        ok = count > 0
+        out.append(np.interp(grid, centres[ok], mean[ok], period=1.0))
+    return np.array(out)
 
 
 def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[CouplingState]:
