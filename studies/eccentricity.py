@@ -135,12 +135,9 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "eccentricity" / "eccentri
         axes[i].set_ylabel("[µm]")
         axes[i].set_yscale("log")
         axes[i].legend(fontsize=8)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    from femgear.plot import save_figure
+
+    return save_figure(fig, path)
 
 
 #: torsional stiffness of an FZG-type power loop referred to the gear shaft [N m/rad]: two Ø30 mm steel

@@ -22,14 +22,9 @@ def _pyplot():
 
 
 def _save(fig, path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    import matplotlib.pyplot as plt
+    from femgear.plot import save_figure
 
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def plot_time_histories(res: Response, path, cycles: float = 5.0) -> Path:
