@@ -48,6 +48,11 @@ def pinion_torque(scene) -> float:
     return op.torque if op.driver == "pinion" else op.torque * scene.pinion.teeth / scene.gear.teeth
 
 
+def normal_force(scene, pair: GearPair) -> float:
+    """Normal mesh force of the pair, both helices: F_bn = T1 / (r_b1 cos β_b) [N]."""
+    return pinion_torque(scene) / (pair.rb1 * math.cos(pair.beta_b))
+
+
 def contact_along_path(scene, n: int | None = None, pair: GearPair | None = None) -> ContactPath:
     """Hertz pressure, films and velocities at ``n`` positions from A to E."""
     pair = pair or GearPair.from_scene(scene)
@@ -57,7 +62,7 @@ def contact_along_path(scene, n: int | None = None, pair: GearPair | None = None
     u = np.unique(np.append(u, pair.u_pitch))
     omega1 = pinion_speed(scene) * 2 * math.pi / 60
     kin = kinematics(pair, u, omega1)
-    F_bn = pinion_torque(scene) / (pair.rb1 * math.cos(pair.beta_b))
+    F_bn = normal_force(scene, pair)
     w = F_bn / (2 * pair.mean_contact_length)
     E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
     hertz = [hertz_line(w, R, E_red) for R in kin.R]

@@ -56,7 +56,7 @@ class CouplingSetup:
     @classmethod
     def from_scene(cls, scene, n_path: int = 61, n_phase: int = 128, lubrication: Lubrication | None = None,
                    method: str | None = None) -> CouplingSetup:
-        from femgear.contact.path import pinion_speed, pinion_torque
+        from femgear.contact.path import normal_force, pinion_speed
         from femgear.stiffness.tvms import mesh_stiffness_from_scene
 
         pair = GearPair.from_scene(scene)
@@ -64,7 +64,7 @@ class CouplingSetup:
         kin = kinematics(pair, u, pinion_speed(scene) * 2 * math.pi / 60)
         stiffness = mesh_stiffness_from_scene(scene)
         c_l = float(np.mean(stiffness.k_left)) / pair.mean_contact_length
-        F0 = pinion_torque(scene) / (pair.rb1 * math.cos(pair.beta_b)) / 2
+        F0 = normal_force(scene, pair) / 2
         return cls(scene=scene, pair=pair, kin=kin, stiffness=stiffness,
                    lubrication=lubrication or lubrication_solver(scene), c_l=c_l, static_force=F0,
                    n_phase=n_phase, method=method)

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.linalg import eigh
 
+from femgear.contact.path import pinion_speed, pinion_torque
 from femgear.dynamics.layout import NDOF
 from femgear.dynamics.mesh import (
     FrictionTable,
@@ -269,8 +270,8 @@ def build_model(
 
     # ---------- speeds ----------
     op = scene.operating
-    n_drv = require_positive(op.speed_rpm, "operating.speed_rpm")
-    rpm1 = n_drv if op.driver == "pinion" else n_drv * pair.z2 / pair.z1
+    require_positive(op.speed_rpm, "operating.speed_rpm")
+    rpm1 = pinion_speed(scene)
     w1 = 2 * math.pi * rpm1 / 60
     w2 = w1 * pair.z1 / pair.z2
     sense = 1.0 if op.driver == "pinion" else -1.0     # pinion CCW when driving (layout docstring)
@@ -337,8 +338,8 @@ def build_model(
 
     # ---------- torques: drive and load balance the mean mesh force ----------
     torque = np.zeros(NDOF)
-    T_drv = require_positive(op.torque, "operating.torque")
-    T1 = T_drv if op.driver == "pinion" else T_drv * pair.z1 / pair.z2
+    require_positive(op.torque, "operating.torque")
+    T1 = pinion_torque(scene)
     T2 = T1 * pair.rb2 / pair.rb1
     for side in range(2):
         torque[6 * side + 5] = T1 / 2

@@ -110,17 +110,12 @@ class FrictionMap:
 
 def hertz_level_solver(scene) -> Solver:
     """The ``formula``-level contact solver of a scene, in the map's signature."""
-    from femgear.contact.hertz import reduced_modulus
-    from femgear.friction.oil import OilLaw
-    from femgear.friction.path import solids_of
-    from femgear.friction.traction import line_contact_friction
+    from femgear.friction.path import scene_line_friction
 
-    oil, solids = OilLaw.from_scene(scene), solids_of(scene)
-    E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
+    friction = scene_line_friction(scene)
 
     def solve(w, R, ue, srr, T):
-        r = line_contact_friction(w, R, ue, srr, T, oil, E_red, solids, tau0=scene.oil.eyring_stress,
-                                  limiting_shear=scene.oil.limiting_shear_coeff)
+        r = friction(w, R, ue, srr, T)
         return r.mu, r.film_max
 
     return solve

@@ -15,11 +15,21 @@ def solids_of(scene) -> Solids:
     return Solids(B1=B, B2=B, k_oil=scene.oil.conductivity)
 
 
+def scene_line_friction(scene, model: str = "eyring", n: int = 48):
+    """``(w, R, ue, srr, T) -> TractionResult``: :func:`line_contact_friction` with the scene's
+    oil, materials and traction parameters bound (the ``formula`` level)."""
+    oil, solids = OilLaw.from_scene(scene), solids_of(scene)
+    E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
+
+    def solve(w, R, ue, srr, T) -> TractionResult:
+        return line_contact_friction(w, R, ue, srr, T, oil, E_red, solids, model=model, tau0=scene.oil.eyring_stress,
+                                     limiting_shear=scene.oil.limiting_shear_coeff, n=n)
+
+    return solve
+
+
 def friction_along_path(scene, contact: ContactPath, model: str = "eyring", n: int = 48) -> TractionResult:
     """Thermal Eyring traction at every position of a quasi-static contact pass (oil at ambient)."""
     k = contact.kin
-    return line_contact_friction(
-        contact.load_per_length, k.R, k.ue, k.srr, scene.operating.ambient_temperature, OilLaw.from_scene(scene),
-        reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio), solids_of(scene),
-        model=model, tau0=scene.oil.eyring_stress, limiting_shear=scene.oil.limiting_shear_coeff, n=n,
-    )
+    return scene_line_friction(scene, model, n)(contact.load_per_length, k.R, k.ue, k.srr,
+                                                scene.operating.ambient_temperature)

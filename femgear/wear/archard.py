@@ -25,7 +25,6 @@ of explicit schemes (Põdra & Andersson 1999; Flodin & Andersson 1997).
 
 from __future__ import annotations
 
-import math
 import os
 import tempfile
 from collections.abc import Iterator
@@ -53,10 +52,10 @@ class WearSetup:
     @classmethod
     def from_scene(cls, scene, kin: PathKinematics, pair: GearPair | None = None, n_phase: int = 64) -> WearSetup:
         """Static load sharing of the scene: each helix carries F_bn/2; c_l from ``[stiffness]``."""
-        from femgear.contact.path import pinion_torque
+        from femgear.contact.path import normal_force
 
         pair = pair or GearPair.from_scene(scene)
-        F_bn = pinion_torque(scene) / (pair.rb1 * math.cos(pair.beta_b))
+        F_bn = normal_force(scene, pair)
         c_l = scene.stiffness.mesh_stiffness_per_width * pair.b / pair.mean_contact_length
         return cls(pair=pair, kin=kin, force=F_bn / 2, c_l=c_l, coefficient=scene.wear.coefficient,
                    hardness=scene.material.hardness, n_phase=n_phase)
