@@ -3,15 +3,21 @@
 energy(θ) solves the energy equation with viscosities frozen at the film temperatures
 T_b + θ and returns (state, θ_new); resolve(θ) re-solves the EHL with the Reynolds
 viscosity and density at θ (raising :class:`ConvergenceError` on failure) and returns its
-Newton iteration count.  Converged when max |θ_new − θ| < tol [K]; θ_new is then the
-returned field, so with the heat sources off (θ_new ≡ 0 at once) the EHL is never
-re-solved and the isothermal solution is returned unchanged.
+Newton iteration count.  The fixed point is θ = G(θ), G(θ) = θ_new; converged when
+max |G(θ) − θ| < tol [K]; θ_new is then the returned field, so with the heat sources off
+(θ_new ≡ 0 at once) the EHL is never re-solved and the isothermal solution is returned
+unchanged.
 
-Safeguards: relaxation ``relax``, halved whenever the change grows (the layer shear rates
-of a hot Eyring film can oscillate between layers), steps capped at ``max_step`` K (the
-first energy solve sees the cold bulk viscosities and overshoots by hundreds of K at high
-sliding), a Newton stall (cavitation active-set cycling) retried with half the step,
-and ``max_rise`` against thermal runaway.
+Iteration: Anderson acceleration of depth ``depth`` with damping ``relax`` (Anderson
+1965; Walker & Ni, SIAM J. Numer. Anal. 49 (2011) 1715, "Algorithm AA" with mixing
+β = relax): with the residuals f_k = G(θ_k) − θ_k and the differences ΔΘ, ΔF of the last
+iterates, γ = argmin ‖f_k − ΔF γ‖₂ and θ_{k+1} = θ_k + β f_k − (ΔΘ + β ΔF) γ
+(``depth`` = 0 is plain relaxation).  Safeguards: when the residual grows, the history
+is dropped and β halved (the layer shear rates of a hot Eyring film, or a very viscous
+cold film, can oscillate); steps are capped at ``max_step`` K (the first energy solve
+sees the cold bulk viscosities and overshoots by hundreds of K at high sliding); a Newton
+stall (cavitation active-set cycling) is retried with half the step; ``max_rise`` guards
+against thermal runaway.
 """
 
 from __future__ import annotations
@@ -23,22 +29,41 @@ import numpy as np
 from femgear.errors import ConvergenceError
 
 
+def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> np.ndarray:
+    """Walker & Ni's Anderson update θ_{k+1} − θ_k from the residual and the history."""
+    step = beta * res
+    if not d_res:
+        return step
+    dF = np.stack([d.ravel() for d in d_res], axis=1)
+    dT = np.stack([d.ravel() for d in d_theta], axis=1)
+    gamma = np.linalg.lstsq(dF, res.ravel(), rcond=None)[0]
+    return step - ((dT + beta * dF) @ gamma).reshape(res.shape)
+
+
 def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol: float, relax: float,
-                 max_step: float, max_rise: float, max_iter: int, case: str):
+                 max_step: float, max_rise: float, max_iter: int, case: str, depth: int = 5):
     """Returns (state, θ, thermal iterations, Newton iterations)."""
     history: list[float] = []
-    omega, newton_its = relax, 0
+    d_theta: list[np.ndarray] = []
+    d_res: list[np.ndarray] = []
+    beta, newton_its, previous = relax, 0, None
     for it in range(1, max_iter + 1):
         st, new = energy(theta)
-        change = float(np.max(np.abs(new - theta))) if new.size else 0.0
+        res = new - theta
+        change = float(np.max(np.abs(res))) if res.size else 0.0
         history.append(change)
         if not np.isfinite(change):
             raise ConvergenceError(case, "non-finite temperatures", {"temperature_change": history})
         if change < tol:
             return st, new, it, newton_its
         if len(history) > 1 and change > history[-2]:
-            omega = max(0.5 * omega, 0.05)
-        step = np.clip(omega * (new - theta), -max_step, max_step)
+            beta = max(0.5 * beta, 0.05)
+            d_theta.clear(), d_res.clear()
+        elif previous is not None and depth > 0:
+            d_theta.append(theta - previous[0]), d_res.append(res - previous[1])
+            del d_theta[:-depth], d_res[:-depth]
+        previous = (theta, res)
+        step = np.clip(anderson_step(res, d_theta, d_res, beta), -max_step, max_step)
         if float(np.max(np.abs(theta + step))) > max_rise:
             raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
                                    {"temperature_change": history})
