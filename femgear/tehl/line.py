@@ -83,13 +83,15 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
                     level: int = 5, nz: int = 8, cells: int = 192, heat: bool = True, compressible: bool = True,
                     tol: float = 0.1, relax: float = 0.8, max_iter: int = 60, max_rise: float = 400.0,
-                    max_step: float = 25.0, newton_tol: float = 1e-8) -> TEHLResult:
+                    max_step: float = 25.0, newton_tol: float = 1e-8, x0: float = X0) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m],
     entrainment speed ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature [K].
 
-    Numerics: ``level`` of the EHL grid (16·2^level cells on [−4.5 b, 1.5 b]), ``cells`` x ``nz``
-    thermal finite volumes, thermal loop to ``tol`` [K] with relaxation ``relax`` (halved when
-    the change grows) and at most ``max_step`` [K] per iteration, Newton tolerance
+    Numerics: ``level`` of the EHL grid (16·2^level cells on [``x0`` b, 1.5 b], x0 = −4.5 by
+    default; a longer inlet, e.g. −8, avoids the inlet starvation of fast contacts), ``cells`` x
+    ``nz`` thermal finite volumes on the same band, thermal loop to ``tol`` [K] (Anderson
+    acceleration with damping ``relax``, :mod:`femgear.tehl.loop`) with at most ``max_step``
+    [K] per iteration, Newton tolerance
     ``newton_tol`` per EHL re-solve.  ``heat=False`` switches all heat sources off.
     Raises :class:`ConvergenceError` when the isothermal start, the Newton solves or the
     thermal loop fail (or temperatures run away beyond ``max_rise``); never returns NaN.
@@ -103,7 +105,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     t0 = time.perf_counter()
     v1, v2 = ue * (1 + srr / 2), ue * (1 - srr / 2)
     ehl_oil = ehl_oil_at(oil, T_bulk, compressible)
-    iso = solve_line_dimensional(w, R, ue, E_red, ehl_oil, level=level)
+    iso = solve_line_dimensional(w, R, ue, E_red, ehl_oil, level=level, x0=x0)
     t_iso = time.perf_counter() - t0
     res = iso.result
     b, ph = iso.a, iso.ph
@@ -112,12 +114,12 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                            z=ehl_oil.roelands_z() if ehl_oil.viscosity == "roelands" else 0.68,
                            compressible=compressible, T_bulk=T_bulk, s0=oil.s0 if oil.model == "roelands" else 0.0,
                            beta_t=oil.beta_t, expansion=oil.expansion, T_ref=oil.T0)
-    X = np.linspace(X0, X1, 16 * 2**level + 1)
+    X = np.linspace(x0, X1, 16 * 2**level + 1)
     lv = Level(rheo, pr.line_lam_bar(res.M), pr.LINE_LOAD, x=X, ad_factor=1.0, sd_factor=1.0)
-    xf = np.linspace(X0, X1, cells + 1) * b
+    xf = np.linspace(x0, X1, cells + 1) * b
     xc = 0.5 * (xf[:-1] + xf[1:])
-    J1 = jaeger_matrix(cells, (X1 - X0) * b, props.B1, v1)
-    J2 = jaeger_matrix(cells, (X1 - X0) * b, props.B2, v2)
+    J1 = jaeger_matrix(cells, (X1 - x0) * b, props.B1, v1)
+    J2 = jaeger_matrix(cells, (X1 - x0) * b, props.B2, v2)
     sol = {"PI": res.P[lv.interior].copy(), "H0": res.H0, "P": res.P, "H": res.H}
 
     def energy(theta):

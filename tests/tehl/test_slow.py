@@ -26,8 +26,12 @@ def _phi(ue, srr, level=4):
 
 def test_film_reduction_over_srr_against_gupta():
     """Measured (u_e = 10 m/s): φ 0.759/0.757/0.725/0.617 at SRR 0/0.25/0.5/1 vs Gupta
-    0.698/0.586/0.521/0.435: same direction, femgear's reduction by sliding is weaker (the
-    mean-temperature Reynolds lacks the cross-film viscosity terms of Yang & Wen 1990)."""
+    0.698/0.586/0.521/0.435: same direction, femgear's reduction by sliding is weaker.
+    Not from the mean-temperature Reynolds: the Yang & Wen (1990) cross-film factors on the
+    inlet (x < −b) raised φ to 0.799/0.759/0.665 at SRR 0/0.5/1 (cold walls carry less
+    back-flow); nor from Eyring (Newtonian: 0.759/0.719/0.612).  The [−4.5 b, 1.5 b] inlet
+    starves the isothermal film by 12 % at 10 m/s; from −8 b φ is 0.721/0.715/0.564 at SRR
+    0/0.25/1 (studies/tehl_gupta.py), still +22/+30 % over Gupta with sliding."""
     rows = [(s, *_phi(10.0, s)) for s in (0.0, 0.25, 0.5, 1.0)]
     for s, phi, g in rows:
         print(f"SRR {s:4.2f}: phi {phi:.3f}  Gupta {g:.3f}")
