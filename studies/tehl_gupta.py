@@ -47,7 +47,8 @@ def main() -> None:
     eta0 = float(case.OIL.viscosity(0.0, case.T0))
     L = case.OIL.beta_t * eta0 * args.ue**2 / case.PROPS.k_oil
     print(f"u_e = {args.ue} m/s, L = {L:.2f}; phi and thermal iterations per inlet start x0/b")
-    print(f"{'SRR':>5} " + " ".join(f"{'phi(' + str(x0) + ')':>8} {'its':>4}" for x0, _, _ in DOMAINS) + f" {'Gupta':>7}")
+    heads = " ".join(f"{'phi(' + str(x0) + ')':>8} {'its':>4}" for x0, _, _ in DOMAINS)
+    print(f"{'SRR':>5} {heads} {'Gupta':>7}")
     from femgear.ehl.dimensional import solve_line_dimensional
     from femgear.tehl.line import ehl_oil_at
     ph = solve_line_dimensional(case.W, case.R, args.ue, case.E_RED, ehl_oil_at(case.OIL, case.T0), level=3).ph
