@@ -74,6 +74,22 @@ def nvm_central(M, L, ratio: float = 1.0):
     return (iso + piezo) ** (1 / s)
 
 
+def rigid_isoviscous_point(ratio: float = 1.0) -> float:
+    """Brewe, Hamrock & Taylor (1979), J. Lubr. Technol. 101:231: the rigid-isoviscous
+    film of a fully flooded point contact (Reynolds cavitation), as the coefficient C of
+    H_Moes = C M^−2.
+
+    Their fit H_min = 128 α φ² [0.131 atan(α/2) + 1.683]² (U/W)², α = R_y/R_x = 1/λ,
+    φ = (1 + 2/(3α))^−1, uses Hamrock's groups on the mean speed; with the Moes groups of
+    this module (sum speed) (U/W)² = M^−2 (2U)^(1/2) / 4, so C = 32 α φ² [...]².  Rigid
+    surfaces: the minimum film is the central one.  For λ = 1, C = 35.0 (NVM's rigid-
+    isoviscous asymptote, :func:`nvm_central`, uses 41.3).
+    """
+    alpha = 1.0 / ratio
+    phi = 1.0 / (1.0 + 2.0 / (3.0 * alpha))
+    return 32.0 * alpha * phi**2 * (0.131 * math.atan(alpha / 2.0) + 1.683) ** 2
+
+
 # ----------------------------------------------------------------- line contact
 def dowson_higginson_minimum(U, G, W_line):
     """Dowson & Higginson (1977 form), line contact: H_min = 2.65 U^0.70 G^0.54 W'^−0.13."""
