@@ -6,7 +6,7 @@ A fully flooded inlet needs a large domain: far upstream H ~ r^2/2, so P ~ r^-3 
 domain truncated at radius R X_s misses a load ~ 1/R.  The study solves on square-ish
 domains X in [-R, 2] X_s, Y in [-R, R] X_s for several R, extrapolates each in the mesh
 size (Richardson with the observed order of three nested levels) and then in 1/R
-(H(R) = H_inf - C/R, least squares), and compares H_inf with Brewe, Hamrock & Taylor
+(H(R) = H_inf - C/R - D/R^2), and compares H_inf with Brewe, Hamrock & Taylor
 (1979) and with the rigid-isoviscous asymptote of Nijenbanning, Venner & Moes (1994).
 ``--elastic M`` adds the full elastic solver at that small M on the same domains: it must
 approach the rigid value as M -> 0.
@@ -54,10 +54,12 @@ def richardson(values: list[float]) -> tuple[float, float | None]:
 
 
 def inverse_radius_fit(radii, values) -> tuple[float, float]:
-    """Least-squares H(R) = H_inf - C/R; returns (H_inf, C)."""
-    A = np.column_stack([np.ones(len(radii)), -1.0 / np.asarray(radii, float)])
-    (h_inf, c), *_ = np.linalg.lstsq(A, np.asarray(values, float), rcond=None)
-    return float(h_inf), float(c)
+    """H(R) = H_inf - C/R - D/R^2 through the values (D only with three or more radii;
+    least squares beyond); returns (H_inf, C)."""
+    x = 1.0 / np.asarray(radii, float)
+    A = np.column_stack([np.ones_like(x), -x, -x**2][: min(3, x.size)])
+    coef, *_ = np.linalg.lstsq(A, np.asarray(values, float), rcond=None)
+    return float(coef[0]), float(coef[1])
 
 
 def solve_rigid_limit(M: float, R: float, lmax: int, rigid: bool = True) -> dict:
@@ -95,7 +97,7 @@ def main() -> None:
     bht = rigid_isoviscous_point()
     nvm = float(nvm_central(1e-3, 0.0)) * 1e-6  # its RI asymptote: H M^2 at vanishing M
     for key, s in summary.items():
-        print(f"{key}: H M^2 -> {s['HM2_infinite_domain']:.2f} (fit H_inf - {s['C']:.1f}/R); "
+        print(f"{key}: H M^2 -> {s['HM2_infinite_domain']:.2f} (H_inf - {s['C']:.1f}/R - D/R^2); "
               f"Brewe-Hamrock-Taylor {bht:.2f} ({s['HM2_infinite_domain'] / bht - 1:+.1%}), "
               f"NVM asymptote {nvm:.2f} ({s['HM2_infinite_domain'] / nvm - 1:+.1%})")
     OUT.mkdir(parents=True, exist_ok=True)
