@@ -2,6 +2,7 @@
 et al. (1992), and a grid check of the thermal figures."""
 
 import importlib.util
+import math
 from pathlib import Path
 
 import pytest
@@ -16,29 +17,39 @@ _spec.loader.exec_module(case)
 pytestmark = pytest.mark.slow
 
 
-def _phi(ue, srr, level=4):
-    r = solve_tehl_line(case.W, case.R, ue, srr, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0,
-                        level=level)
-    g = float(gupta_thermal_factor(r.ph, case.E_RED, srr, ue, case.OIL.viscosity(0.0, case.T0), case.OIL.beta_t,
+def _phi(ph, ue, srr):
+    """φ = h_c/h_c,iso from the long inlet [−8 b, 1.5 b] (level 5, 256 thermal cells: the
+    isothermal film within 1.5 % of its −24 b value here) and Gupta's factor with S = SRR."""
+    w = 2.0 * math.pi * case.R * ph**2 / case.E_RED
+    r = solve_tehl_line(w, case.R, ue, srr, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0,
+                        level=5, cells=256, x0=-8.0)
+    g = float(gupta_thermal_factor(ph, case.E_RED, srr, ue, case.OIL.viscosity(0.0, case.T0), case.OIL.beta_t,
                                    case.PROPS.k_oil))
     return r.hc / r.hc_isothermal, g
 
 
 def test_film_reduction_over_srr_against_gupta():
-    """Measured (u_e = 10 m/s): φ 0.759/0.757/0.725/0.617 at SRR 0/0.25/0.5/1 vs Gupta
-    0.698/0.586/0.521/0.435: same direction, femgear's reduction by sliding is weaker.
-    Not from the mean-temperature Reynolds: the Yang & Wen (1990) cross-film factors on the
-    inlet (x < −b) raised φ to 0.799/0.759/0.665 at SRR 0/0.5/1 (cold walls carry less
-    back-flow); nor from Eyring (Newtonian: 0.759/0.719/0.612).  The [−4.5 b, 1.5 b] inlet
-    starves the isothermal film by 12 % at 10 m/s; from −8 b φ is 0.721/0.715/0.564 at SRR
-    0/0.25/1 (studies/tehl_gupta.py), still +22/+30 % over Gupta with sliding."""
-    rows = [(s, *_phi(10.0, s)) for s in (0.0, 0.25, 0.5, 1.0)]
+    """φ vs Gupta (studies/tehl_gupta.py, p_h 0.5–1.5 GPa, u_e 5–10 m/s, Eyring and Newtonian).
+    Rolling agrees everywhere within 3.5 % (inlet −8 b: 1.034/1.017 at 0.5 GPa and 10/5 m/s,
+    0.972/1.002 at 1 GPa, 0.990/1.015 at 1.5 GPa).  Sliding reduces femgear's film about half
+    as much as the fit with S = SRR = (v1 − v2)/u_e: at 0.5 GPa, 10 m/s φ = 0.722/0.668/0.564
+    at SRR 0/0.5/1 vs Gupta 0.698/0.521/0.435 (φ/G 1.03/1.28/1.30); at 1 and 1.5 GPa, 5 m/s
+    φ/G is 1.19–1.28 at SRR 0.5–1, so the gap is not a load-range effect; Newtonian shear
+    changes φ by < 0.01 where it converges.  With S = SRR/2 (slide-to-sum speed) φ/G is
+    1.03/1.14/1.08 (0.5 GPa, 10 m/s), 1.02/1.10/1.09 (5 m/s), 1.11–1.15 at 1–1.5 GPa and 5 m/s,
+    1.16 at 1 GPa, 10 m/s, SRR 0.5: closer, but no tested range is within 10 % over SRR 0…1
+    in either convention (which one Gupta used is not verified here).  Part of the
+    difference is the thermal expansion of the hot Hertz-zone oil (ρh constant: at 1 GPa,
+    5 m/s φ(SRR 0.5)/φ(0) is 1.02, and 0.97 with ε = 0), absent from an inlet-only fit."""
+    rows = [(s, *_phi(0.5e9, 10.0, s)) for s in (0.0, 0.5, 1.0)]
     for s, phi, g in rows:
         print(f"SRR {s:4.2f}: phi {phi:.3f}  Gupta {g:.3f}")
     phis = [r[1] for r in rows]
-    assert phis[-1] < phis[0] - 0.05                      # sliding reduces the film further
-    assert abs(rows[0][1] / rows[0][2] - 1) < 0.1                  # rolling: within 10 %
-    assert all(abs(phi / g - 1) < 0.45 for _, phi, g in rows)        # measured: up to +42 % at SRR 1
+    assert phis[2] < phis[1] < phis[0] - 0.03                         # sliding reduces the film further
+    assert abs(rows[0][1] / rows[0][2] - 1) < 0.05                    # rolling: within 5 %
+    assert all(1.15 < phi / g < 1.40 for s, phi, g in rows[1:])      # sliding: measured +28/+30 %
+    phi, g = _phi(1.0e9, 10.0, 0.0)
+    assert abs(phi / g - 1) < 0.05                                    # rolling at 1 GPa (measured −2.8 %)
 
 
 def test_thermal_figures_grid_converged():
