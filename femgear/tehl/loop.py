@@ -15,9 +15,12 @@ iterates, γ = argmin ‖f_k − ΔF γ‖₂ and θ_{k+1} = θ_k + β f_k − (
 (``depth`` = 0 is plain relaxation).  Safeguards: when the residual grows, the history
 is dropped and β halved (the layer shear rates of a hot Eyring film, or a very viscous
 cold film, can oscillate); steps are capped at ``max_step`` K (the first energy solve
-sees the cold bulk viscosities and overshoots by hundreds of K at high sliding); a Newton
-stall (cavitation active-set cycling) is retried with half the step; ``max_rise`` guards
-against thermal runaway.
+sees the cold bulk viscosities and overshoots by hundreds of K at high sliding); while
+the residual exceeds ``max_step`` the iteration is damped Picard without history
+(Anderson's secant model is local, Walker & Ni §1; from the cold start at 1 GPa,
+10 m/s, SRR 1 the extrapolated steps drove the residual from 1495 K up to 2208 K);
+a Newton stall (cavitation active-set cycling) is retried with half the step;
+``max_rise`` guards against thermal runaway.
 """
 
 from __future__ import annotations
@@ -62,7 +65,11 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
         elif previous is not None and depth > 0:
             d_theta.append(theta - previous[0]), d_res.append(res - previous[1])
             del d_theta[:-depth], d_res[:-depth]
-        previous = (theta, res)
+        if change > max_step:       # far from the fixed point: damped Picard, no secant history
+            d_theta.clear(), d_res.clear()
+            previous = None
+        else:
+            previous = (theta, res)
         step = np.clip(anderson_step(res, d_theta, d_res, beta), -max_step, max_step)
         if float(np.max(np.abs(theta + step))) > max_rise:
             raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
