@@ -17,10 +17,14 @@ row per case and writes all rows as JSON (default out/tehl_gupta.json, git-ignor
 Reading (default run, ≈ 4 min; numbers in tests/tehl/test_slow.py): rolling φ is within
 3.5 % of Gupta at every p_h and u_e; with sliding φ/G is 1.2–1.3 (S = SRR) or 1.08–1.16
 (S = SRR/2) at 0.5–1.5 GPa, so the gap is neither the load range nor inlet starvation.
-Not converged (reported as "fail"): most Newtonian sliding cases at p_h ≥ 1 GPa (Hertz-zone
-heating of the Newtonian film runs away or the loop stalls), Eyring SRR 1 at 10 m/s and
-p_h ≥ 1 GPa, SRR 0.5 at 1.5 GPa, and 0.5 GPa, 10 m/s, SRR 0 on the short inlet (thermal loop
-with a Newton re-solve failing).
+Not converged (reported as "fail"): most Newtonian sliding cases at p_h ≥ 1 GPa (the loop
+stalls; at 1.5 GPa, 10 m/s, SRR 1 the first residual is 9e8 K and the loop ends at 5.6 K after
+60 iterations, so not a proven runaway), Eyring SRR 1 at 10 m/s and p_h ≥ 1 GPa (the Hertz zone
+converges, ΔT ≈ 240/280 K, then one inlet back-flow layer next to the velocity reversal
+chatters by 0.5/3 K: its temperature follows the sign of the vertical flux, a difference of
+neighbouring cells' flow splits), and 0.5 GPa, 10 m/s, SRR 0 on the short inlet (the first
+Newton re-solve fails).  Eyring SRR 0.5 at 1.5 GPa, 10 m/s converges since the thermal loop
+starts with damped Picard (φ 0.646, ΔT 213 K, μ 0.012, 21 iterations).
 
 Why 256 thermal cells from −8 b (not 304 at the −4.5 b cell size): in the inlet back-flow
 one layer next to the reversal of the layer velocity carries almost no horizontal flux; its
