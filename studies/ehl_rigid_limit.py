@@ -64,9 +64,7 @@ def inverse_radius_fit(radii, values) -> tuple[float, float]:
 
 def solve_rigid_limit(M: float, R: float, lmax: int, rigid: bool = True) -> dict:
     t0 = time.perf_counter()
-    # no artificial diffusion: it models elastic transport (and eps never vanishes at L = 0)
-    r = solve_point(M, 0.0, level=lmax, coarse_level=2, rigid=rigid, domain=ri_domain(M, R),
-                    ad_factor=0.0, sd_factor=0.0)
+    r = solve_point(M, 0.0, level=lmax, coarse_level=2, rigid=rigid, domain=ri_domain(M, R))
     hm2 = [lv["Hc"] * M**2 for lv in r.levels]
     extrap, order = richardson(hm2)
     return {"M": M, "R": R, "rigid": rigid, "HM2": hm2, "HM2_extrapolated": extrap,

@@ -50,7 +50,9 @@ class Level:
             self.h, self.dim = float(x[1] - x[0]), 1
             self._K = line_influence(self.X, self.h)
             self.shape = (self.X.size,)
-        beta = (self.defl.K[0, 0] if self.dim == 2 else self._K[0, 0]) / self.h
+        # the artificial diffusion models the elastic transport of P (reynolds.py): none
+        # for rigid surfaces
+        beta = 0.0 if rigid else (self.defl.K[0, 0] if self.dim == 2 else self._K[0, 0]) / self.h
         self.reynolds = ReynoldsFE(rheology, lam_bar, grid=grid, x=x, beta=beta,
                                    ad_factor=ad_factor, sd_factor=sd_factor)
         self.n = self.X.size

@@ -51,9 +51,14 @@ def default_domain(ratio: float = 1.0) -> Domain:
 
 
 def _hertz_start(level: Level, ratio: float) -> np.ndarray:
-    """Dry Hertz pressure on an ellipse of aspect ~ lambda^(-2/3), scaled to the load."""
+    """Dry Hertz pressure on an ellipse of aspect ~ lambda^(-2/3), scaled to the load.
+
+    On a grid coarser than the contact (huge domains at small M) the ellipse is widened
+    to two cells, so that the start carries the load on some nodes (never 0/0)."""
     ay = ratio ** (-2.0 / 3.0) if ratio > 0 else 1.0
     ax = ay ** -0.5
+    grow = max(1.0, 2.0 * level.h / min(ax, ay))
+    ax, ay = grow * ax, grow * ay
     P = np.sqrt(np.maximum(1.0 - (level.X / ax) ** 2 - (level.Y / ay) ** 2, 0.0))
     PI = P[level.interior]
     return PI * level.load / (level.m @ PI)

@@ -79,7 +79,7 @@ def upwind_weight(Pe: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     mid = (Pe >= 1e-2) & (Pe < 30.0)
     Ps = np.where(mid, Pe, 1.0)
     xi = np.where(small, Pe / 3.0 - Pe**3 / 45.0,
-                  np.where(mid, 1.0 / np.tanh(Ps) - 1.0 / Ps, 1.0 - 1.0 / Pe))
+                  np.where(mid, 1.0 / np.tanh(Ps) - 1.0 / Ps, 1.0 - 1.0 / np.maximum(Pe, 30.0)))
     # Pe^2 xi' = 1 - Pe^2 / sinh^2(Pe)
     p2xi = np.where(small, Pe**2 / 3.0 - Pe**4 / 15.0,
                     np.where(mid, 1.0 - (Ps / np.sinh(Ps)) ** 2, 1.0))
@@ -143,7 +143,7 @@ class ReynoldsFE:
         # streamline diffusion of Q (optional): delta = sd (h/2) xi(Pe), differentiated
         # through eps: d delta/d eps = -sd Pe^2 xi'(Pe) / (beta rho h)
         sd = self.sd_factor
-        if sd > 0.0:
+        if sd > 0.0 and self.beta > 0.0:
             delta = sd * 0.5 * self.h * xi
             ddelta = -sd * p2xi / (self.beta * rho_q * self.h)
             Qx = b.interpolate(Q).grad[0]
