@@ -31,6 +31,7 @@ from femgear.ehl.grid import prolongation
 from femgear.ehl.level import Level
 
 MAX_DP = 1.0
+RESIDUAL_TOL = 1e-10  # scaled residual norm accepted as converged after a full step
 MAX_LOG_ETA = 4.0
 WATCHDOG = 4
 ILU_DROP, ILU_FILL = 1e-4, 3.0
@@ -85,11 +86,16 @@ def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case
     raise ConvergenceError(case, "line search failed (residual does not decrease)", hist.as_dict())
 
 
-def _converged(level: Level, PI, H0, dP, dH0, F, alpha, tol) -> bool:
+def _converged(level: Level, PI, H0, dP, dH0, F, alpha, tol, merit: float) -> bool:
+    """A full step that was small (|dP| <= tol max P, |dH0| <= tol (|H0| + 1)), or a full
+    step onto a scaled residual below ``RESIDUAL_TOL`` (the step test lags one quadratic
+    iteration behind); both with the load balanced to 1e-6."""
     Hc_scale = max(abs(H0) + 1.0, 1e-3)
     load_err = abs(F[-1]) / level.load
-    return (alpha == 1.0 and np.max(np.abs(dP)) <= tol * max(1.0, np.max(PI))
-            and abs(dH0) <= tol * Hc_scale and load_err < 1e-6)
+    if alpha != 1.0 or load_err >= 1e-6:
+        return False
+    small_step = np.max(np.abs(dP)) <= tol * max(1.0, np.max(PI)) and abs(dH0) <= tol * Hc_scale
+    return bool(small_step or merit < RESIDUAL_TOL)
 
 
 def _record(hist: History, level: Level, F, scale, alpha, kry):
@@ -116,7 +122,7 @@ def _newton(level: Level, PI, H0, direction: Callable, max_iter: int, tol: float
         dP, dH0 = dx[:-1], float(dx[-1])
         PI, H0, F, lin, H, act, alpha = _line_search(level, PI, H0, F, dP, dH0, s, scale, hist, case)
         _record(hist, level, F, scale, alpha, its)
-        if _converged(level, PI, H0, alpha * dP, alpha * dH0, F, alpha, tol):
+        if _converged(level, PI, H0, alpha * dP, alpha * dH0, F, alpha, tol, hist.residual[-1]):
             return PI, H0, hist
     raise ConvergenceError(case, f"no convergence in {max_iter} Newton iterations", hist.as_dict())
 
