@@ -4,11 +4,16 @@ Film (reduced form, documented): ``nz`` layers across the film (mapped coordinat
 ζ = z/h, body 1 at z = 0 moving at v1, body 2 at z = h moving at v2) on ``nt`` cells
 along x; conservative finite volumes, first-order upwind in x and across the layers
 (upwinding of the energy equation, notes §7.6), conduction across the film, conduction
-along x neglected (high Péclet number).  Velocity per layer: the Couette profile of the
-layer shear rates (Ree–Eyring or Newtonian, the shear stress τ_c constant across the
-film, so that τ_c = τ0 asinh(η_e γ̇/τ0) with η_e the harmonic cross-film mean
-viscosity — Johnson & Tevaarwerk 1977) plus the Newtonian Poiseuille parabola at the
-film-mean viscosity.  The layer mass fluxes are the local flow split times the constant
+along x neglected (high Péclet number).  Shear heating per layer from the layer shear
+rates (Ree–Eyring or Newtonian, the shear stress τ_c constant across the film, so that
+τ_c = τ0 asinh(η_e γ̇/τ0) with η_e the harmonic cross-film mean viscosity — Johnson &
+Tevaarwerk 1977).  Advection by the flow of the reduced Reynolds equation: the linear
+Couette profile plus the Poiseuille parabola at the film-mean viscosity.  (Advecting
+with the layer shear-rate profile made the flow split depend on every layer's
+temperature; in the inlet back-flow a layer with almost no flow along x then took its
+temperature from the sign of a tiny cross-layer flux, itself a difference of those
+splits, and the thermal fixed point chattered cell to cell at p_h >= 1 GPa, SRR 1.)
+The layer mass fluxes are the local flow split times the constant
 Reynolds mass flux ρ h u at the pressure maximum, so that discrete continuity holds
 exactly (the cross-layer fluxes close at the walls) and the scheme conserves energy to
 round-off: heat generated = heat into the solids + heat convected out (tested).
@@ -103,8 +108,7 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
     # layer velocities and fluxes [m²/s]
     zf = dz[:, None] * np.arange(nz + 1)[None, :]
     za, zb = zf[:, :-1], zf[:, 1:]
-    cum = np.concatenate([np.zeros((nt, 1)), np.cumsum(rate * dz[:, None], axis=1)[:, :-1]], axis=1)
-    phi_c = (v1 + cum + 0.5 * rate * dz[:, None]) * dz[:, None]
+    phi_c = v1 * (zb - za) + du * (zb**2 - za**2) / (2.0 * h[:, None])
     eta_m = oil.viscosity(p, T_mean)
     phi_p = -(dpdx / (2 * eta_m))[:, None] * (h[:, None] * (zb**2 - za**2) / 2 - (zb**3 - za**3) / 3)
     phi = phi_c + phi_p

@@ -82,7 +82,7 @@ def ehl_oil_at(oil: OilLaw, T_bulk: float, compressible: bool = True) -> EHLOil:
 def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oil: OilLaw, E_red: float,
                     props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
                     level: int = 5, nz: int = 8, cells: int = 192, heat: bool = True, compressible: bool = True,
-                    tol: float = 0.1, relax: float = 0.8, max_iter: int = 60, max_rise: float = 400.0,
+                    tol: float = 0.1, relax: float = 0.8, max_iter: int = 100, max_rise: float = 400.0,
                     max_step: float = 25.0, newton_tol: float = 1e-8, x0: float = X0) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m],
     entrainment speed ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature [K].

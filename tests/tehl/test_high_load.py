@@ -33,12 +33,14 @@ def test_eyring_srr_half_converges(ph):
 
 
 @pytest.mark.parametrize("ph", [1.0e9, 1.5e9])
-@pytest.mark.xfail(raises=ConvergenceError, strict=True,
-                   reason="inlet back-flow reversal layer chatters (0.5 K at 1 GPa, 3 K at 1.5 GPa) "
-                          "after the Hertz zone has converged")
 def test_eyring_srr_one_converges(ph):
+    """Measured: 1 GPa ΔT 244 K, μ 0.0095, φ 0.580, 24 iterations; 1.5 GPa ΔT 283 K,
+    μ 0.0089, φ 0.575, 30 iterations.  μ < 0.01 is physical here: the film is 240-280 K
+    hotter and the Eyring stress caps the shear at ~11 MPa.  (These stalled while the
+    energy equation advected with the layer shear-rate profile; see femgear.tehl.energy.)"""
     r = _solve(ph, 1.0)
     assert r.dT_max > 0 and 0.005 < r.mu < 0.1 and abs(r.heat["balance_error"]) < 1e-6
+    assert r.hc < r.hc_isothermal
 
 
 def test_no_steady_state_below_the_rise_bound_raises_with_history():
