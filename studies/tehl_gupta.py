@@ -15,26 +15,16 @@ convention S = (v1 − v2)/(v1 + v2) = SRR/2 (columns "G" and "G/2", ratios φ/G
 row per case and writes all rows as JSON (default out/tehl_gupta.json, git-ignored).
 
 Reading (default run, ≈ 4 min; numbers in tests/tehl/test_slow.py): rolling φ is within
-3.5 % of Gupta at every p_h and u_e; with sliding φ/G is 1.2–1.3 (S = SRR) or 1.08–1.16
-(S = SRR/2) at 0.5–1.5 GPa, so the gap is neither the load range nor inlet starvation.
-Not converged (reported as "fail"): most Newtonian sliding cases at p_h ≥ 1 GPa (the loop
-stalls; at 1.5 GPa, 10 m/s, SRR 1 the first residual is 9e8 K and the loop ends at 5.6 K after
-60 iterations, so not a proven runaway), Eyring SRR 1 at 10 m/s and p_h ≥ 1 GPa (the Hertz zone
-converges, ΔT ≈ 240/280 K, then one inlet back-flow layer next to the velocity reversal
-chatters by 0.5/3 K: its temperature follows the sign of the vertical flux, a difference of
-neighbouring cells' flow splits), and 0.5 GPa, 10 m/s, SRR 0 on the short inlet (the first
-Newton re-solve fails).  Eyring SRR 0.5 at 1.5 GPa, 10 m/s converges since the thermal loop
-starts with damped Picard (φ 0.646, ΔT 213 K, μ 0.012, 21 iterations).
+3.5 % of Gupta at every p_h and u_e on the long inlet; with sliding φ/G is 1.18–1.45
+(S = SRR) or 1.08–1.24 (S = SRR/2) at 0.5–1.5 GPa, the gap growing with load and speed, so
+it is neither the load range nor inlet starvation.  Newtonian and Eyring shear give φ within
+0.01 of each other.  Every case converges on the long inlet (6–83 thermal iterations, the
+Newtonian sliding ones the slowest); on the short inlet Eyring SRR 0.5 and 1 at 1.5 GPa,
+10 m/s raise ConvergenceError.
 
-Why 256 thermal cells from −8 b (not 304 at the −4.5 b cell size): in the inlet back-flow
-one layer next to the reversal of the layer velocity carries almost no horizontal flux; its
-temperature follows the sign of the small vertical flux (hot back-flow above or cold
-entrained oil below), which is the difference of the neighbouring cells' flow splits and
-depends on the layer viscosities.  The upwinding itself handles the reversal (per layer and
-face, both directions), but this feedback makes the thermal fixed point slow: at 0.5 GPa,
-10 m/s, SRR 0.5, 304 cells need 65 iterations (over the default 60), 512 cells stall at
-3–4 K, 256 cells (two EHL cells each, no aliasing of the EHL pressure slope) converge in 21;
-φ is 0.6689 (304) and 0.6688 (256).
+Why 256 thermal cells from −8 b: two EHL cells per thermal cell, no aliasing of the EHL
+pressure slope.  (The inlet back-flow chatter that once made the cell count matter came from
+advecting with the layer shear-rate profile; see femgear.tehl.energy.)
 """
 
 from __future__ import annotations
