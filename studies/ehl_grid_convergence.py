@@ -30,6 +30,15 @@ def observed_order(h: list[float]) -> list[float | None]:
     return out
 
 
+def richardson(values: list[float]) -> tuple[float, float | None]:
+    """Richardson-extrapolated last value of a sequence refined by 2, with the observed
+    order of its last three members; the last value itself when no positive order shows."""
+    p = observed_order(values)[-1] if len(values) >= 3 else None
+    if p and p > 0:
+        return values[-1] + (values[-1] - values[-2]) / (2**p - 1), p
+    return values[-1], None
+
+
 def run(args: argparse.Namespace) -> list[dict]:
     table = []
     for case in args.cases:
@@ -46,8 +55,8 @@ def run(args: argparse.Namespace) -> list[dict]:
             print(f"{lv['nodes']:>7} {lv['h']:>8.4f} {lv['Hc']:>8.4f} {lv['Hmin']:>8.4f} "
                   f"{lv['Pmax']:>7.3f} {ch:>9} {po:>6} {lv['seconds']:>7.1f}")
         row = {"M": M, "L": L, "Hc": hc, "order": p, "nvm": nvm}
-        if p[-1] and p[-1] > 0:
-            ext = hc[-1] + (hc[-1] - hc[-2]) / (2 ** p[-1] - 1)
+        ext, order = richardson(hc)
+        if order:
             row["Hc_richardson"] = ext
             print(f"Richardson Hc = {ext:.4f} ({100 * (ext / nvm - 1):+.2f} % vs NVM)")
         table.append(row)

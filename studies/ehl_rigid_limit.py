@@ -32,6 +32,11 @@ from femgear.ehl import params as pr  # noqa: E402
 from femgear.ehl.grid import Domain  # noqa: E402
 from femgear.ehl.point import solve_point  # noqa: E402
 
+try:
+    from studies.ehl_grid_convergence import richardson
+except ImportError:
+    from ehl_grid_convergence import richardson
+
 OUT = Path(__file__).resolve().parents[1] / "out" / "ehl_rigid_limit"
 M_RIGID = 5.0  # any M gives the same H M^2 when rigid; 5 keeps the Hertz start on the grid
 
@@ -40,17 +45,6 @@ def ri_domain(M: float, R: float) -> Domain:
     """X in [-R, 2] X_s, Y in [-R, R] X_s with X_s = sqrt(2 H_RI) in Hertzian units."""
     xs = math.sqrt(2.0 * rigid_isoviscous_point() / M**2 / pr.point_h_moes_factor(M))
     return Domain(-R * xs, 2.0 * xs, -R * xs, R * xs)
-
-
-def richardson(values: list[float]) -> tuple[float, float | None]:
-    """Extrapolated value and observed order from the last three of a sequence refined by 2."""
-    if len(values) < 3:
-        return values[-1], None
-    d1, d2 = values[-2] - values[-3], values[-1] - values[-2]
-    if d1 == 0 or d2 == 0 or d1 / d2 <= 1:
-        return values[-1], None
-    p = math.log2(d1 / d2)
-    return values[-1] + d2 / (2**p - 1), p
 
 
 def inverse_radius_fit(radii, values) -> tuple[float, float]:

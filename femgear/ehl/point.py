@@ -98,10 +98,13 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
     levels = [make(M, 1.0, k) for k in range(coarse_level, level + 1)]
     hist = History()
 
+    def nvm_hertz(M_: float) -> float:
+        """NVM central film in Hertzian units."""
+        return float(nvm_central(M_, L, ratio)) / pr.point_h_moes_factor(M_)
+
     def hertz(lv: Level, M_: float):
         PI = _hertz_start(lv, ratio)
-        H0 = float(nvm_central(M_, L, ratio)) / pr.point_h_moes_factor(M_) - float(
-            lv.deflection(lv.full(PI))[np.argmin(lv.X**2 + lv.Y**2)])
+        H0 = nvm_hertz(M_) - float(lv.deflection(lv.full(PI))[np.argmin(lv.X**2 + lv.Y**2)])
         return PI, H0
 
     def solve_on(lvs: list[Level], PI, H0):
@@ -196,8 +199,7 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
         Mp = M_ / math.sqrt(2.0)
         PI, H0, _, _ = solve_at(Mp, stab, top, depth + 1)
         n0 = len(hist.residual)
-        H0 += float(nvm_central(M_, L, ratio)) / pr.point_h_moes_factor(M_) - float(
-            nvm_central(Mp, L, ratio)) / pr.point_h_moes_factor(Mp)
+        H0 += nvm_hertz(M_) - nvm_hertz(Mp)
         got = attempt(lvs, PI, H0)
         if not got:
             raise ConvergenceError(case, f"load continuation {Mp:g} -> {M_:g} failed",

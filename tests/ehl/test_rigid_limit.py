@@ -6,7 +6,7 @@ and, on domains growing like R X_s, tends to its infinite-domain value as H_inf 
 (1979), 35.0 M^-2; NVM's fitted asymptote (41.3 M^-2) lies 17 % above it (see
 ``studies/ehl_rigid_limit.py`` and the README)."""
 
-import importlib.util
+import sys
 from pathlib import Path
 
 import pytest
@@ -14,10 +14,11 @@ import pytest
 from femgear.contact.film import rigid_isoviscous_point
 from femgear.ehl.point import solve_point
 
-_spec = importlib.util.spec_from_file_location(
-    "ehl_rigid_limit", Path(__file__).resolve().parents[2] / "studies" / "ehl_rigid_limit.py")
-study = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(study)
+ROOT = Path(__file__).resolve().parents[2]
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+from studies import ehl_rigid_limit as study  # noqa: E402
 
 
 def test_brewe_hamrock_taylor_coefficient():
