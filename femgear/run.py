@@ -5,7 +5,7 @@ pressure, film thickness, sliding) and the mesh stiffness of the ``stiffness`` l
 
 Without dynamics (``dynamics = "none"``), the sub-models run once at the static load:
 friction and contact temperature from the ``lubrication`` level (``none``, ``constant``
-μ, or ``formula``: thermal Eyring traction of the Hertzian film, :mod:`femgear.friction`),
+μ, or ``formula``: thermal Eyring traction of the Hertzian film, :mod:`femgear.lubrication`),
 the thermal flank deviation (``thermal``) for ``thermal.flank_temperature_rise`` and
 the wear depth after ``wear.cycles`` (``wear = "archard"``).
 

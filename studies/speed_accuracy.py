@@ -78,7 +78,7 @@ def thermal(scene, quick: bool, repeats: int) -> list[dict]:
 def lubrication(scene, quick: bool, repeats: int) -> list[dict]:
     from femgear.contact.path import contact_along_path
     from femgear.ehl.path import ehl_line_solver
-    from femgear.friction.map import hertz_level_solver
+    from femgear.lubrication.map import hertz_level_solver
 
     c = contact_along_path(scene, n=11)
     k = c.kin

@@ -31,7 +31,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def main() -> dict:
     from femgear.contact.path import contact_along_path
-    from femgear.friction.path import friction_along_path
+    from femgear.lubrication.path import friction_along_path
     from femgear.scene import load_scene
     from femgear.tehl.path import tehl_along_path, write_thermal_vtk
 

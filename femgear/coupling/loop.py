@@ -74,7 +74,7 @@ def lubrication_solver(scene) -> Lubrication:
     """The contact solver of the scene's ``physics.lubrication`` level, map signature.
 
     ``none``/``constant``: μ = 0 / ``friction.coefficient``, no heating; ``formula``: thermal
-    Eyring traction of the Hertzian film (:mod:`femgear.friction`); ``ehl-line``: FE line
+    Eyring traction of the Hertzian film (:mod:`femgear.lubrication`); ``ehl-line``: FE line
     EHL with Eyring traction and Blok's flash temperature (:mod:`femgear.ehl.path`); ``tehl``:
     a friction map of thermal EHL solves (:func:`femgear.tehl.solver.tehl_map_solver`).
     """
@@ -95,7 +95,7 @@ def lubrication_solver(scene) -> Lubrication:
         from femgear.tehl.solver import tehl_map_solver
 
         return tehl_map_solver(scene)
-    from femgear.friction.map import hertz_level_solver
+    from femgear.lubrication.map import hertz_level_solver
 
     return hertz_level_solver(scene)
 

@@ -14,10 +14,10 @@ import numpy as np
 
 from femgear.contact.hertz import reduced_modulus
 from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
-from femgear.friction.flash import blok_flash_temperature
-from femgear.friction.oil import OilLaw
-from femgear.friction.path import solids_of
-from femgear.friction.traction import shear_stress
+from femgear.lubrication.flash import blok_flash_temperature
+from femgear.lubrication.oil import OilLaw
+from femgear.lubrication.path import solids_of
+from femgear.lubrication.traction import shear_stress
 
 
 def ehl_line_solver(scene, level: int | None = None):

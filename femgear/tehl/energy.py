@@ -26,7 +26,7 @@ Solids: moving semi-infinite bodies at high Péclet number, exact Jaeger/Carslaw
 moving-heat-source solution as a boundary operator (Carslaw & Jaeger, *Conduction of
 Heat in Solids*, 2nd ed. 1959, §10.7; Jaeger 1942): the surface temperature rise of body j is
 θ_j(x) = ∫ q_j(ξ)/√(x − ξ) dξ / (B_j √(π |v_j|)), B_j = √(k ρ c), upstream side first
-(the Abel matrix of :mod:`femgear.friction.flash`).  q_j = 2 k_f (θ_wall cell − θ_j)/Δz.
+(the Abel matrix of :mod:`femgear.lubrication.flash`).  q_j = 2 k_f (θ_wall cell − θ_j)/Δz.
 All relations are linear in the temperature once viscosities are frozen: one sparse
 solve per thermal iteration.
 """
@@ -41,9 +41,9 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from femgear.errors import ConvergenceError
-from femgear.friction.flash import abel_matrix
-from femgear.friction.oil import OilLaw
-from femgear.friction.traction import shear_stress
+from femgear.lubrication.flash import abel_matrix
+from femgear.lubrication.oil import OilLaw
+from femgear.lubrication.traction import shear_stress
 
 
 @dataclass(frozen=True)

@@ -31,7 +31,7 @@ from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
 from femgear.ehl.level import Level
 from femgear.ehl.newton import newton_dense
 from femgear.ehl.rheology import ROELANDS_P0
-from femgear.friction.oil import OilLaw
+from femgear.lubrication.oil import OilLaw
 from femgear.tehl.energy import EnergyState, ThermalProps, jaeger_matrix, solve_energy
 from femgear.tehl.loop import thermal_loop
 from femgear.tehl.rheology import ThermalRheology

@@ -27,7 +27,7 @@ from femgear.ehl.level import Level
 from femgear.ehl.newton import newton_krylov
 from femgear.ehl.point import default_domain
 from femgear.errors import ConvergenceError
-from femgear.friction.oil import OilLaw
+from femgear.lubrication.oil import OilLaw
 from femgear.tehl.energy import ThermalProps, jaeger_matrix, solve_energy
 from femgear.tehl.line import ehl_oil_at
 from femgear.tehl.loop import thermal_loop

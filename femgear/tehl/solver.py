@@ -1,7 +1,7 @@
 """The ``tehl`` lubrication level in the map signature, and a friction map built from it.
 
 ``solver(w=, R=, ue=, srr=, T=) -> (mu, temperature_rise)`` as every lubrication level
-(:mod:`femgear.friction.map`): μ is the sliding friction |μ_couette| of
+(:mod:`femgear.lubrication.map`): μ is the sliding friction |μ_couette| of
 :func:`solve_tehl_line`, the temperature rise is the maximum film temperature rise [K].
 The isothermal start is shared between points that differ only in SRR (cached per call).
 """
@@ -11,9 +11,9 @@ from __future__ import annotations
 import numpy as np
 
 from femgear.contact.hertz import reduced_modulus
-from femgear.friction.map import FrictionMap
-from femgear.friction.oil import OilLaw
-from femgear.friction.path import solids_of
+from femgear.lubrication.map import FrictionMap
+from femgear.lubrication.oil import OilLaw
+from femgear.lubrication.path import solids_of
 from femgear.tehl.energy import ThermalProps
 from femgear.tehl.line import solve_tehl_line
 

@@ -4,7 +4,7 @@ contact near the middle of the baseline path."""
 from pathlib import Path
 
 from femgear.contact.hertz import reduced_modulus
-from femgear.friction.oil import OilLaw
+from femgear.lubrication.oil import OilLaw
 from femgear.scene import load_scene
 from femgear.tehl.solver import thermal_props
 

@@ -11,8 +11,8 @@ from femgear.ehl import params as pr
 from femgear.ehl.dimensional import solve_line_dimensional
 from femgear.ehl.level import Level
 from femgear.ehl.rheology import Rheology
-from femgear.friction.flash import blok_flash_temperature
-from femgear.friction.traction import gupta_thermal_factor
+from femgear.lubrication.flash import blok_flash_temperature
+from femgear.lubrication.traction import gupta_thermal_factor
 from femgear.tehl import solve_tehl_line
 from femgear.tehl.energy import jaeger_matrix
 from femgear.tehl.line import ehl_oil_at

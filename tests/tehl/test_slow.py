@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from femgear.friction.traction import gupta_thermal_factor
+from femgear.lubrication.traction import gupta_thermal_factor
 from femgear.tehl import solve_tehl_line
 
 _spec = importlib.util.spec_from_file_location("_case", Path(__file__).with_name("_case.py"))

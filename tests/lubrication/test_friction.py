@@ -7,7 +7,7 @@ import pytest
 from scipy import integrate
 
 from femgear.contact.path import contact_along_path
-from femgear.friction import (
+from femgear.lubrication import (
     OilLaw,
     Solids,
     abel_matrix,
@@ -16,7 +16,7 @@ from femgear.friction import (
     gupta_thermal_factor,
     hertz_traction,
 )
-from femgear.friction.path import friction_along_path
+from femgear.lubrication.path import friction_along_path
 
 OIL = OilLaw(eta0=0.08, alpha=22e-9, beta_t=0.042, T0=313.0)
 STEEL = Solids(B1=math.sqrt(46 * 7850 * 470), B2=math.sqrt(46 * 7850 * 470), k_oil=0.14)

@@ -27,8 +27,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.errors import ConvergenceError
-from femgear.friction.flash import abel_matrix, band_flash_temperature
-from femgear.friction.oil import OilLaw
+from femgear.lubrication.flash import abel_matrix, band_flash_temperature
+from femgear.lubrication.oil import OilLaw
 
 
 def gupta_thermal_factor(p_h, E_red: float, srr, ue, eta0: float, beta_t: float, k_f: float):

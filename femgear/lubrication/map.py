@@ -110,7 +110,7 @@ class FrictionMap:
 
 def hertz_level_solver(scene) -> Solver:
     """The ``formula``-level contact solver of a scene, in the map's signature."""
-    from femgear.friction.path import scene_line_friction
+    from femgear.lubrication.path import scene_line_friction
 
     friction = scene_line_friction(scene)
 

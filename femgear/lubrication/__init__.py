@@ -7,9 +7,9 @@
 - ``path``      friction and temperature along the path of contact of a scene.
 """
 
-from femgear.friction.flash import abel_matrix, band_flash_temperature, blok_flash_temperature, thermal_effusivity
-from femgear.friction.oil import OilLaw
-from femgear.friction.traction import Solids, TractionResult, gupta_thermal_factor, hertz_traction, shear_stress
+from femgear.lubrication.flash import abel_matrix, band_flash_temperature, blok_flash_temperature, thermal_effusivity
+from femgear.lubrication.oil import OilLaw
+from femgear.lubrication.traction import Solids, TractionResult, gupta_thermal_factor, hertz_traction, shear_stress
 
 __all__ = [
     "OilLaw", "Solids", "TractionResult", "abel_matrix", "band_flash_temperature", "blok_flash_temperature",

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from femgear.contact.hertz import reduced_modulus
 from femgear.contact.path import ContactPath
-from femgear.friction.flash import thermal_effusivity
-from femgear.friction.oil import OilLaw
-from femgear.friction.traction import Solids, TractionResult, line_contact_friction
+from femgear.lubrication.flash import thermal_effusivity
+from femgear.lubrication.oil import OilLaw
+from femgear.lubrication.traction import Solids, TractionResult, line_contact_friction
 
 
 def solids_of(scene) -> Solids:
