@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 from scipy.optimize import brentq
 
@@ -91,9 +92,12 @@ class GearPair:
     def rb2(self) -> float:
         return self.r2 * math.cos(self.alpha_t)
 
-    @property
+    @cached_property
     def alpha_wt(self) -> float:
-        """Working transverse pressure angle: inv α_wt = inv α_t + 2 tan α_n (x1+x2)/(z1+z2)."""
+        """Working transverse pressure angle: inv α_wt = inv α_t + 2 tan α_n (x1+x2)/(z1+z2).
+
+        Cached (a root of the involute function; the pair is frozen): the path-of-contact
+        properties below are evaluated thousands of times per coupled run."""
         return inv_inverse(inv(self.alpha_t) + 2 * math.tan(self.alpha_n) * (self.x1 + self.x2) / (self.z1 + self.z2))
 
     @property
