@@ -53,25 +53,33 @@ AMPLITUDE_KEYS = [(m, q, ax) for m in ("gear", "pinion") for q in ("displacement
 def coupled_case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = False, static: bool = False,
                  series: bool = True, base: str | Path = BASELINE) -> dict:
     """Run one case; ``static`` stops at the quasi-static start (iteration 0, no dynamics)."""
+    from dataclasses import asdict
+
+    from femgear.case import build_case
     from femgear.coupling import CouplingSetup, coupling_iterations, run_coupled
-    from femgear.coupling.profile import excitation_tables
+    from femgear.coupling.profile import mesh_deviation
     from femgear.scene import load_scene
 
     t0 = time.perf_counter()
-    scene = load_scene(base, list(overrides) + (list(COARSE) if coarse else []))
-    setup = CouplingSetup.from_scene(scene, n_path=31 if coarse else 61, n_phase=64 if coarse else 128)
+    paths = ["numerics.path_points=31"] if coarse else ["numerics.path_points=61"]
+    scene = load_scene(base, paths + list(overrides) + (list(COARSE) if coarse else []))
+    setup = CouplingSetup.from_case(build_case(scene), n_phase=64 if coarse else 128)
     if static:
         state, history, converged = next(coupling_iterations(setup)), {}, True
     else:
         res = run_coupled(setup, one_way=coarse)
-        state, history, converged = res.state, res.history, res.converged
+        state, history, converged = res.state, asdict(res.history), res.converged
     u = setup.kin.u
-    (e_l, e_r), db = excitation_tables(setup.pair, u, state.removed, scene.pair.stagger, setup.n_phase)
+    dev = mesh_deviation(setup.pair, u, state.wear.sum(axis=0), state.thermal_deviation.sum(axis=0),
+                         scene.pair.stagger, setup.n_phase)
+    zero = np.zeros((2, setup.n_phase))
+    drive, coast = (zero, zero) if dev is None else (dev.drive, dev.coast)
     out = {"overrides": list(overrides), "coarse": coarse, "converged": converged, "history": history,
            "u": u, "u_pitch": setup.pair.u_pitch, "mu": state.mu, "temperature_rise": state.temperature_rise,
            "flank_temperature_rise": state.flank_temperature_rise, "wear": state.wear,
            "thermal_deviation": state.thermal_deviation, "removed": state.removed, "mesh_force_phase": state.mesh_force,
-           "e_L": e_l, "e_R": e_r, "delta_b": db, "b0": scene.pair.backlash, "amplitudes": dict(state.amplitudes)}
+           "drive_deviation": drive, "coast_deviation": coast, "b0": scene.pair.backlash,
+           "amplitudes": dict(state.amplitudes)}
     if state.dynamics is not None:
         r = state.dynamics.response
         out["mesh_frequency"] = r.mesh_frequency

@@ -2,10 +2,14 @@
 
     python studies/dynamic_backlash.py [--coarse] [--workers=2]
 
-b(t) = b0 + Δb(t), the paper's b(t) = b0 + w1 + w2 − ζ_T1 − ζ_T2, where femgear's Δb is
-the mean of the flank deviation (wear h1 + h2 minus thermal expansion ζ_T1 + ζ_T2) over
-the contact lines carrying load at that instant (both helices averaged;
-:func:`femgear.coupling.profile.excitation_tables`).  b0 = ``pair.backlash`` = 50 µm.
+b(t) = b0 + (d_D + d_C)/2: the half-width of the dead zone of the left helix, with d_D,
+d_C the drive- and coast-flank deviations (wear h1 + h2 on the drive flanks only,
+thermal expansion −(ζ_T1 + ζ_T2) on both) averaged over the contact lines at that
+instant (:func:`femgear.coupling.profile.mesh_deviation`; how it enters the dynamics,
+once: :class:`femgear.dynamics.model.MeshDeviation`).  The paper's
+b(t) = b0 + w1 + w2 − ζ_T1 − ζ_T2 counts the wear fully in the half-backlash and again
+in the mesh deflection; femgear's half-width opens by w/2 (the drive flank moves by w,
+the coast flank not at all).  b0 = ``pair.backlash`` = 50 µm.
 Cases: none, wear (1e6 cycles), thermal (flank temperature rise 30 K), both.  The full
 level takes the flank deviations of the converged coupled state (wear under the dynamic
 load); ``--coarse`` those of the quasi-static start (static load).  Writes
@@ -45,7 +49,7 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
     cases = C.flank_cases(coarse, workers)
     rows = {}
     for label, c in cases.items():
-        b = c["b0"] + c["delta_b"]
+        b = c["b0"] + 0.5 * (c["drive_deviation"][0] + c["coast_deviation"][0])
         d = np.diff(b)
         rows[label] = {"b_um": b * 1e6, "mean_um": float(b.mean() * 1e6), "min_um": float(b.min() * 1e6),
                        "max_um": float(b.max() * 1e6), "crosses_b0": bool(b.min() < c["b0"] < b.max()),
@@ -55,7 +59,7 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
     b0 = next(iter(cases.values()))["b0"]
     # the flank rise at which the mean thermal closing balances the mean wear opening (Δb is linear
     # in the deviation and the analytic ζ_T in the rise): derived from the two single cases, not run
-    dw, dt = cases["wear"]["delta_b"], cases["thermal"]["delta_b"]
+    dw, dt = (0.5 * (cases[k]["drive_deviation"][0] + cases[k]["coast_deviation"][0]) for k in ("wear", "thermal"))
     scale = -dw.mean() / dt.mean()
     b = b0 + dw + scale * dt
     rows["balanced"] = {"b_um": b * 1e6, "mean_um": float(b.mean() * 1e6), "min_um": float(b.min() * 1e6),

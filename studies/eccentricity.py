@@ -73,14 +73,15 @@ def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml", ecc
 
 def run(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml", coarse: bool = False,
         stiffness: str = "pem", level: str = "lumped", load_stiffness: float = 0.0) -> dict:
-    from femgear.dynamics.run import run_dynamics
+    from femgear.case import build_case
+    from femgear.dynamics import build_model, run_dynamics
 
     cycles, transient = (60.0, 30.0) if coarse else (100.0, 50.0)
     rows = []
     for e in ECCENTRICITIES:
         t0 = time.perf_counter()
-        r = run_dynamics(setup(scene_path, e), None, level=level, stiffness=stiffness,
-                         cycles=cycles, transient_cycles=transient, plots=False, load_stiffness=load_stiffness)
+        model = build_model(build_case(setup(scene_path, e)), level, stiffness=stiffness, load_stiffness=load_stiffness)
+        r = run_dynamics(model, cycles=cycles, transient_cycles=transient)
         a = r.response.amplitudes
         row = {"eccentricity_um": round(e * 1e6, 3), "seconds": time.perf_counter() - t0,
                "mesh_force_amplitude_N": a["mesh_force.L.amplitude"], "dte_rms_um": a["dte_rms"] * 1e6}

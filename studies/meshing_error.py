@@ -2,11 +2,11 @@
 
     python studies/meshing_error.py [--coarse] [--workers=2] [--harmonics=5]
 
-femgear's meshing error of a helix is the flank deviation (wear h1 + h2 minus thermal
-expansion ζ_T1 + ζ_T2, positive = material removed) averaged over the contact lines
-carrying load at each instant of the mesh cycle — the paper's "comprehensive equivalent
-error along the line of action" taken over the real contact lines
-(:func:`femgear.coupling.profile.excitation_tables`).  The paper instead writes the
+femgear's meshing error of a helix is the drive-flank deviation (wear h1 + h2 minus
+thermal expansion ζ_T1 + ζ_T2, positive = material removed) averaged over the contact
+lines carrying load at each instant of the mesh cycle — the paper's "comprehensive
+equivalent error along the line of action" taken over the real contact lines
+(:func:`femgear.coupling.profile.mesh_deviation`).  The paper instead writes the
 error as a Fourier series of M = 3–5 harmonics of the mesh frequency; this study fits
 such a series (least squares, M = ``--harmonics``) to femgear's contact-line mean and
 reports the harmonic amplitudes and the fit residual.  Cases as in
@@ -52,14 +52,14 @@ def run(coarse: bool = False, workers: int = 2, harmonics: int = 5) -> dict:
     cases = C.flank_cases(coarse, workers)
     rows = {}
     for label, c in cases.items():
-        e = np.asarray(c["e_L"])
+        e = np.asarray(c["drive_deviation"][0])
         fit, amps = harmonic_fit(e, harmonics)
         fluct = e - e.mean()
         rows[label] = {"e_um": e * 1e6, "fit_um": fit * 1e6, "mean_um": float(e.mean() * 1e6),
                        "peak_to_peak_um": float(np.ptp(e) * 1e6), "rms_fluctuation_um": float(np.sqrt(np.mean(fluct**2)) * 1e6),
                        "harmonic_amplitudes_um": amps * 1e6,
                        "fit_residual_rms_um": float(np.sqrt(np.mean((e - fit) ** 2)) * 1e6),
-                       "right_equals_left": bool(np.allclose(c["e_R"], c["e_L"]))}
+                       "right_equals_left": bool(np.allclose(c["drive_deviation"][1], c["drive_deviation"][0]))}
     n = len(next(iter(rows.values()))["e_um"])
     return {"rows": rows, "phase": np.arange(n) / n, "harmonics": harmonics, "coarse": coarse,
             "seconds": time.perf_counter() - t0}

@@ -103,11 +103,12 @@ def ehl_point(scene, quick: bool, repeats: int) -> list[dict]:
 
 
 def dynamics(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.dynamics.model import build_model
-    from femgear.dynamics.response import analyse
+    from femgear.case import build_case
+    from femgear.dynamics import build_model
     from femgear.dynamics.integrate import simulate
+    from femgear.dynamics.response import analyse
 
-    model = build_model(scene, "lumped")
+    model = build_model(build_case(scene), "lumped")
     keys = [f"{m}.{q}.{a}" for m in ("gear", "pinion") for q in ("displacement", "velocity") for a in "xy"]
     periods = 60 if quick else 100
 
@@ -124,11 +125,12 @@ def dynamics(scene, quick: bool, repeats: int) -> list[dict]:
 
 
 def coupled(scene, quick: bool, repeats: int) -> list[dict]:
+    from femgear.case import build_case
     from femgear.coupling import CouplingSetup, run_coupled
 
     def run(preset):
         s = _preset_scene(preset)
-        st = run_coupled(CouplingSetup.from_scene(s)).state
+        st = run_coupled(CouplingSetup.from_case(build_case(s))).state
         a = st.amplitudes
         return np.array([a[k] for k in ("gear.displacement.x", "gear.displacement.y", "gear.velocity.x",
                                         "gear.velocity.y")] + [st.mu.max()])

@@ -2,7 +2,7 @@
 
 import pytest
 
-from femgear.run import run_scene
+from femgear.pipeline import run_scene
 from femgear.scene import load_scene
 
 

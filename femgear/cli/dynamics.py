@@ -34,28 +34,34 @@ def register(sub) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from femgear.dynamics.run import run_dynamics
+    from femgear.case import build_case
     from femgear.scene import load_scene
 
-    scene = load_scene(args.scene, args.overrides)
-    out = args.out or Path("out") / scene.meta.name / "dynamics"
+    case = build_case(load_scene(args.scene, args.overrides))
+    out = args.out or Path("out") / case.name / "dynamics"
     if args.sweep:
-        return _sweep(scene, args, out)
+        return _sweep(case, args, out)
     if args.kahraman_singh:
         return _kahraman_singh(args, out)
-    run = run_dynamics(scene, out, level=args.level, stiffness=args.stiffness, method=args.method, dt=args.dt,
-                       cycles=args.cycles, transient_cycles=args.transient, plots=not args.no_plots)
+    from femgear.dynamics import build_model, run_dynamics
+    from femgear.io.dynamics import dynamics_summary, write_dynamics
+
+    model = build_model(case, args.level, stiffness=args.stiffness)
+    run = run_dynamics(model, method=args.method or case.numerics.dynamics_method, dt=args.dt, cycles=args.cycles,
+                       transient_cycles=args.transient, steps_per_period=case.numerics.steps_per_mesh_period)
+    files = write_dynamics(run, out, plots=not args.no_plots)
+    summary = dynamics_summary(run)
     if args.json:
-        emit_json({**run.summary, "files": {k: str(v) for k, v in run.files.items()}})
+        emit_json({**summary, "files": {k: str(v) for k, v in files.items()}})
     else:
-        a = run.summary["amplitudes"]
-        print(f"mesh frequency {run.summary['mesh_frequency']:.1f} Hz, {run.summary['method']} dt = "
-              f"{run.summary['dt']:.3g} s, {run.summary['seconds']:.2f} s")
+        a = summary["amplitudes"]
+        print(f"mesh frequency {summary['mesh_frequency']:.1f} Hz, {summary['method']} dt = "
+              f"{summary['dt']:.3g} s, {summary['seconds']:.2f} s")
         for member in ("pinion", "gear"):
             print(f"{member}: displacement x/y {a[member + '.displacement.x'] * 1e6:.4f}/"
                   f"{a[member + '.displacement.y'] * 1e6:.4f} µm, velocity x/y "
                   f"{a[member + '.velocity.x'] * 1e3:.4f}/{a[member + '.velocity.y'] * 1e3:.4f} mm/s (half peak-to-peak)")
-        for name, path in run.files.items():
+        for name, path in files.items():
             print(f"{name}: {path}")
     if args.modes and not args.json:
         _print_modes(run.modal)
@@ -68,7 +74,7 @@ def _print_modes(modal) -> None:
         print(f"{i:4d} {f:9.1f} {modal.energy['mesh'][i]:11.2f}  {modal.dominant_group(i)}")
 
 
-def _sweep(scene, args, out: Path) -> int:
+def _sweep(case, args, out: Path) -> int:
     import numpy as np
 
     from femgear.dynamics import build_model
@@ -82,8 +88,8 @@ def _sweep(scene, args, out: Path) -> int:
     except ValueError:
         raise FemgearError(f"--sweep: expected RPM0:RPM1:N, got {args.sweep!r}") from None
     kw = {"level": args.level, "stiffness": args.stiffness}
-    sw = speed_sweep(scene, rpm, method=args.method or "rk4", **kw)
-    modal = modal_analysis(build_model(scene, **kw))
+    sw = speed_sweep(case, rpm, method=args.method or "rk4", **kw)
+    modal = modal_analysis(build_model(case, **kw))
     files = {}
     if not args.no_plots:
         from femgear.dynamics.plot import plot_sweep

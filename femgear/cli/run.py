@@ -18,7 +18,7 @@ def register(sub) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from femgear.run import run_scene
+    from femgear.pipeline import run_scene
     from femgear.scene import load_scene
 
     scene = load_scene(args.scene, args.overrides)

@@ -1,9 +1,11 @@
 """The bidirectional coupling of dynamics, lubrication, thermal expansion and wear.
 
-- ``profile``  flank deviations along the path → mesh excitation and dynamic backlash.
+- ``profile``  flank deviations along the path → drive/coast deviation tables per helix.
 - ``loop``     the outer loop as a generator of immutable states; :func:`run_coupled`.
 """
 
-from femgear.coupling.loop import CoupledResult, CouplingSetup, CouplingState, coupling_iterations, run_coupled
+from femgear.coupling.loop import (
+    CoupledResult, CouplingHistory, CouplingSetup, CouplingState, coupling_iterations, run_coupled,
+)
 
-__all__ = ["CoupledResult", "CouplingSetup", "CouplingState", "coupling_iterations", "run_coupled"]
+__all__ = ["CoupledResult", "CouplingHistory", "CouplingSetup", "CouplingState", "coupling_iterations", "run_coupled"]

@@ -2,102 +2,130 @@
 
 One iteration:
 
-1. flank deviations (wear h1 + h2 minus thermal expansion ζ_T1 + ζ_T2) → profile
-   excitation e_L, e_R and dynamic backlash b(t) over one mesh period
-   (:mod:`femgear.coupling.profile`);
-2. dynamics with the mesh stiffness, μ(u) and those excitations → the dynamic mesh
+1. flank deviations → the drive- and coast-flank deviation tables of each helix over
+   one mesh period (:mod:`femgear.coupling.profile`): wear h1 + h2 acts on the loaded
+   (drive) flanks only, thermal expansion ζ_T1 + ζ_T2 on both; each enters the
+   dynamics once (:class:`femgear.dynamics.model.MeshDeviation`);
+2. dynamics with the mesh stiffness, μ(u) and those deviations → the dynamic mesh
    force of each helix over one mesh period (phase average of the steady state);
 3. load sharing along the contact lines → passage-mean load intensity w̄'(u);
 4. lubrication at every path position (load, radius, entrainment, slide-to-roll,
    bulk temperature) → μ(u) and the contact temperature rise ΔT(u);
-5. thermal expansion of both flanks for the flank temperature (the scene's
-   ``thermal.flank_temperature_rise``, or, when that is 0, the mean contact temperature
-   rise along the path, as the paper's Δf(t)) → ζ_T1, ζ_T2;
+5. thermal expansion of both flanks for the bulk (body) temperature rise
+   (:func:`bulk_temperature_rise`: the scene's ``thermal.flank_temperature_rise``, or,
+   when that is 0, ``thermal.bulk_fraction`` × the mean contact temperature rise along
+   the path, the ISO/TS 6336-21 integral-temperature estimate) → ζ_T1, ζ_T2;
 6. Archard wear after ``wear.cycles`` under the dynamic load → h1, h2;
 7. relaxation of the inputs of the next iteration (μ, ζ_T, h) by ``relax``.
 
-The states are immutable; stopping, relaxation policy and logging stay with the caller
-(:func:`run_coupled` is the standard one: it stops when the dynamic mesh force and μ
-change by less than their tolerances and raises with the history otherwise).
+Build once, apply many: the dynamic model, its modes, the thermal unit responses and
+the lubrication solver are built once per case (:class:`CouplingSetup`); each pass
+replaces only friction and deviations.  The states are immutable; stopping, relaxation
+policy and logging stay with the caller (:func:`run_coupled` is the standard one: it
+stops when the dynamic mesh force and μ change by less than their tolerances and
+raises with the history otherwise).
 """
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from femgear.coupling.profile import excitation_tables
+from femgear.case import Case
+from femgear.coupling.profile import mesh_deviation
+from femgear.dynamics.build import build_model, with_deviation, with_friction
+from femgear.dynamics.model import GearRotorModel
+from femgear.dynamics.modal import ModalResult, modal_analysis
+from femgear.dynamics.run import DynamicsRun, run_dynamics
 from femgear.errors import ConvergenceError
-from femgear.geometry import GearPair, PathKinematics, kinematics, path_positions
+from femgear.lubrication.levels import Lubrication, lubrication_solver
+from femgear.stiffness.tvms import MeshStiffness
 from femgear.wear.load_sharing import load_map
 
-Lubrication = Callable[..., tuple[np.ndarray, np.ndarray]]
-"""solver(w=, R=, ue=, srr=, T=) -> (mu, temperature_rise) — the signature of friction maps."""
+
+@dataclass(frozen=True)
+class ThermalUnits:
+    """Thermal flank deviation ζ_T(u) of both members for a unit flank and a unit shaft rise [m/K].
+
+    The conduction and thermo-elastic problems are linear, so ζ_T = ΔT_flank z_flank +
+    ΔT_shaft z_shaft: one solve per member and unit load, however many passes follow.
+    """
+
+    flank: np.ndarray   #: (2, n) pinion, gear
+    shaft: np.ndarray   #: (2, n)
+
+    def deviation(self, flank_rise: float, shaft_rise: float) -> np.ndarray:
+        return flank_rise * self.flank + shaft_rise * self.shaft
+
+
+def thermal_units(case: Case) -> ThermalUnits | None:
+    """The unit responses of the case's thermal level (None for ``thermal = "none"``)."""
+    if case.levels.thermal == "none":
+        return None
+    from femgear.body.thermal import flank_deviation
+
+    m = case.material
+
+    def unit(member: int, bore: float, flank: float, shaft: float) -> np.ndarray:
+        return flank_deviation(case.pair, member, case.path.u, case.levels.thermal, flank, shaft, m.thermal_expansion,
+                               m.youngs_modulus, m.poisson_ratio, m.conductivity, bore, case.thermal.mesh_size)
+
+    members = ((1, case.bore_radii[0]), (2, case.bore_radii[1]))
+    return ThermalUnits(flank=np.array([unit(j, b, 1.0, 0.0) for j, b in members]),
+                        shaft=np.array([unit(j, b, 0.0, 1.0) for j, b in members]))
+
+
+def bulk_temperature_rise(case: Case, contact_rise: np.ndarray) -> float:
+    """Bulk (body) temperature rise of the flanks over the oil [K].
+
+    ``thermal.flank_temperature_rise`` when given (> 0); otherwise the integral-
+    temperature estimate of ISO/TS 6336-21 (formerly ISO/TR 13989-2):
+    θ_M − θ_oil = C_1 X_mp θ_fla,int, with θ_fla,int the mean contact temperature rise
+    along the path of contact, C_1 = ``thermal.bulk_fraction`` (ISO: 0.7) and X_mp = 1
+    (one mesh per member).  The flash temperature itself reaches only some tens of µm
+    into the tooth; the body's expansion follows this bulk temperature.
+    """
+    given = case.thermal.flank_temperature_rise
+    return float(given) if given > 0 else case.thermal.bulk_fraction * float(np.mean(contact_rise))
 
 
 @dataclass(frozen=True)
 class CouplingSetup:
-    """What stays fixed over the iterations of one load case."""
+    """What stays fixed over the iterations of one load case (built once)."""
 
-    scene: object
-    pair: GearPair
-    kin: PathKinematics           #: positions u along the path (pitch point included)
-    stiffness: object             #: mesh stiffness table of the scene's level (computed once)
+    case: Case
+    model: GearRotorModel          #: the dynamic model without friction and deviations
+    modal: ModalResult             #: its modes (mean system; independent of friction and deviations)
     lubrication: Lubrication
-    c_l: float                    #: mesh stiffness per unit contact-line length [N/m²]
-    static_force: float           #: normal force per helix [N]
+    thermal: ThermalUnits | None
+    c_l: float                     #: mesh stiffness per unit contact-line length [N/m²]
+    static_force: float            #: normal force per helix [N]
     n_phase: int = 128
-    method: str | None = None     #: integrator; None: the dynamics' default for the scene
+    method: str | None = None      #: integrator; None: the dynamics' default for the model
+
+    @property
+    def pair(self):
+        return self.case.pair
+
+    @property
+    def kin(self):
+        return self.case.path
+
+    @property
+    def stiffness(self):
+        return self.model.stiffness
 
     @classmethod
-    def from_scene(cls, scene, n_path: int = 61, n_phase: int = 128, lubrication: Lubrication | None = None,
-                   method: str | None = None) -> CouplingSetup:
-        from femgear.contact.path import normal_force, pinion_speed
-        from femgear.stiffness.tvms import mesh_stiffness_from_scene
-
-        pair = GearPair.from_scene(scene)
-        u = np.unique(np.append(path_positions(pair, n_path), pair.u_pitch))
-        kin = kinematics(pair, u, pinion_speed(scene) * 2 * math.pi / 60)
-        stiffness = mesh_stiffness_from_scene(scene)
-        c_l = float(np.mean(stiffness.k_left)) / pair.mean_contact_length
-        F0 = normal_force(scene, pair) / 2
-        return cls(scene=scene, pair=pair, kin=kin, stiffness=stiffness,
-                   lubrication=lubrication or lubrication_solver(scene), c_l=c_l, static_force=F0,
-                   n_phase=n_phase, method=method)
-
-
-def lubrication_solver(scene) -> Lubrication:
-    """The contact solver of the scene's ``physics.lubrication`` level, map signature.
-
-    ``none``/``constant``: μ = 0 / ``friction.coefficient``, no heating; ``formula``: thermal
-    Eyring traction of the Hertzian film (:mod:`femgear.lubrication`); ``ehl-line``: FE line
-    EHL with Eyring traction and Blok's flash temperature (:mod:`femgear.ehl.path`); ``tehl``:
-    a friction map of thermal EHL solves (:func:`femgear.tehl.solver.tehl_map_solver`).
-    """
-    level = scene.physics.lubrication
-    if level in ("none", "constant"):
-        mu0 = 0.0 if level == "none" else scene.friction.coefficient
-
-        def constant(w, R, ue, srr, T):
-            shape = np.broadcast(w, R, ue, srr, T).shape
-            return np.full(shape, mu0), np.zeros(shape)
-
-        return constant
-    if level == "ehl-line":
-        from femgear.ehl.path import ehl_line_solver
-
-        return ehl_line_solver(scene)
-    if level == "tehl":
-        from femgear.tehl.solver import tehl_map_solver
-
-        return tehl_map_solver(scene)
-    from femgear.lubrication.map import hertz_level_solver
-
-    return hertz_level_solver(scene)
+    def from_case(cls, case: Case, n_phase: int = 128, lubrication: Lubrication | None = None,
+                  method: str | None = None, stiffness: MeshStiffness | None = None) -> CouplingSetup:
+        model = build_model(case, stiffness=stiffness, friction=0.0)
+        c_l = float(np.mean(model.stiffness.k_left)) / case.pair.mean_contact_length
+        return cls(case=case, model=model, modal=modal_analysis(model),
+                   lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
+                   c_l=c_l, static_force=case.operating.normal_force / 2, n_phase=n_phase, method=method)
 
 
 @dataclass(frozen=True)
@@ -109,70 +137,66 @@ class CouplingState:
     load_per_length: np.ndarray     #: passage-mean w̄' [N/m]
     mu: np.ndarray                  #: friction coefficient [-]
     temperature_rise: np.ndarray    #: contact (oil) temperature rise [K]
-    flank_temperature_rise: float   #: used for the thermal expansion [K]
+    flank_temperature_rise: float   #: bulk temperature rise used for the thermal expansion [K]
     thermal_deviation: np.ndarray   #: (2, n) ζ_T of pinion and gear [m]
     wear: np.ndarray                #: (2, n) wear depth of pinion and gear [m]
-    change: dict = field(default_factory=dict)   #: 'mesh_force' (relative), 'mu' (absolute) vs previous
-    amplitudes: dict = field(default_factory=dict)
-    dynamics: object = field(default=None, repr=False, compare=False)   #: the pass's DynamicsRun
+    change: dict[str, float] = field(default_factory=dict)  #: 'mesh_force' (relative), 'mu' (absolute)
+    dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)   #: the pass's run
     seconds: float = 0.0
 
     @property
     def removed(self) -> np.ndarray:
-        """Flank material removed at each position, h1 + h2 − ζ_T1 − ζ_T2 [m]."""
+        """Drive-flank material removed at each position, h1 + h2 − ζ_T1 − ζ_T2 [m]."""
         return self.wear.sum(axis=0) - self.thermal_deviation.sum(axis=0)
+
+    @property
+    def amplitudes(self) -> dict[str, float]:
+        return {} if self.dynamics is None else self.dynamics.amplitudes
 
 
 def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray):
     """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication."""
     pair, kin = setup.pair, setup.kin
     maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
-            for s, off in enumerate((0.0, setup.scene.pair.stagger))]
+            for s, off in enumerate((0.0, setup.case.stagger))]
     w = 0.5 * (maps[0].mean_load + maps[1].mean_load)
     w = np.maximum(w, 1e-3 * setup.static_force / pair.mean_contact_length)   # never-loaded ends
-    T0 = setup.scene.operating.ambient_temperature
+    T0 = setup.case.operating.ambient_temperature
     mu, dT = setup.lubrication(w=w, R=kin.R, ue=kin.ue, srr=np.abs(kin.srr), T=np.full(w.shape, T0))
     return w, np.asarray(mu, dtype=float), np.asarray(dT, dtype=float)
 
 
 def _thermal(setup: CouplingSetup, dT: np.ndarray) -> tuple[float, np.ndarray]:
-    scene = setup.scene
-    n = setup.kin.u.size
-    if scene.physics.thermal == "none":
-        return 0.0, np.zeros((2, n))
-    from femgear.body.thermal import flank_deviation
-
-    rise = scene.thermal.flank_temperature_rise or float(np.mean(dT))
-    m = scene.material
-    dev = [flank_deviation(setup.pair, member, setup.kin.u, scene.physics.thermal, rise,
-                           scene.thermal.shaft_temperature_rise, m.thermal_expansion, m.youngs_modulus,
-                           m.poisson_ratio, m.conductivity, bore, scene.thermal.mesh_size)
-           for member, bore in ((1, scene.pinion.bore_radius), (2, scene.gear.bore_radius))]
-    return rise, np.array(dev)
+    if setup.thermal is None:
+        return 0.0, np.zeros((2, setup.kin.u.size))
+    rise = bulk_temperature_rise(setup.case, dT)
+    return rise, setup.thermal.deviation(rise, setup.case.thermal.shaft_temperature_rise)
 
 
 def _wear(setup: CouplingSetup, force: np.ndarray) -> np.ndarray:
-    scene = setup.scene
+    case = setup.case
     n = setup.kin.u.size
-    if scene.physics.wear == "none" or scene.wear.cycles == 0:
+    if case.levels.wear == "none" or case.wear.cycles == 0:
         return np.zeros((2, n))
     from femgear.wear import WearSetup, run_wear
 
     ws = WearSetup(pair=setup.pair, kin=setup.kin, force=force.mean(axis=0), c_l=setup.c_l,
-                   coefficient=scene.wear.coefficient, hardness=scene.material.hardness, n_phase=setup.n_phase)
-    state = run_wear(ws, scene.wear.cycles)
+                   coefficient=case.wear.coefficient, hardness=case.material.hardness, n_phase=setup.n_phase)
+    state = run_wear(ws, case.wear.cycles)
     return np.array([state.h1, state.h2])
 
 
-def _dynamics(setup: CouplingSetup, state: CouplingState):
+def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun]:
     """Dynamic mesh force per helix over one mesh period for the inputs in ``state``."""
-    from femgear.dynamics.run import run_dynamics
-
-    (eL, eR), db = excitation_tables(setup.pair, setup.kin.u, state.removed, setup.scene.pair.stagger, setup.n_phase)
     u_tab, mu_tab = setup.kin.u, state.mu
     mu = (lambda u: np.interp(u, u_tab, mu_tab)) if np.any(mu_tab > 0) else 0.0
-    run = run_dynamics(setup.scene, None, stiffness=setup.stiffness, method=setup.method, plots=False,
-                       friction_coefficient=mu, profile_deviation=(eL, eR), backlash_variation=db)
+    deviation = mesh_deviation(setup.pair, u_tab, state.wear.sum(axis=0), state.thermal_deviation.sum(axis=0),
+                               setup.case.stagger, setup.n_phase)
+    model = with_deviation(with_friction(setup.model, mu), deviation)
+    num = setup.case.numerics
+    run = run_dynamics(model, method=setup.method or num.dynamics_method, cycles=num.dynamics_cycles,
+                       transient_cycles=num.transient_cycles, steps_per_period=num.steps_per_mesh_period,
+                       modal=setup.modal)
     return phase_average(run.response, setup.n_phase), run
 
 
@@ -223,7 +247,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
         }
         state = CouplingState(state.iteration + 1, force, w, mix(state.mu, mu_new), dT, rise,
                               mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new), change,
-                              run.summary["amplitudes"], run, time.perf_counter() - t0)
+                              run, time.perf_counter() - t0)
         for name, value in (("mesh_force", force), ("mu", state.mu), ("wear", state.wear)):
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError("coupling", f"non-finite {name} in iteration {state.iteration}")
@@ -231,16 +255,29 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
 
 
 @dataclass(frozen=True)
+class CouplingHistory:
+    """Per-pass convergence measures (iteration 0 is the quasi-static start)."""
+
+    iteration: tuple[int, ...]
+    mesh_force_change: tuple[float, ...]
+    mu_change: tuple[float, ...]
+    seconds: tuple[float, ...]
+
+
+@dataclass(frozen=True)
 class CoupledResult:
     state: CouplingState
-    history: dict
+    history: CouplingHistory
     converged: bool
     seconds: float
 
 
 def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1e-6, max_iter: int = 30,
-                relax: float = 1.0, one_way: bool = False) -> CoupledResult:
+                relax: float = 1.0, one_way: bool = False,
+                progress: Callable[[CouplingState], None] | None = None) -> CoupledResult:
     """Iterate to convergence; ``one_way`` stops after the first dynamic pass.
+
+    ``progress``: called with every state (logging, progress display) as it arrives.
 
     Converged when the dynamic mesh force changes by less than ``tol_force`` (relative,
     paper: 1e-6) and μ by less than ``tol_mu`` between two passes.  Raises
@@ -248,20 +285,25 @@ def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1
     """
     history: dict[str, list] = {"iteration": [], "mesh_force_change": [], "mu_change": [], "seconds": []}
     start = time.perf_counter()
+
+    def done(state: CouplingState) -> CoupledResult:
+        return CoupledResult(state, CouplingHistory(**{k: tuple(v) for k, v in history.items()}), True,
+                             time.perf_counter() - start)
+
     for state in coupling_iterations(setup, relax):
         history["iteration"].append(state.iteration)
         history["mesh_force_change"].append(state.change.get("mesh_force", float("nan")))
         history["mu_change"].append(state.change.get("mu", float("nan")))
         history["seconds"].append(state.seconds)
+        if progress is not None:
+            progress(state)
         if state.iteration == 0:
             continue
-        if one_way:
-            return CoupledResult(state, history, True, time.perf_counter() - start)
-        if state.change["mesh_force"] < tol_force and state.change["mu"] < tol_mu:
-            return CoupledResult(state, history, True, time.perf_counter() - start)
+        if one_way or (state.change["mesh_force"] < tol_force and state.change["mu"] < tol_mu):
+            return done(state)
         if state.iteration >= max_iter:
             raise ConvergenceError(
-                f"coupling of scene {setup.scene.meta.name!r}",
+                f"coupling of scene {setup.case.name!r}",
                 f"no convergence in {max_iter} iterations (tolerances {tol_force:g}, {tol_mu:g})", history)
     raise AssertionError("unreachable")  # pragma: no cover
 

@@ -1,21 +1,26 @@
-"""Flank deviations along the path of contact → mesh excitation over one mesh period.
+"""Flank deviations along the path of contact → drive/coast deviation tables over one mesh period.
 
 A deviation h(u) of the flank pair at path position u (positive = material removed:
-wear of pinion and gear; thermal expansion enters with the opposite sign) changes the
-mesh deflection of a helix by the stiffness-weighted mean of h over the contact lines
-that carry load at that instant (uniform stiffness per unit line length; dl = du/sin β_b,
-so the mean over a line is the mean over its transverse extent in u).
-This is the paper's "comprehensive equivalent error along the line of action"
-e_f = (ζ_T + h)_p + (ζ_T + h)_g, taken over the actual contact lines of a helical
-mesh instead of a fitted harmonic series, so it carries the helix's load sharing.
-The same mean is the change of the dynamic backlash, the paper's
-b(t) = b0 + w1 + w2 − ζ_T1 − ζ_T2.
+wear of pinion and gear; thermal expansion enters with the opposite sign) moves the
+contact threshold of a helix by the stiffness-weighted mean of h over the contact
+lines at that instant (uniform stiffness per unit line length; dl = du/sin β_b, so the
+mean over a line is the mean over its transverse extent in u) — the paper's
+"comprehensive equivalent error along the line of action" taken over the actual
+contact lines of a helical mesh instead of a fitted harmonic series.
+
+Wear acts on the loaded (drive) flanks, thermal expansion on both: the drive table
+is the line mean of h1 + h2 − ζ_T1 − ζ_T2, the coast table that of −(ζ_T1 + ζ_T2).
+The coast flanks mesh along the mirror path; ζ_T depends on the radius only, so
+its coast table uses the drive table of ζ (exact for the uniform expansion, within the
+ζ ripple of a mesh cycle otherwise).  How the tables enter the dynamics, once each:
+:class:`femgear.dynamics.model.MeshDeviation`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from femgear.dynamics.model import MeshDeviation
 from femgear.geometry import GearPair, contact_lines
 
 
@@ -52,13 +57,15 @@ def phase_table(pair: GearPair, u: np.ndarray, deviation: np.ndarray, n_phase: i
     return table
 
 
-def excitation_tables(pair: GearPair, u: np.ndarray, removed: np.ndarray, stagger: float = 0.0,
-                      n_phase: int = 128) -> tuple[tuple[np.ndarray, np.ndarray], np.ndarray]:
-    """(e_L, e_R) profile-deviation tables and the backlash change Δb over one mesh period.
+def mesh_deviation(pair: GearPair, u: np.ndarray, wear: np.ndarray, thermal: np.ndarray, stagger: float = 0.0,
+                   n_phase: int = 128) -> MeshDeviation | None:
+    """Drive/coast deviation tables of both helices (None when there is no deviation).
 
-    ``removed`` = h1 + h2 − ζ_T1 − ζ_T2 along the path [m]; Δb is the mean of the two
-    helices (the pair has one backlash).
+    ``wear`` = h1 + h2 and ``thermal`` = ζ_T1 + ζ_T2 along the path [m].
     """
-    left = phase_table(pair, u, removed, n_phase)
-    right = phase_table(pair, u, removed, n_phase, offset=stagger)
-    return (left, right), 0.5 * (left + right)
+    if not (np.any(wear) or np.any(thermal)):
+        return None
+    offsets = (0.0, stagger)
+    zeta = np.array([phase_table(pair, u, thermal, n_phase, off) for off in offsets])
+    worn = np.array([phase_table(pair, u, wear, n_phase, off) for off in offsets])
+    return MeshDeviation(drive=worn - zeta, coast=-zeta)

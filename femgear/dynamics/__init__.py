@@ -6,8 +6,10 @@
                  contact-line TVMS; any TVMS plugs in as a :class:`StiffnessTable`),
                  friction tables with the regularised sliding sign.
 - ``structure``  half bodies, bearings and shafts per level (rigid tie or Timoshenko + Guyan).
-- ``model``      assembly of a scene into a frozen :class:`GearRotorModel`
-                 (levels ``lumped`` and ``timoshenko``), damping, excitation.
+- ``model``      the frozen :class:`GearRotorModel` (levels ``lumped``, ``timoshenko``)
+                 and the drive/coast flank deviations :class:`MeshDeviation`.
+- ``build``      :func:`build_model` from a :class:`femgear.case.Case` (structure, mesh,
+                 excitation, damping builders); ``with_friction``/``with_deviation``.
 - ``integrate``  :func:`simulate`, one entry point for the integrators:
   ``rk4``        fixed-step RK4 (paper) and its stability limit;
   ``expo``       exponential integrator, exact propagators per mesh phase (the fast one);
@@ -18,19 +20,20 @@
 - ``modal``      linearised (mean-stiffness) modal analysis with modal energy per DOF group.
 - ``sweep``      time-domain speed sweeps (DTE RMS vs mesh frequency).
 - ``sdof``       Kahraman–Singh single-DOF backlash oscillator and frequency sweeps.
-- ``run``        one dynamic run of a scene (model → integration → response → modes → files).
-- ``plot``, ``output``  PNG plots (matplotlib imported lazily) and results files.
+- ``run``        one dynamic run of a model (integration → response → modes), pure.
+- ``plot``       PNG plots (matplotlib imported lazily); files: :mod:`femgear.io.dynamics`.
 """
 
 from femgear.dynamics.integrate import Simulation, simulate, stability_limit
 from femgear.dynamics.mesh import StiffnessTable, constant_stiffness, contact_line_stiffness
 from femgear.dynamics.modal import ModalResult, modal_analysis
-from femgear.dynamics.model import GearRotorModel, build_model
+from femgear.dynamics.build import build_model, with_deviation, with_friction
+from femgear.dynamics.model import GearRotorModel, MeshDeviation
 from femgear.dynamics.response import Response, analyse
 from femgear.dynamics.run import DynamicsRun, run_dynamics
 
 __all__ = [
-    "DynamicsRun", "GearRotorModel", "StiffnessTable", "ModalResult", "Response", "Simulation", "analyse",
+    "DynamicsRun", "GearRotorModel", "MeshDeviation", "StiffnessTable", "ModalResult", "Response", "Simulation", "analyse",
     "build_model", "constant_stiffness", "contact_line_stiffness", "modal_analysis", "run_dynamics", "simulate",
-    "stability_limit",
+    "stability_limit", "with_deviation", "with_friction",
 ]

@@ -172,7 +172,7 @@ def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Si
     AA = (A[0].tolist(), A[1].tolist())
     BB = (B[0].tolist(), B[1].tolist())
     mu = model.mu
-    bt = model.backlash_at(tt)
+    bt = model.backlash_at(tt)                          # (2, n): half-width of each helix's dead zone
     bb = bt.tolist()
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
     switches = 0
@@ -182,7 +182,7 @@ def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Si
             cache[(j, (1, 1))] = _expo_matrices(model, kstep[j], (1, 1), dt)
     # fast path (both drive flanks in contact): the known inputs of every step, precomputed per phase
     known = np.empty((steps, n2))
-    ecols = np.stack([e[0] + bt, e[1] + bt], axis=1)          # u_s = e_s + b(t) on the drive flank
+    ecols = np.stack([e[0] + bt[0], e[1] + bt[1]], axis=1)    # u_s = e_s + b_s(t) on the drive flank
     dcols = np.stack([cm[0] * ed[0], cm[1] * ed[1]], axis=1)
     Wfr = []
     for j in range(min(per, steps)):
@@ -216,10 +216,10 @@ def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Si
         kj = kstep[j]
         i2 = 2 * i
         gq0, gq1, gv0, gv1 = (Gz @ y).tolist()
-        b = bb[i2]
         side = [0, 0]
         Nn = [0.0, 0.0]
         for s, (gq, gv) in enumerate(((gq0, gv0), (gq1, gv1))):
+            b = bb[s][i2]
             d = gq - ee[s][i2]
             if d > b:
                 side[s] = 1
@@ -264,7 +264,7 @@ def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Si
             a1 = Nn[1] + w * (Nn[1] - N_prev[1])
             F.append(Fe[ii] + Bw @ (c0 * eed[0][ii], c1 * eed[1][ii], a0 * AA[0][ii], a0 * BB[0][ii],
                                     a1 * AA[1][ii], a1 * BB[1][ii]))
-        u = tuple(ee[s][i2 + o] + side[s] * bb[i2 + o] for s in range(2) for o in range(3))
+        u = tuple(ee[s][i2 + o] + side[s] * bb[s][i2 + o] for s in range(2) for o in range(3))
         y = Phi @ y + W0 @ F[0] + Wh @ F[1] + W1 @ F[2] + U @ u
         N_prev = Nn
     seconds = time.perf_counter() - t0

@@ -56,7 +56,7 @@ def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> S
     AA = (A[0].tolist(), A[1].tolist())
     BB = (B[0].tolist(), B[1].tolist())
     mu = model.mu
-    bb = model.backlash_at(tt).tolist()
+    bb = model.backlash_at(tt).tolist()             # [side][j]
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
 
     # initial acceleration from the equations of motion
@@ -94,7 +94,7 @@ def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> S
         if alpha != 0.0:
             x = x - alpha * (Nprev[0] * PWprev[0] + Nprev[1] * PWprev[1])
             gx0, gx1 = (np.array([gx0, gx1]) - alpha * (Nprev[0] * (G @ PWprev[0]) + Nprev[1] * (G @ PWprev[1]))).tolist()
-        b = bb[j]
+        b = (bb[0][j], bb[1][j])
         for it in range(max_iter):
             iters_total += 1
             kap = [0.0, 0.0]
@@ -102,7 +102,7 @@ def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> S
             for s in range(2):
                 if state[s] != 0:
                     kap[s] = kk[s][j] + cm[s] * cv
-                    n0[s] = -kk[s][j] * (ee[s][j] + state[s] * b) + cm[s] * (gvt[s] - eed[s][j])
+                    n0[s] = -kk[s][j] * (ee[s][j] + state[s] * b[s]) + cm[s] * (gvt[s] - eed[s][j])
             # G PW_s (2-vectors) with the friction sign of each flank
             gpw = []
             for s in range(2):
@@ -122,7 +122,7 @@ def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> S
             N = [kap[0] * y0 + n0[0], kap[1] * y1 + n0[1]]
             # check the assumed contact state and friction sign
             d = (y0 - ee[0][j], y1 - ee[1][j])
-            new_state = [1 if d[s] > b else (-1 if d[s] < -b else 0) for s in range(2)]
+            new_state = [1 if d[s] > b[s] else (-1 if d[s] < -b[s] else 0) for s in range(2)]
             new_sgn = [sgn[s] if N[s] == 0.0 else math.copysign(1.0, N[s]) for s in range(2)]
             if new_state == state and (mu == 0.0 or new_sgn == sgn):
                 break

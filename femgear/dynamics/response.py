@@ -157,7 +157,7 @@ def analyse(sim: Simulation, transient_cycles: float = 50.0) -> Response:
     for s, side in enumerate(("L", "R")):
         amps[f"mesh_force.{side}.mean"] = float(N[:, s].mean())
         amps[f"mesh_force.{side}.amplitude"] = float(half_peak_to_peak(N[:, s]))
-        amps[f"contact_loss_fraction.{side}"] = float(np.mean(np.abs(delta[:, s]) <= model.backlash_at(t)))
+        amps[f"contact_loss_fraction.{side}"] = float(np.mean(np.abs(delta[:, s]) <= model.backlash_at(t)[s]))
     for j, station in enumerate(("pinion_L", "pinion_R", "gear_L", "gear_R")):
         amps[f"bearing_acceleration.{station}.peak"] = float(np.max(np.linalg.norm(bearing[:, j, :2], axis=1)))
     amps["dte_rms"] = float(np.sqrt(np.mean(resp.dte**2)))

@@ -70,7 +70,7 @@ def rk4(model, steps, dt, q, v, record_every, record_from) -> Simulation:
     e0, e1, ed0, ed1 = e[0].tolist(), e[1].tolist(), ed[0].tolist(), ed[1].tolist()
     mu = model.mu
     A0, A1, B0, B1 = A[0].tolist(), A[1].tolist(), B[0].tolist(), B[1].tolist()
-    bb = model.backlash_at(th).tolist()
+    bb0, bb1 = model.backlash_at(th).tolist()
     c0, c1 = float(model.mesh_damping[0]), float(model.mesh_damping[1])
     n2 = 2 * n
 
@@ -79,13 +79,14 @@ def rk4(model, steps, dt, q, v, record_every, record_from) -> Simulation:
         d0, d1, dd0, dd1 = r[n2:].tolist()
         d0 -= e0[j]
         d1 -= e1[j]
-        b = bb[j]
+        b = bb0[j]
         if d0 > b:
             N0 = kL[j] * (d0 - b) + c0 * (dd0 - ed0[j])
         elif d0 < -b:
             N0 = kL[j] * (d0 + b) + c0 * (dd0 - ed0[j])
         else:
             N0 = 0.0
+        b = bb1[j]
         if d1 > b:
             N1 = kR[j] * (d1 - b) + c1 * (dd1 - ed1[j])
         elif d1 < -b:

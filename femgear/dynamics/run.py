@@ -1,39 +1,74 @@
-"""One dynamic run of a scene: model → integration → response → modal → files.
+"""One dynamic run: model → integration → response → modes, as a pure function.
 
-:func:`run_dynamics` is what ``femgear dynamics`` (and ``femgear run`` when a scene asks
-for ``physics.dynamics``) calls; it returns a frozen :class:`DynamicsRun`.
+:func:`run_dynamics` takes a built :class:`GearRotorModel` (build once, apply many: the
+coupling loop replaces friction and flank deviations with
+:func:`femgear.dynamics.build.with_friction` / ``with_deviation`` and re-runs) and
+returns a frozen :class:`DynamicsRun`.  Files are written at the edge, by
+:mod:`femgear.io.dynamics` and :mod:`femgear.dynamics.plot`.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from pathlib import Path
+import math
+from dataclasses import dataclass
 
 from femgear.dynamics.integrate import Simulation, expo_step, simulate, stability_limit
 from femgear.dynamics.modal import ModalResult, modal_analysis
-from femgear.dynamics.model import build_model
+from femgear.dynamics.model import GearRotorModel
 from femgear.dynamics.response import Response, analyse
 
 #: Newmark/HHT needs this many times the steps of rk4/expo for the same accuracy (benchmark)
 NEWMARK_STEP_FACTOR = 8
+#: steps per period of the highest flexible mode the default step resolves
+STEPS_PER_MODE_PERIOD = 12
+
+
+@dataclass(frozen=True)
+class DynamicsSettings:
+    """Integrator, step and duration of a run (mesh periods)."""
+
+    method: str
+    dt: float
+    cycles: float
+    transient_cycles: float
 
 
 @dataclass(frozen=True)
 class DynamicsRun:
+    settings: DynamicsSettings
     simulation: Simulation
     response: Response
     modal: ModalResult
-    summary: dict
-    files: dict = field(default_factory=dict)
+
+    @property
+    def model(self) -> GearRotorModel:
+        return self.simulation.model
+
+    @property
+    def amplitudes(self) -> dict[str, float]:
+        """Steady-state amplitudes by name (:func:`femgear.dynamics.response.analyse`)."""
+        return self.response.amplitudes
 
 
-def default_step(model, method: str, steps_per_period: int = 200) -> float:
-    """The step for ``steps_per_period`` steps per mesh period (200: amplitudes converged to
-    < 0.5 % at 500 rpm, see the benchmark); ``rk4`` at most a quarter of its stability limit,
-    so that the highest mesh modes stay resolved at low speed (long mesh periods), where
-    accelerations would otherwise depend on the step; ``newmark``
-    :data:`NEWMARK_STEP_FACTOR` times finer."""
+def default_method(model: GearRotorModel) -> str:
+    """``expo`` for the 12 rigid-member coordinates of ``lumped``, ``rk4`` for ``timoshenko``
+    (24 coordinates: expo's 48-state propagators cost more to build than RK4 needs)."""
+    return "expo" if model.n <= 12 else "rk4"
+
+
+def default_step(model: GearRotorModel, method: str, steps_per_period: int = 200) -> float:
+    """The default time step [s].
+
+    The smaller of T_m/``steps_per_period`` and 1/(:data:`STEPS_PER_MODE_PERIOD` f_max),
+    f_max the highest flexible mode of the mean system: at low speed the mesh period
+    is long and the mesh modes, which the stiffness changes and contact switches
+    excite, set the step (``studies/step_convergence.py`` shows amplitudes converged
+    to < 1 % at 100 and 500 rpm).  ``rk4`` at most a quarter of its stability limit;
+    ``newmark`` :data:`NEWMARK_STEP_FACTOR` times finer.
+    """
     h = model.mesh_period / steps_per_period
+    if model.flexible_modes_hz:
+        h = min(h, 1.0 / (STEPS_PER_MODE_PERIOD * max(model.flexible_modes_hz)))
     if method == "expo":
         return expo_step(model, h)[0]
     if method == "rk4":
@@ -41,49 +76,18 @@ def default_step(model, method: str, steps_per_period: int = 200) -> float:
     return h / NEWMARK_STEP_FACTOR
 
 
-def run_dynamics(scene, out: str | Path | None = None, *, level: str | None = None, stiffness=None,
-                 method: str | None = None, dt: float | None = None, cycles: float | None = None,
-                 transient_cycles: float | None = None, plots: bool = True, **build_kw) -> DynamicsRun:
-    """Simulate ``cycles`` mesh periods, drop ``transient_cycles`` (paper: 50), analyse, write files.
+def run_dynamics(model: GearRotorModel, *, method: str | None = None, dt: float | None = None,
+                 cycles: float = 100.0, transient_cycles: float = 50.0, steps_per_period: int = 200,
+                 modal: ModalResult | None = None) -> DynamicsRun:
+    """Simulate ``cycles`` mesh periods, drop ``transient_cycles`` (paper: 50), analyse.
 
-    ``out``: folder for ``dynamics.json``/``dynamics.npz`` and PNG plots (None: nothing written).
-    ``method``: default ``expo`` for the 12 rigid-member coordinates of ``lumped`` and ``rk4``
-    for ``timoshenko`` (24 coordinates: expo's 48-state propagators cost more to build than
-    RK4 needs to run 100 mesh periods).
+    ``modal``: the modes of the mean system when already known (they do not depend on
+    friction or flank deviations, so the coupling computes them once).
     """
-    num = scene.numerics
-    cycles = num.dynamics_cycles if cycles is None else cycles
-    transient_cycles = num.transient_cycles if transient_cycles is None else transient_cycles
-    if not cycles > transient_cycles >= 0:
+    if not (math.isfinite(cycles) and cycles > transient_cycles >= 0):
         raise ValueError(f"cycles ({cycles}) must exceed transient_cycles ({transient_cycles}) ≥ 0")
-    model = build_model(scene, level, stiffness=stiffness, **build_kw)
-    method = method or num.dynamics_method or ("expo" if model.n <= 12 else "rk4")
-    step = default_step(model, method, num.steps_per_mesh_period) if dt is None else dt
+    method = method or default_method(model)
+    step = default_step(model, method, steps_per_period) if dt is None else dt
     sim = simulate(model, cycles * model.mesh_period, step, method)
-    res = analyse(sim, transient_cycles)
-    modal = modal_analysis(model)
-    from femgear.dynamics.output import summary
-
-    info = summary(sim, res)
-    info["modes"] = [{"frequency_hz": float(f), "dominant": modal.dominant_group(i), "mesh_energy": float(modal.energy["mesh"][i])}
-                     for i, f in enumerate(modal.frequencies)]
-    run = DynamicsRun(simulation=sim, response=res, modal=modal, summary=info)
-    return write_outputs(run, out, plots) if out is not None else run
-
-
-def write_outputs(run: DynamicsRun, out: str | Path, plots: bool = True) -> DynamicsRun:
-    """Write the results files (and PNGs) of ``run`` into ``out``; returns it with ``files`` set."""
-    from femgear.dynamics.output import write_results
-
-    out = Path(out)
-    files = dict(write_results(run.simulation, run.response, out))
-    if plots:
-        from femgear.dynamics import plot
-
-        res = run.response
-        files["time_histories"] = plot.plot_time_histories(res, out / "dynamics_time.png")
-        files["mesh_force"] = plot.plot_mesh_force(res, out / "dynamics_mesh_force.png")
-        files["phase_planes"] = plot.plot_phase_planes(res, out / "dynamics_phase.png")
-        files["spectra"] = plot.plot_spectra(res, out / "dynamics_spectra.png")
-    return DynamicsRun(simulation=run.simulation, response=run.response, modal=run.modal, summary=run.summary,
-                       files=files)
+    return DynamicsRun(settings=DynamicsSettings(method, sim.dt, cycles, transient_cycles), simulation=sim,
+                       response=analyse(sim, transient_cycles), modal=modal or modal_analysis(model))

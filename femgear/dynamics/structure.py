@@ -24,6 +24,7 @@ from femgear.dynamics.layout import NDOF, point_jacobian, tie_matrix
 from femgear.dynamics.timoshenko import ShaftSection, guyan, shaft_element
 from femgear.errors import SceneError
 from femgear.geometry import GearPair
+from femgear.scene.schema import Material, Member
 
 
 @dataclass(frozen=True)
@@ -42,11 +43,10 @@ def require_positive(value: float, key: str) -> float:
     return float(value)
 
 
-def _half_bodies(scene, pair: GearPair) -> np.ndarray:
+def _half_bodies(members: tuple[Member, Member], pair: GearPair) -> np.ndarray:
     """Diagonal 24×24 mass matrix of the four halves."""
     M = np.zeros(NDOF)
-    for member, name in enumerate(("pinion", "gear")):
-        mem = getattr(scene, name)
+    for member, (name, mem) in enumerate(zip(("pinion", "gear"), members)):
         m = require_positive(mem.mass, f"{name}.mass") / 2
         Ip = require_positive(mem.inertia, f"{name}.inertia") / 2
         Id = Ip / 2 + m * pair.b**2 / 12
@@ -58,16 +58,17 @@ def _half_bodies(scene, pair: GearPair) -> np.ndarray:
     return np.diag(M)
 
 
-def assemble_structure(scene, pair: GearPair, level: str, bearing_span: tuple[float, float],
-                       shaft_diameter: tuple[float, float], half: float) -> Structure:
-    """The structure of a scene at ``level`` ("lumped" or "timoshenko"); ``half`` = z of the helix centres.
+def assemble_structure(members: tuple[Member, Member], material: Material, pair: GearPair, level: str,
+                       bearing_span: tuple[float, float], shaft_diameter: tuple[float, float],
+                       half: float) -> Structure:
+    """The structure at ``level`` ("lumped" or "timoshenko"); ``half`` = z of the helix centres.
 
-    ``bearing_span`` and ``shaft_diameter`` are (pinion, gear) values [m].
+    ``members``: the scene's ``[pinion]``, ``[gear]`` tables; ``bearing_span`` and
+    ``shaft_diameter`` are (pinion, gear) values [m].
     """
-    M24 = _half_bodies(scene, pair)
+    M24 = _half_bodies(members, pair)
     Kb_list, Cb_list = [], []
-    for name in ("pinion", "gear"):
-        mem = getattr(scene, name)
+    for name, mem in zip(("pinion", "gear"), members):
         Kb_list.append(require_positive(mem.support_stiffness, f"{name}.support_stiffness") / 2)
         if mem.support_damping < 0:
             raise SceneError(f"{name}.support_damping", "must be non-negative")
@@ -95,8 +96,8 @@ def assemble_structure(scene, pair: GearPair, level: str, bearing_span: tuple[fl
         Cfull = np.zeros((48, 48))
         keep, bearing_nodes = [], []
         for member, name in enumerate(("pinion", "gear")):
-            sec = ShaftSection(require_positive(shaft_diameter[member], "shaft_diameter"), scene.material.youngs_modulus,
-                               scene.material.poisson_ratio, scene.material.density)
+            sec = ShaftSection(require_positive(shaft_diameter[member], "shaft_diameter"), material.youngs_modulus,
+                               material.poisson_ratio, material.density)
             zb = bearing_span[member] / 2
             zs = (-zb, -half, half, zb)
             base = 24 * member

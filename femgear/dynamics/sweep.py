@@ -15,8 +15,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from femgear.case import Case
+from femgear.dynamics.build import build_model
 from femgear.dynamics.integrate import simulate
-from femgear.dynamics.model import build_model
 from femgear.dynamics.response import analyse
 
 
@@ -28,12 +29,7 @@ class SpeedSweep:
     amplitudes: dict = field(default_factory=dict)  #: key -> array over speeds (see response.analyse)
 
 
-def with_speed(scene, rpm: float):
-    """A copy of ``scene`` running at ``rpm``."""
-    return scene.model_copy(update={"operating": scene.operating.model_copy(update={"speed_rpm": float(rpm)})})
-
-
-def speed_sweep(scene, speeds_rpm, *, cycles: int = 100, measure: int = 40, steps_per_cycle: int = 40,
+def speed_sweep(case: Case, speeds_rpm, *, cycles: int = 100, measure: int = 40, steps_per_cycle: int = 40,
                 method: str = "rk4", **build_kw) -> SpeedSweep:
     """DTE RMS and amplitudes over ``speeds_rpm`` (``build_kw`` go to :func:`build_model`)."""
     if measure >= cycles:
@@ -42,7 +38,7 @@ def speed_sweep(scene, speeds_rpm, *, cycles: int = 100, measure: int = 40, step
     fm, dte = np.empty(speeds.size), np.empty(speeds.size)
     amps: dict = {}
     for i, rpm in enumerate(speeds):
-        model = build_model(with_speed(scene, rpm), **build_kw)
+        model = build_model(case.at_speed(rpm), **build_kw)
         T = model.mesh_period
         sim = simulate(model, cycles * T, T / steps_per_cycle, method)
         res = analyse(sim, transient_cycles=cycles - measure)

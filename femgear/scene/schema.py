@@ -22,13 +22,18 @@ NonNeg = Annotated[float, Field(ge=0)]
 
 
 class _Frozen(BaseModel):
-    model_config = ConfigDict(frozen=True, extra="forbid", strict=False)
+    """Strict: no str -> number, no bool -> number, no float -> int; finite numbers only."""
+
+    model_config = ConfigDict(frozen=True, extra="forbid", strict=True, allow_inf_nan=False)
 
 
 class Meta(_Frozen):
     """``[meta]``: a name (used for output folders) and a free description."""
 
-    name: str = "scene"
+    name: str = Field(
+        "scene", min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_][A-Za-z0-9_ .+-]*$",
+        description="name of the load case and of its output folder: letters, digits, space, _ . + - "
+                    "(no path separators, no leading dot)")
     description: str = ""
 
 
@@ -39,14 +44,26 @@ class Pair(_Frozen):
     ("left" and "right" helix).  ``face_width`` is the width of ONE helix.
     """
 
+    kind: Literal["double-helical", "single-helical", "spur"] = Field(
+        "double-helical",
+        description="double-helical (two opposite-hand helices of width face_width each), single-helical "
+                    "(one helix; the unbalanced axial force needs pinion/gear.axial_stiffness) or spur "
+                    "(helix_angle_deg = 0)")
     normal_module: Pos = Field(description="normal module m_n [m]")
     normal_pressure_angle_deg: float = Field(20.0, gt=0, lt=45, description="normal pressure angle α_n [deg]")
-    helix_angle_deg: float = Field(description="helix angle β at the reference circle [deg]", gt=0, lt=45)
+    helix_angle_deg: float = Field(
+        description="helix angle β at the reference circle [deg]; 0 only for kind = 'spur'", ge=0, lt=45)
     face_width: Pos = Field(description="face width of one helix b [m]")
     groove_width: NonNeg = Field(0.0, description="central groove between the helices [m]")
     addendum_coeff: float = Field(1.0, gt=0, le=1.5, description="basic-rack addendum h_aP/m_n [-]")
     dedendum_coeff: float = Field(1.25, gt=0, le=1.8, description="basic-rack dedendum h_fP/m_n [-]")
     root_radius_coeff: float = Field(0.38, ge=0, le=0.6, description="basic-rack root radius ρ_fP/m_n [-]")
+    basic_rack: Literal["A", "B", "C", "D"] | None = Field(
+        None, description="ISO 53 basic-rack profile (A: h_fP 1.25, ρ_fP 0.38; B: 1.25, 0.30; C: 1.25, 0.25; "
+                          "D: 1.40, 0.39; h_aP 1, α_n 20°); sets the three coefficients, which may then be omitted")
+    centre_distance: Pos | None = Field(
+        None, description="working centre distance a_w [m]; checked against the profile shifts (or, with "
+                          "tip diameters, used to derive them)")
     backlash: NonNeg = Field(0.0, description="normal backlash b0 of the pair (paper: 'half backlash') [m]")
     stagger: float = Field(
         0.0, ge=0, lt=1,
@@ -59,6 +76,14 @@ class Member(_Frozen):
 
     teeth: int = Field(ge=5, le=1000, description="number of teeth z [-]")
     profile_shift: float = Field(0.0, ge=-1.5, le=1.5, description="profile shift coefficient x [-]")
+    tip_diameter: Pos | None = Field(
+        None, description="tip diameter d_a [m]; derives profile_shift if that is not given, else checked against it")
+    face_width: Pos | None = Field(
+        None, description="this member's face width [m]; default pair.face_width; the contact width is the smaller")
+    axial_stiffness: Pos | None = Field(
+        None, description="axial (thrust) bearing stiffness [N/m]; required for pair.kind = 'single-helical' "
+                          "(its axial mesh force is not balanced), default support_stiffness otherwise")
+    axial_damping: NonNeg | None = Field(None, description="axial bearing damping [N s/m]; default support_damping")
     mass: Pos = Field(description="mass of the member, both helices [kg]")
     inertia: Pos = Field(description="polar moment of inertia, both helices [kg m^2]")
     bore_radius: NonNeg = Field(0.0, description="shaft bore radius (0 = solid) [m]")
@@ -160,6 +185,11 @@ class Thermal(_Frozen):
         0.0, description="flank temperature rise over ambient, if not from the lubrication model [K]"
     )
     shaft_temperature_rise: NonNeg = Field(0.0, description="shaft/bore temperature rise over ambient [K]")
+    bulk_fraction: float = Field(
+        0.7, ge=0, le=1,
+        description="bulk temperature rise over the oil as a fraction C_1 of the mean contact temperature rise "
+                    "along the path (ISO/TS 6336-21 integral-temperature method: 0.7), used when "
+                    "flank_temperature_rise = 0 [-]")
     mesh_size: Pos | None = Field(None, description="FE gear-section mesh size (fe level) [m]; default m_n/5")
 
 
@@ -173,6 +203,30 @@ class Numerics(_Frozen):
     steps_per_mesh_period: int = Field(200, ge=10, le=100000, description="time steps per mesh period [-]")
     dynamics_cycles: Pos = Field(100.0, description="simulated mesh periods [-]")
     transient_cycles: NonNeg = Field(50.0, description="mesh periods dropped as transient (paper: 50) [-]")
+
+
+class Rating(_Frozen):
+    """``[rating]``: ISO 6336-2:2019 method B pitting rating (``femgear info``).
+
+    Defaults: K factors 1 (uniform load, no dynamic overload: give the K factors of the
+    application), σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
+    life, lubricant and roughness factors are 1 (reference conditions) unless their
+    inputs are given; Z_W = Z_X = 1.
+    """
+
+    application_factor: float = Field(1.0, ge=1, description="K_A [-]")
+    dynamic_factor: float = Field(1.0, ge=1, description="K_v [-]")
+    face_load_factor: float = Field(1.0, ge=1, description="K_Hβ [-]")
+    transverse_load_factor: float = Field(1.0, ge=1, description="K_Hα [-]")
+    contact_stress_limit: Pos = Field(1.5e9, description="σ_Hlim, allowable stress number (contact) [Pa]")
+    min_safety_factor: Pos = Field(1.0, description="S_Hmin [-]")
+    life_hours: Pos | None = Field(None, description="required life L_h [h]; sets N_L and Z_NT (None: Z_NT = 1)")
+    oil_viscosity_40: Pos | None = Field(
+        None, description="kinematic viscosity of the oil at 40 °C ν40 [mm^2/s]; sets Z_L and Z_v (None: 1)")
+    roughness_rz: tuple[Pos, Pos] | None = Field(
+        None, description="mean peak-to-valley roughness R_z of pinion and gear flanks [m]; sets Z_R (None: 1)")
+    work_hardening_factor: Pos = Field(1.0, description="Z_W [-]")
+    size_factor: Pos = Field(1.0, description="Z_X [-]")
 
 
 class Physics(_Frozen):
@@ -224,6 +278,7 @@ class Scene(_Frozen):
     thermal: Thermal = Thermal()
     numerics: Numerics = Numerics()
     physics: Physics = Physics()
+    rating: Rating = Rating()
 
     @property
     def oil_reference_temperature(self) -> float:

@@ -35,10 +35,11 @@ PAPER_S = 120 * 60.0
 
 
 def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml", overrides: tuple[str, ...] = ()):
+    from femgear.case import build_case
     from femgear.coupling import CouplingSetup
     from femgear.scene import load_scene
 
-    return CouplingSetup.from_scene(load_scene(scene_path, list(overrides)))
+    return CouplingSetup.from_case(build_case(load_scene(scene_path, list(overrides))))
 
 
 def _time_coupled(scene_path, overrides, repeats) -> dict:
@@ -49,8 +50,8 @@ def _time_coupled(scene_path, overrides, repeats) -> dict:
         t0 = time.perf_counter()
         res = run_coupled(setup(scene_path, overrides))
         times.append(time.perf_counter() - t0)
-    return {"median_s": statistics.median(times), "times_s": times, "iterations": res.history["iteration"][-1],
-            "converged": res.converged, "last_change": res.history["mesh_force_change"][-1]}
+    return {"median_s": statistics.median(times), "times_s": times, "iterations": res.history.iteration[-1],
+            "converged": res.converged, "last_change": res.history.mesh_force_change[-1]}
 
 
 def _time_cli(scene_path, repeats) -> dict:

@@ -34,10 +34,11 @@ OVERRIDES = ["errors.profile_error=1e-6", "pinion.eccentricity=20e-6", "gear.ecc
 
 
 def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml"):
+    from femgear.case import build_case
     from femgear.dynamics import build_model
     from femgear.scene import load_scene
 
-    return build_model(load_scene(scene_path, OVERRIDES), "lumped", stiffness="contact-line")
+    return build_model(build_case(load_scene(scene_path, OVERRIDES)), "lumped", stiffness="contact-line")
 
 
 def _amplitudes(model, periods, dt, method, record_every=1):

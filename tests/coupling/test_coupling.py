@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 
 from femgear.coupling import CouplingSetup, coupling_iterations, run_coupled
-from femgear.coupling.profile import excitation_tables, phase_table
+from femgear.case import build_case
+from femgear.coupling.profile import mesh_deviation, phase_table
 from femgear.errors import ConvergenceError
 from femgear.geometry import path_positions
 from femgear.scene import load_scene
@@ -12,10 +13,13 @@ from femgear.scene import load_scene
 FAST = ['physics.dynamics="lumped"', "numerics.dynamics_cycles=40", "numerics.transient_cycles=20"]
 
 
-def test_uniform_deviation_gives_a_uniform_table_and_backlash(baseline_pair):
+def test_uniform_wear_is_drive_only_and_expansion_is_both_flanks(baseline_pair):
+    """Uniform wear w (h1 + h2) moves the drive tables by w and leaves the coast tables; a uniform
+    expansion ζ (ζ_T1 + ζ_T2) closes both by ζ; no deviation gives no tables."""
     u = path_positions(baseline_pair, 81)
-    (eL, eR), db = excitation_tables(baseline_pair, u, np.full(u.size, 3e-6), stagger=0.3, n_phase=64)
-    assert np.allclose(eL, 3e-6) and np.allclose(eR, 3e-6) and np.allclose(db, 3e-6)
+    d = mesh_deviation(baseline_pair, u, np.full(u.size, 3e-6), np.full(u.size, 1e-6), stagger=0.3, n_phase=64)
+    assert np.allclose(d.drive, 2e-6, rtol=1e-12) and np.allclose(d.coast, -1e-6, rtol=1e-12)
+    assert mesh_deviation(baseline_pair, u, np.zeros(u.size), np.zeros(u.size)) is None
 
 
 def test_tables_are_the_contact_line_mean(baseline_pair):
@@ -33,15 +37,15 @@ def test_tables_are_the_contact_line_mean(baseline_pair):
 def setup(baseline_path):
     scene = load_scene(baseline_path, FAST + ['physics.thermal="analytic"', 'physics.wear="archard"',
                                               "wear.cycles=1e6", 'physics.coupling="bidirectional"'])
-    return CouplingSetup.from_scene(scene, n_path=41, n_phase=64)
+    return CouplingSetup.from_case(build_case(scene), n_phase=64)
 
 
 def test_the_loop_converges_to_the_papers_tolerance_with_a_history(setup):
     result = run_coupled(setup, tol_force=1e-6, tol_mu=1e-6, max_iter=12)
     h = result.history
     assert result.converged and result.state.iteration <= 8
-    assert h["mesh_force_change"][-1] < 1e-6 and h["mu_change"][-1] < 1e-6
-    changes = h["mesh_force_change"][1:]
+    assert h.mesh_force_change[-1] < 1e-6 and h.mu_change[-1] < 1e-6
+    changes = h.mesh_force_change[1:]
     assert changes[-1] < changes[0] * 1e-3          # contraction, not a lucky stop
     st = result.state
     assert np.all(np.isfinite(st.mu)) and st.wear.max() > 1e-6 and st.thermal_deviation.max() > 0

@@ -1,5 +1,6 @@
 """Fixtures of the dynamics tests: baseline models at both levels."""
 
+from femgear.case import build_case
 import pytest
 
 
@@ -7,11 +8,11 @@ import pytest
 def lumped(baseline_scene):
     from femgear.dynamics import build_model
 
-    return build_model(baseline_scene, "lumped", stiffness="contact-line")
+    return build_model(build_case(baseline_scene), "lumped", stiffness="contact-line")
 
 
 @pytest.fixture(scope="module")
 def timoshenko(baseline_scene):
     from femgear.dynamics import build_model
 
-    return build_model(baseline_scene, "timoshenko", stiffness="contact-line")
+    return build_model(build_case(baseline_scene), "timoshenko", stiffness="contact-line")

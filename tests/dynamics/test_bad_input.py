@@ -1,5 +1,6 @@
 """Bad input is refused with a message naming the argument or scene key."""
 
+from femgear.case import build_case
 import numpy as np
 import pytest
 
@@ -22,10 +23,10 @@ def test_non_positive_values_refused_by_the_assembly(baseline_scene):
 
     bad = baseline_scene.model_copy(update={"pinion": baseline_scene.pinion.model_copy(update={"mass": -1.0})})
     with pytest.raises(SceneError, match="pinion.mass"):
-        build_model(bad)
+        build_model(build_case(bad))
     bad = baseline_scene.model_copy(update={"gear": baseline_scene.gear.model_copy(update={"support_stiffness": 0.0})})
     with pytest.raises(SceneError, match="gear.support_stiffness"):
-        build_model(bad)
+        build_model(build_case(bad))
 
 
 def test_bad_mesh_stiffness_refused():

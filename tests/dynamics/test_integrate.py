@@ -1,5 +1,7 @@
 """Tier 1/2: integrators — RK4 order, energy conservation, fast integrator vs fine RK4."""
 
+from femgear.case import build_case
+from femgear.dynamics import MeshDeviation, with_deviation
 import numpy as np
 import pytest
 
@@ -25,8 +27,8 @@ def energy(model, q, v):
 @pytest.fixture(scope="module")
 def conservative(baseline_path):
     scene = load_scene(baseline_path, ["pinion.support_damping=0", "gear.support_damping=0"])
-    return build_model(scene, "lumped", stiffness="constant", rayleigh_ratio=0.0, mesh_damping_ratio=0.0,
-                       friction_coefficient=0.0)
+    return build_model(build_case(scene), "lumped", stiffness="constant", rayleigh_ratio=0.0, mesh_damping_ratio=0.0,
+                       friction=0.0)
 
 
 def kicked(model, speed=0.05):
@@ -80,7 +82,7 @@ def test_fast_integrator_matches_fine_rk4(baseline_path):
     """``expo`` at 200 steps per mesh period vs RK4 at 800: amplitudes (each from its own samples,
     extremes refined) within 0.5 %."""
     scene = load_scene(baseline_path, ["errors.profile_error=1e-6", "pinion.eccentricity=20e-6"])
-    m = build_model(scene, "lumped", stiffness="contact-line")
+    m = build_model(build_case(scene), "lumped", stiffness="contact-line")
     T = 60 * m.mesh_period
     dt, per = expo_step(m, m.mesh_period / 200)
     fast = analyse(simulate(m, T, dt, "expo"), transient_cycles=30).amplitudes
@@ -91,30 +93,60 @@ def test_fast_integrator_matches_fine_rk4(baseline_path):
         assert abs(fast[k] / ref[k] - 1) < 5e-3, (k, fast[k], ref[k])
 
 
-def test_profile_deviation_and_dynamic_backlash_hooks(baseline_path):
-    """Wear/thermal hooks: a sampled profile deviation equals the analytic profile-error harmonic,
-    and on the drive flank a backlash variation Δb(φ) acts exactly like a deviation e = Δb(φ)."""
+def _mesh_force_at(model, x: float) -> np.ndarray:
+    """Elastic mesh forces (at rest, phase 0) for the mesh approach G q = x on both helices."""
+    q = np.linalg.pinv(model.G) @ np.array([x, x])
+    return model.mesh_forces(np.array(0.0), q, np.zeros(model.n))[1]
+
+
+def test_drive_wear_moves_only_the_drive_threshold_and_expansion_closes_both(baseline_path):
+    """Each deviation enters once: a uniform wear depth w on the drive flanks moves the drive
+    contact threshold from b to b + w and leaves the coast one at −b; a uniform thermal
+    expansion ζ moves them to b − ζ and −(b − ζ) (exact identities of the dead zone)."""
+    case = build_case(load_scene(baseline_path))
+    base = build_model(case, "lumped", stiffness="constant", friction=0.0)
+    b, k = base.backlash, base.stiffness.mean[0]
+    w, zeta, n = 7e-6, 4e-6, 16
+    worn = with_deviation(base, MeshDeviation(drive=np.full((2, n), w), coast=np.zeros((2, n))))
+    warm = with_deviation(base, MeshDeviation(drive=np.full((2, n), -zeta), coast=np.full((2, n), -zeta)))
+    for model, drive, coast in ((base, b, b), (worn, b + w, b), (warm, b - zeta, b - zeta)):
+        for x in (drive + 1e-9, drive + 3e-6, -coast - 2e-6):
+            expected = k * (x - drive) if x > 0 else k * (x + coast)
+            assert np.allclose(_mesh_force_at(model, x), expected, rtol=1e-9, atol=1e-9 * k * 1e-6)
+        for x in (drive - 1e-9, -coast + 1e-9):
+            assert np.all(_mesh_force_at(model, x) == 0.0)
+
+
+def test_an_antisymmetric_flank_deviation_is_a_transmission_error(baseline_path):
+    """d_D = −d_C = e(φ) shifts the dead zone without opening it: the same response as the
+    profile-error harmonic e(t) of the scene; all three integrators agree on a drive-only
+    deviation table; a deviation ripple larger than the static deflection opens the contact."""
     scene = load_scene(baseline_path, ["errors.profile_error=1e-6", "errors.profile_error_orders=1"])
-    plain = load_scene(baseline_path)
+    plain = build_case(load_scene(baseline_path))
     ph = np.arange(2048) / 2048
     table = 1e-6 * np.sin(2 * np.pi * ph)
-    kw = dict(level="lumped", stiffness="constant", friction_coefficient=0.0)
-    m_ref = build_model(scene, **kw)
-    m_tab = build_model(plain, profile_deviation=(table, table), **kw)
-    m_bl = build_model(plain, backlash_variation=table, **kw)
+    kw = dict(level="lumped", stiffness="constant", friction=0.0)
+    m_ref = build_model(build_case(scene), **kw)
+    m_tab = build_model(plain, deviation=MeshDeviation(drive=np.array([table, table]),
+                                                       coast=-np.array([table, table])), **kw)
+    m_drive = build_model(plain, deviation=MeshDeviation(drive=np.array([table, table]), coast=np.zeros((2, 2048))),
+                          **kw)
     T, dt = 30 * m_ref.mesh_period, m_ref.mesh_period / 200
     ref = analyse(simulate(m_ref, T, dt, "rk4"), 15).amplitudes
     tab = analyse(simulate(m_tab, T, dt, "rk4"), 15).amplitudes
-    for k in ("mesh_force.L.amplitude", "gear.displacement.y", "pinion.displacement.x"):
-        assert abs(tab[k] / ref[k] - 1) < 5e-3, k
+    for key in ("mesh_force.L.amplitude", "gear.displacement.y", "pinion.displacement.x"):
+        assert abs(tab[key] / ref[key] - 1) < 5e-3, key
     # (velocities are left out: the kinks of a piecewise-linear table excite the high modes a little)
-    for method in ("rk4", "expo", "newmark"):
-        bl = analyse(simulate(m_bl, T, dt, method), 15).amplitudes
-        for k in ("gear.displacement.y", "pinion.displacement.x"):
-            assert abs(bl[k] / tab[k] - 1) < 5e-3, (method, k)
-    # a backlash ripple at mesh order 10 (≈ the first mesh mode) of twice the static deflection
-    # drives the pair into contact loss for part of each period
+    drive = {m: analyse(simulate(m_drive, T, dt, m), 15).amplitudes for m in ("rk4", "expo", "newmark")}
+    for method in ("expo", "newmark"):
+        for key in ("gear.displacement.y", "pinion.displacement.x"):
+            assert abs(drive[method][key] / drive["rk4"][key] - 1) < 5e-3, (method, key)
+    # on the drive flank only the drive threshold matters: the same response as the shift alone
+    for key in ("gear.displacement.y", "pinion.displacement.x"):
+        assert abs(drive["rk4"][key] / tab[key] - 1) < 5e-3, key
     d0 = m_ref.static_state() @ m_ref.G[0] - m_ref.backlash
-    m_open = build_model(plain, backlash_variation=2 * d0 * (1 + np.sin(2 * np.pi * 10 * ph)), **kw)
+    ripple = 2 * d0 * (1 + np.sin(2 * np.pi * 10 * ph))
+    m_open = build_model(plain, deviation=MeshDeviation(drive=np.array([ripple, ripple]), coast=np.zeros((2, 2048))),
+                         **kw)
     res = analyse(simulate(m_open, T, dt / 4, "rk4"), 15)
     assert 0.02 < res.amplitudes["contact_loss_fraction.L"] < 0.9

@@ -1,5 +1,6 @@
 """Tier 3: linearised modal analysis against time-domain resonances."""
 
+from femgear.case import build_case
 import numpy as np
 import pytest
 
@@ -30,20 +31,20 @@ def test_first_mesh_mode_is_the_resonance_of_a_speed_sweep(baseline_path):
     """DTE RMS over mesh frequency (contact-line TVMS + one profile-error harmonic) peaks within 2 % of
     the first mean-stiffness natural frequency with mesh strain energy."""
     scene = load_scene(baseline_path, ["errors.profile_error=1e-6", "errors.profile_error_orders=1"])
-    kw = dict(level="lumped", stiffness="contact-line", friction_coefficient=0.0)
-    f1 = _mesh_modes(build_model(scene, **kw))[0]
+    kw = dict(level="lumped", stiffness="contact-line", friction=0.0)
+    f1 = _mesh_modes(build_model(build_case(scene), **kw))[0]
     rpm = np.linspace(0.85, 1.15, 13) * f1 * 60 / scene.pinion.teeth
-    sw = speed_sweep(scene, rpm, cycles=80, measure=30, **kw)
+    sw = speed_sweep(build_case(scene), rpm, cycles=80, measure=30, **kw)
     assert abs(peak_frequency(sw.mesh_frequency, sw.dte_rms) / f1 - 1) < 0.02
 
 
 @pytest.mark.slow
 def test_broad_speed_sweep_peaks_at_mesh_modes(baseline_path):
     scene = load_scene(baseline_path, ["errors.profile_error=1e-6", "errors.profile_error_orders=1"])
-    kw = dict(level="lumped", stiffness="contact-line", friction_coefficient=0.0)
-    modes = _mesh_modes(build_model(scene, **kw))
+    kw = dict(level="lumped", stiffness="contact-line", friction=0.0)
+    modes = _mesh_modes(build_model(build_case(scene), **kw))
     fm = np.linspace(1500, 8500, 71)
-    sw = speed_sweep(scene, fm * 60 / scene.pinion.teeth, cycles=100, measure=40, **kw)
+    sw = speed_sweep(build_case(scene), fm * 60 / scene.pinion.teeth, cycles=100, measure=40, **kw)
     y = sw.dte_rms
     peaks = [i for i in range(1, y.size - 1) if y[i] > y[i - 1] and y[i] > y[i + 1] and y[i] > 0.2 * y.max()]
     assert len(peaks) >= 2

@@ -1,5 +1,6 @@
 """Tier 1: the assembled model — symmetry, action = reaction, kinematics, statics."""
 
+from femgear.case import build_case
 import math
 
 import numpy as np
@@ -41,13 +42,13 @@ def test_action_equals_reaction(lumped):
     """Mesh forces sum to zero force and zero moment about any point (in the full space)."""
     from femgear.dynamics.mesh import mesh_geometry
 
-    geo = mesh_geometry(lumped.pair, lumped.info["half_spacing"])
+    geo = mesh_geometry(lumped.pair, lumped.half_spacing)
     for s in range(2):
         for vec in (geo.g[s], geo.h0[s], geo.h1[s]):
             force = sum(vec[6 * b: 6 * b + 3] for b in range(4))
             assert np.allclose(force, 0.0, atol=1e-14)
             # moment about the pinion axis origin: r_b × F + M_b, body centres at (0/a_w, 0, ±h)
-            h = lumped.info["half_spacing"]
+            h = lumped.half_spacing
             centres = [np.array([0, 0, -h]), np.array([0, 0, h]), np.array([lumped.pair.a_w, 0, -h]),
                        np.array([lumped.pair.a_w, 0, h])]
             moment = sum(np.cross(centres[b], vec[6 * b: 6 * b + 3]) + vec[6 * b + 3: 6 * b + 6] for b in range(4))
@@ -62,7 +63,7 @@ def test_rigid_rotation_leaves_mesh_undeformed_and_gives_the_sliding_speed(lumpe
         qdot[dof(BODIES[2 + side], "rz")] = lumped.omega[1]
     from femgear.dynamics.mesh import mesh_geometry
 
-    geo = mesh_geometry(pair, lumped.info["half_spacing"])
+    geo = mesh_geometry(pair, lumped.half_spacing)
     assert np.allclose(geo.g @ qdot, 0.0, atol=1e-12)
     u = np.linspace(pair.u_start, pair.u_end, 7)
     kin = kinematics(pair, u, abs(lumped.omega[0]))
@@ -74,7 +75,7 @@ def test_rigid_rotation_leaves_mesh_undeformed_and_gives_the_sliding_speed(lumpe
 def test_static_mesh_force_carries_the_torque(baseline_scene):
     from femgear.dynamics import build_model
 
-    m = build_model(baseline_scene, "lumped", stiffness="constant", friction_coefficient=0.0)
+    m = build_model(build_case(baseline_scene), "lumped", stiffness="constant", friction=0.0)
     q0 = m.static_state()
     delta, N, Q = m.mesh_forces(np.array(0.0), q0, np.zeros(m.n))
     expected = baseline_scene.operating.torque / (2 * m.pair.rb1 * math.cos(m.pair.beta_b))
@@ -105,7 +106,7 @@ def test_external_tvms_table_plugs_in(baseline_scene):
             k = 3e8 * (1 + 0.1 * np.cos(2 * np.pi * phase))
             return k, k
 
-    m = build_model(baseline_scene, "lumped", stiffness=Ripple())
+    m = build_model(build_case(baseline_scene), "lumped", stiffness=Ripple())
     assert m.stiffness.label == "test"
     assert np.isclose(m.stiffness.mean[0], 3e8, rtol=1e-9)
 
@@ -122,7 +123,7 @@ def test_eccentricity_is_absorbed_by_the_free_rotation_but_not_by_a_power_loop(b
     for kloop in (0.0, 1e4):
         for e in (0.0, 30e-6):
             scene = load_scene(baseline_path, [f"pinion.eccentricity={e}", f"gear.eccentricity={e}"])
-            m = build_model(scene, "lumped", stiffness="contact-line", load_stiffness=kloop)
+            m = build_model(build_case(scene), "lumped", stiffness="contact-line", load_stiffness=kloop)
             assert np.sum(np.abs(np.linalg.eigvalsh(m.mean_stiffness_matrix())) < 1e-3) == 1  # train still free
             res = analyse(simulate(m, 40 * m.mesh_period, 2e-5, "rk4"), transient_cycles=8)
             amp[kloop, e] = res.amplitudes["mesh_force.L.amplitude"]
@@ -140,7 +141,7 @@ def test_stagger_drives_axial_shuttling(baseline_path):
     z = {}
     for stagger in (0.0, 0.5):
         scene = load_scene(baseline_path, [f"pair.stagger={stagger}"])
-        m = build_model(scene, "lumped", stiffness="contact-line")
+        m = build_model(build_case(scene), "lumped", stiffness="contact-line")
         res = analyse(simulate(m, 30 * m.mesh_period, m.mesh_period / 200, "rk4"), transient_cycles=15)
         z[stagger] = res.amplitudes["pinion.displacement.z"]
     assert z[0.0] < 1e-15

@@ -1,5 +1,6 @@
 """Post-processing, friction power, results files and the command line."""
 
+from femgear.case import build_case
 import json
 import os
 import subprocess
@@ -27,7 +28,7 @@ def test_friction_dissipates_power_on_average(baseline_scene):
     from femgear.dynamics import build_model
     from femgear.dynamics.layout import BODIES, dof
 
-    m = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient=0.05)
+    m = build_model(build_case(baseline_scene), "lumped", stiffness="contact-line", friction=0.05)
     qdot = np.zeros(24)
     for side in range(2):
         qdot[dof(BODIES[side], "rz")] = m.omega[0]
@@ -41,14 +42,15 @@ def test_friction_dissipates_power_on_average(baseline_scene):
     assert power.mean() < -1.0
 
 
-def test_run_dynamics_writes_results_and_plots(baseline_scene, tmp_path):
+def test_run_dynamics_writes_results_and_plots(lumped, tmp_path):
     from femgear.dynamics.run import run_dynamics
+    from femgear.io.dynamics import write_dynamics
 
-    r = run_dynamics(baseline_scene, tmp_path, stiffness="contact-line", method="rk4", dt=2e-5, cycles=20,
-                     transient_cycles=10)
+    r = run_dynamics(lumped, method="rk4", dt=2e-5, cycles=20, transient_cycles=10)
+    files = write_dynamics(r, tmp_path)
     for key in ("json", "npz", "time_histories", "mesh_force", "phase_planes", "spectra"):
-        assert r.files[key].exists() and r.files[key].stat().st_size > 0
-    data = json.loads(r.files["json"].read_text())
+        assert files[key].exists() and files[key].stat().st_size > 0
+    data = json.loads(files["json"].read_text())
     assert data["amplitudes"]["gear.displacement.y"] > 0
     assert np.isfinite(r.response.displacement).all()
 
@@ -69,8 +71,8 @@ def test_formula_friction_along_the_path(baseline_scene):
     """μ(u) from the friction package (U-shaped, zero at the pitch point) folded into the tables."""
     from femgear.dynamics import build_model
 
-    m = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient="scene")
-    c = build_model(baseline_scene, "lumped", stiffness="contact-line", friction_coefficient=0.05)
+    m = build_model(build_case(baseline_scene), "lumped", stiffness="contact-line")   # the formula level's μ(u)
+    c = build_model(build_case(baseline_scene), "lumped", stiffness="contact-line", friction=0.05)
     assert m.mu == 1.0
     assert np.abs(m.friction.A).max() < 0.06 and np.abs(m.friction.B).max() < 0.06 * np.abs(c.friction.B).max() / 0.05 * 1.5
     assert np.abs(m.friction.B).max() > 0

@@ -22,10 +22,11 @@ def scene():
 
 
 def test_level_is_available_and_selected(scene):
-    from femgear.coupling.loop import lubrication_solver
+    from femgear.case import build_case
+    from femgear.lubrication.levels import lubrication_solver
 
     assert check_level("lubrication", "tehl") is None
-    solve = lubrication_solver(scene)
+    solve = lubrication_solver(build_case(scene), repeated=True)
     assert hasattr(solve, "cache") and "map" not in solve.cache   # a lazily built TEHL map
 
 
@@ -54,10 +55,13 @@ def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, tmp_path):
     assert np.max(g.cell_data["temperature"]) == pytest.approx(path.dT_max[0] + scene.operating.ambient_temperature)
 
 
-def test_friction_of_reports_tehl_figures(scene):
-    from femgear.run import friction_of
+def test_static_pass_reports_tehl_figures(scene):
+    """The lubrication registry's ``tehl`` level (direct solves) equals the TEHL path solver."""
+    from femgear.case import build_case
+    from femgear.lubrication.levels import friction_along_path
 
+    case = build_case(scene.model_copy(update={"numerics": scene.numerics.model_copy(update={"path_points": 3})}))
     contact = contact_along_path(scene, n=3)
-    fr = friction_of(scene, contact)
+    mu, dT = friction_along_path(case, np.full(case.path.u.size, contact.load_per_length))
     direct = tehl_along_path(scene, contact, level=3)
-    assert fr["mu"] == pytest.approx(direct.mu) and fr["temperature_rise"] == pytest.approx(direct.dT_max)
+    assert mu == pytest.approx(direct.mu) and dT == pytest.approx(direct.dT_max)

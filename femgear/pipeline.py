@@ -1,0 +1,105 @@
+"""``femgear run``: run what a case's ``[physics]`` asks for (pure), then write it (edge).
+
+Always: the quasi-static geometry and contact pass along the path of contact (Hertz
+pressure, film thickness, sliding) and the mesh stiffness of the ``stiffness`` level.
+
+Without dynamics (``dynamics = "none"``), the sub-models run once at the static load:
+friction and contact temperature from the ``lubrication`` level (the registry of
+:mod:`femgear.lubrication.levels`), the thermal flank deviation (``thermal``) for
+``thermal.flank_temperature_rise`` and the wear depth after ``wear.cycles``.
+
+With dynamics, everything goes through the coupling loop of :mod:`femgear.coupling`:
+``coupling = "one-way"`` stops after the first dynamic pass, ``"bidirectional"``
+iterates to convergence.
+
+:func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult`;
+:func:`run_scene` binds a scene, runs it and writes the files (:mod:`femgear.io.run`).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from femgear.case import Case, build_case
+from femgear.contact.path import ContactPath, contact_along_path
+from femgear.coupling.loop import CouplingSetup, CouplingState, run_coupled, thermal_units
+from femgear.lubrication.levels import friction_along_path
+from femgear.results import RunResult, Tribology
+from femgear.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
+
+
+def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None,
+             wear_checkpoint: Path | None = None) -> RunResult:
+    """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
+    t0 = time.perf_counter()
+    contact = contact_along_path(case.scene, pair=case.pair)
+    stiffness = mesh_stiffness_from_scene(case.scene)
+    if case.levels.dynamics == "none":
+        return RunResult(case, contact, stiffness, static_tribology(case, contact, wear_checkpoint),
+                         seconds=time.perf_counter() - t0)
+    setup = CouplingSetup.from_case(case, stiffness=stiffness)
+    coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
+    st = coupled.state
+    levels = case.levels
+    tribology = Tribology(
+        load_per_length=st.load_per_length,
+        friction_coefficient=st.mu if levels.lubrication != "none" else None,
+        temperature_rise=st.temperature_rise if levels.lubrication != "none" else None,
+        flank_temperature_rise=st.flank_temperature_rise,
+        thermal_deviation=st.thermal_deviation if levels.thermal != "none" else None,
+        wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles)
+    return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0)
+
+
+def static_tribology(case: Case, contact: ContactPath, wear_checkpoint: Path | None = None) -> Tribology:
+    """Friction, thermal deviation and wear once, at the static load."""
+    n = case.path.u.size
+    w = np.full(n, contact.load_per_length)
+    mu = dT = zeta = wear = None
+    if case.levels.lubrication != "none":
+        mu, dT = friction_along_path(case, w)
+    units = thermal_units(case)
+    if units is not None:
+        zeta = units.deviation(case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)
+    cycles, steps = 0.0, 0
+    if case.levels.wear == "archard":
+        from femgear.wear import WearSetup, run_wear
+
+        pair = case.pair
+        setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / 2,
+                          c_l=case.stiffness.mesh_stiffness_per_width * pair.b / pair.mean_contact_length,
+                          coefficient=case.wear.coefficient, hardness=case.material.hardness)
+        state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)
+        wear, cycles, steps = np.array([state.h1, state.h2]), state.cycles, state.steps
+    return Tribology(load_per_length=w, friction_coefficient=mu, temperature_rise=dT,
+                     flank_temperature_rise=case.thermal.flank_temperature_rise, thermal_deviation=zeta, wear=wear,
+                     wear_cycles=cycles, wear_steps=steps)
+
+
+@dataclass(frozen=True)
+class WrittenRun:
+    """A run and the files written from it; ``summary`` is the JSON summary as written."""
+
+    result: RunResult
+    summary: dict[str, Any]
+    files: dict[str, Path] = field(default_factory=dict)
+
+
+def run_scene(scene, out_dir: str | Path, plots: bool = True,
+              progress: Callable[[CouplingState], None] | None = None) -> WrittenRun:
+    """Bind ``scene``, run it and write ``results.json`` (and figures) into ``out_dir``."""
+    from femgear.io.run import write_run
+
+    out_dir = Path(out_dir)
+    result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")
+    summary, files = write_run(result, out_dir, plots)
+    return WrittenRun(result=result, summary=summary, files=files)
+
+
+__all__ = ["MeshStiffness", "RunResult", "WrittenRun", "run_case", "run_scene", "static_tribology"]

@@ -1,0 +1,44 @@
+"""Typed results of a run (:func:`femgear.pipeline.run_case`), read by every writer and plot.
+
+:class:`RunResult` is the one object a run produces: the case, the quasi-static contact
+pass, the mesh stiffness, the tribology along the case's path grid and, with dynamics,
+the coupled result.  The JSON layout written from it (:mod:`femgear.io.run`) is the
+documented contract of ``results.json``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from femgear.case import Case
+from femgear.contact.path import ContactPath
+from femgear.coupling.loop import CoupledResult
+from femgear.stiffness.tvms import MeshStiffness
+
+
+@dataclass(frozen=True)
+class Tribology:
+    """Lubrication, thermal expansion and wear along the case's path grid (None: level off)."""
+
+    load_per_length: np.ndarray                 #: w̄' [N/m] (static: the time-mean w')
+    friction_coefficient: np.ndarray | None     #: μ [-]
+    temperature_rise: np.ndarray | None         #: contact temperature rise [K]
+    flank_temperature_rise: float               #: bulk temperature rise driving the expansion [K]
+    thermal_deviation: np.ndarray | None        #: (2, n) ζ_T pinion, gear [m]
+    wear: np.ndarray | None                     #: (2, n) wear depth pinion, gear [m]
+    wear_cycles: float = 0.0                    #: pinion revolutions of accumulated wear
+    wear_steps: int = 0                         #: update steps of the wear integration
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """Everything one run computed."""
+
+    case: Case
+    contact: ContactPath
+    stiffness: MeshStiffness
+    tribology: Tribology
+    coupled: CoupledResult | None = None        #: with a dynamics level
+    seconds: float = 0.0
