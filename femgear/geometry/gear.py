@@ -1,8 +1,10 @@
-"""Involute helical gear pair: dimensions, contact ratios and feasibility (ISO 21771).
+"""Involute gear pair (spur, single- or double-helical): dimensions, contact ratios, feasibility (ISO 21771).
 
 All lengths in metres, angles in radians.  Index 1 is the pinion, 2 the gear.  A
 double-helical pair is two helical pairs of opposite hand; everything here refers to
-one helix of width ``b`` (both helices share it).
+one helix of width ``b`` (both helices share it).  A single-helical pair is one such
+helix; a spur pair is the limit β = 0.  ``b`` is the width in contact (the smaller of
+the two members' face widths).
 
 Sources: ISO 21771:2007 (cylindrical involute gears, concepts and geometry), §4–5;
 Niemann & Winter, *Maschinenelemente* II (2nd ed.), §21.
@@ -33,6 +35,12 @@ def inv_inverse(value: float) -> float:
     return brentq(lambda a: inv(a) - value, 1e-12, math.pi / 2 - 1e-9, xtol=1e-15, rtol=1e-15)
 
 
+KINDS = ("double-helical", "single-helical", "spur")
+
+#: ISO 53:1998 basic-rack profiles: (h_aP, h_fP, ρ_fP) / m_n, α_P = 20°
+BASIC_RACKS = {"A": (1.0, 1.25, 0.38), "B": (1.0, 1.25, 0.30), "C": (1.0, 1.25, 0.25), "D": (1.0, 1.40, 0.39)}
+
+
 @dataclass(frozen=True)
 class GearPair:
     """Dimensions of one helix of an external involute helical gear pair.
@@ -52,6 +60,16 @@ class GearPair:
     h_aP: float = 1.0   #: basic-rack addendum / m_n
     h_fP: float = 1.25  #: basic-rack dedendum / m_n
     rho_fP: float = 0.38  #: basic-rack root radius / m_n
+    kind: str = "double-helical"  #: "double-helical", "single-helical" or "spur"
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise ValueError(f"kind must be one of {', '.join(KINDS)}, got {self.kind!r}")
+
+    @property
+    def n_helices(self) -> int:
+        """Helices sharing the load: 2 for a double-helical pair, else 1."""
+        return 2 if self.kind == "double-helical" else 1
 
     # ---------- transverse section ----------
     @property
@@ -227,14 +245,10 @@ class GearPair:
 
     @classmethod
     def from_scene(cls, scene) -> GearPair:
-        """The pair of a :class:`femgear.scene.Scene` (checked)."""
-        p = scene.pair
-        return cls.from_parameters(
-            z1=scene.pinion.teeth, z2=scene.gear.teeth, m_n=p.normal_module,
-            alpha_n=math.radians(p.normal_pressure_angle_deg), beta=math.radians(p.helix_angle_deg),
-            b=p.face_width, x1=scene.pinion.profile_shift, x2=scene.gear.profile_shift,
-            h_aP=p.addendum_coeff, h_fP=p.dedendum_coeff, rho_fP=p.root_radius_coeff,
-        )
+        """The pair of a :class:`femgear.scene.Scene` (checked; see :mod:`femgear.geometry.scene_pair`)."""
+        from femgear.geometry.scene_pair import pair_from_scene
+
+        return pair_from_scene(scene)
 
     def check(self) -> None:
         """Raise :class:`SceneError` if the pair cannot be made or does not mesh."""
