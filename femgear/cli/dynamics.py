@@ -88,7 +88,7 @@ def _sweep(case, args, out: Path) -> int:
     except ValueError:
         raise FemgearError(f"--sweep: expected RPM0:RPM1:N, got {args.sweep!r}") from None
     kw = {"level": args.level, "stiffness": args.stiffness}
-    sw = speed_sweep(case, rpm, method=args.method or "rk4", **kw)
+    sw = speed_sweep(case, rpm, method=args.method, **kw)
     modal = modal_analysis(build_model(case, **kw))
     files = {}
     if not args.no_plots:

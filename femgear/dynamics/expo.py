@@ -140,6 +140,66 @@ def expo_step(model: GearRotorModel, dt: float) -> tuple[float, int]:
     return model.mesh_period / per, per
 
 
+def _phase_stiffness(model: GearRotorModel, per: int, substeps: int) -> list[tuple]:
+    """Mesh stiffness of each phase slot: averages over ``substeps`` sub-steps (4-point midpoint rule each)."""
+    sub = (np.arange(per)[:, None, None] + (np.arange(substeps)[None, :, None]
+                                            + (np.arange(4)[None, None, :] + 0.5) / 4) / substeps) / per
+    kLs, kRs = model.stiffness(sub)
+    kL_sub, kR_sub = kLs.mean(axis=2), kRs.mean(axis=2)
+    return [tuple(zip(kL_sub[j].tolist(), kR_sub[j].tolist())) for j in range(per)]
+
+
+def _channels(model: GearRotorModel, Minv: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Gz (mesh deflections and rates from the state) and Bw (input channels: mesh damping of ė,
+    force +G_s c ė_s; friction μ|N|A, μ|N|B per side)."""
+    n = model.n
+    Gz = np.zeros((4, 2 * n))
+    Gz[0:2, :n] = model.G
+    Gz[2:4, n:] = model.G
+    Bw = np.zeros((2 * n, 6))
+    Bw[n:] = Minv @ np.vstack([model.G[0], model.G[1], -model.H0[0], -model.H1[0], -model.H0[1], -model.H1[1]]).T
+    return Gz, Bw
+
+
+def _fast_path_inputs(cache: dict, per: int, steps: int, Fe, ecols, dcols, Bw):
+    """The known inputs of every step while both drive flanks are in contact, per phase, and the
+    friction input matrices (n2, 12) at the three hold nodes."""
+    known = np.empty((steps, Bw.shape[0]))
+    Wfr = []
+    for j in range(min(per, steps)):
+        Phi, W0, Wh, W1, U = cache[(j, (1, 1))]
+        idx = np.arange(j, steps, per)
+        i0, ih, i1 = 2 * idx, 2 * idx + 1, 2 * idx + 2
+        known[idx] = (Fe[i0] + dcols[i0] @ Bw[:, :2].T) @ W0.T + (Fe[ih] + dcols[ih] @ Bw[:, :2].T) @ Wh.T \
+            + (Fe[i1] + dcols[i1] @ Bw[:, :2].T) @ W1.T \
+            + np.concatenate([ecols[i0, :1], ecols[ih, :1], ecols[i1, :1], ecols[i0, 1:], ecols[ih, 1:], ecols[i1, 1:]],
+                             axis=1) @ U.T
+        Wfr.append(np.hstack([W0 @ Bw[:, 2:], Wh @ Bw[:, 2:], W1 @ Bw[:, 2:]]))
+    return known, Wfr
+
+
+def _general_step(model, cache, j, kj, side, dt, y, i2, data, Nn, N_prev):
+    """One step in any contact state: known inputs at t_n, t_n+h/2, t_n+h: u_s = e_s ± b (through
+    the sub-steps' stiffness), c ė_s; friction: μ|N| extrapolated linearly from the last two
+    steps, A and B at the nodes."""
+    Fe, Bw, cm, eed, AA, BB, ee, bb = data
+    chi = (int(side[0] != 0), int(side[1] != 0))
+    mats = cache.get((j, chi))
+    if mats is None:
+        mats = cache[(j, chi)] = _expo_matrices(model, kj, chi, dt)
+    Phi, W0, Wh, W1, U = mats
+    c0, c1 = chi[0] * cm[0], chi[1] * cm[1]
+    F = []
+    for o, w in ((0, 0.0), (1, 0.5), (2, 1.0)):
+        ii = i2 + o
+        a0 = Nn[0] + w * (Nn[0] - N_prev[0])
+        a1 = Nn[1] + w * (Nn[1] - N_prev[1])
+        F.append(Fe[ii] + Bw @ (c0 * eed[0][ii], c1 * eed[1][ii], a0 * AA[0][ii], a0 * BB[0][ii],
+                                a1 * AA[1][ii], a1 * BB[1][ii]))
+    u = tuple(ee[s][i2 + o] + side[s] * bb[s][i2 + o] for s in range(2) for o in range(3))
+    return Phi @ y + W0 @ F[0] + Wh @ F[1] + W1 @ F[2] + U @ u
+
+
 def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Simulation:
     duration = steps * dt
     dt, per = expo_step(model, dt)
@@ -149,20 +209,9 @@ def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Si
     n = model.n
     n2 = 2 * n
     Minv = np.linalg.inv(model.M)
-    # mesh stiffness of each phase slot: averages over `substeps` sub-steps (4-point midpoint rule each)
-    sub = (np.arange(per)[:, None, None] + (np.arange(substeps)[None, :, None]
-                                            + (np.arange(4)[None, None, :] + 0.5) / 4) / substeps) / per
-    kLs, kRs = model.stiffness(sub)
-    kL_sub, kR_sub = kLs.mean(axis=2), kRs.mean(axis=2)
-    kstep = [tuple(zip(kL_sub[j].tolist(), kR_sub[j].tolist())) for j in range(per)]
+    kstep = _phase_stiffness(model, per, substeps)
     cache = _propagator_cache(model, dt, substeps)
-
-    Gz = np.zeros((4, n2))
-    Gz[0:2, :n] = model.G
-    Gz[2:4, n:] = model.G
-    # input channels: mesh damping of ė (force +G_s c ė_s), friction μ|N|A, μ|N|B per side
-    Bw = np.zeros((n2, 6))
-    Bw[n:] = Minv @ np.vstack([model.G[0], model.G[1], -model.H0[0], -model.H1[0], -model.H0[1], -model.H1[1]]).T
+    Gz, Bw = _channels(model, Minv)
     tt = np.arange(2 * steps + 1) * (dt / 2)          # half-step grid (quadratic hold)
     kL, kR, e, ed, f, A, B = inputs(model, tt)
     Fe = np.zeros((tt.size, n2))
@@ -180,20 +229,9 @@ def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Si
     for j in range(min(per, steps)):         # propagators of the all-in-contact state, built up front
         if (j, (1, 1)) not in cache:
             cache[(j, (1, 1))] = _expo_matrices(model, kstep[j], (1, 1), dt)
-    # fast path (both drive flanks in contact): the known inputs of every step, precomputed per phase
-    known = np.empty((steps, n2))
     ecols = np.stack([e[0] + bt[0], e[1] + bt[1]], axis=1)    # u_s = e_s + b_s(t) on the drive flank
     dcols = np.stack([cm[0] * ed[0], cm[1] * ed[1]], axis=1)
-    Wfr = []
-    for j in range(min(per, steps)):
-        Phi, W0, Wh, W1, U = cache[(j, (1, 1))]
-        idx = np.arange(j, steps, per)
-        i0, ih, i1 = 2 * idx, 2 * idx + 1, 2 * idx + 2
-        known[idx] = (Fe[i0] + dcols[i0] @ Bw[:, :2].T) @ W0.T + (Fe[ih] + dcols[ih] @ Bw[:, :2].T) @ Wh.T \
-            + (Fe[i1] + dcols[i1] @ Bw[:, :2].T) @ W1.T \
-            + np.concatenate([ecols[i0, :1], ecols[ih, :1], ecols[i1, :1], ecols[i0, 1:], ecols[ih, 1:], ecols[i1, 1:]],
-                             axis=1) @ U.T
-        Wfr.append(np.hstack([W0 @ Bw[:, 2:], Wh @ Bw[:, 2:], W1 @ Bw[:, 2:]]))   # (n2, 12): friction at 3 nodes
+    known, Wfr = _fast_path_inputs(cache, per, steps, Fe, ecols, dcols, Bw)
     setup = time.perf_counter() - t_setup
 
     rec = record_plan(steps, dt, record_every, record_from)
@@ -248,24 +286,7 @@ def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Si
                 y = Phi @ y + known[i]
             N_prev = Nn
             continue
-        chi = (int(side[0] != 0), int(side[1] != 0))
-        key = (j, chi)
-        mats = cache.get(key)
-        if mats is None:
-            mats = cache[key] = _expo_matrices(model, kj, chi, dt)
-        Phi, W0, Wh, W1, U = mats
-        # general path: known inputs at t_n, t_n+h/2, t_n+h: u_s = e_s ± b (through the sub-steps'
-        # stiffness), c ė_s; friction: μ|N| extrapolated linearly from the last two steps, A and B at the nodes
-        c0, c1 = chi[0] * cm[0], chi[1] * cm[1]
-        F = []
-        for o, w in ((0, 0.0), (1, 0.5), (2, 1.0)):
-            ii = i2 + o
-            a0 = Nn[0] + w * (Nn[0] - N_prev[0])
-            a1 = Nn[1] + w * (Nn[1] - N_prev[1])
-            F.append(Fe[ii] + Bw @ (c0 * eed[0][ii], c1 * eed[1][ii], a0 * AA[0][ii], a0 * BB[0][ii],
-                                    a1 * AA[1][ii], a1 * BB[1][ii]))
-        u = tuple(ee[s][i2 + o] + side[s] * bb[s][i2 + o] for s in range(2) for o in range(3))
-        y = Phi @ y + W0 @ F[0] + Wh @ F[1] + W1 @ F[2] + U @ u
+        y = _general_step(model, cache, j, kj, side, dt, y, i2, (Fe, Bw, cm, eed, AA, BB, ee, bb), Nn, N_prev)
         N_prev = Nn
     seconds = time.perf_counter() - t0
     if not np.all(np.isfinite(out)):

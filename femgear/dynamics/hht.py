@@ -20,7 +20,8 @@ from femgear.dynamics.simulation import Simulation, inputs, record_plan
 from femgear.errors import ConvergenceError
 
 
-def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> Simulation:
+def _hht_operators(model, dt: float, alpha: float):
+    """Constant operators of the HHT-α step (linear part eliminated through J0 = cq M + (1+α)(K + cv C))."""
     n = model.n
     M, C, K, G = model.M, model.C, model.K, model.G
     gamma = 0.5 - alpha
@@ -29,34 +30,41 @@ def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> S
     ap = 1 + alpha
     cq = 1 / (beta * h * h)      # a_{n+1} = cq q_{n+1} + ã
     cv = gamma / (beta * h)      # v_{n+1} = cv q_{n+1} + ṽ
-    J0 = cq * M + ap * (K + cv * C)
-    J0inv = np.linalg.inv(J0)
+    J0inv = np.linalg.inv(cq * M + ap * (K + cv * C))
     # ã = −cq q_n − h cq v_n − (1/(2β) − 1) a_n ;  ṽ = −cv q_n + (1 − γ/β) v_n + h(1 − γ/(2β)) a_n
     Ta = np.hstack([-cq * np.eye(n), -h * cq * np.eye(n), -(1 / (2 * beta) - 1) * np.eye(n)])
     Tv = np.hstack([-cv * np.eye(n), (1 - gamma / beta) * np.eye(n), h * (1 - gamma / (2 * beta)) * np.eye(n)])
     # r0 = −M ã − ap C ṽ + α (C v_n + K q_n)   (forces added separately)
     Rz = -M @ Ta - ap * C @ Tv + alpha * np.hstack([K, C, np.zeros((n, n))])
     X = J0inv @ Rz
-    Big = np.vstack([X, G @ X, G @ Tv])
-    PG = J0inv @ G.T               # (n, 2)
-    P0 = J0inv @ model.H0.T
-    P1 = J0inv @ model.H1.T
-    GPG, GP0, GP1 = G @ PG, G @ P0, G @ P1   # (2, 2): [row r, column s]
+    return ap, cq, cv, J0inv, Ta, Tv, np.vstack([X, G @ X, G @ Tv])
 
+
+def _hht_inputs(model, steps: int, dt: float, alpha: float, J0inv: np.ndarray):
+    """Known inputs on the step grid: α-weighted external forces through J0⁻¹, stiffness, errors,
+    friction tables and dead-zone half-widths (as lists for the scalar step loop)."""
     tt = np.arange(steps + 1) * dt
     kL, kR, e, ed, f, A, B = inputs(model, tt)
     ff = np.empty_like(f)
     ff[0] = f[0]
-    ff[1:] = ap * f[1:] - alpha * f[:-1]
+    ff[1:] = (1 + alpha) * f[1:] - alpha * f[:-1]
     xf = ff @ J0inv.T
-    Gxf = xf @ G.T
-    kk = (kL.tolist(), kR.tolist())
-    ee = (e[0].tolist(), e[1].tolist())
-    eed = (ed[0].tolist(), ed[1].tolist())
-    AA = (A[0].tolist(), A[1].tolist())
-    BB = (B[0].tolist(), B[1].tolist())
+    return (xf, xf @ model.G.T, (kL.tolist(), kR.tolist()), (e[0].tolist(), e[1].tolist()),
+            (ed[0].tolist(), ed[1].tolist()), (A[0].tolist(), A[1].tolist()), (B[0].tolist(), B[1].tolist()),
+            model.backlash_at(tt).tolist())
+
+
+def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> Simulation:
+    n = model.n
+    G = model.G
+    ap, cq, cv, J0inv, Ta, Tv, Big = _hht_operators(model, dt, alpha)
+    PG = J0inv @ G.T               # (n, 2)
+    P0 = J0inv @ model.H0.T
+    P1 = J0inv @ model.H1.T
+    GPG, GP0, GP1 = G @ PG, G @ P0, G @ P1   # (2, 2): [row r, column s]
+    h, gamma, beta = dt, 0.5 - alpha, 0.25 * (1 - alpha) ** 2
+    xf, Gxf, kk, ee, eed, AA, BB, bb = _hht_inputs(model, steps, dt, alpha, J0inv)
     mu = model.mu
-    bb = model.backlash_at(tt).tolist()             # [side][j]
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
 
     # initial acceleration from the equations of motion

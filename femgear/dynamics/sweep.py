@@ -29,9 +29,16 @@ class SpeedSweep:
     amplitudes: dict = field(default_factory=dict)  #: key -> array over speeds (see response.analyse)
 
 
-def speed_sweep(case: Case, speeds_rpm, *, cycles: int = 100, measure: int = 40, steps_per_cycle: int = 40,
-                method: str = "rk4", **build_kw) -> SpeedSweep:
-    """DTE RMS and amplitudes over ``speeds_rpm`` (``build_kw`` go to :func:`build_model`)."""
+def speed_sweep(case: Case, speeds_rpm, *, cycles: int = 100, measure: int = 40, steps_per_cycle: int | None = None,
+                method: str | None = None, **build_kw) -> SpeedSweep:
+    """DTE RMS and amplitudes over ``speeds_rpm`` (``build_kw`` go to :func:`build_model`).
+
+    ``method`` and the step default to the dynamics' defaults at each speed
+    (:func:`femgear.dynamics.run.default_step`: converged at low speed too);
+    ``steps_per_cycle`` fixes the steps per mesh period instead.
+    """
+    from femgear.dynamics.run import default_method, default_step
+
     if measure >= cycles:
         raise ValueError(f"measure ({measure}) must be smaller than cycles ({cycles})")
     speeds = np.asarray(speeds_rpm, dtype=float)
@@ -40,7 +47,9 @@ def speed_sweep(case: Case, speeds_rpm, *, cycles: int = 100, measure: int = 40,
     for i, rpm in enumerate(speeds):
         model = build_model(case.at_speed(rpm), **build_kw)
         T = model.mesh_period
-        sim = simulate(model, cycles * T, T / steps_per_cycle, method)
+        m = method or default_method(model)
+        dt = T / steps_per_cycle if steps_per_cycle else default_step(model, m)
+        sim = simulate(model, cycles * T, dt, m)
         res = analyse(sim, transient_cycles=cycles - measure)
         fm[i], dte[i] = model.mesh_frequency, res.amplitudes["dte_rms"]
         for k, v in res.amplitudes.items():

@@ -34,7 +34,7 @@ def test_first_mesh_mode_is_the_resonance_of_a_speed_sweep(baseline_path):
     kw = dict(level="lumped", stiffness="contact-line", friction=0.0)
     f1 = _mesh_modes(build_model(build_case(scene), **kw))[0]
     rpm = np.linspace(0.85, 1.15, 13) * f1 * 60 / scene.pinion.teeth
-    sw = speed_sweep(build_case(scene), rpm, cycles=80, measure=30, **kw)
+    sw = speed_sweep(build_case(scene), rpm, cycles=80, measure=30, method="rk4", steps_per_cycle=40, **kw)
     assert abs(peak_frequency(sw.mesh_frequency, sw.dte_rms) / f1 - 1) < 0.02
 
 
@@ -44,7 +44,8 @@ def test_broad_speed_sweep_peaks_at_mesh_modes(baseline_path):
     kw = dict(level="lumped", stiffness="contact-line", friction=0.0)
     modes = _mesh_modes(build_model(build_case(scene), **kw))
     fm = np.linspace(1500, 8500, 71)
-    sw = speed_sweep(build_case(scene), fm * 60 / scene.pinion.teeth, cycles=100, measure=40, **kw)
+    sw = speed_sweep(build_case(scene), fm * 60 / scene.pinion.teeth, cycles=100, measure=40, method="rk4",
+                     steps_per_cycle=40, **kw)
     y = sw.dte_rms
     peaks = [i for i in range(1, y.size - 1) if y[i] > y[i - 1] and y[i] > y[i + 1] and y[i] > 0.2 * y.max()]
     assert len(peaks) >= 2
