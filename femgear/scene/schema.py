@@ -223,8 +223,9 @@ class Rating(_Frozen):
     life_hours: Pos | None = Field(None, description="required life L_h [h]; sets N_L and Z_NT (None: Z_NT = 1)")
     oil_viscosity_40: Pos | None = Field(
         None, description="kinematic viscosity of the oil at 40 °C ν40 [mm^2/s]; sets Z_L and Z_v (None: 1)")
-    roughness_rz: tuple[Pos, Pos] | None = Field(
-        None, description="mean peak-to-valley roughness R_z of pinion and gear flanks [m]; sets Z_R (None: 1)")
+    roughness_rz: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
+        None, description="mean peak-to-valley roughness R_z of the pinion and gear flanks, [R_z1, R_z2] [m]; "
+                          "sets Z_R (None: 1)")
     work_hardening_factor: Pos = Field(1.0, description="Z_W [-]")
     size_factor: Pos = Field(1.0, description="Z_X [-]")
 
