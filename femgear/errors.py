@@ -1,8 +1,10 @@
 """Exceptions shared by all of femgear.
 
-User errors (a bad scene, a bad argument) derive from :class:`FemgearError` and are
-reported by the CLI as one line without a traceback.  Solvers that fail raise
-:class:`ConvergenceError`, which carries the iteration history.
+User errors (a bad scene, a bad argument, an unwritable output folder, a job over the
+memory budget) derive from :class:`FemgearError` and are reported by the CLI as one
+line without a traceback, exit code :attr:`FemgearError.exit_code` (2: the input is
+wrong).  Solvers that fail raise :class:`ConvergenceError` (exit code 1), which
+carries the iteration history.
 """
 
 from __future__ import annotations
@@ -13,6 +15,39 @@ from typing import Any
 
 class FemgearError(Exception):
     """Base class of the errors femgear reports to a user as one line."""
+
+    exit_code: int = 2
+
+
+class ArgumentError(FemgearError, ValueError):
+    """A command-line argument (or function argument) is invalid; ``argument`` names it."""
+
+    def __init__(self, argument: str, message: str):
+        self.argument = argument
+        self.message = message
+        super().__init__(f"{argument}: {message}")
+
+
+class OutputError(FemgearError, OSError):
+    """An output location cannot be created or written; ``argument`` names where it came from."""
+
+    def __init__(self, argument: str, path: str, reason: str):
+        self.argument = argument
+        self.path = path
+        super().__init__(f"{argument}: cannot write to {path}: {reason}")
+
+
+class ResourceError(FemgearError, MemoryError):
+    """A job would need more memory than allowed; raised before anything is allocated."""
+
+    def __init__(self, argument: str, needed: float, budget: float, hint: str = ""):
+        self.argument = argument
+        self.needed = needed
+        self.budget = budget
+        gib = 1024.0**3
+        tail = f"; {hint}" if hint else ""
+        super().__init__(f"{argument}: needs about {needed / gib:.3g} GiB of memory, "
+                         f"over the budget of {budget / gib:.3g} GiB{tail}")
 
 
 class SceneError(FemgearError, ValueError):
@@ -25,11 +60,13 @@ class SceneError(FemgearError, ValueError):
 
 
 class ConvergenceError(FemgearError, RuntimeError):
-    """An iterative solver did not converge.
+    """An iterative solver did not converge (CLI exit code 1).
 
     ``history`` maps names (``"residual"``, ``"load_error"``, ...) to the per-iteration
     values, so that nothing computed before the failure is lost.
     """
+
+    exit_code = 1
 
     def __init__(self, case: str, message: str, history: Mapping[str, Sequence[Any]] | None = None):
         self.case = case

@@ -41,8 +41,27 @@ def _options(args) -> dict:
             "compressible": bool(args.dowson_higginson), "ph": args.ph, "z": args.z}
 
 
+def _check_arguments(args, lowest_level: int) -> None:
+    """Refuse bad numbers, a level over the memory budget and an unwritable --out, before solving."""
+    from femgear.cli.limits import finite, level_in
+
+    finite("--M", args.M, positive=True)
+    finite("--L", args.L, nonnegative=True)
+    finite("--ph", args.ph, positive=True)
+    finite("--z", args.z, positive=True)
+    if getattr(args, "ellipticity", None) is not None:
+        finite("--ellipticity", args.ellipticity, positive=True)
+    level_in("--level", args.level, lowest_level, args.ehl_kind)
+    if args.out:
+        from femgear.io.paths import prepare_output_dir
+
+        prepare_output_dir(args.out, "--out")
+
+
 def _point(args) -> int:
     from femgear.ehl.point import solve_point
+
+    _check_arguments(args, lowest_level=1)
 
     return _run(args, lambda: solve_point(args.M, args.L, level=args.level,
                                           ratio=args.ellipticity, **_options(args)))
@@ -50,6 +69,8 @@ def _point(args) -> int:
 
 def _line(args) -> int:
     from femgear.ehl.line import solve_line
+
+    _check_arguments(args, lowest_level=2)
 
     return _run(args, lambda: solve_line(args.M, args.L, level=args.level, **_options(args)))
 

@@ -14,6 +14,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from femgear.errors import SceneError
+from femgear.scene.plausibility import check_operating_limits, plausibility_warnings
 from femgear.scene.presets import expand_preset
 from femgear.scene.schema import Scene
 
@@ -65,8 +66,12 @@ def _first_error(exc: ValidationError) -> SceneError:
     return SceneError(key, message)
 
 
-def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = ()) -> Scene:
-    """Validate a raw scene dictionary (plus overrides) and check the gear is feasible."""
+def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, warn: bool = True) -> Scene:
+    """Validate a raw scene dictionary (plus overrides) and check the gear is feasible.
+
+    Impossible operating points raise :class:`SceneError`; implausible ones are logged as
+    warnings (``warn=False`` skips that check, :mod:`femgear.scene.plausibility`).
+    """
     from femgear.geometry import GearPair  # the feasibility checks are geometry's
 
     raw = expand_preset(apply_overrides(data, overrides))
@@ -74,17 +79,39 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = ()) -> S
         scene = Scene.model_validate(raw)
     except ValidationError as exc:
         raise _first_error(exc) from None
-    GearPair.from_scene(scene)  # raises SceneError for an impossible gear
+    pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
+    check_operating_limits(scene, pair)
+    if warn:
+        from femgear.contact.path import contact_along_path
+
+        plausibility_warnings(scene, pair, float(contact_along_path(scene, pair=pair).hertz_pressure.max()))
     return scene
+
+
+MAX_TOML_BYTES = 1 << 20  # a scene or sweep file is a few kB
 
 
 def read_toml(path: str | Path, what: str = "scene") -> dict[str, Any]:
     """Parse a TOML file; a missing or malformed file is a :class:`SceneError` naming it."""
     path = Path(path)
+    if path.is_dir():
+        raise SceneError(str(path), f"is a folder, not a {what} file")
     try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
+        data = path.read_bytes()
     except FileNotFoundError:
         raise SceneError(str(path), f"{what} file not found") from None
+    except OSError as exc:
+        raise SceneError(str(path), f"cannot read the {what} file: {exc.strerror or exc}") from None
+    if len(data) > MAX_TOML_BYTES:
+        raise SceneError(str(path), f"{len(data)} bytes is too large for a {what} file (limit {MAX_TOML_BYTES})")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneError(str(path), f"not a text file (invalid UTF-8 at byte {exc.start})") from None
+    if "\x00" in text:
+        raise SceneError(str(path), "not a text file (it contains NUL bytes)")
+    try:
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(str(path), f"not valid TOML: {exc}") from None
 

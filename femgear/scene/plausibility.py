@@ -1,0 +1,97 @@
+"""Physical plausibility of a valid scene: impossible operating points are refused,
+implausible but computable ones are accepted with a logged warning naming the key.
+
+Refused (:class:`femgear.errors.SceneError`):
+
+- a tip speed at which the rim would burst: the hoop stress of a thin rotating ring,
+  σ = ρ v² (Timoshenko & Goodier, *Theory of Elasticity*, rotating disc, thin-ring
+  limit), above the yield stress estimated from the flank hardness by Tabor's
+  relation σ_y ≈ H/3 (Tabor, *The Hardness of Metals*, 1951). For the baseline steel
+  (ρ = 7850 kg/m³, H = 6 GPa) that is v ≈ 500 m/s; the fastest turbo gears run at
+  about 200 m/s.
+
+Warned (logger ``femgear.scene``):
+
+- maximum Hertz pressure along the path above 3 GPa (beyond case-hardened steel's
+  contact fatigue limit, ISO 6336-5 σ_Hlim ≈ 1.5 GPa, with margin for static peaks);
+- a pitch-line speed above 100 m/s (beyond the film formulas' usual validation range);
+- eccentricity of a member above the pair's backlash (the teeth then separate or
+  jam once per revolution; the dynamics models contact loss, the quasi-static pass
+  does not);
+- an ambient temperature more than 60 K from the oil's viscosity reference
+  temperature, or above 423 K (150 °C, the upper limit of mineral gear oils): the
+  exponential viscosity-temperature law is then an extrapolation.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+
+from femgear.errors import SceneError
+from femgear.scene.schema import Scene
+
+log = logging.getLogger("femgear.scene")
+
+MAX_HERTZ_PRESSURE = 3.0e9   # Pa
+MAX_PLAUSIBLE_SPEED = 100.0  # m/s, pitch line
+MAX_OIL_TEMPERATURE = 423.0  # K
+MAX_VISCOSITY_EXTRAPOLATION = 60.0  # K
+
+
+def tip_speeds(scene: Scene, pair) -> tuple[float, float]:
+    """Tip speeds of pinion and gear [m/s] from the driver's speed."""
+    op = scene.operating
+    ratio = scene.gear.teeth / scene.pinion.teeth
+    n1 = op.speed_rpm if op.driver == "pinion" else op.speed_rpm * ratio
+    w1 = 2.0 * math.pi * n1 / 60.0
+    w2 = w1 / ratio
+    return w1 * pair.ra1, w2 * pair.ra2
+
+
+def check_operating_limits(scene: Scene, pair) -> None:
+    """Raise :class:`SceneError` for an operating point no gear survives."""
+    v_tip = max(tip_speeds(scene, pair))
+    rho, hardness = scene.material.density, scene.material.hardness
+    v_burst = math.sqrt(hardness / 3.0 / rho)
+    if v_tip > v_burst:
+        raise SceneError(
+            "operating.speed_rpm",
+            f"{scene.operating.speed_rpm:g} rpm gives a tip speed of {v_tip:.4g} m/s; the rim's hoop stress "
+            f"ρv² = {rho * v_tip**2 / 1e9:.3g} GPa exceeds the yield stress H/3 = {hardness / 3e9:.3g} GPa "
+            f"(the rim bursts above {v_burst:.0f} m/s)")
+
+
+def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None = None) -> list[str]:
+    """Warnings (each ``key: message``) for implausible but computable inputs; also logged."""
+    out: list[str] = []
+    v_pitch = 2.0 * math.pi * pair.rw1 * _pinion_rpm(scene) / 60.0
+    if v_pitch > MAX_PLAUSIBLE_SPEED:
+        out.append(f"operating.speed_rpm: pitch-line speed {v_pitch:.4g} m/s is above {MAX_PLAUSIBLE_SPEED:g} m/s, "
+                   "beyond the range the film and friction formulas were fitted in")
+    if max_hertz_pressure is not None and max_hertz_pressure > MAX_HERTZ_PRESSURE:
+        out.append(f"operating.torque: maximum Hertz pressure {max_hertz_pressure / 1e9:.3g} GPa is above "
+                   f"{MAX_HERTZ_PRESSURE / 1e9:g} GPa (beyond the flank's contact strength)")
+    for member in ("pinion", "gear"):
+        e = getattr(scene, member).eccentricity
+        if e > scene.pair.backlash:
+            out.append(f"{member}.eccentricity: {e:g} m is larger than the backlash {scene.pair.backlash:g} m; "
+                       "the teeth lose contact or jam once per revolution")
+    t_amb, t_ref = scene.operating.ambient_temperature, scene.oil_reference_temperature
+    if t_amb > MAX_OIL_TEMPERATURE:
+        out.append(f"operating.ambient_temperature: {t_amb:g} K is above {MAX_OIL_TEMPERATURE:g} K, "
+                   "the upper limit of mineral gear oils")
+    if abs(t_amb - t_ref) > MAX_VISCOSITY_EXTRAPOLATION:
+        out.append(f"operating.ambient_temperature: {t_amb:g} K is {abs(t_amb - t_ref):.0f} K from the oil's "
+                   f"viscosity reference {t_ref:g} K; the viscosity-temperature law is extrapolated")
+    for message in out:
+        log.warning(message)
+    return out
+
+
+def _pinion_rpm(scene: Scene) -> float:
+    op = scene.operating
+    return op.speed_rpm if op.driver == "pinion" else op.speed_rpm * scene.gear.teeth / scene.pinion.teeth
+
+
+__all__ = ["check_operating_limits", "plausibility_warnings", "tip_speeds"]
