@@ -16,29 +16,12 @@ import math
 from dataclasses import dataclass
 from functools import cached_property
 
-from scipy.optimize import brentq
-
 from femgear.errors import SceneError
-
-
-def inv(alpha: float) -> float:
-    """Involute function inv α = tan α − α."""
-    return math.tan(alpha) - alpha
-
-
-def inv_inverse(value: float) -> float:
-    """The angle α in (0, π/2) with inv α = value (value ≥ 0)."""
-    if value < 0:
-        raise ValueError("the involute function is non-negative")
-    if value == 0:
-        return 0.0
-    return brentq(lambda a: inv(a) - value, 1e-12, math.pi / 2 - 1e-9, xtol=1e-15, rtol=1e-15)
+from femgear.geometry.involute import inv, inv_inverse
 
 
 KINDS = ("double-helical", "single-helical", "spur")
-
-#: ISO 53:1998 basic-rack profiles: (h_aP, h_fP, ρ_fP) / m_n, α_P = 20°
-BASIC_RACKS = {"A": (1.0, 1.25, 0.38), "B": (1.0, 1.25, 0.30), "C": (1.0, 1.25, 0.25), "D": (1.0, 1.40, 0.39)}
+__all__ = ["KINDS", "GearPair", "inv", "inv_inverse"]
 
 
 @dataclass(frozen=True)
@@ -77,12 +60,12 @@ class GearPair:
         """Transverse module m_t = m_n / cos β."""
         return self.m_n / math.cos(self.beta)
 
-    @property
+    @cached_property
     def alpha_t(self) -> float:
         """Transverse pressure angle, tan α_t = tan α_n / cos β."""
         return math.atan(math.tan(self.alpha_n) / math.cos(self.beta))
 
-    @property
+    @cached_property
     def beta_b(self) -> float:
         """Base helix angle, tan β_b = tan β cos α_t."""
         return math.atan(math.tan(self.beta) * math.cos(self.alpha_t))
@@ -101,12 +84,12 @@ class GearPair:
     def r2(self) -> float:
         return self.z2 * self.m_t / 2
 
-    @property
+    @cached_property
     def rb1(self) -> float:
         """Base radius r_b = r cos α_t."""
         return self.r1 * math.cos(self.alpha_t)
 
-    @property
+    @cached_property
     def rb2(self) -> float:
         return self.r2 * math.cos(self.alpha_t)
 
@@ -123,31 +106,31 @@ class GearPair:
         """Reference centre distance (r1 + r2)."""
         return self.r1 + self.r2
 
-    @property
+    @cached_property
     def a_w(self) -> float:
         """Working centre distance a_w = a cos α_t / cos α_wt."""
         return self.a * math.cos(self.alpha_t) / math.cos(self.alpha_wt)
 
-    @property
+    @cached_property
     def rw1(self) -> float:
         """Working pitch radius r_w = r_b / cos α_wt."""
         return self.rb1 / math.cos(self.alpha_wt)
 
-    @property
+    @cached_property
     def rw2(self) -> float:
         return self.rb2 / math.cos(self.alpha_wt)
 
-    @property
+    @cached_property
     def k_tip(self) -> float:
         """Tip alteration coefficient k = (a_w − a)/m_n − (x1 + x2) ≤ 0 (ISO 21771 §5.4)."""
         return (self.a_w - self.a) / self.m_n - (self.x1 + self.x2)
 
-    @property
+    @cached_property
     def ra1(self) -> float:
         """Tip radius r_a = r + m_n (h_aP + x + k)."""
         return self.r1 + self.m_n * (self.h_aP + self.x1 + self.k_tip)
 
-    @property
+    @cached_property
     def ra2(self) -> float:
         return self.r2 + self.m_n * (self.h_aP + self.x2 + self.k_tip)
 
@@ -160,7 +143,7 @@ class GearPair:
     def rf2(self) -> float:
         return self.r2 - self.m_n * (self.h_fP - self.x2)
 
-    @property
+    @cached_property
     def p_bt(self) -> float:
         """Transverse base pitch p_bt = π m_t cos α_t."""
         return math.pi * self.m_t * math.cos(self.alpha_t)
@@ -171,32 +154,32 @@ class GearPair:
         return math.pi * self.m_n * math.cos(self.alpha_n)
 
     # ---------- path of contact (transverse, measured from T1 on the pinion base circle) ----------
-    @property
+    @cached_property
     def line_of_action(self) -> float:
         """Length T1T2 = a_w sin α_wt of the transverse line of action between the base tangents."""
         return self.a_w * math.sin(self.alpha_wt)
 
-    @property
+    @cached_property
     def u_start(self) -> float:
         """T1A: start of contact (the gear's tip circle), distance from T1."""
         return self.line_of_action - math.sqrt(self.ra2**2 - self.rb2**2)
 
-    @property
+    @cached_property
     def u_end(self) -> float:
         """T1E: end of contact (the pinion's tip circle), distance from T1."""
         return math.sqrt(self.ra1**2 - self.rb1**2)
 
-    @property
+    @cached_property
     def u_pitch(self) -> float:
         """T1C: the pitch point, r_b1 tan α_wt."""
         return self.rb1 * math.tan(self.alpha_wt)
 
-    @property
+    @cached_property
     def g_alpha(self) -> float:
         """Length of the path of contact g_α = T1E − T1A."""
         return self.u_end - self.u_start
 
-    @property
+    @cached_property
     def eps_alpha(self) -> float:
         """Transverse contact ratio ε_α = g_α / p_bt."""
         return self.g_alpha / self.p_bt
@@ -211,7 +194,7 @@ class GearPair:
         """Total contact ratio of one helix ε_γ = ε_α + ε_β."""
         return self.eps_alpha + self.eps_beta
 
-    @property
+    @cached_property
     def mean_contact_length(self) -> float:
         """Time-mean total length of the contact lines of one helix, ε_α b / cos β_b [m]."""
         return self.eps_alpha * self.b / math.cos(self.beta_b)
@@ -248,7 +231,7 @@ class GearPair:
         """The pair of a :class:`femgear.scene.Scene` (checked; see :mod:`femgear.geometry.scene_pair`)."""
         from femgear.geometry.scene_pair import pair_from_scene
 
-        return pair_from_scene(scene)
+        return pair_from_scene(scene, cls)
 
     def check(self) -> None:
         """Raise :class:`SceneError` if the pair cannot be made or does not mesh."""
