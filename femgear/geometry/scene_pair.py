@@ -20,9 +20,13 @@ from __future__ import annotations
 
 import math
 
-from femgear.errors import SceneError
-from femgear.geometry.gear import BASIC_RACKS, GearPair, inv
+from dataclasses import replace
 
+from femgear.errors import SceneError
+from femgear.geometry.involute import inv
+
+#: ISO 53:1998 basic-rack profiles: (h_aP, h_fP, ρ_fP) / m_n, α_P = 20°
+BASIC_RACKS = {"A": (1.0, 1.25, 0.38), "B": (1.0, 1.25, 0.30), "C": (1.0, 1.25, 0.25), "D": (1.0, 1.40, 0.39)}
 _MEMBERS = ("pinion", "gear")
 TIP_TOLERANCE = 2e-3      #: tip-diameter mismatch allowed, in units of m_n
 SHIFT_TOLERANCE = 1e-3    #: x1 + x2 mismatch allowed against the centre distance
@@ -62,7 +66,7 @@ def rack_coefficients(pair_table) -> tuple[float, float, float]:
     return preset
 
 
-def shift_sum_of_centre_distance(base: GearPair, a_w: float) -> float:
+def shift_sum_of_centre_distance(base, a_w: float) -> float:
     """x1 + x2 giving the working centre distance a_w (ISO 21771 eq. for inv α_wt)."""
     cos_wt = base.a * math.cos(base.alpha_t) / a_w
     if not 0 < cos_wt < 1:
@@ -71,18 +75,16 @@ def shift_sum_of_centre_distance(base: GearPair, a_w: float) -> float:
     return (inv(math.acos(cos_wt)) - inv(base.alpha_t)) * (base.z1 + base.z2) / (2 * math.tan(base.alpha_n))
 
 
-def _shift_from_tip(pair: GearPair, member: int, d_a: float) -> float:
+def _shift_from_tip(pair, member: int, d_a: float) -> float:
     r = pair.r1 if member == 1 else pair.r2
     return (d_a / 2 - r) / pair.m_n - pair.h_aP - pair.k_tip
 
 
-def _with(pair: GearPair, **kw) -> GearPair:
-    from dataclasses import replace
-
+def _with(pair, **kw):
     return replace(pair, **kw)
 
 
-def _resolve_shifts(scene, pair: GearPair) -> GearPair:
+def _resolve_shifts(scene, pair):
     """Apply tip diameters and centre distance to ``pair`` (built with the given shifts)."""
     members = [getattr(scene, n) for n in _MEMBERS]
     given = [("profile_shift" in m.model_fields_set) for m in members]
@@ -127,13 +129,15 @@ def _resolve_shifts(scene, pair: GearPair) -> GearPair:
     return pair
 
 
-def pair_from_scene(scene) -> GearPair:
-    """The checked :class:`GearPair` of a validated scene."""
+def pair_from_scene(scene, cls):
+    """The checked gear pair (an instance of ``cls``, :class:`femgear.geometry.GearPair`) of a validated scene.
+
+    ``cls`` is passed in (not imported) so that ``gear`` → ``scene_pair`` stays one-way."""
     _check_kind(scene)
     p = scene.pair
     h_aP, h_fP, rho_fP = rack_coefficients(p)
     widths = [getattr(scene, n).face_width or p.face_width for n in _MEMBERS]
-    pair = GearPair(
+    pair = cls(
         z1=scene.pinion.teeth, z2=scene.gear.teeth, m_n=p.normal_module,
         alpha_n=math.radians(p.normal_pressure_angle_deg), beta=math.radians(p.helix_angle_deg),
         b=min(widths), x1=scene.pinion.profile_shift, x2=scene.gear.profile_shift,
