@@ -1,0 +1,121 @@
+"""Readable command output: the closing table of a run and a progress display.
+
+:func:`key_figures` picks the figures an engineer reads first from the ``summary`` of
+``results.json`` (pure, testable); :func:`print_key_figures` renders them with rich.
+:class:`CouplingProgress` shows the coupling passes as they arrive: a live line on a
+terminal, INFO log records (``-v``) otherwise.
+"""
+
+from __future__ import annotations
+
+import logging
+import sys
+from typing import Any
+
+log = logging.getLogger("femgear.run")
+
+
+def _get(d: dict[str, Any], *path: str) -> Any:
+    for key in path:
+        if not isinstance(d, dict) or key not in d:
+            return None
+        d = d[key]
+    return d
+
+
+def _fmt(value: Any, scale: float = 1.0, spec: str = ".4g") -> str:
+    return "—" if value is None else format(value * scale, spec)
+
+
+def key_figures(summary: dict[str, Any], seconds: float | None = None) -> list[tuple[str, str, str]]:
+    """(quantity, value, unit) rows for the run's closing table; absent sub-models are left out."""
+    rows: list[tuple[str, str, str]] = []
+    co = summary.get("coupling")
+    if co:
+        changes = [c for c in _get(co, "history", "mesh_force_change") or [] if c is not None]
+        last = f", last mesh-force change {changes[-1]:.2g}" if changes else ""
+        state = "converged" if co.get("converged") else "NOT converged"
+        rows.append(("coupling", f"{co.get('mode')}: {state} in {co.get('iterations')} passes{last}", ""))
+    rows.append(("mesh stiffness, mean (ripple)",
+                 f"{_fmt(_get(summary, 'stiffness', 'mean_total'), 1e-9)} "
+                 f"({_fmt(_get(summary, 'stiffness', 'ripple_total'), 100, '.2f')} %)", "kN/µm"))
+    rows.append(("Hertz pressure at the pitch point", _fmt(_get(summary, "contact", "pitch", "hertz_pressure"), 1e-9),
+                 "GPa"))
+    rows.append(("central film at the pitch point", _fmt(_get(summary, "contact", "pitch", "film_central"), 1e6),
+                 "µm"))
+    if "friction" in summary:
+        f = summary["friction"]
+        rows.append(("μ max / mean", f"{_fmt(f.get('mu_max'), 1, '.4f')} / {_fmt(f.get('mu_mean'), 1, '.4f')}", ""))
+        rows.append(("max contact temperature rise", _fmt(f.get("max_temperature_rise"), 1, ".3g"), "K"))
+    if "thermal" in summary:
+        t = summary["thermal"]
+        rows.append(("thermal deviation at pitch, pinion / gear",
+                     f"{_fmt(t.get('deviation_pitch_pinion'), 1e6, '.3g')} / "
+                     f"{_fmt(t.get('deviation_pitch_gear'), 1e6, '.3g')}", "µm"))
+    if "wear" in summary:
+        w = summary["wear"]
+        rows.append((f"max wear depth after {w.get('cycles', 0):g} cycles, pinion / gear",
+                     f"{_fmt(w.get('max_depth_pinion'), 1e6, '.3g')} / {_fmt(w.get('max_depth_gear'), 1e6, '.3g')}",
+                     "µm"))
+    amp = _get(summary, "dynamics", "amplitudes")
+    if amp:
+        rows.append(("gear amplitude x / y (half peak-to-peak)",
+                     f"{_fmt(amp.get('gear.displacement.x'), 1e6, '.3g')} / "
+                     f"{_fmt(amp.get('gear.displacement.y'), 1e6, '.3g')}", "µm"))
+        rows.append(("dynamic mesh force per helix, mean ± amplitude",
+                     f"{_fmt(amp.get('mesh_force.L.mean'), 1, '.5g')} ± {_fmt(amp.get('mesh_force.L.amplitude'), 1, '.3g')}",
+                     "N"))
+    if seconds is not None:
+        rows.append(("wall time", f"{seconds:.3g}", "s"))
+    return rows
+
+
+def print_key_figures(rows: list[tuple[str, str, str]], title: str) -> None:
+    """The closing table on stdout (plain text when stdout is not a terminal)."""
+    from rich.console import Console
+    from rich.table import Table
+
+    table = Table(title=title, show_header=True, header_style="bold")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_column("unit")
+    for row in rows:
+        table.add_row(*row)
+    Console(file=sys.stdout, width=110).print(table)
+
+
+class CouplingProgress:
+    """Callback for :func:`femgear.pipeline.run_scene`: one line per coupling pass.
+
+    On a terminal (stderr) and unless quiet, a rich status line is updated in place;
+    every pass is also logged at INFO level (shown with ``-v``).
+    """
+
+    def __init__(self, enabled: bool):
+        self.enabled = enabled and sys.stderr.isatty()
+        self._status = None
+
+    def __enter__(self) -> CouplingProgress:
+        if self.enabled:
+            from rich.console import Console
+
+            self._status = Console(stderr=True).status("running the quasi-static pass ...")
+            self._status.__enter__()
+        return self
+
+    def __call__(self, state) -> None:
+        change = state.change or {}
+        text = (f"coupling pass {state.iteration}: mesh-force change {change.get('mesh_force', float('nan')):.3g}, "
+                f"μ change {change.get('mu', float('nan')):.3g} ({state.seconds:.2f} s)"
+                if state.iteration else f"coupling pass 0: static start ({state.seconds:.2f} s)")
+        log.info(text)
+        if self._status is not None:
+            self._status.update(text)
+
+    def __exit__(self, *exc) -> bool:
+        if self._status is not None:
+            self._status.__exit__(*exc)
+        return False
+
+
+__all__ = ["CouplingProgress", "key_figures", "print_key_figures"]

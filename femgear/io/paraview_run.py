@@ -1,0 +1,96 @@
+"""The main job's ParaView output (layout and geometry: :mod:`femgear.io.paraview`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from femgear.io.paraview import Frame, flank_surface, write_collection
+from femgear.results import RunResult
+
+N_FACE = 9          # points across the face width of one helix
+N_RING = 72         # points around a pitch circle
+MAX_FRAMES = 50     # time steps of the mesh cycle written
+
+
+def _inv(alpha: float) -> float:
+    return float(np.tan(alpha) - alpha)
+
+
+def flank_frames(result: RunResult) -> list[Frame]:
+    """One surface per member (both helices) with the fields along the path."""
+    import meshio
+
+    from femgear.io.run import along_path
+
+    case, pair = result.case, result.case.pair
+    fields = along_path(result)
+    b, s = pair.b, pair.b + case.scene.pair.groove_width
+    shared = {k: fields[k] for k in ("hertz_pressure", "film_central", "film_minimum", "load_per_length",
+                                     "sliding_speed", "friction_coefficient", "temperature_rise") if k in fields}
+    frames = []
+    members = (("pinion", pair.rb1, fields["radius_pinion"], (0.0, 0.0), -_inv(pair.alpha_wt), +1.0),
+               ("gear", pair.rb2, fields["radius_gear"], (pair.a_w, 0.0), np.pi - _inv(pair.alpha_wt), -1.0))
+    for part, (name, rb, r, centre, angle0, hand) in enumerate(members):
+        data = dict(shared)
+        for key, label in (("wear", "wear_depth"), ("thermal_deviation", "thermal_deviation")):
+            if f"{key}_{name}" in fields:
+                data[label] = fields[f"{key}_{name}"]
+        points, quads, point_data = [], [], {k: [] for k in data}
+        for sigma, zc in ((+1.0, -s / 2), (-1.0, +s / 2)):      # left, right helix
+            z = np.linspace(zc - b / 2, zc + b / 2, N_FACE)
+            twist = hand * sigma * np.tan(pair.beta_b) / rb
+            pts, q = flank_surface(rb, r, centre, angle0, +1.0, z, zc, twist)
+            quads.append(q + sum(len(p) for p in points))
+            points.append(pts)
+            for k, v in data.items():
+                point_data[k].append(np.tile(np.asarray(v, dtype=float), N_FACE))
+        mesh = meshio.Mesh(np.concatenate(points), [("quad", np.concatenate(quads))],
+                           point_data={k: np.concatenate(v) for k, v in point_data.items()})
+        frames.append(Frame(time=0.0, part=part, name=f"flank_{name}", mesh=mesh))
+    return frames
+
+
+def dynamics_frames(result: RunResult) -> list[Frame]:
+    """The last mesh cycle: pitch circles of the four helix halves with their displacement."""
+    import meshio
+
+    from femgear.dynamics.layout import BODIES, point_jacobian
+
+    pair = result.case.pair
+    res = result.coupled.state.dynamics.response
+    t = res.t
+    period = 1.0 / res.mesh_frequency
+    idx = np.flatnonzero(t >= t[-1] - period)
+    idx = idx[np.linspace(0, len(idx) - 1, min(len(idx), MAX_FRAMES)).round().astype(int)]
+    half = 0.5 * (pair.b + result.case.scene.pair.groove_width)
+    angle = np.linspace(0.0, 2.0 * np.pi, N_RING, endpoint=False)
+    rings = []
+    for body in BODIES:
+        radius, cx = (pair.rw1, 0.0) if body.startswith("pinion") else (pair.rw2, pair.a_w)
+        zc = -half if body.endswith("_L") else half
+        offsets = np.column_stack([radius * np.cos(angle), radius * np.sin(angle), np.zeros(N_RING)])
+        rings.append((offsets + [cx, 0.0, zc], np.stack([point_jacobian(o) for o in offsets])))
+    points = np.concatenate([p for p, _ in rings])
+    seg = np.column_stack([np.arange(N_RING), (np.arange(N_RING) + 1) % N_RING])
+    lines = np.concatenate([seg + k * N_RING for k in range(len(BODIES))])
+    frames = []
+    for i in idx:
+        u = np.concatenate([J @ res.displacement[i, 6 * k: 6 * k + 6] for k, (_, J) in enumerate(rings)])
+        force = np.repeat([res.mesh_force[i, 0], res.mesh_force[i, 1]] * 2, N_RING)
+        mesh = meshio.Mesh(points, [("line", lines)], point_data={"displacement": u, "mesh_force": force})
+        frames.append(Frame(time=float(t[i] - t[idx[0]]), part=0, name="response", mesh=mesh))
+    return frames
+
+
+def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path]:
+    """Write ``flanks.pvd`` and, with dynamics, ``dynamics.pvd`` into ``out_dir``."""
+    out_dir = Path(out_dir)
+    files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
+    if result.coupled is not None and result.coupled.state.dynamics is not None:
+        files["dynamics_pvd"] = write_collection(out_dir, "dynamics", dynamics_frames(result))
+    return files
+
+
+__all__ = ["dynamics_frames", "flank_frames", "write_run_paraview"]
