@@ -68,6 +68,18 @@ def normal_force(scene, pair: GearPair) -> float:
     return pinion_torque(scene) / (pair.rb1 * math.cos(pair.beta_b))
 
 
+def zone_grid(pair: GearPair, n: int) -> np.ndarray:
+    """``n`` positions from A to E plus the pitch point and, for a spur pair, both sides of the
+    load jumps at B and D (the outer side 1e-7 p_bt away), so that path integrals of the
+    piecewise load are exact up to the smooth parts' trapezoid error [m]."""
+    u = np.append(path_positions(pair, n), pair.u_pitch)
+    if pair.beta_b == 0:
+        u_B, u_D = single_contact_bounds(pair)
+        eps = 1e-7 * pair.p_bt
+        u = np.append(u, [u_B - eps, u_B, u_D, u_D + eps])
+    return np.unique(u)
+
+
 def pair_stiffness_curve(scene, pair: GearPair, stiffness=None) -> StiffnessPerWidth | None:
     """k'(u) of the scene's mesh-stiffness level for load sharing (None: uniform).
 
