@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from pathlib import Path
 
@@ -23,19 +24,25 @@ def register(sub) -> None:
 
 
 def _sweep(args: argparse.Namespace) -> int:
-    from femgear.sweep import parse_sweep, run_sweep
+    """Exit 0 when every case finished, 1 when some failed (says how many), 130 when interrupted."""
+    from femgear.errors import ArgumentError
+    from femgear.io.paths import prepare_output_dir
+    from femgear.sweep import SweepInterrupted, parse_sweep, run_sweep
 
     if args.workers < 1:
-        from femgear.errors import FemgearError
-
-        raise FemgearError(f"--workers must be ≥ 1 (got {args.workers})")
+        raise ArgumentError("--workers", f"must be ≥ 1 (got {args.workers})")
     spec = parse_sweep(args.sweep)
+    prepare_output_dir(args.out / spec.name, "--out")
     start = time.perf_counter()
-    result = run_sweep(spec, args.out, workers=args.workers, scheduler=args.scheduler, plots=args.plots,
-                       progress=not args.no_progress)
+    try:
+        result = run_sweep(spec, args.out, workers=args.workers, scheduler=args.scheduler, plots=args.plots,
+                           progress=not (args.no_progress or args.quiet or args.json))
+    except SweepInterrupted as exc:
+        print(f"femgear: {exc}", file=sys.stderr)
+        return 130
     failed = [r for r in result.rows if r["status"] == "failed"]
     for row in failed:
-        print(f"failed: {row['case']}: {row['error']}")
+        print(f"failed: {row['case']}: {row['error']}", file=sys.stderr)
     summary = {"sweep": spec.name, "cases": len(result.rows), "ran": result.ran, "skipped": result.skipped,
                "failed": len(failed), "table": str(result.table), "seconds": time.perf_counter() - start}
     if args.json:
@@ -43,4 +50,8 @@ def _sweep(args: argparse.Namespace) -> int:
     else:
         print(f"{summary['cases']} cases ({result.ran} run, {result.skipped} already done, "
               f"{len(failed)} failed): {result.table}")
+    if failed:
+        print(f"femgear: error: {len(failed)} of {len(result.rows)} cases failed (see {result.table})",
+              file=sys.stderr)
+        return 1
     return 0

@@ -4,7 +4,7 @@
 - ``runner``  resumable execution with atomic per-case outputs and a results table.
 """
 
-from femgear.sweep.runner import SweepResult, run_case, run_sweep
+from femgear.sweep.runner import SweepInterrupted, SweepResult, run_case, run_sweep
 from femgear.sweep.spec import Case, SweepSpec, parse_sweep
 
-__all__ = ["Case", "SweepResult", "SweepSpec", "parse_sweep", "run_case", "run_sweep"]
+__all__ = ["Case", "SweepInterrupted", "SweepResult", "SweepSpec", "parse_sweep", "run_case", "run_sweep"]

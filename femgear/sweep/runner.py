@@ -13,8 +13,10 @@ from __future__ import annotations
 import csv
 import io
 import json
+import logging
 import os
 import shutil
+import signal
 import time
 import uuid
 from collections.abc import Callable
@@ -24,7 +26,10 @@ from pathlib import Path
 from typing import Any
 
 from femgear.io import write_json
-from femgear.sweep.spec import Case, SweepSpec
+from femgear.io.atomic import write_text_atomic
+from femgear.sweep.spec import SweepSpec
+
+log = logging.getLogger("femgear.sweep")
 
 
 def run_case(base: str, overrides: tuple[str, ...], case_dir: str, plots: bool = False) -> dict[str, Any]:
@@ -82,27 +87,68 @@ def _write_table(path: Path, rows: list[dict[str, Any]]) -> None:
     writer = csv.DictWriter(buf, fieldnames=columns, extrasaction="ignore")
     writer.writeheader()
     writer.writerows(sorted(rows, key=lambda r: r["case"]))
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(buf.getvalue(), encoding="utf-8")
-    os.replace(tmp, path)
+    write_text_atomic(path, buf.getvalue())
+
+
+def _ignore_sigint() -> None:
+    """Worker initialiser: Ctrl-C reaches the whole process group; only the parent acts on it."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
 def _submitter(workers: int, scheduler: str | None):
-    """(submit, as_completed, close) for a local pool or a Dask cluster."""
+    """(submit, as_completed, stop) for a local pool or a Dask cluster.
+
+    ``stop(abandon)`` cancels the cases not started; running ones are waited for, or
+    with ``abandon`` their workers are terminated (their temporary folders are removed
+    by the next run).
+    """
     if scheduler:
         from distributed import Client
         from distributed import as_completed as dask_completed
 
         client = Client(scheduler)
-        return (lambda *a: client.submit(run_case, *a, pure=False)), dask_completed, client.close
-    pool = ProcessPoolExecutor(max_workers=workers)
-    return (lambda *a: pool.submit(run_case, *a)), as_completed, pool.shutdown
+
+        def stop_dask(futures, abandon: bool) -> None:
+            client.cancel([f for f in futures if not f.done()] if abandon else
+                          [f for f in futures if f.status == "pending"])
+            client.close()
+
+        return (lambda *a: client.submit(run_case, *a, pure=False)), dask_completed, stop_dask
+    pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
+
+    def stop_pool(futures, abandon: bool) -> None:
+        for fut in futures:
+            fut.cancel()
+        if abandon:
+            for proc in list((getattr(pool, "_processes", None) or {}).values()):
+                proc.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
+
+    return (lambda *a: pool.submit(run_case, *a)), as_completed, stop_pool
+
+
+def _rows_on_disk(cases_dir: Path, spec: SweepSpec, failed: dict[str, dict[str, Any]]) -> dict[str, dict[str, Any]]:
+    """One row per finished case folder (its ``case.json``) plus this run's failures."""
+    rows: dict[str, dict[str, Any]] = {}
+    for case in spec.cases:
+        done = cases_dir / case.case_id / "case.json"
+        if done.exists():
+            rows[case.case_id] = json.loads(done.read_text(encoding="utf-8"))
+        elif case.case_id in failed:
+            rows[case.case_id] = failed[case.case_id]
+    return rows
 
 
 def run_sweep(spec: SweepSpec, out_root: str | Path, workers: int = 2, scheduler: str | None = None,
               plots: bool = False, progress: bool = True,
               on_row: Callable[[dict[str, Any]], None] | None = None) -> SweepResult:
-    """Run the unfinished cases of ``spec`` and write ``<out_root>/<name>/results.csv``."""
+    """Run the unfinished cases of ``spec`` and write ``<out_root>/<name>/results.csv``.
+
+    Ctrl-C or SIGTERM (KeyboardInterrupt): cases not started are cancelled, running ones
+    finish (a second interrupt abandons them), ``results.csv`` is written from the case
+    folders that exist, and :class:`SweepInterrupted` is raised.
+    """
     if workers < 1:
         raise ValueError(f"workers must be ≥ 1 (got {workers})")
     out = Path(out_root) / spec.name
@@ -110,32 +156,55 @@ def run_sweep(spec: SweepSpec, out_root: str | Path, workers: int = 2, scheduler
     cases_dir.mkdir(parents=True, exist_ok=True)
     for stale in cases_dir.glob(".*.tmp-*"):   # outputs of cases killed mid-way (one sweep per folder)
         shutil.rmtree(stale, ignore_errors=True)
-    rows: dict[str, dict[str, Any]] = {}
-    todo: list[Case] = []
-    for case in spec.cases:
-        done = cases_dir / case.case_id / "case.json"
-        if done.exists():
-            rows[case.case_id] = json.loads(done.read_text())
-        else:
-            todo.append(case)
+    rows = _rows_on_disk(cases_dir, spec, {})
+    todo = [c for c in spec.cases if c.case_id not in rows]
     table = out / "results.csv"
+    failed: dict[str, dict[str, Any]] = {}
     if todo:
-        submit, completed, close = _submitter(workers, scheduler)
+        submit, completed, stop = _submitter(workers, scheduler)
+        futures = []
         try:
             futures = [submit(str(spec.base), c.overrides, str(cases_dir / c.case_id), plots) for c in todo]
             with _progress(progress, len(spec.cases), len(rows)) as advance:
                 for fut in completed(futures):
                     row = fut.result()
                     rows[row["case"]] = row
+                    if row["status"] == "failed":
+                        failed[row["case"]] = row
                     _write_table(table, list(rows.values()))
                     advance(row["status"] == "failed")
                     if on_row:
                         on_row(row)
-        finally:
-            close()
+        except KeyboardInterrupt:
+            _stop_after_interrupt(stop, futures)
+            rows = _rows_on_disk(cases_dir, spec, failed)
+            _write_table(table, list(rows.values()))
+            raise SweepInterrupted(table, finished=sum(r["status"] == "done" for r in rows.values()),
+                                   total=len(spec.cases)) from None
+        stop(futures, False)
     _write_table(table, list(rows.values()))
     return SweepResult(rows=tuple(rows[c.case_id] for c in spec.cases), table=table,
                        ran=len(todo), skipped=len(spec.cases) - len(todo))
+
+
+def _stop_after_interrupt(stop, futures) -> None:
+    running = sum(f.running() if hasattr(f, "running") else f.status == "pending" for f in futures)
+    log.warning("interrupted: cancelling the cases not started, waiting for %d running case(s) "
+                "(interrupt again to abandon them)", running)
+    try:
+        stop(futures, False)
+    except KeyboardInterrupt:
+        log.warning("abandoning the running cases")
+        stop(futures, True)
+
+
+class SweepInterrupted(KeyboardInterrupt):
+    """A sweep stopped by Ctrl-C/SIGTERM after writing a consistent ``results.csv``."""
+
+    def __init__(self, table: Path, finished: int, total: int):
+        self.table, self.finished, self.total = table, finished, total
+        super().__init__(f"sweep interrupted: {finished} of {total} cases finished, listed in {table}; "
+                         "rerun the same command to resume")
 
 
 class _progress:
@@ -145,6 +214,9 @@ class _progress:
         self.enabled, self.total, self.already, self.failed = enabled, total, already, 0
 
     def __enter__(self):
+        import sys
+
+        self.enabled = self.enabled and sys.stderr.isatty()
         if not self.enabled:
             return lambda failed: None
         from rich.console import Console

@@ -106,3 +106,45 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path):
         assert (cases / name / "case.json").stat().st_mtime_ns == mtime
     assert len(list(cases.glob("*/case.json"))) == 8
     assert not list(cases.glob(".*.tmp-*"))      # partial outputs of the killed case are gone
+
+
+def _start_slow_sweep(tmp_path, n: int = 6):
+    speeds = ", ".join(str(float(s)) for s in range(100, 100 * (n + 1), 100))
+    path = write_sweep(tmp_path, '[grid]\n"physics.wear" = ["archard"]\n"wear.cycles" = [2e6]\n' + STATIC +
+                                 f'"operating.speed_rpm" = [{speeds}]\n')
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(out), "--workers", "1", "--json"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    cases = out / "t" / "cases"
+    deadline = time.time() + 120
+    while time.time() < deadline and len(list(cases.glob("*/case.json")) if cases.exists() else []) < 1:
+        time.sleep(0.05)
+    return proc, out / "t"
+
+
+@pytest.mark.parametrize("how", ["SIGINT to the process group (Ctrl-C)", "SIGTERM to the parent"])
+def test_interrupted_sweep_stops_cleanly_with_a_consistent_table(tmp_path, how):
+    """Pending cases are cancelled, the running one finishes, results.csv lists exactly the case folders."""
+    proc, out = _start_slow_sweep(tmp_path)
+    if how.startswith("SIGINT"):
+        os.killpg(proc.pid, signal.SIGINT)
+    else:
+        os.kill(proc.pid, signal.SIGTERM)
+    stdout, stderr = proc.communicate(timeout=120)
+    assert proc.returncode == 130, stderr
+    assert "Traceback" not in stderr and "interrupted" in stderr
+    folders = {p.name for p in (out / "cases").iterdir() if p.is_dir()}
+    with open(out / "results.csv") as fh:
+        listed = {r["case"] for r in csv.DictReader(fh) if r["status"] == "done"}
+    assert listed == folders
+    assert 1 <= len(folders) < 6, "pending cases were not cancelled"
+    assert not list((out / "cases").glob(".*.tmp-*"))          # the running case finished, not abandoned
+
+
+def test_a_sweep_with_failed_cases_exits_1_and_says_how_many(tmp_path):
+    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 0.0]\n' + STATIC)
+    run = subprocess.run([sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(tmp_path / "o"),
+                          "--workers", "1"], capture_output=True, text=True)
+    assert run.returncode == 1
+    assert "1 of 2 cases failed" in run.stderr.strip().splitlines()[-1]
+    assert "Traceback" not in run.stderr
