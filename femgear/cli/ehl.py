@@ -34,6 +34,10 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--z", type=float, default=0.68, help="Roelands pressure index")
     p.add_argument("--out", default=None, help="folder for VTK/PNG/JSON output")
     p.add_argument("--json", action="store_true", help="print one JSON object as the last line")
+    p.add_argument("--tol", type=float, default=None,
+                   help="relative error of Hc and Hmin: stop at the cheapest level up to "
+                        "--level whose Richardson estimate meets it (output: error_estimate, "
+                        "flags, warning)")
 
 
 def _options(args) -> dict:
@@ -63,7 +67,7 @@ def _point(args) -> int:
 
     _check_arguments(args, lowest_level=1)
 
-    return _run(args, lambda: solve_point(args.M, args.L, level=args.level,
+    return _run(args, lambda: solve_point(args.M, args.L, level=args.level, tol=args.tol,
                                           ratio=args.ellipticity, **_options(args)))
 
 
@@ -72,7 +76,8 @@ def _line(args) -> int:
 
     _check_arguments(args, lowest_level=2)
 
-    return _run(args, lambda: solve_line(args.M, args.L, level=args.level, **_options(args)))
+    return _run(args, lambda: solve_line(args.M, args.L, level=args.level, tol=args.tol,
+                                         **_options(args)))
 
 
 def _run(args, solve) -> int:
@@ -100,6 +105,6 @@ def _run(args, solve) -> int:
         emit_json(out)
     else:
         for k in ("Hc", "Hmin", "Pmax", "Pmax_at", "outlet_x", "load_error", "iterations",
-                  "nodes", "seconds"):
+                  "nodes", "seconds", "error_estimate", "warning"):
             print(f"{k:>11}: {out[k]}")
     return 0

@@ -14,7 +14,8 @@ import time
 import numpy as np
 
 from femgear.contact.film import moes_line_central
-from femgear.errors import ConvergenceError
+from femgear.errors import ConvergenceError, SceneError
+from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
 from femgear.ehl.grid import prolongation_1d
 from femgear.ehl.level import Level
@@ -22,24 +23,38 @@ from femgear.ehl.newton import History, newton_dense
 from femgear.ehl.point import CONTINUATION, _result
 from femgear.ehl.rheology import Rheology
 
+X0_DEFAULT = -4.5
+DEFAULT_LEVEL = 6  # 1025 nodes
+MAX_LEVEL = 8  # 4097 nodes: the finest grid a tol-driven solve may reach (dense Newton)
 
-def solve_line(M: float, L: float, *, level: int = 6, coarse_level: int = 4,
-               x0: float = -4.5, x1: float = 1.5, viscosity: str = "barus",
+
+def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: int = 4,
+               x0: float | None = None, x1: float = 1.5, viscosity: str = "barus",
                compressible: bool = False, ph: float | None = None, z: float = 0.68,
-               ad_factor: float = 1.0, sd_factor: float = 1.0, tol: float = 1e-8,
-               max_iter: int = 60):
+               ad_factor: float = 1.0, sd_factor: float = 1.0, tol: float | None = None,
+               newton_tol: float = 1e-8, max_level: int = MAX_LEVEL, max_iter: int = 60):
     """Isothermal line-contact EHL in Moes line groups (M, L); returns EHLResult.
 
-    Domain X in [x0, x1]; level ``k`` has ``16 * 2**k`` intervals. Options as in
-    :func:`femgear.ehl.point.solve_point`.
+    Domain X in [x0, x1] (x0 default -4.5, checked against the fully flooded inlet
+    distance like the point contact's default domain); level ``k`` has ``16 * 2**k``
+    intervals. ``tol``, ``newton_tol`` and the flags as in
+    :func:`femgear.ehl.point.solve_point` (default level 6, tol-driven cap ``max_level``).
     """
     if M <= 0 or L < 0:
         raise ValueError("need M > 0 and L >= 0")
+    if tol is not None and not 0.0 < tol < 1.0:
+        raise SceneError("tol", f"relative tolerance must lie in (0, 1), got {tol!r}")
+    given_x0, x0 = x0 is not None, X0_DEFAULT if x0 is None else x0
     if not x0 < -1.0 < 1.0 < x1:
         raise ValueError("the domain must contain the Hertzian contact [-1, 1]")
+    level = (DEFAULT_LEVEL if tol is None else max_level) if level is None else level
     t0 = time.perf_counter()
     case = f"ehl line M={M:g} L={L:g} level={level}"
     fac = pr.line_h_moes_factor(M)
+    inlet = acc.inlet_problem(x0, float(moes_line_central(M, L)) / fac)
+    if inlet and not given_x0:
+        raise SceneError("M", f"line (M, L) = ({M:g}, {L:g}): {inlet}; pass x0= to solve it "
+                         "anyway (the result is then flagged)")
 
     def make(frac: float, lev: int) -> Level:
         rheo = Rheology(pr.line_alpha_bar(M, L) * frac, viscosity=viscosity, ph=ph, z=z,
@@ -58,7 +73,7 @@ def solve_line(M: float, L: float, *, level: int = 6, coarse_level: int = 4,
         H0 = float(moes_line_central(M, L)) / fac - float(lv.deflection(lv.full(P))[i0])
         P_start, H0_start = P.copy(), H0
         try:
-            P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=tol, case=case)
+            P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case)
             hist.extend(h)
             return lv, P, H0
         except ConvergenceError as exc:
@@ -66,7 +81,7 @@ def solve_line(M: float, L: float, *, level: int = 6, coarse_level: int = 4,
         P, H0 = P_start, H0_start
         for frac in CONTINUATION:  # continuation in alpha_bar
             stage = lv if frac == 1.0 else make(frac, lev)
-            P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=tol, case=case)
+            P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=newton_tol, case=case)
             hist.extend(h)
         return lv, P, H0
 
@@ -83,13 +98,18 @@ def solve_line(M: float, L: float, *, level: int = 6, coarse_level: int = 4,
     coarse_level = start
     per_level = [_line_summary(lv, P, H0, fac, len(hist.residual), t0)]
     for k in range(coarse_level + 1, level + 1):
+        if tol is not None and all(e is not None and e <= tol
+                                   for e in acc.error_estimate(per_level).values()):
+            break
         fine = make(1.0, k)
         P = (prolongation_1d(lv.n) @ lv.full(P))[fine.interior]
-        P, H0, h = newton_dense(fine, P, H0, max_iter=max_iter, tol=tol, case=case)
+        P, H0, h = newton_dense(fine, P, H0, max_iter=max_iter, tol=newton_tol, case=case)
         hist.extend(h)
         lv = fine
         per_level.append(_line_summary(lv, P, H0, fac, len(h.residual), t0))
-    return _result("line", M, L, lv, P, H0, fac, hist, per_level, time.perf_counter() - t0)
+    return _result("line", M, L, lv, P, H0, fac, hist, per_level, time.perf_counter() - t0,
+                   tol=acc.DEFAULT_TOL if tol is None else tol,
+                   extra_flags=(f"domain: {inlet}",) if inlet else ())
 
 
 def _line_summary(level: Level, PI, H0, fac, its, t0) -> dict:

@@ -31,7 +31,8 @@ import time
 import numpy as np
 
 from femgear.contact.film import nvm_central
-from femgear.errors import ConvergenceError
+from femgear.errors import ConvergenceError, SceneError
+from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
 from femgear.ehl.grid import Domain, Grid, prolongation
 from femgear.ehl.level import Level
@@ -41,6 +42,8 @@ from femgear.ehl.rheology import Rheology
 
 CONTINUATION = (0.0, 0.25, 0.5, 0.75, 1.0)
 STABILISATION = (2.0, 1.5, 1.2)
+DEFAULT_LEVEL = 3  # 129^2
+MAX_LEVEL = 5  # 513^2: the finest grid a tol-driven solve may reach
 
 
 def default_domain(ratio: float = 1.0) -> Domain:
@@ -64,11 +67,11 @@ def _hertz_start(level: Level, ratio: float) -> np.ndarray:
     return PI * level.load / (level.m @ PI)
 
 
-def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
+def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: int = 1,
                 ratio: float = 1.0, domain: Domain | None = None, viscosity: str = "barus",
                 compressible: bool = False, ph: float | None = None, z: float = 0.68,
                 rigid: bool = False, ad_factor: float = 1.0, sd_factor: float = 1.0,
-                tol: float = 1e-5,
+                tol: float | None = None, newton_tol: float = 1e-5, max_level: int = MAX_LEVEL,
                 max_iter: int = 40) -> EHLResult:
     """Isothermal point-contact EHL in Moes groups (M, L); returns :class:`EHLResult`.
 
@@ -78,15 +81,33 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
     (needs ``ph`` [Pa] and ``z``); ``compressible`` switches Dowson-Higginson density
     on (needs ``ph``). The high-load and strong-piezoviscosity fallbacks are described in
     the module docstring. Raises ConvergenceError (with the Newton history) on failure.
+
+    Accuracy: ``tol`` (relative) makes the nested iteration stop at the first level whose
+    Richardson estimates of Hc and Hmin (:mod:`accuracy`) are both <= tol, up to
+    ``max_level`` (``level``, when given, caps it instead); without ``tol`` the finest
+    level is ``level`` (default 3) and the result is flagged against
+    :data:`accuracy.DEFAULT_TOL`. The default domain is checked against the fully flooded
+    inlet distance for the NVM film: a case whose inlet it would truncate (low M, e.g.
+    (3, 10)) raises :class:`SceneError` with the reason; an explicit ``domain`` that
+    truncates it is solved and flagged.
     """
     if M <= 0 or L < 0 or ratio <= 0:
         raise ValueError("need M > 0, L >= 0, ratio > 0")
+    if tol is not None and not 0.0 < tol < 1.0:
+        raise SceneError("tol", f"relative tolerance must lie in (0, 1), got {tol!r}")
+    level = (DEFAULT_LEVEL if tol is None else max_level) if level is None else level
     if level < coarse_level:
         raise ValueError("level must be >= coarse_level")
     t0 = time.perf_counter()
     case = f"ehl point M={M:g} L={L:g} ratio={ratio:g} level={level}"
     fac = pr.point_h_moes_factor(M)
     dom = domain or default_domain(ratio)
+    expected = float(nvm_central(M, L, ratio)) / fac
+    inlet = None if rigid else acc.inlet_problem(dom.x0, expected)
+    if inlet and domain is None:
+        raise SceneError("M", f"(M, L) = ({M:g}, {L:g}): {inlet}; pass a larger domain= "
+                         "to solve it anyway (the result is then flagged)")
+    tol_eff = acc.DEFAULT_TOL if tol is None else tol
 
     def make(M_: float, frac: float, lev: int, stab: float = 1.0) -> Level:
         rheo = Rheology(pr.point_alpha_bar(M_, L) * frac, viscosity=viscosity, ph=ph, z=z,
@@ -95,7 +116,7 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
                      ratio=ratio, rigid=rigid, ad_factor=ad_factor * stab,
                      sd_factor=sd_factor * stab)
 
-    levels = [make(M, 1.0, k) for k in range(coarse_level, level + 1)]
+    levels = _LazyLevels(lambda k: make(M, 1.0, k), coarse_level, level)
     hist = History()
 
     def nvm_hertz(M_: float) -> float:
@@ -109,9 +130,9 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
 
     def solve_on(lvs: list[Level], PI, H0):
         if len(lvs) == 1:
-            PI, H0, h = newton_dense(lvs[0], PI, H0, max_iter=max_iter, tol=tol, case=case)
+            PI, H0, h = newton_dense(lvs[0], PI, H0, max_iter=max_iter, tol=newton_tol, case=case)
         else:
-            PI, H0, h = newton_krylov(lvs, PI, H0, max_iter=max_iter, tol=tol, case=case)
+            PI, H0, h = newton_krylov(lvs, PI, H0, max_iter=max_iter, tol=newton_tol, case=case)
         hist.extend(h)
         return PI, H0
 
@@ -162,8 +183,13 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
         return got, used
 
     def refine(lvs: list[Level], M_: float, PI, H0, start: int, per_level: list, stab: float):
-        """Nested iteration from level ``start`` to the finest."""
+        """Nested iteration from level ``start`` to the finest, or with ``tol`` to the first
+        level whose error estimate meets it; (PI, H0, that level)."""
+        k = start - 1
         for k in range(start, len(lvs)):
+            if tol is not None and lvs is levels and all(e is not None and e <= tol
+                                       for e in acc.error_estimate(per_level).values()):
+                return PI, H0, lvs[k - 1]
             fine, prev = lvs[k], lvs[k - 1]
             P0 = (prolongation(prev.grid, fine.grid) @ prev.full(PI))[fine.interior]
             n0 = len(hist.residual)
@@ -177,7 +203,7 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
             PI, H0 = got
             per_level.append(_level_summary(fine, PI, H0, fac, len(hist.residual) - n0, t0,
                                             ad_factor * used))
-        return PI, H0
+        return PI, H0, lvs[k]
 
     def solve_at(M_: float, stab: float = 1.0, top: int = level, depth: int = 0):
         """(PI, H0) on level ``top`` for load M_, the level summaries and that level.
@@ -185,14 +211,14 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
         (recursively), shift H0 by the NVM change of the central film and take Newton from
         there (solutions in Hertzian units are close: ~4 Newton iterations a step)."""
         lvs = (levels if (M_, stab, top) == (M, 1.0, level) else
-               [make(M_, 1.0, k, stab) for k in range(coarse_level, top + 1)])
+               _LazyLevels(lambda k: make(M_, 1.0, k, stab), coarse_level, top))
         got = start_solve(lvs, M_, stab)
         if got:
             PI, H0, start = got
             per_level = [_level_summary(lvs[start - 1], PI, H0, fac, len(hist.residual), t0,
                                         ad_factor * stab)]
-            PI, H0 = refine(lvs, M_, PI, H0, start, per_level, stab)
-            return PI, H0, per_level, lvs[-1]
+            PI, H0, last = refine(lvs, M_, PI, H0, start, per_level, stab)
+            return PI, H0, per_level, last
         if M_ <= 20.0 or depth >= 8:
             raise ConvergenceError(case, f"no start at M={M_:g} (direct, alpha continuation, "
                                    "next-level Newton-Krylov)", hist.as_dict())
@@ -210,7 +236,27 @@ def solve_point(M: float, L: float, *, level: int = 3, coarse_level: int = 1,
         return PI, H0, per_level, lvs[-1]
 
     PI, H0, per_level, fine = solve_at(M)
-    return _result("point", M, L, fine, PI, H0, fac, hist, per_level, time.perf_counter() - t0)
+    return _result("point", M, L, fine, PI, H0, fac, hist, per_level, time.perf_counter() - t0,
+                   tol=tol_eff, extra_flags=(f"domain: {inlet}",) if inlet else ())
+
+
+class _LazyLevels:
+    """Levels ``lo..hi`` of one problem, built on first use (a tol-driven solve may stop
+    long before the cap, and a 513^2 level costs a second to set up)."""
+
+    def __init__(self, make, lo: int, hi: int):
+        self._make, self._lo, self._built = make, lo, [None] * (hi - lo + 1)
+
+    def __len__(self) -> int:
+        return len(self._built)
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            return [self[i] for i in range(*k.indices(len(self)))]
+        k = range(len(self))[k]
+        if self._built[k] is None:
+            self._built[k] = self._make(k + self._lo)
+        return self._built[k]
 
 
 def _level_summary(level: Level, PI, H0, fac, its, t0, ad_factor) -> dict:
@@ -221,7 +267,8 @@ def _level_summary(level: Level, PI, H0, fac, its, t0, ad_factor) -> dict:
             "ad_factor": ad_factor, "seconds": time.perf_counter() - t0}
 
 
-def _result(kind, M, L, level: Level, PI, H0, fac, hist: History, per_level, seconds):
+def _result(kind, M, L, level: Level, PI, H0, fac, hist: History, per_level, seconds, *,
+            tol: float = acc.DEFAULT_TOL, extra_flags: tuple[str, ...] = ()):
     P, H = level.film(PI, H0)
     if not (np.all(np.isfinite(P)) and np.all(np.isfinite(H))):
         raise ConvergenceError(f"ehl {kind}", "non-finite solution", hist.as_dict())
@@ -235,8 +282,10 @@ def _result(kind, M, L, level: Level, PI, H0, fac, hist: History, per_level, sec
         x, y, P2, H2 = level.X, np.zeros(0), P, H
     Hc, Hmin, Pmax, at, outlet = centre_values(x, y, P2, H2)
     load_error = abs(level.m @ PI - level.load) / level.load
+    estimate = acc.error_estimate(per_level)
     return EHLResult(kind=kind, M=float(M), L=float(L), Hc=Hc * fac, Hmin=Hmin * fac,
                      Pmax=Pmax, Pmax_at=at, outlet_x=outlet, Hc_hertz=Hc, Hmin_hertz=Hmin,
                      H0=float(H0), load_error=float(load_error),
                      iterations=len(hist.residual), nodes=level.n, seconds=seconds,
-                     x=x, y=y, P=P2, H=H2, history=hist.as_dict(), levels=tuple(per_level))
+                     x=x, y=y, P=P2, H=H2, history=hist.as_dict(), levels=tuple(per_level),
+                     error_estimate=estimate, tol=tol, flags=acc.flags_for(estimate, tol, extra_flags))

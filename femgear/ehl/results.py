@@ -14,6 +14,9 @@ class EHLResult:
 
     Fields are on the node grid: point contacts ``P``/``H`` of shape (ny, nx) with
     coordinates ``x`` (nx,) and ``y`` (ny,); line contacts shape (nx,), ``y`` empty.
+    ``error_estimate`` holds the relative Richardson estimates of Hc and Hmin from the
+    nested levels (:mod:`femgear.ehl.accuracy`), ``tol`` the tolerance they are held
+    to and ``flags`` every reason not to trust the result at that tolerance.
     ``Hc``/``Hmin`` are in Moes units (H_Moes = (h/R_x)(2U)^(-1/2)); ``Hc_hertz`` etc. in
     Hertzian units (H = h R / a^2). ``history`` holds per-level Newton histories.
     """
@@ -40,6 +43,15 @@ class EHLResult:
     history: dict[str, Any] = field(repr=False, default_factory=dict)
     levels: tuple[dict, ...] = field(repr=False, default=())
     converged: bool = True
+    error_estimate: dict[str, float | None] = field(default_factory=dict)
+    tol: float | None = None
+    flags: tuple[str, ...] = ()
+
+    @property
+    def warning(self) -> str | None:
+        """The flags joined, or None: set whenever the result's own error estimate
+        exceeds its tolerance (or is missing) or the domain truncates the inlet."""
+        return "; ".join(self.flags) if self.flags else None
 
     def summary(self) -> dict[str, Any]:
         """JSON-friendly scalars (the CLI's output keys)."""
@@ -49,7 +61,8 @@ class EHLResult:
             "Hc_hertz": self.Hc_hertz, "Hmin_hertz": self.Hmin_hertz, "H0": self.H0,
             "load_error": self.load_error, "converged": self.converged,
             "iterations": self.iterations, "nodes": self.nodes, "seconds": self.seconds,
-            "levels": list(self.levels),
+            "levels": list(self.levels), "error_estimate": dict(self.error_estimate),
+            "tol": self.tol, "flags": list(self.flags), "warning": self.warning,
             "residual_history": list(self.history.get("residual", [])),
             "load_error_history": list(self.history.get("load_error", [])),
         }
