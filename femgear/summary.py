@@ -1,4 +1,9 @@
-"""Summary figures of a scene (geometry and quasi-static contact), as plain dicts."""
+"""Summary figures of a scene (geometry, quasi-static contact, ISO 6336-2 rating, mesh power loss), as plain dicts.
+
+This module binds a scene to the pure rating functions of :mod:`femgear.rating`
+(``[rating]`` table, operating point, lubrication level) and is used by ``femgear info``
+and by the ``femgear run`` summary.
+"""
 
 from __future__ import annotations
 
@@ -7,8 +12,13 @@ from typing import Any
 
 import numpy as np
 
-from femgear.contact.path import ContactPath, pinion_speed
+from femgear.contact.path import ContactPath, pinion_speed, pinion_torque
 from femgear.geometry import GearPair, mesh_frequency
+from femgear.rating import LoadFactors, MaterialLimits, MeshPowerLoss, PittingRating, contact_stress, mesh_power_loss
+from femgear.rating import pitting_rating as _pitting_rating
+
+#: lubrication levels cheap enough for a summary; heavier ones are summarised with ``formula``
+SUMMARY_FRICTION_LEVELS = ("none", "constant", "formula")
 
 
 def geometry_summary(pair: GearPair, pinion_rpm: float) -> dict[str, Any]:
@@ -30,13 +40,15 @@ def geometry_summary(pair: GearPair, pinion_rpm: float) -> dict[str, Any]:
         "eps_beta": pair.eps_beta,
         "eps_gamma": pair.eps_gamma,
         "mesh_frequency": mesh_frequency(pair, pinion_rpm),
+        "kind": pair.kind,
+        "face_width": pair.b,
     }
 
 
 def contact_summary(result: ContactPath) -> dict[str, Any]:
     """Pitch-point and along-path extremes of the quasi-static contact pass."""
     i = result.pitch_index
-    return {
+    out = {
         "normal_force": result.normal_force,
         "load_per_length": result.load_per_length,
         "pitch": {
@@ -57,11 +69,92 @@ def contact_summary(result: ContactPath) -> dict[str, Any]:
             "max_slide_to_roll": float(np.max(np.abs(result.kin.srr))),
         },
     }
+    if result.line_load is not None:
+        out["pitch"]["line_load"] = result.line_load[i]
+        out["path"]["max_line_load"] = float(np.max(result.line_load))
+        out["path"]["max_hertz_pressure_position"] = float(result.kin.s[int(np.argmax(result.hertz_pressure))])
+        out["single_contact"] = _single_contact(result)
+    return out
 
 
-def scene_summary(scene, pair: GearPair, contact: ContactPath) -> dict[str, Any]:
+def _single_contact(result: ContactPath) -> dict[str, Any]:
+    """Hertz figures at the inner points of single contact B and D (spur pairs; NaN-free)."""
+    out: dict[str, Any] = {"u_B": result.single_contact[0], "u_D": result.single_contact[1]}
+    for name, u in zip(("B", "D"), result.single_contact, strict=True):
+        j = result.at(u)
+        if abs(result.kin.u[j] - u) < 1e-9 * max(abs(u), 1e-3):
+            out[name] = {"hertz_pressure": result.hertz_pressure[j], "hertz_half_width": result.hertz_half_width[j],
+                         "line_load": result.line_load[j], "film_minimum_dowson_higginson": result.film_minimum[j]}
+    return out
+
+
+def scene_rating(scene, pair: GearPair) -> PittingRating:
+    """ISO 6336-2 method B rating of a scene's pair at its operating point and ``[rating]`` table."""
+    r = scene.rating
+    factors = LoadFactors(K_A=r.application_factor, K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor,
+                          K_Halpha=r.transverse_load_factor)
+    stress = contact_stress(pair, pinion_torque(scene), scene.material.youngs_modulus, scene.material.poisson_ratio,
+                            factors)
+    limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
+                            nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
+                            Z_W=r.work_hardening_factor, Z_X=r.size_factor)
+    return _pitting_rating(pair, stress, pinion_speed(scene), limits)
+
+
+def rating_summary(rating: PittingRating) -> dict[str, Any]:
+    s, f = rating.stress, rating.stress.factors
     return {
+        "method": "ISO 6336-2:2019 method B",
+        "tangential_load": s.F_t, "virtual_teeth": list(s.z_n),
+        "Z_H": s.Z_H, "Z_E": s.Z_E, "Z_eps": s.Z_eps, "Z_beta": s.Z_beta, "Z_B": s.Z_B, "Z_D": s.Z_D,
+        "K_A": f.K_A, "K_v": f.K_v, "K_Hbeta": f.K_Hbeta, "K_Halpha": f.K_Halpha,
+        "sigma_H0": s.sigma_H0, "sigma_H": list(s.sigma_H),
+        "pitch_line_velocity": rating.pitch_line_velocity,
+        "load_cycles": None if rating.N_L is None else list(rating.N_L),
+        "Z_NT": list(rating.Z_NT), "Z_L": rating.Z_L, "Z_v": rating.Z_v, "Z_R": rating.Z_R,
+        "Z_W": rating.limits.Z_W, "Z_X": rating.limits.Z_X, "sigma_Hlim": rating.limits.sigma_Hlim,
+        "sigma_HP": list(rating.sigma_HP), "S_H": list(rating.S_H), "S_Hmin": rating.limits.S_Hmin,
+        "safe": rating.safe,
+    }
+
+
+def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshPowerLoss, str]:
+    """Mesh power loss on the positions of ``contact`` with μ of the scene's lubrication level.
+
+    Levels beyond ``formula`` (FE EHL, TEHL) are summarised with ``formula`` (the
+    returned level says which was used); ``femgear run`` carries the level's own μ.
+    """
+    from femgear.case import build_case
+    from femgear.lubrication.levels import lubrication_solver
+
+    level = scene.physics.lubrication
+    level = level if level in SUMMARY_FRICTION_LEVELS else "formula"
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    solver = lubrication_solver(build_case(scene, pair), level)
+    mu, _ = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, scene.operating.ambient_temperature))
+    omega1 = pinion_speed(scene) * 2 * math.pi / 60
+    return mesh_power_loss(pair, k.u, np.asarray(mu, float), w, k.vs, pinion_torque(scene), omega1), level
+
+
+def power_loss_summary(loss: MeshPowerLoss, level: str) -> dict[str, Any]:
+    return {
+        "friction_level": level, "mean_loss": loss.mean_loss, "input_power": loss.input_power,
+        "efficiency": loss.efficiency, "energy_per_mesh_cycle": loss.energy_per_mesh_cycle,
+        "ohlendorf_HV": loss.ohlendorf_HV, "equivalent_mu": loss.equivalent_mu,
+        "max_loss_density": float(np.max(loss.density)),
+        "mean_friction_coefficient": float(np.mean(loss.friction_coefficient)),
+    }
+
+
+def scene_summary(scene, pair: GearPair, contact: ContactPath, power_loss: bool = True) -> dict[str, Any]:
+    """Geometry, contact, ISO 6336-2 rating and (``power_loss``) mesh power loss of a scene."""
+    out = {
         "scene": scene.meta.name,
         "geometry": geometry_summary(pair, pinion_speed(scene)),
         "contact": contact_summary(contact),
+        "rating": rating_summary(scene_rating(scene, pair)),
     }
+    if power_loss:
+        out["power_loss"] = power_loss_summary(*scene_power_loss(scene, pair, contact))
+    return out

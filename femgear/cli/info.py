@@ -1,4 +1,4 @@
-"""``femgear info SCENE``: geometry and contact summary of a scene."""
+"""``femgear info SCENE``: geometry, contact, ISO 6336-2 rating and mesh power loss of a scene."""
 
 from __future__ import annotations
 
@@ -8,21 +8,22 @@ from femgear.cli.common import add_scene_arguments, emit_json
 
 
 def register(sub) -> None:
-    p = sub.add_parser("info", help="geometry and contact summary of a scene")
+    p = sub.add_parser("info", help="geometry, contact, ISO 6336-2 rating and mesh power loss of a scene")
     add_scene_arguments(p)
     p.add_argument("--json", action="store_true", help="print one JSON object as the last line")
     p.set_defaults(func=_info)
 
 
 def _info(args: argparse.Namespace) -> int:
-    from femgear.contact.path import contact_along_path
+    from femgear.contact.path import contact_along_path, zone_grid
     from femgear.geometry import GearPair
     from femgear.scene import load_scene
     from femgear.summary import scene_summary
 
     scene = load_scene(args.scene, args.overrides)
     pair = GearPair.from_scene(scene)
-    summary = scene_summary(scene, pair, contact_along_path(scene, pair=pair))
+    contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
+    summary = scene_summary(scene, pair, contact)
     if args.json:
         emit_json(summary)
     else:
