@@ -28,7 +28,7 @@ import numpy as np
 
 from femgear.case import Case, build_case
 from femgear.contact.path import ContactPath, contact_along_path
-from femgear.coupling.loop import CouplingSetup, CouplingState, run_coupled, thermal_units
+from femgear.coupling.loop import CouplingSetup, CouplingState, line_stiffness, run_coupled, thermal_units
 from femgear.lubrication.levels import friction_along_path
 from femgear.results import RunResult, Tribology
 from femgear.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
@@ -41,7 +41,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     contact = contact_along_path(case.scene, pair=case.pair)
     stiffness = mesh_stiffness_from_scene(case.scene)
     if case.levels.dynamics == "none":
-        return RunResult(case, contact, stiffness, static_tribology(case, contact, wear_checkpoint),
+        return RunResult(case, contact, stiffness, static_tribology(case, contact, stiffness, wear_checkpoint),
                          seconds=time.perf_counter() - t0)
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
@@ -57,8 +57,10 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0)
 
 
-def static_tribology(case: Case, contact: ContactPath, wear_checkpoint: Path | None = None) -> Tribology:
-    """Friction, thermal deviation and wear once, at the static load."""
+def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,
+                     wear_checkpoint: Path | None = None) -> Tribology:
+    """Friction, thermal deviation and wear once, at the static load (load shared along the
+    contact lines by the local pair stiffness of the stiffness level, :func:`line_stiffness`)."""
     n = case.path.u.size
     w = np.full(n, contact.load_per_length)
     mu = dT = zeta = wear = None
@@ -72,8 +74,10 @@ def static_tribology(case: Case, contact: ContactPath, wear_checkpoint: Path | N
         from femgear.wear import WearSetup, run_wear
 
         pair = case.pair
+        k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
+            case.stiffness.mesh_stiffness_per_width * pair.b
         setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / 2,
-                          c_l=case.stiffness.mesh_stiffness_per_width * pair.b / pair.mean_contact_length,
+                          c_l=line_stiffness(case, k_mean, stiffness),
                           coefficient=case.wear.coefficient, hardness=case.material.hardness)
         state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)
         wear, cycles, steps = np.array([state.h1, state.h2]), state.cycles, state.steps

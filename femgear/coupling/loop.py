@@ -78,6 +78,22 @@ def thermal_units(case: Case) -> ThermalUnits | None:
                         shaft=np.array([unit(j, b, 0.0, 1.0) for j, b in members]))
 
 
+def line_stiffness(case: Case, mean_helix_stiffness: float, stiffness: MeshStiffness | None = None):
+    """Stiffness per unit contact-line length c_l(u) at the case's path positions [N/m²].
+
+    Its mean is the helix's mean mesh stiffness over the mean contact-line length; its
+    shape along the path is that of the tooth-pair stiffness per unit face width of the
+    stiffness level when the level has one (``pem``, ``fe``: ≈ 25 % lower at the path
+    ends than at the pitch point), else uniform (a number).
+    """
+    c_bar = mean_helix_stiffness / case.pair.mean_contact_length
+    info = {} if stiffness is None else stiffness.info
+    if "k_pair_per_width" not in info:
+        return c_bar
+    k = np.interp(case.path.u, info["u"], info["k_pair_per_width"])
+    return c_bar * k / k.mean()
+
+
 def bulk_temperature_rise(case: Case, contact_rise: np.ndarray) -> float:
     """Bulk (body) temperature rise of the flanks over the oil [K].
 
@@ -101,7 +117,7 @@ class CouplingSetup:
     modal: ModalResult             #: its modes (mean system; independent of friction and deviations)
     lubrication: Lubrication
     thermal: ThermalUnits | None
-    c_l: float                     #: mesh stiffness per unit contact-line length [N/m²]
+    c_l: float | np.ndarray        #: stiffness per unit contact-line length along the path [N/m²]
     static_force: float            #: normal force per helix [N]
     n_phase: int = 128
     method: str | None = None      #: integrator; None: the dynamics' default for the model
@@ -122,7 +138,7 @@ class CouplingSetup:
     def from_case(cls, case: Case, n_phase: int = 128, lubrication: Lubrication | None = None,
                   method: str | None = None, stiffness: MeshStiffness | None = None) -> CouplingSetup:
         model = build_model(case, stiffness=stiffness, friction=0.0)
-        c_l = float(np.mean(model.stiffness.k_left)) / case.pair.mean_contact_length
+        c_l = line_stiffness(case, float(np.mean(model.stiffness.k_left)), stiffness)
         return cls(case=case, model=model, modal=modal_analysis(model),
                    lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
                    c_l=c_l, static_force=case.operating.normal_force / 2, n_phase=n_phase, method=method)

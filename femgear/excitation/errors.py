@@ -81,7 +81,13 @@ class ProfileError:
 
 @dataclass(frozen=True)
 class RandomError:
-    """Seeded random single-pitch deviations of both members, seen by one mesh."""
+    """Seeded random single-pitch deviations of both members, seen by one mesh.
+
+    Each tooth of each member carries a deviation uniform in [−a, a]; the tooth pair in
+    mesh k (pinion tooth k mod z1 against gear tooth k mod z2) displaces the mesh by the
+    sum of the two (both act along the line of action), so the pair error lies in
+    [−2a, 2a]; it is interpolated linearly between mesh cycles.
+    """
 
     amplitude: float          #: bound a of each tooth's deviation [m]
     mesh_frequency: float     #: f_m [Hz]
@@ -103,7 +109,7 @@ class RandomError:
         frac = phase - n
         n = n.astype(np.int64)
         def tooth(k):
-            return 0.5 * (self._dev1[k % self.z1] + self._dev2[k % self.z2])
+            return self._dev1[k % self.z1] + self._dev2[k % self.z2]
         return tooth(n), tooth(n + 1), frac
 
     def value(self, t: np.ndarray) -> np.ndarray:

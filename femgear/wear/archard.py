@@ -44,7 +44,7 @@ class WearSetup:
     pair: GearPair
     kin: PathKinematics          #: kinematics at the profile positions ``kin.u``
     force: float | np.ndarray    #: normal force of one helix [N], scalar or per mesh phase
-    c_l: float                   #: mesh stiffness per unit contact-line length [N/m²]
+    c_l: float | np.ndarray      #: stiffness per unit contact-line length [N/m²], or one value per ``kin.u``
     coefficient: float           #: dimensionless Archard K [-]
     hardness: float              #: H [Pa]
     n_phase: int = 64
@@ -98,7 +98,7 @@ def wear_steps(setup: WearSetup, cycles: float, state: WearState | None = None,
         if rate <= 0:
             dN = remaining
         else:
-            approach = float(np.mean(w[w > 0])) / setup.c_l
+            approach = float(np.mean(w[w > 0])) / float(np.mean(setup.c_l))
             dN = min(remaining, max_relative_change * approach / rate)
         state = WearState(cycles=state.cycles + dN, h1=state.h1 + r1 * dN, h2=state.h2 + r2 * dN,
                           steps=state.steps + 1)

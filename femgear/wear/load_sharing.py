@@ -1,15 +1,18 @@
 """Load distribution along the contact lines of one helix, with profile deviations.
 
 Each instant (mesh phase φ) the contact lines of a helix cover transverse positions
-``u`` of the path of contact.  With a Winkler layer of stiffness ``c_l`` per unit
-contact-line length (the mesh stiffness spread evenly over the lines) and flank
+``u`` of the path of contact.  With a Winkler layer of stiffness ``c_l(u)`` per unit
+contact-line length (the local stiffness of the tooth pair at the position u, e.g. the
+potential-energy pair stiffness, which is ≈ 25 % lower at the ends of the path than at
+the pitch point; or the mesh stiffness spread evenly over the lines) and flank
 deviations h(u) (wear of both members, thermal expansion with the opposite sign), the
 local load per unit length is
 
-    w'(u, φ) = c_l · max(δ(φ) − h(u), 0),
+    w'(u, φ) = c_l(u) · max(δ(φ) − h(u), 0),
 
 with the approach δ(φ) set by equilibrium Σ∫ w' dl = F (the helix's normal force).
-Without deviations this is the uniform ISO 6336 distribution w' = F / L(φ).  Along a
+Without deviations and with a uniform c_l this is the uniform ISO 6336 distribution
+w' = F / L(φ); a stiffer pair (near the pitch point) carries more.  Along a
 line dl = du / sin β_b.
 """
 
@@ -44,28 +47,30 @@ def phase_coverage(pair: GearPair, u: np.ndarray, phases: np.ndarray, offset: fl
 
 
 def distribute(force: np.ndarray, cover: np.ndarray, du: np.ndarray, deviation: np.ndarray,
-               c_l: float, sin_beta_b: float) -> np.ndarray:
+               c_l: float | np.ndarray, sin_beta_b: float) -> np.ndarray:
     """Load per unit length w'(φ, u) [N/m] for per-phase forces ``force`` [N].
 
     ``du`` are the quadrature weights of the positions (trapezoid), ``deviation`` the
-    flank deviation h(u) [m] (positive = material removed).
+    flank deviation h(u) [m] (positive = material removed), ``c_l`` the stiffness per
+    unit line length [N/m²], a number or one value per position.
     """
+    c_all = np.broadcast_to(np.asarray(c_l, dtype=float), deviation.shape)
     w = np.zeros(cover.shape)
     for i in range(cover.shape[0]):
         on = cover[i]
         if not on.any() or force[i] <= 0:
             continue
-        h, weight = deviation[on], du[on] / sin_beta_b
+        h, cw = deviation[on], c_all[on] * du[on] / sin_beta_b
 
         def excess(delta: float) -> float:
-            return c_l * float(np.sum(np.maximum(delta - h, 0.0) * weight)) - force[i]
+            return float(np.sum(np.maximum(delta - h, 0.0) * cw)) - force[i]
 
         lo = float(h.min())
-        hi = lo + force[i] / (c_l * weight.sum()) + float(np.ptp(h)) + 1e-30
+        hi = lo + force[i] / cw.sum() + float(np.ptp(h)) + 1e-30
         while excess(hi) < 0:  # pragma: no cover - the bracket above already suffices
             hi *= 2
         delta = brentq(excess, lo, hi, xtol=1e-16, rtol=1e-13)
-        w[i, on] = c_l * np.maximum(delta - h, 0.0)
+        w[i, on] = c_all[on] * np.maximum(delta - h, 0.0)
     return w
 
 
@@ -78,7 +83,7 @@ def trapezoid_weights(u: np.ndarray) -> np.ndarray:
     return w
 
 
-def load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.ndarray, c_l: float,
+def load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.ndarray, c_l: float | np.ndarray,
              n_phase: int | None = None, offset: float = 0.0) -> LoadMap:
     """Mean load intensity at each position over one mesh cycle of one helix.
 

@@ -157,3 +157,19 @@ def test_timoshenko_level_runs_and_carries_the_torque(timoshenko, baseline_scene
     expected = baseline_scene.operating.torque / (2 * timoshenko.pair.rb1 * math.cos(timoshenko.pair.beta_b))
     assert abs(res.amplitudes["mesh_force.L.mean"] / expected - 1) < 0.02   # friction shifts it slightly
     assert np.isfinite(res.displacement).all()
+
+
+def test_rayleigh_damping_leaves_the_free_rotation_undamped(lumped):
+    """Identity: the rigid rotation of the gear train (kernel of the mean stiffness) feels no
+    damping force (bearing dashpots do not act on θz, the Rayleigh mass term is projected off it),
+    while every flexible mode keeps its modal damping a0 + a1 ω² (mass-normalised)."""
+    from scipy.linalg import eigh
+
+    w2, phi = eigh(lumped.mean_stiffness_matrix(), lumped.M)
+    rigid = phi[:, w2 <= 1e-6 * w2.max()]
+    assert rigid.shape[1] == 1
+    assert np.linalg.norm(lumped.C @ rigid) < 1e-12 * np.linalg.norm(lumped.C)
+    a0, _ = lumped.rayleigh
+    flex = phi[:, w2 > 1e-6 * w2.max()]
+    c_modal = np.diag(flex.T @ lumped.C @ flex)
+    assert np.all(c_modal >= a0 * (1 - 1e-9))                 # mass term a0 on every flexible mode (+ K, bearings)
