@@ -39,6 +39,10 @@ def _run(args: argparse.Namespace) -> int:
     with CouplingProgress(enabled=not (args.quiet or args.json)) as progress:
         written = run_scene(scene, out, plots=not args.no_plots, progress=progress)
     files = dict(written.files)
+    if not args.no_plots:
+        from femgear.plot.coupled import run_figures
+
+        files.update(run_figures(written.result, out))
     if not args.no_vtk:
         from femgear.io.paraview_run import write_run_paraview
 

@@ -27,53 +27,81 @@ def _save(fig, path) -> Path:
     return save_figure(fig, path)
 
 
+def _last_cycles(res: Response, cycles: float) -> np.ndarray:
+    return res.t >= res.t[-1] - cycles / res.mesh_frequency
+
+
 def plot_time_histories(res: Response, path, cycles: float = 5.0) -> Path:
-    """Displacement and velocity of pinion and gear centres in x, y over the last ``cycles`` mesh periods."""
+    """Displacement and velocity of pinion and gear centres over the last ``cycles`` mesh periods.
+
+    x and y each get their own panel (own scale): on one axis the smaller one hid under the other.
+    """
     plt = _pyplot()
-    t_end = res.t[-1]
-    sel = res.t >= t_end - cycles / res.mesh_frequency
+    sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
-    fig, axes = plt.subplots(2, 2, figsize=(10, 6), sharex=True)
+    fig, axes = plt.subplots(4, 2, figsize=(10, 9), sharex=True)
+    rows = [("displacement", 0, 1e6, "x − mean [µm]"), ("displacement", 1, 1e6, "y − mean [µm]"),
+            ("velocity", 0, 1e3, "ẋ − mean [mm/s]"), ("velocity", 1, 1e3, "ẏ − mean [mm/s]")]
     for col, member in enumerate(("pinion", "gear")):
-        d = res.member(member, "displacement")[sel]
-        v = res.member(member, "velocity")[sel]
-        for k, ax_name in enumerate("xy"):
-            axes[0, col].plot(t_ms, (d[:, k] - d[:, k].mean()) * 1e6, label=ax_name)
-            axes[1, col].plot(t_ms, (v[:, k] - v[:, k].mean()) * 1e3, label=ax_name)
+        for row, (kind, k, scale, label) in enumerate(rows):
+            q = res.member(member, kind)[sel, k]
+            axes[row, col].plot(t_ms, (q - q.mean()) * scale, color=f"C{k}", lw=1.0)
+            axes[row, col].set_ylabel(label)
+            axes[row, col].grid(alpha=0.3)
         axes[0, col].set_title(f"{member} centre")
-        axes[0, col].set_ylabel("displacement − mean [µm]")
-        axes[1, col].set_ylabel("velocity − mean [mm/s]")
-        axes[1, col].set_xlabel("t [ms]")
-        axes[0, col].legend()
+        axes[-1, col].set_xlabel("t [ms]")
     return _save(fig, path)
 
 
 def plot_mesh_force(res: Response, path, cycles: float = 5.0) -> Path:
+    """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference."""
     plt = _pyplot()
-    sel = res.t >= res.t[-1] - cycles / res.mesh_frequency
+    sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
-    fig, ax = plt.subplots(figsize=(8, 4))
-    for s, side in enumerate(("left", "right")):
-        ax.plot(t_ms, res.mesh_force[sel, s], label=f"{side} helix")
-    ax.set_xlabel("t [ms]")
+    left, right = res.mesh_force[sel, 0], res.mesh_force[sel, 1]
+    fig, (ax, ax_d) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    ax.plot(t_ms, left, color="C0", lw=2.5, alpha=0.6, label="left helix")
+    ax.plot(t_ms, right, color="C3", lw=1.2, ls="--", label="right helix")
     ax.set_ylabel("dynamic mesh force N [N]")
     ax.legend()
+    diff = right - left
+    ax_d.plot(t_ms, diff, color="k", lw=1.0)
+    same = np.max(np.abs(diff)) <= 1e-9 * max(np.max(np.abs(left)), 1.0)
+    ax_d.set_ylabel("right − left [N]")
+    ax_d.set_title("the helices carry equal forces (stagger 0)" if same else "", fontsize=9)
+    ax_d.set_xlabel("t [ms]")
+    for a in (ax, ax_d):
+        a.grid(alpha=0.3)
     return _save(fig, path)
 
 
-def plot_phase_planes(res: Response, path) -> Path:
-    """Velocity against displacement (about their means) of pinion and gear in x and y."""
+def _smooth_orbit(t: np.ndarray, d: np.ndarray, v: np.ndarray, upsample: int = 8) -> tuple[np.ndarray, np.ndarray]:
+    """Displacement by cubic Hermite interpolation (its derivative is the velocity) and velocity by a
+    cubic spline, ``upsample`` points per time step: the orbit between the integrator's steps."""
+    from scipy.interpolate import CubicHermiteSpline, CubicSpline
+
+    tf = np.linspace(t[0], t[-1], (len(t) - 1) * upsample + 1)
+    return CubicHermiteSpline(t, d, v)(tf), CubicSpline(t, v)(tf)
+
+
+def plot_phase_planes(res: Response, path, cycles: float = 10.0) -> Path:
+    """Velocity against displacement (about their means) of pinion and gear, x and y in separate panels,
+    over the last ``cycles`` mesh periods, interpolated between the time steps."""
     plt = _pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.5))
+    sel = _last_cycles(res, cycles)
+    t = res.t[sel]
+    fig, axes = plt.subplots(2, 2, figsize=(10, 8))
     for col, member in enumerate(("pinion", "gear")):
-        d = res.member(member, "displacement")
-        v = res.member(member, "velocity")
-        for k, ax_name in enumerate("xy"):
-            axes[col].plot((d[:, k] - d[:, k].mean()) * 1e6, (v[:, k] - v[:, k].mean()) * 1e3, lw=0.6, label=ax_name)
-        axes[col].set_title(f"{member}: phase plane")
-        axes[col].set_xlabel("displacement [µm]")
-        axes[col].set_ylabel("velocity [mm/s]")
-        axes[col].legend()
+        d = res.member(member, "displacement")[sel]
+        v = res.member(member, "velocity")[sel]
+        for row, ax_name in enumerate("xy"):
+            x, xd = _smooth_orbit(t, d[:, row] - d[:, row].mean(), v[:, row] - v[:, row].mean())
+            ax = axes[row, col]
+            ax.plot(x * 1e6, xd * 1e3, lw=0.8, color=f"C{row}")
+            ax.set_title(f"{member}, {ax_name}: phase plane ({cycles:g} mesh periods)", fontsize=10)
+            ax.set_xlabel(f"{ax_name} − mean [µm]")
+            ax.set_ylabel(f"velocity {ax_name} − mean [mm/s]")
+            ax.grid(alpha=0.3)
     return _save(fig, path)
 
 

@@ -6,12 +6,15 @@ from pathlib import Path
 
 
 def save_figure(fig, path: str | Path, dpi: int = 120) -> Path:
-    """Lay out, save as PNG (creating the folder) and close a matplotlib figure."""
+    """Lay out, save as PNG atomically (creating the folder, mode 0644) and close a figure."""
     import matplotlib.pyplot as plt
 
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=dpi)
-    plt.close(fig)
-    return path
+    from femgear.io.atomic import atomic_write
+
+    try:
+        fig.tight_layout()
+        with atomic_write(path, "wb") as fh:
+            fig.savefig(fh, format="png", dpi=dpi)
+    finally:
+        plt.close(fig)
+    return Path(path)
