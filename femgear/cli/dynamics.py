@@ -37,8 +37,21 @@ def _run(args: argparse.Namespace) -> int:
     from femgear.case import build_case
     from femgear.scene import load_scene
 
+    from femgear.cli.limits import finite
+    from femgear.errors import ArgumentError
+    from femgear.io.paths import child_path, prepare_output_dir
+
+    if args.dt is not None:
+        finite("--dt", args.dt, positive=True)
+    finite("--cycles", args.cycles, positive=True)
+    finite("--transient", args.transient, nonnegative=True)
+    if args.transient >= args.cycles:
+        raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
     case = build_case(load_scene(args.scene, args.overrides))
-    out = args.out or Path("out") / case.name / "dynamics"
+    if args.out is None:
+        out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
+    else:
+        out = prepare_output_dir(args.out, "--out")
     if args.sweep:
         return _sweep(case, args, out)
     if args.kahraman_singh:
@@ -80,13 +93,16 @@ def _sweep(case, args, out: Path) -> int:
     from femgear.dynamics import build_model
     from femgear.dynamics.modal import modal_analysis
     from femgear.dynamics.sweep import speed_sweep
-    from femgear.errors import FemgearError
+    from femgear.errors import ArgumentError
 
     try:
         a, b, n = args.sweep.split(":")
-        rpm = np.linspace(float(a), float(b), int(n))
+        lo, hi, count = float(a), float(b), int(n)
     except ValueError:
-        raise FemgearError(f"--sweep: expected RPM0:RPM1:N, got {args.sweep!r}") from None
+        raise ArgumentError("--sweep", f"expected RPM0:RPM1:N, got {args.sweep!r}") from None
+    if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= hi and count >= 1):
+        raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {args.sweep!r}")
+    rpm = np.linspace(lo, hi, count)
     kw = {"level": args.level, "stiffness": args.stiffness}
     sw = speed_sweep(case, rpm, method=args.method, **kw)
     modal = modal_analysis(build_model(case, **kw))

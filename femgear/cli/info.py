@@ -31,14 +31,40 @@ def _info(args: argparse.Namespace) -> int:
     return 0
 
 
+#: units of the summary's leaf keys (SI; ``_deg`` keys in degrees); keys not listed are dimensionless
+UNITS = {
+    "transverse_module": "m", "base_pitch_transverse": "m", "path_of_contact_length": "m", "centre_distance": "m",
+    "reference_radius": "m", "base_radius": "m", "tip_radius": "m", "root_radius": "m",
+    "working_pitch_radius": "m", "radius": "m", "face_width": "m", "hertz_half_width": "m", "film_central": "m",
+    "film_central_dowson_toyoda": "m", "film_minimum_dowson_higginson": "m", "min_film_minimum": "m",
+    "max_hertz_pressure_position": "m", "u_B": "m", "u_D": "m",
+    "mesh_frequency": "Hz", "normal_force": "N", "tangential_load": "N",
+    "load_per_length": "N/m", "line_load": "N/m", "max_line_load": "N/m",
+    "hertz_pressure": "Pa", "max_hertz_pressure": "Pa", "sigma_H": "Pa", "sigma_H0": "Pa", "sigma_HP": "Pa",
+    "sigma_Hlim": "Pa", "entrainment_speed": "m/s", "max_sliding_speed": "m/s", "pitch_line_velocity": "m/s",
+    "input_power": "W", "mean_loss": "W", "energy_per_mesh_cycle": "J", "max_loss_density": "W/m",
+}
+
+
+def unit_of(key: str) -> str:
+    """The unit of a summary key ('' when dimensionless)."""
+    return "deg" if key.endswith("_deg") else UNITS.get(key, "")
+
+
+def _label(key: str) -> str:
+    unit = unit_of(key)
+    return f"{key} [{unit}]" if unit else key
+
+
 def _print_tree(d: dict, indent: int = 0) -> None:
     for key, value in d.items():
         if isinstance(value, dict):
             print(" " * indent + f"{key}:")
             _print_tree(value, indent + 2)
         elif isinstance(value, list):
-            print(" " * indent + f"{key}: " + ", ".join(f"{v:.6g}" for v in value))
+            print(" " * indent + f"{_label(key)}: " + ", ".join(
+                f"{v:.6g}" if isinstance(v, (int, float)) else str(v) for v in value))
         elif isinstance(value, float):
-            print(" " * indent + f"{key}: {value:.6g}")
+            print(" " * indent + f"{_label(key)}: {value:.6g}")
         else:
-            print(" " * indent + f"{key}: {value}")
+            print(" " * indent + f"{_label(key)}: {value}")
