@@ -7,7 +7,8 @@ One error boundary (:func:`main`): every expected failure ends with one line on
 stderr naming the key or argument, and an exit code
 
 - 2: the input is wrong (bad scene, bad argument, unwritable output, over the memory
-  budget: :class:`femgear.errors.FemgearError`, argparse errors);
+  budget: :class:`femgear.errors.FemgearError`, argparse errors) or the output could
+  not be written (a full disk: every file is written atomically, so none is left corrupt);
 - 1: a solver failed (:class:`femgear.errors.ConvergenceError`), or an internal error;
 - 130: interrupted (Ctrl-C or SIGTERM).
 
@@ -130,6 +131,12 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # stdout closed early (| head): not an error of the run
         sys.stderr.close()
         return 0
+    except OSError as exc:  # a full disk, a file that vanished: one line naming the file
+        if args.debug:
+            raise
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"femgear: error: {where}{exc.strerror or exc} (nothing was left half-written)", file=sys.stderr)
+        return EXIT_INPUT
     except Exception as exc:
         if args.debug:
             raise

@@ -47,6 +47,8 @@ def _run(args: argparse.Namespace) -> int:
     finite("--transient", args.transient, nonnegative=True)
     if args.transient >= args.cycles:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
+    if args.sweep:
+        sweep_speeds(args.sweep)
     case = build_case(load_scene(args.scene, args.overrides))
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
@@ -87,22 +89,28 @@ def _print_modes(modal) -> None:
         print(f"{i:4d} {f:9.1f} {modal.energy['mesh'][i]:11.2f}  {modal.dominant_group(i)}")
 
 
-def _sweep(case, args, out: Path) -> int:
+def sweep_speeds(text: str):
+    """``RPM0:RPM1:N`` as N speeds [rpm]; :class:`ArgumentError` naming ``--sweep`` otherwise."""
     import numpy as np
 
-    from femgear.dynamics import build_model
-    from femgear.dynamics.modal import modal_analysis
-    from femgear.dynamics.sweep import speed_sweep
     from femgear.errors import ArgumentError
 
     try:
-        a, b, n = args.sweep.split(":")
+        a, b, n = text.split(":")
         lo, hi, count = float(a), float(b), int(n)
     except ValueError:
-        raise ArgumentError("--sweep", f"expected RPM0:RPM1:N, got {args.sweep!r}") from None
+        raise ArgumentError("--sweep", f"expected RPM0:RPM1:N, got {text!r}") from None
     if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= hi and count >= 1):
-        raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {args.sweep!r}")
-    rpm = np.linspace(lo, hi, count)
+        raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {text!r}")
+    return np.linspace(lo, hi, count)
+
+
+def _sweep(case, args, out: Path) -> int:
+    from femgear.dynamics import build_model
+    from femgear.dynamics.modal import modal_analysis
+    from femgear.dynamics.sweep import speed_sweep
+
+    rpm = sweep_speeds(args.sweep)
     kw = {"level": args.level, "stiffness": args.stiffness}
     sw = speed_sweep(case, rpm, method=args.method, **kw)
     modal = modal_analysis(build_model(case, **kw))

@@ -63,18 +63,16 @@ def _check_arguments(args, lowest_level: int) -> None:
 
 
 def _point(args) -> int:
-    from femgear.ehl.point import solve_point
-
     _check_arguments(args, lowest_level=1)
+    from femgear.ehl.point import solve_point
 
     return _run(args, lambda: solve_point(args.M, args.L, level=args.level, tol=args.tol,
                                           ratio=args.ellipticity, **_options(args)))
 
 
 def _line(args) -> int:
-    from femgear.ehl.line import solve_line
-
     _check_arguments(args, lowest_level=2)
+    from femgear.ehl.line import solve_line
 
     return _run(args, lambda: solve_line(args.M, args.L, level=args.level, tol=args.tol,
                                          **_options(args)))
