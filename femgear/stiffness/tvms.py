@@ -11,6 +11,7 @@ Convention (what the dynamics model consumes):
   normal to the teeth (δ_n = δ_t cos β_b for a transverse approach δ_t).
 - The right helix is the left one shifted by ``stagger`` base pitches:
   k_right(φ) = k_left(φ + stagger), as in :func:`femgear.geometry.double_helical_contact`.
+- A single-helical or spur pair (``pair.kind``) has one mesh: ``k_left``; ``k_right`` is 0.
 
 Slicing (notes §5; Ajmi & Velex 2005 for its limits): each helix is cut into N
 transverse slices of width Δb; slice j at ζ_j = (j + ½)Δb is a spur pair whose teeth
@@ -67,6 +68,8 @@ class MeshStiffness:
     def ripple(self, helix: str = "total") -> float:
         """Peak-to-peak over mean of the left, right or total stiffness [-]."""
         k = {"left": self.k_left, "right": self.k_right, "total": self.k_total}[helix]
+        if not np.any(k):
+            return 0.0   # the absent right helix of a single-helical or spur pair
         return float((k.max() - k.min()) / k.mean())
 
     def at(self, phase, helix: str = "total"):
@@ -145,7 +148,8 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
             k = iso.k("c_gamma_alpha") / math.cos(pair.beta_b) ** 2
             info["iso"] = iso
         kl = np.full(n_positions, k)
-        return MeshStiffness(level, phases, kl, kl.copy(), stagger, 0, time.perf_counter() - t0, info)
+        kr = kl.copy() if pair.n_helices == 2 else np.zeros(n_positions)
+        return MeshStiffness(level, phases, kl, kr, stagger, 0, time.perf_counter() - t0, info)
     u_grid = np.linspace(pair.u_start, pair.u_end, 161)
     if level == "pem":
         from femgear.stiffness.pem import pair_stiffness_per_width
@@ -163,8 +167,9 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
         k_grid = tabulated(pair, u_fe, k_fe)(u_grid)
     info.update(u=u_grid, k_pair_per_width=k_grid)
     k_unit = tabulated(pair, u_grid, k_grid)
+    n_slices = 1 if pair.beta_b == 0 else n_slices     # spur: every slice sees the same position
     kl = helix_stiffness(pair, k_unit, phases, n_slices)
-    kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger)
+    kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
     return MeshStiffness(level, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)
 
 

@@ -100,3 +100,11 @@ def test_cli_prints_one_line():
 def test_double_helical_default_kind_unchanged(baseline_pair):
     assert baseline_pair.kind == "double-helical" and baseline_pair.n_helices == 2
     assert math.degrees(baseline_pair.beta) == pytest.approx(30.0)
+
+
+def test_dynamics_and_wear_refused_for_one_mesh_pairs():
+    """Until the dynamics and wear models carry one mesh, a spur/single-helical pair with them is one clear line."""
+    err = _error(FZG, "physics.dynamics=lumped")
+    assert err.key == "physics.dynamics" and "spur" in str(err)
+    err = _error(FZG, "physics.wear=archard")
+    assert err.key == "physics.wear"
