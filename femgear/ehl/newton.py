@@ -36,7 +36,7 @@ MAX_LOG_ETA = 4.0
 WATCHDOG = 4
 ILU_DROP, ILU_FILL = 1e-4, 3.0
 LOCAL_RADIUS = 2  # elastic kernel kept in the local (smoother) Jacobian
-REBUILD_KRYLOV = 10  # rebuild the preconditioner when GMRES needed more iterations
+REBUILD_KRYLOV = 30  # rebuild the preconditioner when GMRES needed more iterations
 
 
 @dataclass
@@ -86,7 +86,8 @@ def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case
     raise ConvergenceError(case, "line search failed (residual does not decrease)", hist.as_dict())
 
 
-def _converged(level: Level, PI, H0, dP, dH0, F, alpha, tol, merit: float) -> bool:
+def _converged(level: Level, PI, H0, dP, dH0, F, alpha, tol, merit: float,
+               residual_tol: float = RESIDUAL_TOL) -> bool:
     """A full step that was small (|dP| <= tol max P, |dH0| <= tol (|H0| + 1)), or a full
     step onto a scaled residual below ``RESIDUAL_TOL`` (the step test lags one quadratic
     iteration behind); both with the load balanced to 1e-6."""
@@ -95,7 +96,7 @@ def _converged(level: Level, PI, H0, dP, dH0, F, alpha, tol, merit: float) -> bo
     if alpha != 1.0 or load_err >= 1e-6:
         return False
     small_step = np.max(np.abs(dP)) <= tol * max(1.0, np.max(PI)) and abs(dH0) <= tol * Hc_scale
-    return bool(small_step or merit < RESIDUAL_TOL)
+    return bool(small_step or merit < residual_tol)
 
 
 def _record(hist: History, level: Level, F, scale, alpha, kry):
@@ -107,7 +108,7 @@ def _record(hist: History, level: Level, F, scale, alpha, kry):
 
 
 def _newton(level: Level, PI, H0, direction: Callable, max_iter: int, tol: float,
-            case: str) -> tuple[np.ndarray, float, History]:
+            case: str, residual_tol: float = RESIDUAL_TOL) -> tuple[np.ndarray, float, History]:
     """Generic damped Newton loop; ``direction(PI, H0, F, lin, s, act)`` -> (dx, krylov its)."""
     hist = History()
     F, lin, H, s, act = level.evaluate(PI, H0)
@@ -122,13 +123,15 @@ def _newton(level: Level, PI, H0, direction: Callable, max_iter: int, tol: float
         dP, dH0 = dx[:-1], float(dx[-1])
         PI, H0, F, lin, H, act, alpha = _line_search(level, PI, H0, F, dP, dH0, s, scale, hist, case)
         _record(hist, level, F, scale, alpha, its)
-        if _converged(level, PI, H0, alpha * dP, alpha * dH0, F, alpha, tol, hist.residual[-1]):
+        if _converged(level, PI, H0, alpha * dP, alpha * dH0, F, alpha, tol, hist.residual[-1],
+                      residual_tol):
             return PI, H0, hist
     raise ConvergenceError(case, f"no convergence in {max_iter} Newton iterations", hist.as_dict())
 
 
 def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
-                 tol: float = 1e-7, case: str = "ehl") -> tuple[np.ndarray, float, History]:
+                 tol: float = 1e-7, case: str = "ehl",
+                 residual_tol: float = RESIDUAL_TOL) -> tuple[np.ndarray, float, History]:
     """Newton with the exact dense Jacobian (coarse grids, line contacts)."""
     Kd = level.dense_kernel()
 
@@ -139,7 +142,7 @@ def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
         except (sla.LinAlgError, ValueError) as exc:
             raise ConvergenceError(case, f"singular Jacobian ({exc})") from exc
 
-    return _newton(level, PI, H0, direction, max_iter, tol, case)
+    return _newton(level, PI, H0, direction, max_iter, tol, case, residual_tol)
 
 
 class _PrecLevel:
@@ -212,19 +215,32 @@ def _inject(coarse: Level, fine: Level, PI: np.ndarray) -> np.ndarray:
 class MultilevelPreconditioner:
     """V-cycle over ``levels`` (coarsest first): ILU smoothing of the local Jacobian on
     each level, dense LU of the full Jacobian on the coarsest; bilinear prolongation,
-    its transpose as restriction. Applied to unscaled residuals."""
+    its transpose as restriction. Applied to unscaled residuals.
+
+    ``reuse`` maps a Level to a factorised :class:`_PrecLevel` kept from an earlier solve
+    (the nested iteration's coarser levels, factorised at their own solutions): those are
+    taken as they are, the others are built at the injected state and stored there, and
+    the finest level's is always rebuilt at the current state and stored."""
 
     def __init__(self, levels: list[Level], transfers: list[sp.csr_matrix], PI, H0,
-                 lin, act, radius: int | None = None):
+                 lin, act, radius: int | None = None, reuse: dict | None = None):
         self.transfers = transfers
         radius = LOCAL_RADIUS if radius is None else radius
-        states = [PI]
-        for k in range(len(levels) - 1, 0, -1):
-            states.insert(0, _inject(levels[k - 1], levels[k], states[0]))
+        reuse = {} if reuse is None else reuse
         nl = len(levels)
-        self.lv = [_PrecLevel(l, p, H0, dense=(k == 0), radius=radius,
-                              lin=lin if k == nl - 1 else None, act=act if k == nl - 1 else None)
-                   for k, (l, p) in enumerate(zip(levels, states))]
+        states = [PI]
+        for k in range(nl - 1, 0, -1):
+            states.insert(0, _inject(levels[k - 1], levels[k], states[0]))
+        self.lv = []
+        for k in range(nl):
+            lv = levels[k]
+            if k < nl - 1 and lv in reuse:
+                self.lv.append(reuse[lv])
+                continue
+            fine = k == nl - 1
+            reuse[lv] = _PrecLevel(lv, states[k], H0, dense=(k == 0), radius=radius,
+                                   lin=lin if fine else None, act=act if fine else None)
+            self.lv.append(reuse[lv])
 
     def vcycle(self, k: int, r: np.ndarray) -> np.ndarray:
         L = self.lv[k]
@@ -244,9 +260,17 @@ class MultilevelPreconditioner:
 
 
 def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: int = 30,
-                  tol: float = 1e-7, krylov_rtol: float = 1e-4, restart: int = 30,
-                  maxiter_krylov: int = 300, case: str = "ehl"):
-    """Newton on the finest of ``levels`` with GMRES + :class:`MultilevelPreconditioner`."""
+                  tol: float = 1e-7, krylov_rtol: float = 1e-4, restart: int = 60,
+                  maxiter_krylov: int = 300, case: str = "ehl", reuse: dict | None = None,
+                  residual_tol: float = RESIDUAL_TOL):
+    """Newton on the finest of ``levels`` with GMRES + :class:`MultilevelPreconditioner`.
+
+    The preconditioner is factorised once and kept across Newton steps until GMRES needs
+    more than :data:`REBUILD_KRYLOV` iterations; ``reuse`` (see the preconditioner) carries
+    factorised levels between the solves of a nested iteration or a sequence.
+    GMRES is stopped at the Eisenstat & Walker (1996, choice 2) forcing term
+    eta_k = 0.9 (|F_k|/|F_(k-1)|)^2, safeguarded, within [``krylov_rtol``, 0.1]: loose far
+    from the solution, tight near it, so that Newton keeps its quadratic rate."""
     fine = levels[-1]
     transfers = [_transfer(levels[k], levels[k + 1]) for k in range(len(levels) - 1)]
 
@@ -254,7 +278,8 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
 
     def direction(PI, H0, F, lin, s, act):
         if "prec" not in cache or cache["its"] > REBUILD_KRYLOV:
-            cache["prec"] = MultilevelPreconditioner(levels, transfers, PI, H0, lin, act)
+            cache["prec"] = MultilevelPreconditioner(levels, transfers, PI, H0, lin, act,
+                                                     reuse=reuse)
             Jf = cache["prec"].lv[-1]
         else:
             Jf = _PrecLevel(fine, PI, H0, dense=False, radius=0, lin=lin, act=act, factor=False)
@@ -271,11 +296,29 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
         def cb(_):
             count[0] += 1
 
-        dx, info = spla.gmres(A, rhs, M=M, rtol=krylov_rtol, restart=restart,
+        eta = _forcing(cache, float(np.linalg.norm(F)), krylov_rtol)
+        dx, info = spla.gmres(A, rhs, M=M, rtol=eta, restart=restart,
                               maxiter=maxiter_krylov, callback=cb, callback_type="pr_norm")
         if info < 0:
             raise ConvergenceError(case, "GMRES breakdown")
+        # the active (cavitated) rows of the Jacobian are identity rows: their components
+        # are exact, whatever the GMRES tolerance (P = 0 there after a full step)
+        dx[:-1][act] = rhs[:-1][act]
         cache["its"] = count[0] if info == 0 else 10**6
         return dx, count[0]
 
-    return _newton(fine, PI, H0, direction, max_iter, tol, case)
+    return _newton(fine, PI, H0, direction, max_iter, tol, case, residual_tol)
+
+
+def _forcing(cache: dict, norm_f: float, floor: float) -> float:
+    """Eisenstat-Walker choice 2 (gamma 0.9, alpha 2) with its safeguard, in [floor, 0.1]."""
+    prev, eta_prev = cache.get("norm_f"), cache.get("eta")
+    if prev is None:
+        eta = 0.1
+    else:
+        eta = 0.9 * (norm_f / prev) ** 2
+        if 0.9 * eta_prev**2 > 0.1:
+            eta = max(eta, 0.9 * eta_prev**2)
+    eta = min(0.1, max(floor, eta))
+    cache["norm_f"], cache["eta"] = norm_f, eta
+    return eta

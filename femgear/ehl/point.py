@@ -118,6 +118,7 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
 
     levels = _LazyLevels(lambda k: make(M, 1.0, k), coarse_level, level)
     hist = History()
+    factorised: dict = {}  # Level -> factorised preconditioner level, kept across levels
 
     def nvm_hertz(M_: float) -> float:
         """NVM central film in Hertzian units."""
@@ -132,7 +133,8 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
         if len(lvs) == 1:
             PI, H0, h = newton_dense(lvs[0], PI, H0, max_iter=max_iter, tol=newton_tol, case=case)
         else:
-            PI, H0, h = newton_krylov(lvs, PI, H0, max_iter=max_iter, tol=newton_tol, case=case)
+            PI, H0, h = newton_krylov(lvs, PI, H0, max_iter=max_iter, tol=newton_tol, case=case,
+                                      reuse=factorised)
         hist.extend(h)
         return PI, H0
 

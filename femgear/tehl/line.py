@@ -131,7 +131,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     def resolve(theta):
         T_nodes = T_bulk + np.interp(X * b, xc, theta.mean(axis=1))
         rheo.state["node"] = T_nodes
-        rheo.state["quad"] = np.asarray(lv.reynolds.basis.interpolate(T_nodes))
+        rheo.state["quad"] = lv.reynolds.basis.interpolate(T_nodes)
         sol["PI"], sol["H0"], hist = newton_dense(lv, sol["PI"], sol["H0"], tol=newton_tol, case=case)
         sol["P"], sol["H"] = lv.film(sol["PI"], sol["H0"])
         return len(hist.residual)

@@ -119,7 +119,7 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
             s = 2 ** (len(levels) - 1 - k)
             Tk = Tn[::s, ::s].ravel()
             rh.state["node"] = Tk
-            rh.state["quad"] = np.asarray(lv.reynolds.basis.interpolate(Tk))
+            rh.state["quad"] = lv.reynolds.basis.interpolate(Tk)
         sol["PI"], sol["H0"], hist = newton_krylov(levels, sol["PI"], sol["H0"], tol=newton_tol, case=case)
         P, H = fine.film(sol["PI"], sol["H0"])
         sol["P"], sol["H"] = P.reshape(g.ny, g.nx), H.reshape(g.ny, g.nx)
