@@ -15,8 +15,9 @@ file renamed into place), the ``.pvd`` last, so that a collection that exists is
   length of the contact line, so the fields are uniform across the face width.
 - ``dynamics.pvd`` (with a dynamics level): the last simulated mesh cycle as a time
   series: the working pitch circles of the four helix halves, with the vector
-  ``displacement`` = d + θ × r of each body's six DOFs [m] (use *Warp By Vector*
-  with a large scale factor to see it) and the helix's ``mesh_force`` [N].
+  ``displacement`` = d + θ × r of each body's six DOFs [m] (it includes the static
+  torsional wind-up), ``vibration`` = the same about its mean over the cycle [m] (use
+  *Warp By Vector* with a large scale factor to see it) and the helix's ``mesh_force`` [N].
 
 Geometry (SI, the frame of :mod:`femgear.dynamics.layout`): shafts along z, pinion at
 the origin, gear at (a_w, 0); the flanks touch at the pitch point (r_w1, 0) on the

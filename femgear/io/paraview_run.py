@@ -75,11 +75,14 @@ def dynamics_frames(result: RunResult) -> list[Frame]:
     points = np.concatenate([p for p, _ in rings])
     seg = np.column_stack([np.arange(N_RING), (np.arange(N_RING) + 1) % N_RING])
     lines = np.concatenate([seg + k * N_RING for k in range(len(BODIES))])
+    mean = res.displacement[idx].mean(axis=0)
     frames = []
     for i in idx:
         u = np.concatenate([J @ res.displacement[i, 6 * k: 6 * k + 6] for k, (_, J) in enumerate(rings)])
+        w = np.concatenate([J @ (res.displacement[i] - mean)[6 * k: 6 * k + 6] for k, (_, J) in enumerate(rings)])
         force = np.repeat([res.mesh_force[i, 0], res.mesh_force[i, 1]] * 2, N_RING)
-        mesh = meshio.Mesh(points, [("line", lines)], point_data={"displacement": u, "mesh_force": force})
+        mesh = meshio.Mesh(points, [("line", lines)],
+                           point_data={"displacement": u, "vibration": w, "mesh_force": force})
         frames.append(Frame(time=float(t[i] - t[idx[0]]), part=0, name="response", mesh=mesh))
     return frames
 

@@ -9,6 +9,8 @@ Refused (:class:`femgear.errors.SceneError`):
   relation σ_y ≈ H/3 (Tabor, *The Hardness of Metals*, 1951). For the baseline steel
   (ρ = 7850 kg/m³, H = 6 GPa) that is v ≈ 500 m/s; the fastest turbo gears run at
   about 200 m/s.
+- an oil temperature (ambient, viscosity reference) at or below 138 K, the pole T∞ of
+  the Roelands viscosity-temperature law (Roelands 1966), where the law has no meaning.
 
 Warned (logger ``femgear.scene``):
 
@@ -18,7 +20,7 @@ Warned (logger ``femgear.scene``):
 - eccentricity of a member above the pair's backlash (the teeth then separate or
   jam once per revolution; the dynamics models contact loss, the quasi-static pass
   does not);
-- an ambient temperature more than 60 K from the oil's viscosity reference
+- an ambient temperature below 250 K (below the pour point of gear oils), or more than 60 K from the oil's viscosity reference
   temperature, or above 423 K (150 °C, the upper limit of mineral gear oils): the
   exponential viscosity-temperature law is then an extrapolation.
 """
@@ -37,6 +39,8 @@ MAX_HERTZ_PRESSURE = 3.0e9   # Pa
 MAX_PLAUSIBLE_SPEED = 100.0  # m/s, pitch line
 MAX_OIL_TEMPERATURE = 423.0  # K
 MAX_VISCOSITY_EXTRAPOLATION = 60.0  # K
+MIN_OIL_TEMPERATURE = 250.0  # K, pour point of gear oils
+ROELANDS_POLE = 138.0        # K
 
 
 def tip_speeds(scene: Scene, pair) -> tuple[float, float]:
@@ -51,6 +55,11 @@ def tip_speeds(scene: Scene, pair) -> tuple[float, float]:
 
 def check_operating_limits(scene: Scene, pair) -> None:
     """Raise :class:`SceneError` for an operating point no gear survives."""
+    for key, temperature in (("operating.ambient_temperature", scene.operating.ambient_temperature),
+                             ("oil.reference_temperature", scene.oil_reference_temperature)):
+        if temperature <= ROELANDS_POLE:
+            raise SceneError(key, f"{temperature:g} K is at or below {ROELANDS_POLE:g} K, the pole of the Roelands "
+                                  "viscosity-temperature law; give an absolute temperature in K")
     v_tip = max(tip_speeds(scene, pair))
     rho, hardness = scene.material.density, scene.material.hardness
     v_burst = math.sqrt(hardness / 3.0 / rho)
@@ -81,6 +90,9 @@ def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None =
     if t_amb > MAX_OIL_TEMPERATURE:
         out.append(f"operating.ambient_temperature: {t_amb:g} K is above {MAX_OIL_TEMPERATURE:g} K, "
                    "the upper limit of mineral gear oils")
+    if t_amb < MIN_OIL_TEMPERATURE:
+        out.append(f"operating.ambient_temperature: {t_amb:g} K is below {MIN_OIL_TEMPERATURE:g} K, "
+                   "below the pour point of gear oils")
     if abs(t_amb - t_ref) > MAX_VISCOSITY_EXTRAPOLATION:
         out.append(f"operating.ambient_temperature: {t_amb:g} K is {abs(t_amb - t_ref):.0f} K from the oil's "
                    f"viscosity reference {t_ref:g} K; the viscosity-temperature law is extrapolated")
