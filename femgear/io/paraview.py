@@ -13,6 +13,9 @@ file renamed into place), the ``.pvd`` last, so that a collection that exists is
   the scene computes them, ``friction_coefficient`` [-], ``temperature_rise`` [K],
   ``wear_depth`` [m], ``thermal_deviation`` [m].  The along-path model is per unit
   length of the contact line, so the fields are uniform across the face width.
+- ``body.pvd`` (with ``thermal = "fe"``): the FE gear sections of both members with
+  ``temperature_rise`` [K], ``displacement`` [m] and ``von_mises`` [Pa]
+  (:func:`femgear.io.paraview_run.body_frames`).
 - ``dynamics.pvd`` (with a dynamics level): the last simulated mesh cycle as a time
   series: the working pitch circles of the four helix halves, with the vector
   ``displacement`` = d + θ × r of each body's six DOFs [m] (it includes the static
@@ -82,7 +85,9 @@ def write_collection(folder: str | Path, name: str, frames: Sequence[Frame]) -> 
 
 
 def _check_finite(frame: Frame) -> None:
-    for key, value in frame.mesh.point_data.items():
+    fields = list(frame.mesh.point_data.items())
+    fields += [(k, np.concatenate(v)) for k, v in frame.mesh.cell_data.items()]
+    for key, value in fields:
         if not np.all(np.isfinite(value)):
             raise ValueError(f"paraview: field {key!r} of {frame.name!r} is not finite")
 

@@ -87,13 +87,46 @@ def dynamics_frames(result: RunResult) -> list[Frame]:
     return frames
 
 
+def body_frames(result: RunResult) -> list[Frame]:
+    """``thermal = "fe"``: the FE gear sections of both members at the run's temperature rises.
+
+    The coupling keeps only the flank deviation (unit responses, the problem is linear);
+    the fields are solved once more here, at the converged flank rise and the scene's
+    shaft rise: ``temperature_rise`` [K] and ``displacement`` [m] at the vertices (the P2
+    fields' nodal values), ``von_mises`` [Pa] per triangle.  The gear's section is
+    shifted by the centre distance along x.
+    """
+    import meshio
+
+    from femgear.body.thermal import gear_thermo_elastic
+
+    case, m = result.case, result.case.material
+    frames = []
+    for part, (member, bore) in enumerate(((1, case.bore_radii[0]), (2, case.bore_radii[1]))):
+        fe = gear_thermo_elastic(case.pair, member, result.tribology.flank_temperature_rise,
+                                 case.thermal.shaft_temperature_rise, m.thermal_expansion, m.youngs_modulus,
+                                 m.poisson_ratio, m.conductivity, bore, case.thermal.mesh_size)
+        p = fe.mesh.p
+        points = np.column_stack([p[0] + (case.pair.a_w if member == 2 else 0.0), p[1], np.zeros(p.shape[1])])
+        u = fe.u[fe.basis_u.nodal_dofs]
+        mesh = meshio.Mesh(points, [("triangle", fe.mesh.t.T)],
+                           point_data={"temperature_rise": fe.T[fe.basis_T.nodal_dofs[0]],
+                                       "displacement": np.column_stack([u[0], u[1], np.zeros(p.shape[1])])},
+                           cell_data={"von_mises": [fe.von_mises(m.youngs_modulus, m.poisson_ratio,
+                                                                  m.thermal_expansion)]})
+        frames.append(Frame(time=0.0, part=part, name=("body_pinion", "body_gear")[part], mesh=mesh))
+    return frames
+
+
 def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path]:
-    """Write ``flanks.pvd`` and, with dynamics, ``dynamics.pvd`` into ``out_dir``."""
+    """Write ``flanks.pvd``, with dynamics ``dynamics.pvd``, with ``thermal = "fe"`` ``body.pvd``."""
     out_dir = Path(out_dir)
     files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
+    if result.case.levels.thermal == "fe":
+        files["body_pvd"] = write_collection(out_dir, "body", body_frames(result))
     if result.coupled is not None and result.coupled.state.dynamics is not None:
         files["dynamics_pvd"] = write_collection(out_dir, "dynamics", dynamics_frames(result))
     return files
 
 
-__all__ = ["dynamics_frames", "flank_frames", "write_run_paraview"]
+__all__ = ["body_frames", "dynamics_frames", "flank_frames", "write_run_paraview"]

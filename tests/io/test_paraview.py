@@ -101,3 +101,24 @@ def test_screenshot_of_the_pvd_set_has_content(main_job, tmp_path, monkeypatch):
     assert 0.02 < covered < 0.95, f"{covered:.3f} of the picture differs from the background"
     assert len(np.unique(image.reshape(-1, image.shape[-1]), axis=0)) > 20   # shaded, coloured by a field
     assert os.path.getsize(tmp_path / "flanks.png") > 2000
+
+
+@pytest.mark.slow
+def test_body_pvd_with_fe_thermal(tmp_path):
+    """thermal = "fe": body.pvd holds both gear sections with finite temperature, displacement, stress."""
+    import meshio
+
+    from femgear.cli import main
+
+    out = tmp_path / "fe"
+    assert main(["-q", "run", str(BASE), "--out", str(out), "--no-plots", "--set", 'physics.preset="fast"',
+                 "--set", 'physics.thermal="fe"', "--set", 'physics.dynamics="none"',
+                 "--set", 'physics.coupling="one-way"', "--set", "thermal.flank_temperature_rise=20.0"]) == 0
+    entries = _datasets(out / "body.pvd")
+    assert [e["name"] for e in entries] == ["body_pinion", "body_gear"]
+    for e in entries:
+        mesh = meshio.read(out / e["file"])
+        T = mesh.point_data["temperature_rise"]
+        assert T.max() == pytest.approx(20.0, rel=1e-6)        # the flank's Dirichlet value
+        assert np.all(np.isfinite(mesh.point_data["displacement"]))
+        assert np.all(np.isfinite(mesh.cell_data["von_mises"][0]))
