@@ -13,7 +13,7 @@
 - ``integrate``  :func:`simulate`, one entry point for the integrators:
   ``rk4``        fixed-step RK4 (paper) and its stability limit;
   ``expo``       exponential integrator, exact propagators per mesh phase (the fast one);
-  ``hht``        implicit HHT-α/Newmark with exact Newton on the gap;
+  ``newmark``    implicit HHT-α/Newmark with exact Newton on the gap;
   ``simulation`` the recorded :class:`Simulation` and shared input helpers.
 - ``response``   amplitudes (half peak-to-peak), mesh forces, bearing accelerations,
                  Hanning spectra with mesh orders; frozen :class:`Response`.

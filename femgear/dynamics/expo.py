@@ -200,7 +200,8 @@ def _general_step(model, cache, j, kj, side, dt, y, i2, data, Nn, N_prev):
     return Phi @ y + W0 @ F[0] + Wh @ F[1] + W1 @ F[2] + U @ u
 
 
-def expo(model, steps, dt, q, v, record_every, record_from, substeps=None) -> Simulation:
+def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndarray, record_every: int,
+         record_from: float, substeps: int | None = None) -> Simulation:
     duration = steps * dt
     dt, per = expo_step(model, dt)
     steps = int(round(duration / dt))

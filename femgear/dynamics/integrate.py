@@ -4,7 +4,7 @@
   (dt = 1e-5 s); explicit, so a step above its stability limit is refused.
 - ``expo`` (:mod:`femgear.dynamics.expo`): exponential integrator with exact
   propagators per mesh phase and contact state — the fast one.
-- ``newmark`` (:mod:`femgear.dynamics.hht`): implicit HHT-α / Newmark with exact Newton
+- ``newmark`` (:mod:`femgear.dynamics.newmark`): implicit HHT-α / Newmark with exact Newton
   on the gap, unconditionally stable.
 
 All return a :class:`Simulation` with the recorded states.
@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from femgear.dynamics.expo import expo, expo_step  # noqa: F401  (re-exported)
-from femgear.dynamics.hht import hht
+from femgear.dynamics.newmark import newmark
 from femgear.dynamics.model import GearRotorModel
 from femgear.dynamics.rk4 import first_order_matrix, rk4, stability_limit  # noqa: F401  (re-exported)
 from femgear.dynamics.simulation import Simulation
@@ -71,6 +71,7 @@ def simulate(
         return expo(model, steps, dt, q, v, record_every, record_from, substeps)
     if not -1 / 3 <= alpha <= 0:
         raise ValueError(f"alpha must be in [-1/3, 0] (got {alpha!r})")
-    return hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter)
+    return newmark(model, steps, dt, q, v, record_every=record_every, record_from=record_from, alpha=alpha,
+                   max_iter=max_iter)
 
 

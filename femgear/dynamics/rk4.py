@@ -52,7 +52,8 @@ def stability_limit(model: GearRotorModel) -> float:
     return lo
 
 
-def rk4(model, steps, dt, q, v, record_every, record_from) -> Simulation:
+def rk4(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndarray, record_every: int,
+        record_from: float) -> Simulation:
     n = model.n
     Minv = np.linalg.inv(model.M)
     L = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ model.K, -Minv @ model.C]])

@@ -16,6 +16,7 @@ import time
 
 import numpy as np
 
+from femgear.dynamics.model import GearRotorModel
 from femgear.dynamics.simulation import Simulation, inputs, record_plan
 from femgear.errors import ConvergenceError
 
@@ -54,7 +55,10 @@ def _hht_inputs(model, steps: int, dt: float, alpha: float, J0inv: np.ndarray):
             model.backlash_at(tt).tolist())
 
 
-def hht(model, steps, dt, q, v, record_every, record_from, alpha, max_iter) -> Simulation:
+def newmark(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndarray, *, record_every: int,
+            record_from: float, alpha: float = 0.0, max_iter: int = 20) -> Simulation:
+    """The ``newmark`` integrator: HHT-α (α ∈ [−1/3, 0]; α = 0 is Newmark's average
+    acceleration) with exact Newton on the gap, ``steps`` steps of ``dt`` from (q, v)."""
     n = model.n
     G = model.G
     ap, cq, cv, J0inv, Ta, Tv, Big = _hht_operators(model, dt, alpha)
