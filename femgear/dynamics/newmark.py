@@ -57,8 +57,7 @@ def _hht_inputs(model, steps: int, dt: float, alpha: float, J0inv: np.ndarray):
 
 def newmark(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndarray, *, record_every: int,
             record_from: float, alpha: float = 0.0, max_iter: int = 20) -> Simulation:
-    """The ``newmark`` integrator: HHT-α (α ∈ [−1/3, 0]; α = 0 is Newmark's average
-    acceleration) with exact Newton on the gap, ``steps`` steps of ``dt`` from (q, v)."""
+    """HHT-α (α ∈ [−1/3, 0]; 0: Newmark's average acceleration), exact Newton on the gap."""
     n = model.n
     G = model.G
     ap, cq, cv, J0inv, Ta, Tv, Big = _hht_operators(model, dt, alpha)
@@ -68,8 +67,7 @@ def newmark(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.n
     GPG, GP0, GP1 = G @ PG, G @ P0, G @ P1   # (2, 2): [row r, column s]
     h, gamma, beta = dt, 0.5 - alpha, 0.25 * (1 - alpha) ** 2
     xf, Gxf, kk, ee, eed, AA, BB, bb = _hht_inputs(model, steps, dt, alpha, J0inv)
-    mu = model.mu
-    cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
+    mu, cm = model.mu, (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
 
     # initial acceleration from the equations of motion
     a = model.acceleration(np.array(0.0), q, v)
