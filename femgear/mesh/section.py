@@ -231,7 +231,9 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
         if sides:
             groups_curves["sides"] = sides
         if _extrude is not None:
-            return _twist(gmsh, surf, groups_curves, h, *_extrude)
+            if refine_at is not None:     # graded section (femgear.mesh.segment): size field before the twist
+                _size_field(gmsh, h, refine_at, refine_ratio, refine_radius)
+            return _twist(gmsh, surf, groups_curves, h, *_extrude, graded=refine_at is not None)
         geo.synchronize()
         groups = {name: gmsh.model.addPhysicalGroup(1, cs) for name, cs in groups_curves.items()}
         gmsh.model.addPhysicalGroup(2, [surf])
@@ -240,8 +242,11 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
         return _to_skfem(gmsh, groups)
 
 
-def _twist(gmsh, surf, groups_curves, h, width, angle, layers):
-    """Twist-extrude the section along z (helix), tetrahedra, boundaries from the curve groups."""
+def _twist(gmsh, surf, groups_curves, h, width, angle, layers, graded=False):
+    """Twist-extrude the section along z (helix), tetrahedra, boundaries from the curve groups.
+
+    ``graded``: a size field is already set on the section (keep it; no uniform size).
+    """
     import skfem
 
     geo = gmsh.model.geo
@@ -257,8 +262,9 @@ def _twist(gmsh, surf, groups_curves, h, width, angle, layers):
     groups["end0"], groups["end1"] = [surf], [top]
     tags = {name: gmsh.model.addPhysicalGroup(2, ss) for name, ss in groups.items()}
     gmsh.model.addPhysicalGroup(3, [vol])
-    gmsh.option.setNumber("Mesh.MeshSizeMin", h)
-    gmsh.option.setNumber("Mesh.MeshSizeMax", h)
+    if not graded:
+        gmsh.option.setNumber("Mesh.MeshSizeMin", h)
+        gmsh.option.setNumber("Mesh.MeshSizeMax", h)
     gmsh.model.mesh.generate(3)
     ntags, coords, _ = gmsh.model.mesh.getNodes()
     xyz = coords.reshape(-1, 3)

@@ -9,7 +9,7 @@ level lands, add it to :data:`AVAILABLE` (one edit, here).
 from __future__ import annotations
 
 LEVELS: dict[str, tuple[str, ...]] = {
-    "stiffness": ("constant", "iso6336", "pem", "fe"),
+    "stiffness": ("constant", "iso6336", "pem", "fe", "ltca"),
     "lubrication": ("none", "constant", "formula", "ehl-line", "ehl-point", "tehl"),
     "thermal": ("none", "analytic", "fe"),
     "wear": ("none", "archard"),
@@ -18,7 +18,7 @@ LEVELS: dict[str, tuple[str, ...]] = {
 }
 
 AVAILABLE: dict[str, frozenset[str]] = {
-    "stiffness": frozenset({"constant", "iso6336", "pem", "fe"}),
+    "stiffness": frozenset({"constant", "iso6336", "pem", "fe", "ltca"}),
     "lubrication": frozenset({"none", "constant", "formula", "ehl-line", "tehl"}),
     "thermal": frozenset({"none", "analytic", "fe"}),
     "wear": frozenset({"none", "archard"}),

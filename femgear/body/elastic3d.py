@@ -1,0 +1,136 @@
+"""3-D linear elasticity on a tetrahedral skfem mesh, solved many times with one pyamg hierarchy.
+
+:class:`Elastic3D` assembles K once (P1 or P2 vector tetrahedra, isotropic σ = 2μ ε +
+λ tr ε I), clamps the named ``clamped`` region and builds one smoothed-aggregation
+hierarchy with the six rigid-body modes as near-null space and a ``splu`` coarse
+solver (notes/stack.md: the default ``pinv`` coarse solver is 30× slower with rigid
+modes).  Every load case is then one preconditioned CG solve.
+
+Why AMG and not a factorisation: scipy's SuperLU on a 65 k-DOF P1 tet matrix had not
+finished after 5 min here (3-D fill-in), and CHOLMOD is not in the environment; the
+SA-CG solve costs about one second per load case at 50–100 k DOF (measured by
+``studies/benchmarks/ltca.py``).  Non-convergence raises
+:class:`femgear.errors.ConvergenceError` with the residual history.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from femgear.errors import ConvergenceError
+
+
+def _elasticity_form(lam: float, mu: float):
+    from skfem import BilinearForm
+    from skfem.helpers import ddot, eye, sym_grad, trace
+
+    @BilinearForm
+    def form(u, v, w):
+        eps = sym_grad(u)
+        return ddot(2.0 * mu * eps + lam * eye(trace(eps), 3), sym_grad(v))
+
+    return form
+
+
+def rigid_body_modes_3d(basis) -> np.ndarray:
+    """Three translations and three rotations (about x, y, z) as DOF vectors, shape (N, 6)."""
+    ix, iy, iz = basis.split_indices()
+    x, y, z = basis.doflocs
+    B = np.zeros((basis.N, 6))
+    B[ix, 0] = B[iy, 1] = B[iz, 2] = 1.0
+    B[iy, 3], B[iz, 3] = -z[iy], y[iz]           # rotation about x
+    B[iz, 4], B[ix, 4] = -x[iz], z[ix]           # about y
+    B[ix, 5], B[iy, 5] = -y[ix], x[iy]           # about z
+    return B
+
+
+@dataclass(frozen=True)
+class SolveStats:
+    """Cost of an :class:`Elastic3D` model (seconds, counts)."""
+
+    ndofs: int
+    assembly_seconds: float
+    setup_seconds: float
+    solve_seconds: float
+    solves: int
+    iterations: int        #: CG iterations of all solves together
+
+
+class Elastic3D:
+    """K u = f on a ``MeshTet`` with P``order`` vector elements, ``clamped`` region fixed."""
+
+    def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, order: int = 2,
+                 clamped: str = "bore", tol: float = 1e-8, maxiter: int = 500):
+        from skfem import Basis, ElementTetP1, ElementTetP2, ElementVector
+
+        if order not in (1, 2):
+            raise ValueError(f"order must be 1 or 2, got {order!r}")
+        if clamped not in mesh.boundaries:
+            raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
+        t0 = time.perf_counter()
+        self.mesh, self.order, self.tol, self.maxiter = mesh, order, tol, maxiter
+        self.E, self.nu = youngs_modulus, poisson_ratio
+        elem = ElementVector(ElementTetP2() if order == 2 else ElementTetP1())
+        self.basis = Basis(mesh, elem, intorder=2 * (order - 1) if order == 2 else 1)
+        lam = youngs_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio))
+        mu = youngs_modulus / (2 * (1 + poisson_ratio))
+        K = _elasticity_form(lam, mu).assemble(self.basis).tocsr()
+        fixed = self.basis.get_dofs(mesh.boundaries[clamped]).flatten()
+        self.free = np.setdiff1d(np.arange(self.basis.N), fixed)
+        self.K = K[self.free][:, self.free].tocsr()
+        self.assembly_seconds = time.perf_counter() - t0
+        self._ml = None
+        self.setup_seconds = 0.0
+        self.solve_seconds = 0.0
+        self.solves = 0
+        self.iterations = 0
+
+    def _hierarchy(self):
+        import pyamg
+
+        t0 = time.perf_counter()
+        B = rigid_body_modes_3d(self.basis)[self.free]
+        self._ml = pyamg.smoothed_aggregation_solver(self.K, B=B, coarse_solver="splu", max_coarse=500)
+        self.setup_seconds = time.perf_counter() - t0
+
+    def solve(self, f: np.ndarray, case: str = "3-D elasticity") -> np.ndarray:
+        """Displacement DOF vector (length ``basis.N``) for the load vector ``f`` [N]."""
+        if self._ml is None:
+            self._hierarchy()
+        t0 = time.perf_counter()
+        rhs = f[self.free]
+        hist: list[float] = []
+        x0 = np.zeros_like(rhs)
+        x = self._ml.solve(rhs, x0=x0, tol=self.tol, accel="cg", maxiter=self.maxiter, residuals=hist)
+        res = hist[-1] / max(hist[0], 1e-300) if hist else 0.0
+        if not np.all(np.isfinite(x)) or res > 10 * self.tol:
+            raise ConvergenceError(case, f"SA-CG did not reach tol={self.tol:g} (relative residual {res:.3g})",
+                                   {"residual": hist})
+        u = np.zeros(self.basis.N)
+        u[self.free] = x
+        self.solve_seconds += time.perf_counter() - t0
+        self.solves += 1
+        self.iterations += len(hist) - 1
+        return u
+
+    def probe_matrices(self, points: np.ndarray) -> list:
+        """Sparse point-evaluation matrices (x, y, z component) at ``points`` (3, n): u_c = M_c @ u."""
+        from scipy.sparse import csr_matrix
+
+        mats = []
+        for idx, (_, b) in zip(self.basis.split_indices(), self.basis.split(np.zeros(self.basis.N))):
+            P = b.probes(points).tocoo()
+            mats.append(csr_matrix((P.data, (P.row, idx[P.col])), shape=(points.shape[1], self.basis.N)))
+        return mats
+
+    def probe(self, u: np.ndarray, points: np.ndarray) -> np.ndarray:
+        """Displacement vectors at ``points`` (3, n) → (3, n) [m]."""
+        comps = self.basis.split(u)
+        return np.vstack([b.probes(points) @ c for c, b in comps])
+
+    def stats(self) -> SolveStats:
+        return SolveStats(self.basis.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
+                          self.solves, self.iterations)

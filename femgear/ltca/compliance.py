@@ -1,0 +1,210 @@
+"""Flank compliance of one member: FE bulk influence coefficients minus their half-space part.
+
+Method (the FE + surface-integral split of the LDP/Calyx family; Vijayakar, IJNME 31:525,
+1991; Andersson & Vedmar, JSV 260:195, 2003 for reading the FE below the surface and
+subtracting the half-space part it already holds):
+
+    C = R (G^FE_d − G^HS_d) Rᵀ + H₀
+
+- Unit normal loads, one per node g of a (ρ, z) grid on the loaded flank of the middle
+  tooth, spread as bilinear hats φ_g (total force 1 N); one SA hierarchy
+  (:class:`femgear.body.elastic3d.Elastic3D`) serves all of them.
+- G^FE_d[k][g′, g]: approach (displacement along −n) at depth d(g′) below node g′ of
+  tooth k (k = −(n−1)/2 … (n−1)/2, cyclic offsets) for load g on tooth 0.
+- G^HS_d[g′, g]: the same reading for an elastic half-space under the same hat load
+  (Boussinesq at depth, summed over the FE's own flank quadrature points), tooth 0 only.
+- The difference ``bulk[k]`` is smooth (bending, shear, fillet, rim, neighbour teeth) and
+  is interpolated bilinearly (R) to contact points; H₀, the half-space surface response
+  between contact points of the same tooth (Hertz strips), is added by
+  :mod:`femgear.ltca.contact`.
+
+d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
+tooth near the tip.  Results are cached on disk (``out/cache/ltca`` or
+``$FEMGEAR_CACHE``) under a hash of geometry, material, mesh and grid.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from femgear.geometry.gear import GearPair
+from femgear.ltca.flank import flank_normals, flank_points, half_thickness, roll_range
+from femgear.ltca.halfspace import boussinesq_depth
+from femgear.mesh.segment import SegmentSpec
+
+CACHE_VERSION = 1
+
+
+@dataclass(frozen=True)
+class MemberCompliance:
+    """Bulk influence kernels of one member's loaded flank [m/N]."""
+
+    member: int
+    rho: np.ndarray          #: grid roll distances [m]
+    z: np.ndarray            #: grid face coordinates of the meshed helix [m]
+    offsets: np.ndarray      #: tooth offsets k of the kernels
+    bulk: np.ndarray         #: (n_offsets, n_grid, n_grid): response on tooth k, load on tooth 0; grid index i_rho*n_z + i_z
+    fe_self: np.ndarray      #: G^FE_d on tooth 0 (diagnostics)
+    depth: np.ndarray        #: reading depth per grid node [m]
+    ndofs: int
+    info: dict = field(default_factory=dict)
+
+    def kernel(self, offset: int) -> np.ndarray:
+        hit = np.nonzero(self.offsets == offset)[0]
+        if hit.size == 0:
+            return np.zeros(self.bulk.shape[1:])
+        return self.bulk[hit[0]]
+
+    def weights(self, rho: np.ndarray, z: np.ndarray) -> np.ndarray:
+        """Bilinear interpolation matrix R (n_points, n_grid) at (ρ, z), clamped to the grid."""
+        return _bilinear(self.rho, self.z, np.asarray(rho, float), np.asarray(z, float))
+
+
+def _hat_1d(nodes: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Piecewise-linear hat functions of ``nodes`` at ``x``: (n_nodes, n_x), zero outside the grid."""
+    H = np.zeros((nodes.size, x.size))
+    for i in range(nodes.size):
+        if i > 0:
+            s = (x >= nodes[i - 1]) & (x <= nodes[i])
+            H[i, s] = (x[s] - nodes[i - 1]) / (nodes[i] - nodes[i - 1])
+        if i < nodes.size - 1:
+            s = (x >= nodes[i]) & (x <= nodes[i + 1])
+            H[i, s] = (nodes[i + 1] - x[s]) / (nodes[i + 1] - nodes[i])
+    return H
+
+
+def _bilinear(gr: np.ndarray, gz: np.ndarray, rho: np.ndarray, z: np.ndarray) -> np.ndarray:
+    Hr = _hat_1d(gr, np.clip(rho, gr[0], gr[-1]))
+    Hz = _hat_1d(gz, np.clip(z, gz[0], gz[-1]))
+    return (Hr[:, None, :] * Hz[None, :, :]).reshape(gr.size * gz.size, -1).T
+
+
+def cache_dir() -> Path:
+    return Path(os.environ.get("FEMGEAR_CACHE", "out/cache/ltca"))
+
+
+def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, order: int,
+         n_rho: int, n_z: int, depth: float) -> str:
+    payload = json.dumps({"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
+                          "E": E, "nu": nu, "order": order, "grid": [n_rho, n_z], "depth": depth}, sort_keys=True)
+    return hashlib.sha256(payload.encode()).hexdigest()[:20]
+
+
+def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: float,
+                      poisson_ratio: float, order: int = 1, n_rho: int = 7, n_z: int = 9,
+                      depth: float | None = None, cache: bool = True) -> MemberCompliance:
+    """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present."""
+    d0 = depth if depth is not None else 2.0 * spec.h_tooth
+    key = _key(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
+    path = cache_dir() / f"member{member}-{key}.npz"
+    if cache and path.exists():
+        data = np.load(path, allow_pickle=False)
+        info = json.loads(str(data["info"]))
+        info["cached"] = True
+        return MemberCompliance(member, data["rho"], data["z"], data["offsets"], data["bulk"], data["fe_self"],
+                                data["depth"], int(data["ndofs"]), info)
+    result = _compute(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
+    if cache:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(".tmp.npz")
+        np.savez(tmp, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,
+                 depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info))
+        os.replace(tmp, path)
+    return result
+
+
+def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberCompliance:
+    from skfem import FacetBasis, LinearForm
+
+    from femgear.body.elastic3d import Elastic3D
+    from femgear.mesh.segment import helix_segment
+
+    t0 = time.perf_counter()
+    mesh = helix_segment(pair, member, spec)
+    t_mesh = time.perf_counter() - t0
+    model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=1e-8)
+    rb = pair.rb1 if member == 1 else pair.rb2
+    r0, r1 = roll_range(pair, member)
+    grid_rho = np.linspace(r0, r1, n_rho)
+    grid_z = np.linspace(0.0, pair.b, n_z)
+    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries["loaded_flank"])
+    xq = fb.global_coordinates().value                       # (3, n_facets, n_qp)
+    rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
+    hats = _bilinear(grid_rho, grid_z, rq.ravel(), xq[2].ravel()).T.reshape(n_rho * n_z, *rq.shape)
+    dA = fb.dx                                                # (n_facets, n_qp) quadrature weights × area
+
+    @LinearForm
+    def pressure(v, w):                                       # traction −p n (into the tooth)
+        return -w.p * (w.n[0] * v[0] + w.n[1] * v[1] + w.n[2] * v[2])
+
+    RR, ZZ = np.meshgrid(grid_rho, grid_z, indexing="ij")
+    rho_g, z_g = RR.ravel(), ZZ.ravel()
+    depth = np.minimum(d0, 0.5 * half_thickness(pair, member, rho_g))
+    half = (spec.n_teeth - 1) // 2
+    offsets = np.arange(-half, half + 1)
+    probes = []
+    for k in offsets:
+        p = flank_points(pair, member, rho_g, z_g, int(k))
+        n = flank_normals(pair, member, rho_g, z_g, int(k))
+        x = p - depth * _transverse(n)
+        x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
+        probes.append((model.probe_matrices(x), n))
+    ng = rho_g.size
+    G = np.zeros((offsets.size, ng, ng))
+    for g in range(ng):
+        area = float(np.sum(hats[g] * dA))
+        if area <= 0:
+            raise ValueError(f"flank grid node {g} carries no flank area: the loaded_flank region misses the active flank")
+        f = pressure.assemble(fb, p=hats[g] / area)
+        u = model.solve(f, case=f"flank compliance member {member}, grid node {g}")
+        for i, (mats, n) in enumerate(probes):
+            disp = np.vstack([M @ u for M in mats])
+            G[i, :, g] = -np.sum(disp * n, axis=0)
+    # half-space part of the same reading, tooth 0
+    p0 = flank_points(pair, member, rho_g, z_g, 0)
+    n0 = flank_normals(pair, member, rho_g, z_g, 0)
+    x0 = p0 - depth * _transverse(n0)
+    HS = np.zeros((ng, ng))
+    xq2 = xq.reshape(3, -1)
+    for g in range(ng):
+        area = float(np.sum(hats[g] * dA))
+        w = (hats[g] * dA).ravel() / area
+        s = w > 0
+        v = x0[:, :, None] - xq2[:, s][:, None, :]                     # (3, n_grid, n_q)
+        dn = -np.einsum("ig,igq->gq", n0, v)                           # depth below the tangent plane
+        r = np.sqrt(np.maximum(np.sum(v**2, axis=0) - dn**2, 0.0))
+        HS[:, g] = boussinesq_depth(r, dn, E, nu) @ w[s]
+    bulk = G.copy()
+    mid = int(np.nonzero(offsets == 0)[0][0])
+    bulk[mid] -= HS
+    st = model.stats()
+    info = {"mesh_seconds": t_mesh, "assembly_seconds": st.assembly_seconds, "setup_seconds": st.setup_seconds,
+            "solve_seconds": st.solve_seconds, "solves": st.solves, "cg_iterations": st.iterations,
+            "seconds": time.perf_counter() - t0, "n_tets": int(mesh.t.shape[1]), "order": order,
+            "h_tooth": spec.h_tooth, "cached": False,
+            "asymmetry": float(np.linalg.norm(G[mid] - G[mid].T) / np.linalg.norm(G[mid]))}
+    return MemberCompliance(member, grid_rho, grid_z, offsets, bulk, G[mid], depth, st.ndofs, info)
+
+
+def _transverse(n: np.ndarray) -> np.ndarray:
+    """Unit transverse part of the normals (3, n): the reading depth direction (stays in the section)."""
+    t = n.copy()
+    t[2] = 0.0
+    return t / np.linalg.norm(t, axis=0)
+
+
+def mean_self_compliance(c: MemberCompliance) -> float:
+    """Mean of the diagonal bulk compliance [m/N] (diagnostic)."""
+    mid = int(np.nonzero(c.offsets == 0)[0][0])
+    return float(np.mean(np.diag(c.bulk[mid])))
+
+
+__all__ = ["MemberCompliance", "member_compliance", "cache_dir", "mean_self_compliance"]

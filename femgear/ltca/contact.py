@@ -1,0 +1,180 @@
+"""Contact points of one mesh phase, their compliance matrix, and the unilateral contact solve.
+
+Contact lines (same convention as :func:`femgear.geometry.contact_lines`): a line of a
+helix runs u(ζ) = u₀ + ζ tan β_b over ζ ∈ [0, b] in the helix's own face coordinate
+(the right helix is the mirror image, groove at ζ = b for both), u₀ = u_A − b tan β_b +
+(φ + offset) p_bt + j p_bt.  Each line is clipped to the path [u_A, u_E] and carries
+``n_line`` points over its full width (at least 3 on any piece), with trapezoid lengths
+Δℓ along the line, so the total length varies continuously with the phase.
+
+Compliance between points a, b (both members m, kernel offsets s_m (j_a − j_b) with
+s₁ = −1, s₂ = +1: tooth j of the path is tooth −j of the pinion's and +j of the gear's
+counter-clockwise numbering, :mod:`femgear.ltca.flank`):
+
+    C_ab = Σ_m R_m,a · bulk_m[s_m(j_a − j_b)] · R_m,bᵀ + [j_a = j_b] H₀,ab
+
+H₀ (both bodies): Love's uniform strip 2a × Δℓ as the self term (a = 0.824 b_H
+from the current load, :mod:`femgear.ltca.halfspace`), (1−ν²)/(πE r) between points of
+the same line.  b_H depends on the load: the solve is repeated with updated b_H (secant
+local compliance) until the loads change < 1e-6 relative.
+
+Solve (Conry & Seireg 1971 form): f ≥ 0, g = C f + ε − δ 1 ≥ 0, fᵀg = 0, 1ᵀf = F
+by a primal active set on the bordered system [C_SS −1; −1ᵀ 0][f_S; δ] = [−ε_S; −F],
+with the pinion axially fixed (both helices see the same normal approach δ).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from femgear.errors import ConvergenceError
+from femgear.geometry.gear import GearPair
+from femgear.ltca.halfspace import HERTZ_TO_UNIFORM, hertz_half_width, reduced_modulus, strip_self_compliance, surface_green
+
+
+@dataclass(frozen=True)
+class ContactPoints:
+    """Contact points of both helices at one phase (arrays of equal length)."""
+
+    helix: np.ndarray     #: 0 left, 1 right
+    line: np.ndarray      #: line index j (larger j: further along the path)
+    u: np.ndarray         #: path position [m] (pinion roll distance ρ₁)
+    zeta: np.ndarray      #: face coordinate of the helix [m]
+    length: np.ndarray    #: trapezoid length along the line Δℓ [m]
+
+    @property
+    def size(self) -> int:
+        return int(self.u.size)
+
+
+def phase_points(pair: GearPair, phase: float, stagger: float, n_line: int) -> ContactPoints:
+    """Points on the contact lines of both helices at ``phase`` [base pitches]."""
+    tb = math.tan(pair.beta_b)
+    cb = math.cos(pair.beta_b)
+    span = pair.b * tb
+    k_max = int(math.ceil((pair.g_alpha + span) / pair.p_bt)) + 1
+    cols = {k: [] for k in ("helix", "line", "u", "zeta", "length")}
+    for h, offset in enumerate((0.0, stagger)):
+        shift = ((phase + offset) % 1.0) * pair.p_bt
+        for j in range(-1, k_max + 1):
+            u0 = pair.u_start - span + shift + j * pair.p_bt
+            z_lo = max(0.0, (pair.u_start - u0) / tb)
+            z_hi = min(pair.b, (pair.u_end - u0) / tb)
+            if z_hi <= z_lo + 1e-9 * pair.b:
+                continue
+            n = max(3, int(math.ceil(n_line * (z_hi - z_lo) / pair.b)) + 1)
+            zeta = np.linspace(z_lo, z_hi, n)
+            dz = np.diff(zeta)
+            w = np.zeros(n)
+            w[:-1] += dz / 2
+            w[1:] += dz / 2
+            cols["helix"].append(np.full(n, h))
+            cols["line"].append(np.full(n, j))
+            cols["u"].append(u0 + zeta * tb)
+            cols["zeta"].append(zeta)
+            cols["length"].append(w / cb)
+    arr = {k: np.concatenate(v) for k, v in cols.items()}
+    return ContactPoints(arr["helix"].astype(int), arr["line"].astype(int), arr["u"], arr["zeta"], arr["length"])
+
+
+def bulk_matrix(pair: GearPair, kernels, pts: ContactPoints) -> np.ndarray:
+    """Σ over members of the interpolated bulk kernels between all points (same helix only) [m/N]."""
+    n = pts.size
+    C = np.zeros((n, n))
+    same_helix = pts.helix[:, None] == pts.helix[None, :]
+    dj = pts.line[:, None] - pts.line[None, :]
+    for member, sign in ((1, -1), (2, 1)):
+        kern = kernels[member]
+        rho = pts.u if member == 1 else pair.line_of_action - pts.u
+        R = kern.weights(rho, pts.zeta)
+        for d in np.unique(dj[same_helix]):
+            mask = same_helix & (dj == d)
+            K = kern.kernel(int(sign * d))
+            C[mask] += (R @ K @ R.T)[mask]
+    return C
+
+
+def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float, nu: float) -> np.ndarray:
+    """H₀ of both bodies: Hertz-strip self terms and surface Boussinesq terms along each line [m/N]."""
+    cb = math.cos(pair.beta_b)
+    rho1 = pts.u
+    rho2 = pair.line_of_action - pts.u
+    R = (rho1 * rho2) / (rho1 + rho2) / cb
+    w = np.maximum(load, 1e-12) / pts.length
+    a = HERTZ_TO_UNIFORM * hertz_half_width(w, R, reduced_modulus(E, nu))
+    same = (pts.helix[:, None] == pts.helix[None, :]) & (pts.line[:, None] == pts.line[None, :])
+    r = np.abs(pts.zeta[:, None] - pts.zeta[None, :]) / cb
+    H = np.zeros((pts.size, pts.size))
+    off = same & (r > 0)
+    H[off] = 2 * surface_green(r[off], E, nu)
+    H[np.diag_indices(pts.size)] = 2 * strip_self_compliance(a, pts.length / 2, E, nu)
+    return H
+
+
+@dataclass(frozen=True)
+class ContactSolution:
+    load: np.ndarray      #: normal force per point [N]
+    approach: float       #: rigid normal approach δ [m]
+    gap: np.ndarray       #: loaded gap g ≥ 0 [m]
+    iterations: int
+
+
+def solve_contact(C: np.ndarray, eps: np.ndarray, force: float, case: str = "LTCA contact",
+                  active: np.ndarray | None = None, max_iter: int = 200) -> ContactSolution:
+    """Active-set solution of the unilateral contact problem for the total normal force ``force`` [N]."""
+    n = eps.size
+    if force <= 0:
+        raise ValueError(f"force must be positive, got {force}")
+    S = np.zeros(n, bool)
+    if active is not None and active.any():
+        S[:] = active
+    else:
+        S[np.argsort(eps)[: max(1, n // 4)]] = True
+    scale = float(np.mean(np.diag(C)))
+    hist = []
+    for it in range(1, max_iter + 1):
+        idx = np.nonzero(S)[0]
+        m = idx.size
+        A = np.zeros((m + 1, m + 1))
+        A[:m, :m] = C[np.ix_(idx, idx)] / scale
+        A[:m, m] = -1.0
+        A[m, :m] = -1.0
+        rhs = np.concatenate([-eps[idx], [-force * scale]])      # unknowns: x = f·scale [m] and δ [m]
+        x = np.linalg.solve(A, rhs)
+        f = np.zeros(n)
+        f[idx] = x[:m] / scale
+        delta = x[m]
+        if f.min() < -1e-12 * force:
+            worst = idx[np.argmin(x[:m])]
+            neg = idx[x[:m] < 0]
+            S[neg if neg.size < m else [worst]] = False
+            hist.append(float(f.min()))
+            continue
+        f = np.maximum(f, 0.0)
+        g = C @ f + eps - delta
+        viol = np.nonzero(~S & (g < -1e-12 * max(abs(delta), 1e-9)))[0]
+        if viol.size == 0:
+            return ContactSolution(f, float(delta), np.maximum(g, 0.0), it)
+        S[viol[np.argmin(g[viol])]] = True
+        hist.append(float(g[viol].min()))
+    raise ConvergenceError(case, f"active set did not settle in {max_iter} iterations", {"violation": hist})
+
+
+def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, force: float, E: float, nu: float,
+                tol: float = 1e-6, max_pass: int = 12, case: str = "LTCA phase"):
+    """Contact solution with the Hertz strip width updated to the loads; returns (solution, C, passes)."""
+    Cb = bulk_matrix(pair, kernels, pts)
+    load = np.full(pts.size, force / pts.size)
+    active = None
+    for p in range(1, max_pass + 1):
+        C = Cb + local_matrix(pair, pts, load, E, nu)
+        sol = solve_contact(C, eps, force, case, active)
+        change = float(np.max(np.abs(sol.load - load)) / force)
+        load, active = sol.load, sol.load > 0
+        if change < tol:
+            return sol, C, p
+    raise ConvergenceError(case, f"Hertz width fixed point did not settle in {max_pass} passes",
+                           {"load_change": [change]})
