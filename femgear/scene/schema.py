@@ -175,7 +175,7 @@ class Wear(_Frozen):
     coefficient: NonNeg = Field(
         1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H), the paper's 'wear rate' [-]"
     )
-    cycles: NonNeg = Field(0.0, description="mesh cycles of accumulated wear [-]")
+    cycles: NonNeg = Field(0.0, description="pinion revolutions of accumulated wear (load cycles of one pinion tooth) [-]")
 
 
 class Thermal(_Frozen):
