@@ -3,9 +3,11 @@
 Contact lines (same convention as :func:`femgear.geometry.contact_lines`): a line of a
 helix runs u(ζ) = u₀ + ζ tan β_b over ζ ∈ [0, b] in the helix's own face coordinate
 (the right helix is the mirror image, groove at ζ = b for both), u₀ = u_A − b tan β_b +
-(φ + offset) p_bt + j p_bt.  Each line is clipped to the path [u_A, u_E] and carries
-``n_line`` points over its full width (at least 3 on any piece), with trapezoid lengths
-Δℓ along the line, so the total length varies continuously with the phase.
+(φ + offset) p_bt + j p_bt.  Each line is clipped to the path [u_A, u_E] and cut into
+round(n_line · piece/b) ≥ 1 equal segments with a point at each segment's centre
+(midpoint rule: the point spacing never falls below the strip length, which keeps the
+discrete half-space operator positive definite); Δℓ, the segment length along the line,
+varies continuously with the phase, so does the total contact length.
 
 Compliance between points a, b (both members m, kernel offsets s_m (j_a − j_b) with
 s₁ = −1, s₂ = +1: tooth j of the path is tooth −j of the pinion's and +j of the gear's
@@ -43,7 +45,7 @@ class ContactPoints:
     line: np.ndarray      #: line index j (larger j: further along the path)
     u: np.ndarray         #: path position [m] (pinion roll distance ρ₁)
     zeta: np.ndarray      #: face coordinate of the helix [m]
-    length: np.ndarray    #: trapezoid length along the line Δℓ [m]
+    length: np.ndarray    #: segment length along the line Δℓ [m]
 
     @property
     def size(self) -> int:
@@ -65,12 +67,10 @@ def phase_points(pair: GearPair, phase: float, stagger: float, n_line: int) -> C
             z_hi = min(pair.b, (pair.u_end - u0) / tb)
             if z_hi <= z_lo + 1e-9 * pair.b:
                 continue
-            n = max(3, int(math.ceil(n_line * (z_hi - z_lo) / pair.b)) + 1)
-            zeta = np.linspace(z_lo, z_hi, n)
-            dz = np.diff(zeta)
-            w = np.zeros(n)
-            w[:-1] += dz / 2
-            w[1:] += dz / 2
+            n = max(1, int(round(n_line * (z_hi - z_lo) / pair.b)))
+            dz = (z_hi - z_lo) / n
+            zeta = z_lo + (np.arange(n) + 0.5) * dz
+            w = np.full(n, dz)
             cols["helix"].append(np.full(n, h))
             cols["line"].append(np.full(n, j))
             cols["u"].append(u0 + zeta * tb)
@@ -94,7 +94,7 @@ def bulk_matrix(pair: GearPair, kernels, pts: ContactPoints) -> np.ndarray:
             mask = same_helix & (dj == d)
             K = kern.kernel(int(sign * d))
             C[mask] += (R @ K @ R.T)[mask]
-    return C
+    return 0.5 * (C + C.T)     # Maxwell–Betti: the exact C is symmetric; the FE kernel's asymmetry is discretisation
 
 
 def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float, nu: float) -> np.ndarray:
@@ -148,9 +148,7 @@ def solve_contact(C: np.ndarray, eps: np.ndarray, force: float, case: str = "LTC
         f[idx] = x[:m] / scale
         delta = x[m]
         if f.min() < -1e-12 * force:
-            worst = idx[np.argmin(x[:m])]
-            neg = idx[x[:m] < 0]
-            S[neg if neg.size < m else [worst]] = False
+            S[idx[np.argmin(x[:m])]] = False
             hist.append(float(f.min()))
             continue
         f = np.maximum(f, 0.0)

@@ -230,6 +230,73 @@ class Rating(_Frozen):
     size_factor: Pos = Field(1.0, description="Z_X [-]")
 
 
+class FlankModification(_Frozen):
+    """Flank modifications of one member (ISO 21771:2007 §§8–9 terms), amounts normal to the flank [m].
+
+    Profile: tip relief C_a over the roll length L_Ca below the tip, root relief C_f over
+    L_Cf above the start of the active profile (``*_shape``: linear or parabolic).  Face:
+    lead crowning C_β (circular arc ≈ parabola, amount at each end of a helix), end relief
+    C_I over L_I at both ends of each helix.  ``topography``: a measured deviation grid
+    (rows root → tip over the active profile, columns groove end → outer end of a helix),
+    bilinearly interpolated, added to both helices.  Used by the ``ltca`` stiffness level.
+    """
+
+    tip_relief: float = Field(0.0, ge=0, le=1e-3, description="tip relief C_a [m]")
+    tip_relief_length: NonNeg = Field(0.0, description="roll length L_Ca of the tip relief along the path [m]")
+    tip_relief_shape: Literal["linear", "parabolic"] = Field("linear", description="tip relief shape")
+    root_relief: float = Field(0.0, ge=0, le=1e-3, description="root relief C_f [m]")
+    root_relief_length: NonNeg = Field(0.0, description="roll length L_Cf of the root relief [m]")
+    root_relief_shape: Literal["linear", "parabolic"] = Field("linear", description="root relief shape")
+    crowning: float = Field(0.0, ge=0, le=1e-3, description="lead crowning C_β, amount at each helix end [m]")
+    end_relief: float = Field(0.0, ge=0, le=1e-3, description="end relief C_I at each helix end [m]")
+    end_relief_length: NonNeg = Field(0.0, description="axial length L_I of the end relief [m]")
+    topography: list[list[float]] | None = Field(
+        None, description="measured flank deviation grid [m], rows root→tip, columns groove end→outer end")
+
+    @field_validator("tip_relief_length", "root_relief_length", "end_relief_length")
+    @classmethod
+    def _length_with_amount(cls, length: float, info: ValidationInfo) -> float:
+        amount = {"tip_relief_length": "tip_relief", "root_relief_length": "root_relief",
+                  "end_relief_length": "end_relief"}[info.field_name]
+        if info.data.get(amount, 0.0) > 0 and length <= 0:
+            raise ValueError(f"{amount} > 0 needs a positive {info.field_name}")
+        return length
+
+    @field_validator("topography")
+    @classmethod
+    def _grid(cls, grid):
+        if grid is None:
+            return grid
+        if len(grid) < 2 or any(len(row) != len(grid[0]) for row in grid) or len(grid[0]) < 2:
+            raise ValueError("topography must be a rectangular grid of at least 2 × 2 values")
+        if any(abs(v) > 1e-3 for row in grid for v in row):
+            raise ValueError("topography values are in metres and must stay below 1 mm")
+        return grid
+
+
+class Modifications(FlankModification):
+    """``[modifications]``: flank modifications shared by both members, or per member.
+
+    The keys of :class:`FlankModification` at the top level apply to both members unless a
+    ``[modifications.pinion]`` or ``[modifications.gear]`` table is given (it then replaces
+    them for that member).  ``helix_slope_deviation_left/right`` is f_Hβ of each helix of the
+    pair (misalignment): the gap opens linearly from 0 at the groove end to f_Hβ at the
+    outer end (negative: closes).
+    """
+
+    pinion: FlankModification | None = None
+    gear: FlankModification | None = None
+    helix_slope_deviation_left: float = Field(0.0, ge=-1e-3, le=1e-3, description="f_Hβ of the left helix [m]")
+    helix_slope_deviation_right: float = Field(0.0, ge=-1e-3, le=1e-3, description="f_Hβ of the right helix [m]")
+
+    def member(self, member: int) -> FlankModification:
+        """The modification of member 1 (pinion) or 2 (gear)."""
+        own = self.pinion if member == 1 else self.gear
+        if own is not None:
+            return own
+        return FlankModification(**{k: getattr(self, k) for k in FlankModification.model_fields})
+
+
 class Physics(_Frozen):
     """``[physics]``: one fidelity level per sub-model (see :mod:`femgear.scene.levels`).
 
@@ -278,6 +345,7 @@ class Scene(_Frozen):
     wear: Wear = Wear()
     thermal: Thermal = Thermal()
     numerics: Numerics = Numerics()
+    modifications: Modifications = Modifications()
     physics: Physics = Physics()
     rating: Rating = Rating()
 

@@ -32,7 +32,7 @@ import numpy as np
 
 from femgear.geometry.gear import GearPair
 
-LEVELS = ("constant", "iso6336", "pem", "fe")
+LEVELS = ("constant", "iso6336", "pem", "fe", "ltca")
 
 
 @dataclass(frozen=True)
@@ -120,14 +120,17 @@ def tabulated(pair: GearPair, u_samples: np.ndarray, k_samples: np.ndarray) -> C
 def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, stagger: float = 0.0,
                    n_slices: int = 100, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
                    bore_radius: tuple[float, float] = (0.0, 0.0), plane: str = "strain",
-                   constant_per_width: float = 2.0e10, fe_options: dict | None = None) -> MeshStiffness:
+                   constant_per_width: float = 2.0e10, fe_options: dict | None = None,
+                   ltca_options: dict | None = None) -> MeshStiffness:
     """Mesh stiffness of both helices of ``pair`` at ``n_positions`` phases of one mesh period.
 
     Levels: ``constant`` (``constant_per_width`` [N/m per m] × b per helix), ``iso6336``
     (c_γα b, constant; ISO's value is read as a transverse stiffness per unit face width
     and projected like the sliced levels), ``pem`` (sliced potential energy method),
     ``fe`` (sliced, tooth compliance from the 2-D FE of :mod:`femgear.body.compliance`
-    at ``fe_options['n_fe']`` path positions, Hertz as in PEM).
+    at ``fe_options['n_fe']`` path positions, Hertz as in PEM), ``ltca`` (secant stiffness
+    per helix from the loaded tooth contact analysis of :mod:`femgear.ltca` at
+    ``ltca_options['force']``; its TE tables are in ``info``).
     """
     if level not in LEVELS:
         raise ValueError(f"level must be one of {', '.join(LEVELS)}, got {level!r}")
@@ -135,6 +138,13 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
         raise ValueError(f"n_positions must be ≥ 2, got {n_positions}")
     if not 0.0 <= stagger < 1.0:
         raise ValueError(f"stagger must be in [0, 1) base pitches, got {stagger}")
+    if level == "ltca":      # loaded tooth contact analysis on 3-D FE teeth (femgear.ltca.level)
+        from femgear.ltca.level import ltca_mesh_stiffness
+
+        if not ltca_options or "force" not in ltca_options:
+            raise ValueError("level 'ltca' needs ltca_options={'force': normal force [N], ...}")
+        return ltca_mesh_stiffness(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
+                                   poisson_ratio=poisson_ratio, **ltca_options)
     t0 = time.perf_counter()
     phases = np.arange(n_positions) / n_positions
     info: dict = {}
@@ -186,5 +196,9 @@ def mesh_stiffness_from_scene(scene, level: str | None = None, **kw) -> MeshStif
                 youngs_modulus=scene.material.youngs_modulus, poisson_ratio=scene.material.poisson_ratio,
                 bore_radius=(scene.pinion.bore_radius, scene.gear.bore_radius),
                 constant_per_width=st.mesh_stiffness_per_width, fe_options=fe_options or None)
+    if (level or scene.physics.stiffness) == "ltca":
+        from femgear.ltca.level import ltca_options_from_scene
+
+        args["ltca_options"] = {**ltca_options_from_scene(scene), **(kw.pop("ltca_options", None) or {})}
     args.update(kw)
     return mesh_stiffness(pair, level or scene.physics.stiffness, **args)
