@@ -104,9 +104,8 @@ class CouplingProgress:
         return self
 
     def __call__(self, state) -> None:
-        change = state.change or {}
-        text = (f"coupling pass {state.iteration}: mesh-force change {change.get('mesh_force', float('nan')):.3g}, "
-                f"μ change {change.get('mu', float('nan')):.3g} ({state.seconds:.2f} s)"
+        text = (f"coupling pass {state.iteration}: mesh-force change {state.mesh_force_change:.3g}, "
+                f"μ change {state.mu_change:.3g} ({state.seconds:.2f} s)"
                 if state.iteration else f"coupling pass 0: static start ({state.seconds:.2f} s)")
         log.info(text)
         if self._status is not None:

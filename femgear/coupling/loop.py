@@ -28,6 +28,7 @@ raises with the history otherwise).
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
@@ -156,7 +157,8 @@ class CouplingState:
     flank_temperature_rise: float   #: bulk temperature rise used for the thermal expansion [K]
     thermal_deviation: np.ndarray   #: (2, n) ζ_T of pinion and gear [m]
     wear: np.ndarray                #: (2, n) wear depth of pinion and gear [m]
-    change: dict[str, float] = field(default_factory=dict)  #: 'mesh_force' (relative), 'mu' (absolute)
+    mesh_force_change: float = math.nan   #: max relative change of the mesh force against the previous pass
+    mu_change: float = math.nan           #: max absolute change of μ against the previous pass
     dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)   #: the pass's run
     seconds: float = 0.0
 
@@ -257,13 +259,10 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
         w, mu_new, dT = _contact_response(setup, force, state.removed)
         rise, zeta_new = _thermal(setup, dT)
         mix = lambda old, new: old + relax * (new - old)  # noqa: E731
-        change = {
-            "mesh_force": float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
-            "mu": float(np.max(np.abs(mu_new - state.mu))),
-        }
         state = CouplingState(state.iteration + 1, force, w, mix(state.mu, mu_new), dT, rise,
-                              mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new), change,
-                              run, time.perf_counter() - t0)
+                              mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new),
+                              float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
+                              float(np.max(np.abs(mu_new - state.mu))), run, time.perf_counter() - t0)
         for name, value in (("mesh_force", force), ("mu", state.mu), ("wear", state.wear)):
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError("coupling", f"non-finite {name} in iteration {state.iteration}")
@@ -308,14 +307,14 @@ def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1
 
     for state in coupling_iterations(setup, relax):
         history["iteration"].append(state.iteration)
-        history["mesh_force_change"].append(state.change.get("mesh_force", float("nan")))
-        history["mu_change"].append(state.change.get("mu", float("nan")))
+        history["mesh_force_change"].append(state.mesh_force_change)
+        history["mu_change"].append(state.mu_change)
         history["seconds"].append(state.seconds)
         if progress is not None:
             progress(state)
         if state.iteration == 0:
             continue
-        if one_way or (state.change["mesh_force"] < tol_force and state.change["mu"] < tol_mu):
+        if one_way or (state.mesh_force_change < tol_force and state.mu_change < tol_mu):
             return done(state)
         if state.iteration >= max_iter:
             raise ConvergenceError(
