@@ -127,8 +127,13 @@ def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshP
     from femgear.case import build_case
     from femgear.lubrication.levels import lubrication_solver
 
+    from femgear.contact.path import contact_along_path, zone_grid
+
     level = scene.physics.lubrication
     level = level if level in SUMMARY_FRICTION_LEVELS else "formula"
+    if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
+        # the load jumps at B and D must lie on the grid for an exact path integral
+        contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, contact.kin.u.size))
     k = contact.kin
     w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
     solver = lubrication_solver(build_case(scene, pair), level)
