@@ -8,11 +8,12 @@ import numpy as np
 import pytest
 
 from femgear.dynamics.one_mesh import (
-    MemberData, build_one_mesh, natural_frequencies, static_deflection, torsional_mode_hand, torsional_sweep,
+    MemberData, build_one_mesh, natural_frequencies, simulate_one_mesh, static_deflection, torsional_mode_hand,
+    torsional_sweep,
 )
 from femgear.geometry.gear import GearPair
 from femgear.scene import load_scene
-from femgear.stiffness.tvms import mesh_stiffness_from_scene
+from femgear.stiffness.tvms import mesh_stiffness, mesh_stiffness_from_scene
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 
@@ -90,3 +91,30 @@ def test_bad_input(fzg):
         build_one_mesh(pair, _members(scene, 1e9, 1e9), -k, 100.0)
     with pytest.raises(ValueError, match="direction"):
         torsional_sweep(pair, k, 1e-3, 1e-3, 10.0, np.array([100.0]), 0.0, direction="sideways")
+
+
+@pytest.mark.parametrize("kind", ["single-helical", "spur"])
+def test_dynamic_run_axial_force_and_mean_mesh_force(kind):
+    """Time response with PEM TVMS below the first mode: mean mesh force = F_bn (momentum balance); the single
+    helix's pinion rides at z = −F_bn sin β_b / k_ax on its thrust bearing; a spur pair never moves axially."""
+    base = dict(z1=20, z2=40, m_n=3e-3, alpha_n=math.radians(20), b=0.03, x1=0.0, x2=0.0)
+    pair = GearPair.from_parameters(beta=math.radians(20) if kind != "spur" else 0.0, kind=kind, **base)
+    mems = (MemberData(1.0, 1e-3, 5e8, 2e8, 500.0, 300.0), MemberData(3.0, 8e-3, 5e8, 4e8, 500.0, 300.0))
+    k = mesh_stiffness(pair, "pem", n_positions=60, n_slices=30).k_left
+    model = build_one_mesh(pair, mems, k, 150.0)
+    fm = 0.8 * natural_frequencies(model)[0]
+    r = simulate_one_mesh(model, fm, periods=30, record=10)
+    F0 = 150.0 / (pair.rb1 * math.cos(pair.beta_b))
+    assert r.mesh_force.mean() == pytest.approx(F0, rel=1e-3)
+    assert r.axial(0).mean() == pytest.approx(-F0 * math.sin(pair.beta_b) / 2e8, rel=1e-3, abs=1e-15)
+    if kind == "spur":
+        assert not np.any(r.axial(0)) and not np.any(r.axial(1))
+    else:
+        assert np.ptp(r.axial(0)) > 0          # the TVMS shuttles the pinion axially
+
+
+def test_simulation_refuses_unstable_step(fzg):
+    scene, pair, k = fzg
+    model = build_one_mesh(pair, _members(scene, 1e13, 1e13), k, 200.0)
+    with pytest.raises(ValueError, match="stability"):
+        simulate_one_mesh(model, 500.0, steps_per_period=10)
