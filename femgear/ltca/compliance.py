@@ -136,7 +136,7 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
     grid_rho = np.linspace(r0, r1, n_rho)
     grid_z = np.linspace(0.0, pair.b, n_z)
     fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries["loaded_flank"])
-    xq = fb.global_coordinates().value                       # (3, n_facets, n_qp)
+    xq = np.asarray(fb.global_coordinates())                      # (3, n_facets, n_qp)
     rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
     hats = _bilinear(grid_rho, grid_z, rq.ravel(), xq[2].ravel()).T.reshape(n_rho * n_z, *rq.shape)
     dA = fb.dx                                                # (n_facets, n_qp) quadrature weights × area

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
 from femgear.scene.levels import check_level
 
@@ -253,14 +253,12 @@ class FlankModification(_Frozen):
     topography: list[list[float]] | None = Field(
         None, description="measured flank deviation grid [m], rows root→tip, columns groove end→outer end")
 
-    @field_validator("tip_relief_length", "root_relief_length", "end_relief_length")
-    @classmethod
-    def _length_with_amount(cls, length: float, info: ValidationInfo) -> float:
-        amount = {"tip_relief_length": "tip_relief", "root_relief_length": "root_relief",
-                  "end_relief_length": "end_relief"}[info.field_name]
-        if info.data.get(amount, 0.0) > 0 and length <= 0:
-            raise ValueError(f"{amount} > 0 needs a positive {info.field_name}")
-        return length
+    @model_validator(mode="after")
+    def _length_with_amount(self):
+        for amount in ("tip_relief", "root_relief", "end_relief"):
+            if getattr(self, amount) > 0 and getattr(self, f"{amount}_length") <= 0:
+                raise ValueError(f"{amount} > 0 needs a positive {amount}_length")
+        return self
 
     @field_validator("topography")
     @classmethod
