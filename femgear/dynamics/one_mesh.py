@@ -236,7 +236,7 @@ def simulate_one_mesh(model: OneMeshModel, mesh_frequency: float, periods: int =
     w_max = 2 * math.pi * float(natural_frequencies(model).max())
     if h * w_max > 2.78:
         raise ValueError(f"step {h:.3g} s exceeds RK4's stability limit {2.78 / w_max:.3g} s: "
-                         f"raise steps_per_period to ≥ {math.ceil(2.78 / (w_max * h)) * steps_per_period}")
+                         f"raise steps_per_period to ≥ {math.ceil(steps_per_period * h * w_max / 2.78)}")
     Minv = 1.0 / np.diag(model.M)
     g, K, C, load, b0, c_m = model.g, model.K, model.C, model.load, model.backlash, model.c_mesh
     k, n = model.k_mesh, model.k_mesh.size
@@ -270,3 +270,35 @@ def simulate_one_mesh(model: OneMeshModel, mesh_frequency: float, periods: int =
         raise FloatingPointError("one-mesh simulation produced non-finite states")
     d = qs @ g
     return OneMeshResponse(t=ts, q=qs, mesh_force=fs, deflection=d, contact_loss=float(np.mean(np.abs(d) <= b0)))
+
+
+def one_mesh_from_case(case, k_mesh: np.ndarray | None = None) -> OneMeshModel:
+    """The 12-DOF model of a spur or single-helical :class:`femgear.case.Case`.
+
+    Members: ``mass``, ``inertia``, ``support_stiffness``/``support_damping`` (radial, per
+    direction), ``axial_stiffness``/``axial_damping`` (default the radial values; required
+    by the scene for a single helix), ``bearing_span``; ``pair.backlash``,
+    ``stiffness.damping_ratio``; ``k_mesh`` defaults to the scene's stiffness level.
+    """
+    if k_mesh is None:
+        from femgear.stiffness.tvms import mesh_stiffness_from_scene
+
+        k_mesh = mesh_stiffness_from_scene(case.scene).k_left
+    members = tuple(
+        MemberData(mass=m.mass, inertia=m.inertia, radial_stiffness=m.support_stiffness,
+                   axial_stiffness=m.support_stiffness if m.axial_stiffness is None else m.axial_stiffness,
+                   radial_damping=m.support_damping,
+                   axial_damping=m.support_damping if m.axial_damping is None else m.axial_damping,
+                   bearing_span=m.bearing_span)
+        for m in case.members)
+    return build_one_mesh(case.pair, members, k_mesh, case.operating.pinion_torque, backlash=case.backlash,
+                          mesh_damping_ratio=case.stiffness.damping_ratio)
+
+
+def simulate_case(case, k_mesh: np.ndarray | None = None) -> OneMeshResponse:
+    """:func:`simulate_one_mesh` at the case's mesh frequency with its ``[numerics]`` cycles and step."""
+    n = case.numerics
+    periods = max(int(math.ceil(n.dynamics_cycles)), 2)
+    record = max(periods - int(n.transient_cycles), 1)
+    return simulate_one_mesh(one_mesh_from_case(case, k_mesh), case.operating.mesh_frequency, periods=periods,
+                             record=record, steps_per_period=n.steps_per_mesh_period)

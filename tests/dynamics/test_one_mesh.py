@@ -116,5 +116,22 @@ def test_dynamic_run_axial_force_and_mean_mesh_force(kind):
 def test_simulation_refuses_unstable_step(fzg):
     scene, pair, k = fzg
     model = build_one_mesh(pair, _members(scene, 1e13, 1e13), k, 200.0)
-    with pytest.raises(ValueError, match="stability"):
+    with pytest.raises(ValueError, match="stability limit") as info:
         simulate_one_mesh(model, 500.0, steps_per_period=10)
+    needed = int(str(info.value).rsplit("≥ ", 1)[1])
+    simulate_one_mesh(model, 500.0, periods=1, record=1, steps_per_period=needed)   # the advice is enough
+
+
+def test_model_from_an_fzg_case():
+    """The FZG C14 scene's case binds to the 12-DOF model; its static mesh force is F_bn."""
+    from femgear.case import build_case
+    from femgear.dynamics.one_mesh import one_mesh_from_case, simulate_case
+
+    case = build_case(load_scene(FZG, ["numerics.dynamics_cycles=12", "numerics.transient_cycles=8",
+                                       "numerics.steps_per_mesh_period=120"]))
+    model = one_mesh_from_case(case)
+    q = static_deflection(model)
+    assert model.k_mean * (model.g @ q) == pytest.approx(case.operating.normal_force, rel=1e-9)
+    r = simulate_case(case)
+    assert r.mesh_force.mean() == pytest.approx(case.operating.normal_force, rel=0.02)
+    assert r.t.size == 4 * 120
