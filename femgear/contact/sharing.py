@@ -25,7 +25,7 @@ along the contact lines, w = F_n / L(φ).
   (b / (p_bt cos β_b)) ∫_A^E w̄ du = F_n exactly: the time mean of the transmitted force.
 
 Sources: Niemann & Winter, *Maschinenelemente* II §21.4 (load sharing of spur gears,
-single-contact points B, D); ISO 6336-1:2019 §6 (uniform load along the contact lines).
+single-contact points B, D); ISO 6336-1:2019 (uniform load along the contact lines).
 """
 
 from __future__ import annotations
