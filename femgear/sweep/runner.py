@@ -172,6 +172,7 @@ def run_sweep(spec: SweepSpec, out_root: str | Path, workers: int = 2, scheduler
                     if row["status"] == "failed":
                         failed[row["case"]] = row
                     _write_table(table, list(rows.values()))
+                    log.info("case %s: %s (%.1f s)", row["case"], row["status"], row.get("seconds", 0.0))
                     advance(row["status"] == "failed")
                     if on_row:
                         on_row(row)

@@ -36,6 +36,10 @@ DYNAMIC = ['physics.preset="fast"', 'physics.coupling="one-way"', 'physics.wear=
            "numerics.dynamics_cycles=20.0", "numerics.transient_cycles=10.0"]
 
 
+#: failures this test found in code outside the CLI, each kept as a strict xfail test below
+KNOWN = ("flanks interpenetrate", "film thickness and half-width must be positive")
+
+
 def _baseline(key: str):
     table, name = key.split(".")
     return RAW.get(table, {}).get(name, {"pinion.profile_shift": 0.0, "pinion.eccentricity": 1e-5,
@@ -81,8 +85,8 @@ def _check(sets: list[str], physics: list[str], tmp_path: Path, capsys) -> None:
         named = re.match(r"femgear: error: ([a-z_]+\.[a-z_]+)", lines[0])
         assert named, f"no key named: {lines[0]}"
         return
-    if rc == 1 and "flanks interpenetrate" in stderr:
-        hypothesis.reject()   # known, found by this test: test_zero_backlash_closed_by_expansion_names_the_key
+    if rc == 1 and any(known in stderr for known in KNOWN):
+        hypothesis.reject()   # found by this test, kept as the strict xfails below until fixed
     assert rc == 0, f"{sets}: exit {rc}: {stderr}"
     payload = json.loads((out / "results.json").read_text())     # json: NaN/inf would be written as null
     for name, values in payload["along_path"].items():
@@ -115,3 +119,15 @@ def test_zero_backlash_closed_by_expansion_names_the_key(tmp_path, capsys):
     rc = main(argv)
     err = capsys.readouterr().err
     assert rc == 2 and "pair.backlash" in err
+
+
+@pytest.mark.xfail(strict=True, reason="lubrication/traction.py::hertz_traction raises ValueError for a zero "
+                                       "load per length (contact loss in the coupling) instead of μ = ΔT = 0")
+def test_contact_loss_in_the_coupling_runs(tmp_path, capsys):
+    """Found by the property test: a 0.3 mm module at 50 000 rpm (Hertz 5.2 GPa, warned) loses contact."""
+    argv = ["run", str(BASE), "--out", str(tmp_path), "--no-plots", "--no-vtk", "--set", "operating.speed_rpm=50000.0",
+            "--set", "pair.normal_module=0.0003"]
+    for item in DYNAMIC:
+        argv += ["--set", item]
+    rc = main(argv)
+    assert rc == 0, capsys.readouterr().err
