@@ -25,6 +25,8 @@ import time
 
 import numpy as np
 
+from femgear.coupling.profile import harmonic_fit
+
 try:
     from studies import _common as C
 except ImportError:
@@ -33,18 +35,6 @@ except ImportError:
 
 def setup() -> dict[str, list[str]]:
     return dict(C.FLANK_CASES)
-
-
-def harmonic_fit(e: np.ndarray, m: int) -> tuple[np.ndarray, np.ndarray]:
-    """Least-squares fit of e(φ) = a0 + Σ_k a_k cos 2πkφ + b_k sin 2πkφ (k ≤ m) on φ = i/n.
-
-    Returns the fitted curve and the amplitudes |c_k| = √(a_k² + b_k²), k = 0..m (c_0 = mean)."""
-    phi = np.arange(e.size) / e.size
-    cols = [np.ones_like(phi)] + [f(2 * np.pi * k * phi) for k in range(1, m + 1) for f in (np.cos, np.sin)]
-    A = np.array(cols).T
-    coef = np.linalg.lstsq(A, e, rcond=None)[0]
-    amps = np.concatenate([[abs(coef[0])], np.hypot(coef[1::2], coef[2::2])])
-    return A @ coef, amps
 
 
 def run(coarse: bool = False, workers: int = 2, harmonics: int = 5) -> dict:

@@ -88,3 +88,13 @@ def test_excitation_table_is_exact_for_piecewise_linear_deviations(baseline_pair
     t_fine = phase_table(p, fine, linear(fine), 512)
     assert np.max(np.abs(t_coarse - t_fine)) < 1e-12 * np.ptp(t_fine) + 1e-20
     assert np.ptp(t_coarse) > 0
+
+
+def test_harmonic_fit_recovers_a_trigonometric_polynomial():
+    """Identity: a table that is a trigonometric polynomial of degree ≤ m is fitted exactly."""
+    from femgear.coupling.profile import harmonic_fit
+
+    phi = np.arange(64) / 64
+    e = 0.3 + np.cos(2 * np.pi * phi) + 0.2 * np.sin(2 * np.pi * 3 * phi)
+    fit, amps = harmonic_fit(e, 5)
+    assert np.allclose(fit, e) and np.allclose(amps[:4], [0.3, 1.0, 0.0, 0.2], atol=1e-12)

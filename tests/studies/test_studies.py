@@ -104,10 +104,6 @@ def test_regression_balanced_backlash_crosses_b0(backlash):
 
 
 def test_meshing_error_claims():
-    phi = np.arange(64) / 64
-    e = 0.3 + np.cos(2 * np.pi * phi) + 0.2 * np.sin(2 * np.pi * 3 * phi)
-    fit, amps = meshing_error.harmonic_fit(e, 5)
-    assert np.allclose(fit, e) and np.allclose(amps[:4], [0.3, 1.0, 0.0, 0.2], atol=1e-12)
     res = meshing_error.run(coarse=True)
     rows = res["rows"]
     assert rows["none"]["peak_to_peak_um"] == 0.0
