@@ -231,9 +231,7 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
         if sides:
             groups_curves["sides"] = sides
         if _extrude is not None:
-            if refine_at is not None:     # graded section (femgear.mesh.segment): size field before the twist
-                _size_field(gmsh, h, refine_at, refine_ratio, refine_radius)
-            return _twist(gmsh, surf, groups_curves, h, *_extrude, graded=refine_at is not None)
+            return _twist(gmsh, surf, groups_curves, h, *_extrude, refine=(refine_at, refine_ratio, refine_radius))
         geo.synchronize()
         groups = {name: gmsh.model.addPhysicalGroup(1, cs) for name, cs in groups_curves.items()}
         gmsh.model.addPhysicalGroup(2, [surf])
@@ -242,13 +240,17 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
         return _to_skfem(gmsh, groups)
 
 
-def _twist(gmsh, surf, groups_curves, h, width, angle, layers, graded=False):
+def _twist(gmsh, surf, groups_curves, h, width, angle, layers, refine=(None, 1.0, None)):
     """Twist-extrude the section along z (helix), tetrahedra, boundaries from the curve groups.
 
-    ``graded``: a size field is already set on the section (keep it; no uniform size).
+    ``refine`` = (refine_at, refine_ratio, refine_radius): a graded section (size field of
+    :func:`_size_field`, used by :mod:`femgear.mesh.segment`); uniform size ``h`` without it.
     """
     import skfem
 
+    graded = refine[0] is not None
+    if graded:
+        _size_field(gmsh, h, *refine)
     geo = gmsh.model.geo
     out = geo.twist([(2, surf)], 0, 0, 0, 0, 0, width, 0, 0, 1, angle, [layers])
     geo.synchronize()

@@ -139,12 +139,15 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
     if not 0.0 <= stagger < 1.0:
         raise ValueError(f"stagger must be in [0, 1) base pitches, got {stagger}")
     if level == "ltca":      # loaded tooth contact analysis on 3-D FE teeth (femgear.ltca.level)
-        from femgear.ltca.level import ltca_mesh_stiffness
+        from femgear.ltca.level import ltca_cycle
 
         if not ltca_options or "force" not in ltca_options:
             raise ValueError("level 'ltca' needs ltca_options={'force': normal force [N], ...}")
-        return ltca_mesh_stiffness(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
-                                   poisson_ratio=poisson_ratio, **ltca_options)
+        t0 = time.perf_counter()
+        res, info = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
+                               poisson_ratio=poisson_ratio, **ltca_options)
+        return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger, 0,
+                             time.perf_counter() - t0, info)
     t0 = time.perf_counter()
     phases = np.arange(n_positions) / n_positions
     info: dict = {}
