@@ -121,3 +121,26 @@ def test_kernel_is_nearly_symmetric_and_positive(coarse_model):
         c = coarse_model.kernels[member]
         assert c.info["asymmetry"] < 0.25
         assert np.all(np.diag(c.fe_self) > 0)
+
+
+def test_excitation_reproduces_the_helix_loads(coarse_model, baseline_force):
+    """Dynamics input: k_s (LTE − e_s) = F_s per helix and phase (the mesh law at the operating point)."""
+    from femgear.ltca.analysis import mesh_cycle
+
+    r = mesh_cycle(coarse_model, baseline_force, Modifications(tip_relief=5e-6, tip_relief_length=3e-3), n_phases=8)
+    ex = r.excitation()
+    for h in ("left", "right"):
+        assert np.allclose(ex[f"k_secant_{h}"] * (ex[f"lte_{h}"] - ex[f"e_{h}"]), ex[f"force_{h}"], rtol=1e-9)
+        assert np.allclose(ex[f"e_{h}"], ex[f"nlte_{h}"], atol=1e-15)
+
+
+def test_pressure_map_vtk(coarse_model, baseline_force, baseline_pair, tmp_path):
+    import meshio
+
+    from femgear.ltca.analysis import mesh_cycle
+    from femgear.ltca.vtk import write_flank_pressure
+
+    r = mesh_cycle(coarse_model, baseline_force, None, n_phases=8)
+    path = write_flank_pressure(tmp_path / "p.vtu", r, baseline_pair, 210e9, 0.3)
+    m = meshio.read(path)
+    assert m.points.shape[1] == 3 and m.point_data["p_max"].max() > 1e8
