@@ -19,6 +19,7 @@ D(X) = -(1/pi) int ln|X - X'| P(X') dX', with piecewise-constant P per node cell
 from __future__ import annotations
 
 import numpy as np
+import scipy.fft as sfft
 import scipy.sparse as sp
 
 
@@ -51,18 +52,25 @@ class PointDeflection:
         ix = np.arange(nx) * h
         iy = np.arange(ny) * h
         self.K = cell_influence(ix[None, :], iy[:, None], h)  # (ny, nx), offsets >= 0
-        kw = np.zeros((2 * ny, 2 * nx))
+        # any period N >= 2n - 1 keeps the circular convolution linear on the grid; the
+        # next 5-smooth length avoids 2 (16 2^k + 1) = 2 x prime sizes (514 = 2 x 257:
+        # 82 ms per transform pair against 12 ms at 540)
+        Ny, Nx = (sfft.next_fast_len(2 * m - 1, real=True) for m in (ny, nx))
+        kw = np.zeros((Ny, Nx))
         kw[:ny, :nx] = self.K
-        kw[ny + 1 :, :nx] = self.K[:0:-1, :]
-        kw[:ny, nx + 1 :] = self.K[:, :0:-1]
-        kw[ny + 1 :, nx + 1 :] = self.K[:0:-1, :0:-1]
-        self._khat = np.fft.rfft2(kw)
+        kw[Ny - ny + 1 :, :nx] = self.K[:0:-1, :]
+        kw[:ny, Nx - nx + 1 :] = self.K[:, :0:-1]
+        kw[Ny - ny + 1 :, Nx - nx + 1 :] = self.K[:0:-1, :0:-1]
+        self._N = (Ny, Nx)
+        self._khat = sfft.rfft2(kw)
 
     def apply(self, P2d: np.ndarray) -> np.ndarray:
+        """D = K * P; the transforms skip the zero padding where they can (the x pass of
+        the forward transform and of the inverse on the first ny rows only)."""
         ny, nx = self.ny, self.nx
-        pad = np.zeros((2 * ny, 2 * nx))
-        pad[:ny, :nx] = P2d
-        return np.fft.irfft2(np.fft.rfft2(pad) * self._khat, s=(2 * ny, 2 * nx))[:ny, :nx]
+        Ny, Nx = self._N
+        f = sfft.fft(sfft.rfft(P2d, n=Nx, axis=1), n=Ny, axis=0)
+        return sfft.irfft(sfft.ifft(f * self._khat, axis=0)[:ny], n=Nx, axis=1)[:, :nx]
 
     def dense(self, flat_index: np.ndarray) -> np.ndarray:
         """Dense influence matrix between the flattened grid nodes ``flat_index``."""

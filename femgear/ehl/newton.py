@@ -18,6 +18,7 @@ history and raise :class:`femgear.errors.ConvergenceError` on failure; no NaN re
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -34,9 +35,12 @@ MAX_DP = 1.0
 RESIDUAL_TOL = 1e-10  # scaled residual norm accepted as converged after a full step
 MAX_LOG_ETA = 4.0
 WATCHDOG = 4
-ILU_DROP, ILU_FILL = 1e-4, 3.0
+ILU_DROP, ILU_FILL = 1e-3, 3.0
 LOCAL_RADIUS = 2  # elastic kernel kept in the local (smoother) Jacobian
-REBUILD_KRYLOV = 30  # rebuild the preconditioner when GMRES needed more iterations
+# rebuild the preconditioner when GMRES needed more than REBUILD_KRYLOV iterations, or more
+# than REBUILD_MIN and its solve took longer than REBUILD_COST x the last factorisation
+# (both timed in the run: a stale active set makes the next, tighter solve stagnate)
+REBUILD_KRYLOV, REBUILD_MIN, REBUILD_COST = 30, 8, 0.25
 
 
 @dataclass
@@ -265,8 +269,8 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
                   residual_tol: float = RESIDUAL_TOL):
     """Newton on the finest of ``levels`` with GMRES + :class:`MultilevelPreconditioner`.
 
-    The preconditioner is factorised once and kept across Newton steps until GMRES needs
-    more than :data:`REBUILD_KRYLOV` iterations; ``reuse`` (see the preconditioner) carries
+    The preconditioner is factorised once and kept across Newton steps until GMRES
+    slows down (see :data:`REBUILD_KRYLOV`); ``reuse`` (see the preconditioner) carries
     factorised levels between the solves of a nested iteration or a sequence.
     GMRES is stopped at the Eisenstat & Walker (1996, choice 2) forcing term
     eta_k = 0.9 (|F_k|/|F_(k-1)|)^2, safeguarded, within [``krylov_rtol``, 0.1]: loose far
@@ -277,9 +281,12 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
     cache: dict = {}
 
     def direction(PI, H0, F, lin, s, act):
-        if "prec" not in cache or cache["its"] > REBUILD_KRYLOV:
+        if "prec" not in cache or cache["its"] > REBUILD_KRYLOV or (
+                cache["its"] > REBUILD_MIN and cache["gmres_s"] > REBUILD_COST * cache["build_s"]):
+            t0 = time.perf_counter()
             cache["prec"] = MultilevelPreconditioner(levels, transfers, PI, H0, lin, act,
                                                      reuse=reuse)
+            cache["build_s"] = time.perf_counter() - t0
             Jf = cache["prec"].lv[-1]
         else:
             Jf = _PrecLevel(fine, PI, H0, dense=False, radius=0, lin=lin, act=act, factor=False)
@@ -297,6 +304,7 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
             count[0] += 1
 
         eta = _forcing(cache, float(np.linalg.norm(F)), krylov_rtol)
+        t0 = time.perf_counter()
         dx, info = spla.gmres(A, rhs, M=M, rtol=eta, restart=restart,
                               maxiter=maxiter_krylov, callback=cb, callback_type="pr_norm")
         if info < 0:
@@ -305,6 +313,7 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
         # are exact, whatever the GMRES tolerance (P = 0 there after a full step)
         dx[:-1][act] = rhs[:-1][act]
         cache["its"] = count[0] if info == 0 else 10**6
+        cache["gmres_s"] = time.perf_counter() - t0
         return dx, count[0]
 
     return _newton(fine, PI, H0, direction, max_iter, tol, case, residual_tol)
