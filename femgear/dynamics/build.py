@@ -206,5 +206,8 @@ def with_friction(model: GearRotorModel, friction: Friction) -> GearRotorModel:
 def with_deviation(model: GearRotorModel, deviation: MeshDeviation | None) -> GearRotorModel:
     """``model`` with the drive/coast flank deviations ``deviation`` (None: none)."""
     if deviation is not None and np.any(model.backlash + deviation.opening < 0):
-        raise ValueError("backlash + the mean flank deviation must stay non-negative (the flanks interpenetrate)")
+        closing = -float(np.min(deviation.opening)) * 1e6
+        raise SceneError("pair.backlash", f"the flank deviations close the dead zone by up to {closing:.3g} µm, more "
+                                          f"than the backlash {model.backlash * 1e6:.3g} µm: the flanks would "
+                                          "interpenetrate (the pair jams); give a larger backlash or less expansion")
     return replace(model, deviation=deviation)

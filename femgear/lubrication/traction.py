@@ -35,12 +35,25 @@ def gupta_thermal_factor(p_h, E_red: float, srr, ue, eta0: float, beta_t: float,
     """Thermal reduction of the central film, φ_T (Gupta et al. 1992).
 
     φ_T = [1 − 13.2 (p_h/E') L*^0.42] / [1 + 0.213 (1 + 2.23 |SRR|^0.83) L*^0.64],
-    L* = β_T η0 u_e² / k_f (the thermal loading parameter).
+    L* = β_T η0 u_e² / k_f (the thermal loading parameter).  The fit's numerator changes
+    sign at extreme load and speed (13.2 (p_h/E') L*^0.42 ≥ 1: far outside the data it
+    was fitted to); there φ_T is floored at :data:`GUPTA_FLOOR` (a film of a tenth of
+    the isothermal one) and :func:`gupta_out_of_range` says where.
     """
     L_star = beta_t * eta0 * np.asarray(ue) ** 2 / k_f
     num = 1 - 13.2 * np.asarray(p_h) / E_red * L_star**0.42
     den = 1 + 0.213 * (1 + 2.23 * np.abs(srr) ** 0.83) * L_star**0.64
-    return num / den
+    return np.maximum(num / den, GUPTA_FLOOR)
+
+
+#: smallest thermal film factor used (the fit turns negative beyond its range)
+GUPTA_FLOOR = 0.1
+
+
+def gupta_out_of_range(p_h, E_red: float, ue, eta0: float, beta_t: float, k_f: float) -> np.ndarray:
+    """True where Gupta's fit would give φ_T ≤ :data:`GUPTA_FLOOR` (its numerator ≤ 0.1)."""
+    L_star = beta_t * eta0 * np.asarray(ue) ** 2 / k_f
+    return 1 - 13.2 * np.asarray(p_h) / E_red * L_star**0.42 <= GUPTA_FLOOR
 
 
 @dataclass(frozen=True)

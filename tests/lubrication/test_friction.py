@@ -95,3 +95,17 @@ def test_friction_along_the_baseline_path_is_u_shaped_with_its_minimum_at_the_pi
     i = c.pitch_index
     assert np.all(np.diff(r.mu[: i + 1]) < 0) and np.all(np.diff(r.mu[i:]) > 0)
     assert 1.0 < r.flash_max.max() < 100.0
+
+
+def test_gupta_factor_is_floored_and_flagged_outside_its_fit():
+    """Beyond its fit Gupta's numerator turns negative (a negative film): the factor is
+    floored and the points are reported; inside the fit it is untouched."""
+    from femgear.lubrication.traction import GUPTA_FLOOR, gupta_out_of_range, gupta_thermal_factor
+
+    args = dict(E_red=2.3e11, srr=0.3, eta0=0.08, beta_t=0.03, k_f=0.13)
+    p_h = np.array([0.5e9, 5e9])
+    ue = np.array([1.0, 60.0])
+    phi = gupta_thermal_factor(p_h, ue=ue, **args)
+    assert phi[1] == GUPTA_FLOOR and GUPTA_FLOOR < phi[0] < 1
+    flags = gupta_out_of_range(p_h, args["E_red"], ue, args["eta0"], args["beta_t"], args["k_f"])
+    assert list(flags) == [False, True]
