@@ -10,7 +10,9 @@
    the unmodified mean deflection at that load, relief length 0.4 p_bt (rule fixed before
    the run), (b) amount minimising LTE p-p at the design load (Tavakoli & Houser, ASME
    JMTAD 108:86, 1986); LTE p-p against load 0.1–2 × design, PNG ``out/ltca_harris.png``.
-4. The pressure map of the design case on the 3-D pinion flank, ``out/ltca_pressure.vtu``.
+4. Discretisation of the contact problem: 64 vs 128 phases (LTE harmonics 1–5), 16 vs 32
+   points per contact line (LTE p-p, mean stiffness).
+5. The pressure map of the design case on the 3-D pinion flank, ``out/ltca_pressure.vtu``.
 Prints a table and one JSON line (also ``out/ltca_study.json``).
 """
 
@@ -64,6 +66,31 @@ def convergence(scene, pair, levels, phases=64):
     return out
 
 
+def discretisation(scene, pair, level):
+    """Phases (64 vs 128) and contact points per line (16 vs 32) at one segment level, unmodified and
+    with a 5 µm / 0.4 p_bt tip relief: LTE p-p, mean stiffness and LTE harmonics 1–5."""
+    from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.scene.schema import Modifications
+
+    E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
+    F = normal_force(pair, scene.operating.torque, scene.operating.driver)
+    model = build_model(pair, E, nu, level=level)
+    out = {}
+    for name, mods in (("unmodified", None), ("tip_relief", Modifications(tip_relief=5e-6, tip_relief_length=0.4 * pair.p_bt))):
+        runs = {(n, m): mesh_cycle(model, F, mods, n_phases=n, n_line=m, keep_lines=False)
+                for n, m in ((64, 16), (128, 16), (64, 32))}
+        ref = runs[(64, 16)]
+        h0 = ref.harmonics(5)
+        out[name] = {
+            "lte_pp_um": ref.lte_peak_to_peak() * 1e6, "k_mean": ref.mean_stiffness(),
+            "harmonics_um": (h0 * 1e6).tolist(),
+            "phases_128_harmonics_change": (np.abs(runs[(128, 16)].harmonics(5) - h0) / h0.max()).tolist(),
+            "points_32_lte_pp_change": abs(runs[(64, 32)].lte_peak_to_peak() / ref.lte_peak_to_peak() - 1),
+            "points_32_k_change": abs(runs[(64, 32)].mean_stiffness() / ref.mean_stiffness() - 1),
+        }
+    return out
+
+
 def harris(scene, pair, level, factors, phases=32):
     from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
@@ -103,9 +130,10 @@ def run(coarse: bool = False) -> dict:
     conv = convergence(scene, pair, levels)
     factors = np.round(np.linspace(0.1, 2.0, 8 if coarse else 14), 3)
     h, design, model = harris(scene, pair, 0 if coarse else 1, factors)
+    disc = discretisation(scene, pair, 0 if coarse else 1)
     iso = mesh_stiffness(pair, "iso6336", n_positions=16)
     pem = mesh_stiffness(pair, "pem", n_positions=64)
-    out = {"convergence": conv, "harris": h, "k_iso6336": iso.mean, "k_pem": pem.mean,
+    out = {"convergence": conv, "discretisation": disc, "harris": h, "k_iso6336": iso.mean, "k_pem": pem.mean,
            "k_ltca": conv["rows"][-1]["k_mean"], "design_p_max_GPa": float(design.p_max_left.max() / 1e9)}
     (ROOT / "out").mkdir(exist_ok=True)
     out["vtk"] = str(write_flank_pressure(ROOT / "out" / "ltca_pressure.vtu", design, pair,
@@ -147,6 +175,10 @@ def main(argv) -> None:
     print(f"change between the two finest: LTE p-p {c.get('change_finest_lte_pp', float('nan')):.2%}, "
           f"k mean {c.get('change_finest_k_mean', float('nan')):.2%}; observed order LTE p-p "
           f"{c.get('order_lte_pp_um', float('nan')):.2f}, k {c.get('order_k_mean', float('nan')):.2f}")
+    for name, d in out["discretisation"].items():
+        print(f"{name}: LTE p-p {d['lte_pp_um']:.4f} µm, harmonics 1-5 [µm] " + " ".join(f"{x:.4f}" for x in d["harmonics_um"])
+              + "; 128 vs 64 phases: harmonic change / largest " + " ".join(f"{x:.1e}" for x in d["phases_128_harmonics_change"])
+              + f"; 32 vs 16 points per line: LTE p-p {d['points_32_lte_pp_change']:.2%}, k {d['points_32_k_change']:.2%}")
     print(f"mean mesh stiffness (both helices, normal): LTCA {out['k_ltca']:.4e}, ISO 6336 c_γα {out['k_iso6336']:.4e} "
           f"({out['k_ltca'] / out['k_iso6336'] - 1:+.1%}), PEM {out['k_pem']:.4e} ({out['k_ltca'] / out['k_pem'] - 1:+.1%})")
     h = out["harris"]
