@@ -143,7 +143,12 @@ def solve_contact(C: np.ndarray, eps: np.ndarray, force: float, case: str = "LTC
         A[:m, m] = -1.0
         A[m, :m] = -1.0
         rhs = np.concatenate([-eps[idx], [-force * scale]])      # unknowns: x = f·scale [m] and δ [m]
-        x = np.linalg.solve(A, rhs)
+        try:
+            x = np.linalg.solve(A, rhs)
+        except np.linalg.LinAlgError as exc:
+            raise ConvergenceError(case, f"singular contact system on {m} active points ({exc})", {"violation": hist}) from exc
+        if not np.all(np.isfinite(x)):
+            raise ConvergenceError(case, "non-finite contact loads", {"violation": hist})
         f = np.zeros(n)
         f[idx] = x[:m] / scale
         delta = x[m]
