@@ -38,10 +38,14 @@ class Meta(_Frozen):
 
 
 class Pair(_Frozen):
-    """``[pair]``: the double-helical gear pair, data shared by both members.
+    """``[pair]``: the gear pair, data shared by both members.
 
-    A double-helical pair is two helical pairs of opposite hand side by side
-    ("left" and "right" helix).  ``face_width`` is the width of ONE helix.
+    ``kind``: a double-helical pair (the default) is two helical pairs of opposite hand
+    side by side ("left" and "right" helix), ``face_width`` the width of ONE helix; a
+    single-helical pair is one helix of width ``face_width``; a spur pair has
+    ``helix_angle_deg = 0``.  Consistency (kind vs helix angle, thrust bearings of a
+    single helix, basic rack vs coefficients, tip diameters and centre distance vs
+    profile shifts) is checked by :mod:`femgear.geometry.scene_pair`.
     """
 
     kind: Literal["double-helical", "single-helical", "spur"] = Field(
