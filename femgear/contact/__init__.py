@@ -3,7 +3,8 @@
 - ``hertz``  line, circular and elliptical Hertz contact (exact elliptic integrals).
 - ``film``   EHL film formulas (Hamrock–Dowson, Dowson–Higginson, Dowson–Toyoda,
              Moes line, Nijenbanning–Venner–Moes) and the Moes groups M, L.
-- ``path``   the quasi-static Hertz + film pass along the path of contact.
+- ``sharing`` quasi-static load sharing between the tooth pairs in contact (spur, helical).
+- ``path``   the quasi-static Hertz + film pass along the path of contact (with load sharing).
 """
 
 from femgear.contact.film import (

@@ -1,6 +1,8 @@
-"""Involute helical gear-pair geometry and kinematics (pure numpy, SI units).
+"""Involute gear-pair geometry and kinematics: spur, single- and double-helical (pure numpy, SI units).
 
-- ``gear``        dimensions, contact ratios and feasibility checks (ISO 21771).
+- ``involute``    the involute function and its inverse.
+- ``gear``        dimensions, contact ratios and feasibility checks (ISO 21771); ``GearPair.kind``.
+- ``scene_pair``  the pair of a scene: kind checks, ISO 53 racks, tip diameters, centre distance.
 - ``kinematics``  radii of curvature and velocities along the path of contact,
                   contact lines of each helix, mesh frequency.
 """
