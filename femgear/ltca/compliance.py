@@ -190,7 +190,7 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
             "solve_seconds": st.solve_seconds, "solves": st.solves, "cg_iterations": st.iterations,
             "seconds": time.perf_counter() - t0, "n_tets": int(mesh.t.shape[1]), "order": order,
             "h_tooth": spec.h_tooth, "cached": False,
-            "asymmetry": float(np.linalg.norm(G[mid] - G[mid].T) / np.linalg.norm(G[mid]))}
+            "asymmetry": float(np.linalg.norm(G[mid] - G[mid].T) / np.linalg.norm(G[mid]))}   # load ≠ reading functional
     return MemberCompliance(member, grid_rho, grid_z, offsets, bulk, G[mid], depth, st.ndofs, info)
 
 
