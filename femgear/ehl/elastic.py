@@ -18,6 +18,8 @@ D(X) = -(1/pi) int ln|X - X'| P(X') dX', with piecewise-constant P per node cell
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import scipy.fft as sfft
 import scipy.sparse as sp
@@ -108,3 +110,24 @@ def line_influence(x: np.ndarray, h: float) -> np.ndarray:
 
     d = x[:, None] - x[None, :]
     return -(G(d + h / 2) - G(d - h / 2)) / np.pi
+
+
+@lru_cache(maxsize=4)
+def _line_kernel(n: int, h: float) -> np.ndarray:
+    K = line_influence(h * np.arange(n), h)  # depends on offsets only
+    K.setflags(write=False)
+    return K
+
+
+def line_kernel(x: np.ndarray, h: float) -> np.ndarray:
+    """:func:`line_influence` on uniform nodes, cached (read-only) for grids up to 2049
+    nodes: a sequence of solves (a path, a map, a thermal loop) builds it once."""
+    if x.size > 2049:
+        return line_influence(x, h)
+    return _line_kernel(int(x.size), float(h))
+
+
+@lru_cache(maxsize=8)
+def point_deflection(nx: int, ny: int, h: float) -> PointDeflection:
+    """Cached :class:`PointDeflection` (its kernel transform is built once per grid)."""
+    return PointDeflection(nx, ny, h)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from femgear.ehl.elastic import PointDeflection, line_influence
+from femgear.ehl.elastic import line_kernel, point_deflection
 from femgear.ehl.grid import Grid
 from femgear.ehl.reynolds import Linearization, ReynoldsFE
 from femgear.ehl.rheology import Rheology
@@ -39,7 +39,7 @@ class Level:
             self.X, self.Y = X, Y
             self.geometry = 0.5 * X**2 + 0.5 * ratio * Y**2
             self.interior = grid.interior()
-            self.defl = PointDeflection(grid.nx, grid.ny, grid.h)
+            self.defl = point_deflection(grid.nx, grid.ny, grid.h)
             self.shape = (grid.ny, grid.nx)
             self.h, self.dim = grid.h, 2
         else:
@@ -48,7 +48,7 @@ class Level:
             self.geometry = 0.5 * self.X**2
             self.interior = np.arange(1, self.X.size - 1)
             self.h, self.dim = float(x[1] - x[0]), 1
-            self._K = line_influence(self.X, self.h)
+            self._K = line_kernel(self.X, self.h)
             self.shape = (self.X.size,)
         # the artificial diffusion models the elastic transport of P (reynolds.py): none
         # for rigid surfaces

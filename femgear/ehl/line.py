@@ -19,26 +19,37 @@ from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
 from femgear.ehl.grid import prolongation_1d
 from femgear.ehl.level import Level
-from femgear.ehl.newton import History, newton_dense
+from femgear.ehl.newton import RESIDUAL_TOL, History, newton_dense
 from femgear.ehl.point import CONTINUATION, _result
+from femgear.ehl.results import EHLResult
 from femgear.ehl.rheology import Rheology
 
 X0_DEFAULT = -4.5
 DEFAULT_LEVEL = 6  # 1025 nodes
 MAX_LEVEL = 8  # 4097 nodes: the finest grid a tol-driven solve may reach (dense Newton)
+WARM_RESIDUAL_TOL = 1e-8  # warm-started solves of a sequence stop at this scaled residual
 
 
 def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: int = 4,
                x0: float | None = None, x1: float = 1.5, viscosity: str = "barus",
                compressible: bool = False, ph: float | None = None, z: float = 0.68,
                ad_factor: float = 1.0, sd_factor: float = 1.0, tol: float | None = None,
-               newton_tol: float = 1e-8, max_level: int = MAX_LEVEL, max_iter: int = 60):
+               newton_tol: float = 1e-8, max_level: int = MAX_LEVEL, max_iter: int = 60,
+               start: EHLResult | None = None, reuse: dict | None = None):
     """Isothermal line-contact EHL in Moes line groups (M, L); returns EHLResult.
 
     Domain X in [x0, x1] (x0 default -4.5, checked against the fully flooded inlet
     distance like the point contact's default domain); level ``k`` has ``16 * 2**k``
     intervals. ``tol``, ``newton_tol`` and the flags as in
     :func:`femgear.ehl.point.solve_point` (default level 6, tol-driven cap ``max_level``).
+
+    ``start``: a line solution of a neighbouring case (the previous position of a path,
+    the previous point of a friction map) to warm-start from: the nested iteration then
+    begins one level below the finest from that solution instead of from Hertz on the
+    coarse levels (so the result still carries a two-level error estimate); when Newton
+    fails from it, the cold start is used. ``reuse``: a dict the caller keeps across a
+    sequence of solves; the LU factors of each level's Jacobian are kept there and
+    reused as GMRES preconditioners (:func:`femgear.ehl.newton.newton_dense`).
     """
     if M <= 0 or L < 0:
         raise ValueError("need M > 0 and L >= 0")
@@ -73,7 +84,8 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
         H0 = float(moes_line_central(M, L)) / fac - float(lv.deflection(lv.full(P))[i0])
         P_start, H0_start = P.copy(), H0
         try:
-            P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case)
+            P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
+                                    reuse=reuse)
             hist.extend(h)
             return lv, P, H0
         except ConvergenceError as exc:
@@ -81,21 +93,27 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
         P, H0 = P_start, H0_start
         for frac in CONTINUATION:  # continuation in alpha_bar
             stage = lv if frac == 1.0 else make(frac, lev)
-            P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=newton_tol, case=case)
+            P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
+                                    reuse=reuse)
             hist.extend(h)
         return lv, P, H0
 
+    got = _warm(start, make, max(level - 1, 0), M, L, fac, hist, max_iter, newton_tol, case,
+                reuse)
+    if got:
+        lv, P, H0 = got
+        coarse_level = lv_index = max(level - 1, 0)
     # a coarse grid cannot carry a very thin film (high M): refine the start level
-    for start in range(min(coarse_level, level), level + 1):
+    for lv_index in ([] if got else range(min(coarse_level, level), level + 1)):
         try:
-            lv, P, H0 = direct(start)
+            lv, P, H0 = direct(lv_index)
             break
         except ConvergenceError as exc:
             hist.extend(History(**exc.history))
-            if start == level:
+            if lv_index == level:
                 raise ConvergenceError(case, "no convergence from a Hertzian start on any "
                                        "level", hist.as_dict()) from exc
-    coarse_level = start
+    coarse_level = lv_index
     per_level = [_line_summary(lv, P, H0, fac, len(hist.residual), t0)]
     for k in range(coarse_level + 1, level + 1):
         if tol is not None and all(e is not None and e <= tol
@@ -103,13 +121,47 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
             break
         fine = make(1.0, k)
         P = (prolongation_1d(lv.n) @ lv.full(P))[fine.interior]
-        P, H0, h = newton_dense(fine, P, H0, max_iter=max_iter, tol=newton_tol, case=case)
+        if got:  # the neighbouring fine solution is closer than the prolonged coarse one
+            P = _scaled_start(fine, start)
+        P, H0, h = newton_dense(fine, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
+                                residual_tol=WARM_RESIDUAL_TOL if got else RESIDUAL_TOL,
+                                reuse=reuse)
         hist.extend(h)
         lv = fine
         per_level.append(_line_summary(lv, P, H0, fac, len(h.residual), t0))
     return _result("line", M, L, lv, P, H0, fac, hist, per_level, time.perf_counter() - t0,
                    tol=acc.DEFAULT_TOL if tol is None else tol,
                    extra_flags=(f"domain: {inlet}",) if inlet else ())
+
+
+def _warm(start: EHLResult | None, make, lev: int, M, L, fac, hist: History, max_iter,
+          newton_tol, case, reuse: dict):
+    """(level, P_I, H0) solved on level ``lev`` from a neighbouring line solution
+    ``start`` (Hertzian units: P(X) interpolated and scaled to the load, H0 shifted by the
+    change of the Moes central film), or None when there is none or Newton fails there."""
+    if start is None:
+        return None
+    if start.kind != "line":
+        raise ValueError("start must be a line-contact EHLResult")
+    lv = make(1.0, lev)
+    P = _scaled_start(lv, start)
+    H0 = start.H0 + (float(moes_line_central(M, L)) / fac
+                     - float(moes_line_central(start.M, start.L)) / pr.line_h_moes_factor(start.M))
+    try:
+        P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
+                                residual_tol=WARM_RESIDUAL_TOL, reuse=reuse)
+    except ConvergenceError as exc:
+        hist.extend(History(**exc.history))
+        return None
+    hist.extend(h)
+    return lv, P, H0
+
+
+def _scaled_start(level: Level, start: EHLResult) -> np.ndarray:
+    """The pressure of ``start`` (Hertzian X) on the interior nodes of ``level``, scaled
+    to the load."""
+    P = np.maximum(np.interp(level.X, start.x, start.P), 0.0)[level.interior]
+    return P * (level.load / (level.m @ P))
 
 
 def _line_summary(level: Level, PI, H0, fac, its, t0) -> dict:

@@ -134,19 +134,73 @@ def _newton(level: Level, PI, H0, direction: Callable, max_iter: int, tol: float
 
 
 def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
-                 tol: float = 1e-7, case: str = "ehl",
-                 residual_tol: float = RESIDUAL_TOL) -> tuple[np.ndarray, float, History]:
-    """Newton with the exact dense Jacobian (coarse grids, line contacts)."""
+                 tol: float = 1e-7, case: str = "ehl", residual_tol: float = RESIDUAL_TOL,
+                 reuse: dict | None = None) -> tuple[np.ndarray, float, History]:
+    """Newton with the exact dense Jacobian (coarse grids, line contacts).
+
+    With ``reuse`` (a dict kept by the caller across the solves of a sequence), the LU
+    factors of the last Jacobian of the same size are kept and the Newton system is
+    solved by GMRES on the exact Jacobian preconditioned by them; the Jacobian is
+    factorised again only when GMRES needs more than :data:`DENSE_REUSE_KRYLOV`
+    iterations. A Newton step then costs O(n^2) instead of O(n^3)."""
     Kd = level.dense_kernel()
 
-    def direction(PI, H0, F, lin, s, act):
+    def factor(lin, s, act):
         J = level.dense_jacobian(lin, s, act, Kd)
         try:
-            return sla.solve(J, -F, check_finite=True), 0
+            lu = sla.lu_factor(J, check_finite=True)
         except (sla.LinAlgError, ValueError) as exc:
             raise ConvergenceError(case, f"singular Jacobian ({exc})") from exc
+        if reuse is not None:
+            reuse[("dense", level.n)] = lu
+        return lu
+
+    def direction(PI, H0, F, lin, s, act):
+        lu = None if reuse is None else reuse.get(("dense", level.n))
+        if lu is not None:
+            dx, its = _reused_lu_direction(level, lin, s, act, Kd, lu, F)
+            if dx is not None:
+                return dx, its
+        return sla.lu_solve(factor(lin, s, act), -F, check_finite=False), 0
 
     return _newton(level, PI, H0, direction, max_iter, tol, case, residual_tol)
+
+
+DENSE_REUSE_KRYLOV = 12
+
+
+def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F):
+    """GMRES on the exact (row-scaled) dense-level Jacobian preconditioned by ``lu``;
+    (dx, iterations) or (None, iterations) when it needs more than DENSE_REUSE_KRYLOV."""
+    I = level.interior
+    JP = lin.JP[I][:, I].tocsr()
+    JH = lin.JH[I].tocsr()
+    colH = np.asarray(JH.sum(axis=1)).ravel()
+    n = F.size
+
+    def matvec(v):
+        vP = v[:-1]
+        out = np.empty_like(v)
+        r = s * (JP @ vP + JH @ (Kd @ vP) + colH * v[-1])
+        r[act] = vP[act]
+        out[:-1] = r
+        out[-1] = level.m @ vP
+        return out
+
+    count = [0]
+
+    def cb(_):
+        count[0] += 1
+
+    A = spla.LinearOperator((n, n), matvec=matvec, dtype=float)
+    M = spla.LinearOperator((n, n), matvec=lambda r: sla.lu_solve(lu, r, check_finite=False),
+                            dtype=float)
+    dx, info = spla.gmres(A, -F, M=M, rtol=1e-10, atol=0.0, restart=DENSE_REUSE_KRYLOV,
+                          maxiter=1, callback=cb, callback_type="pr_norm")
+    if info != 0 or not np.all(np.isfinite(dx)):
+        return None, count[0]
+    dx[:-1][act] = -F[:-1][act]
+    return dx, count[0]
 
 
 class _PrecLevel:

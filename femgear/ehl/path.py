@@ -5,7 +5,9 @@ Roelands viscosity and Dowson–Higginson density at the inlet viscosity η(0, T
 gives the pressure and film fields; the sliding traction is the Ree–Eyring shear
 τ0 asinh(η(p, T) γ̇/τ0), γ̇ = |v1 − v2|/h, integrated over them, and the contact
 temperature rise is Blok's flash temperature for that μ.  μ = ∫τ dx / w'.  (The thermal
-film and its feedback on the viscosity are the ``tehl`` level.)
+film and its feedback on the viscosity are the ``tehl`` level.)  Consecutive positions (or
+map points) are warm-started from the previous solution with the LU factors kept
+(:func:`femgear.ehl.line.solve_line`'s ``start`` and ``reuse``).
 """
 
 from __future__ import annotations
@@ -31,9 +33,12 @@ def ehl_line_solver(scene, level: int | None = None):
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr, T)))
         mu, dT = np.empty(w.shape), np.empty(w.shape)
+        prev, reuse = None, {}  # warm start from the previous position / map point
         for i in np.ndindex(w.shape):
             ehl = EHLOil(eta0=float(oil.viscosity(0.0, T[i])), alpha=oil.alpha, viscosity="roelands", compressible=True)
-            r = solve_line_dimensional(w[i], R[i], ue[i], E_red, ehl, level=level)
+            r = solve_line_dimensional(w[i], R[i], ue[i], E_red, ehl, level=level,
+                                       start=prev, reuse=reuse)
+            prev = r.result
             vs = abs(srr[i]) * ue[i]
             tau = shear_stress(oil.viscosity(r.p, T[i]), vs / r.h, "eyring", tau0)
             mu[i] = np.trapezoid(tau, r.x) / w[i]

@@ -38,3 +38,26 @@ def test_line_dry_limit():
     inside = np.abs(r.x) < 0.8
     assert np.abs(r.P[inside] - np.sqrt(1 - r.x[inside] ** 2)).max() < 0.05
     assert r.Hc == pytest.approx(float(moes_line_central(500.0, 10.0)), rel=0.05)
+
+
+def test_warm_start_gives_the_cold_answer_with_fewer_iterations():
+    """A neighbouring solution (M, L) = (20, 10) warm-starts (22, 10.5): the same films
+    (to the Newton tolerance) and estimate, in fewer Newton iterations; the LU factors
+    kept in ``reuse`` serve as GMRES preconditioners."""
+    first = solve_line(20.0, 10.0, level=5)
+    cold = solve_line(22.0, 10.5, level=5)
+    reuse = {}
+    warm = solve_line(22.0, 10.5, level=5, start=first, reuse=reuse)
+    assert warm.Hc == pytest.approx(cold.Hc, rel=1e-7)
+    assert warm.Hmin == pytest.approx(cold.Hmin, rel=1e-6)
+    assert warm.iterations < cold.iterations
+    assert warm.error_estimate["Hc"] == pytest.approx(cold.error_estimate["Hc"], rel=0.05)
+    assert any(k[0] == "dense" for k in reuse)
+    with pytest.raises(ValueError):
+        solve_line(22.0, 10.5, level=5, start=solve_point_result())
+
+
+def solve_point_result():
+    from femgear.ehl.point import solve_point
+
+    return solve_point(20.0, 10.0, level=0, coarse_level=0)
