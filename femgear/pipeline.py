@@ -38,8 +38,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
              wear_checkpoint: Path | None = None) -> RunResult:
     """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
     t0 = time.perf_counter()
-    contact = contact_along_path(case.scene, pair=case.pair)
     stiffness = mesh_stiffness_from_scene(case.scene)
+    contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness)
     if case.levels.dynamics == "none":
         return RunResult(case, contact, stiffness, static_tribology(case, contact, stiffness, wear_checkpoint),
                          seconds=time.perf_counter() - t0)
@@ -59,10 +59,10 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
 
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,
                      wear_checkpoint: Path | None = None) -> Tribology:
-    """Friction, thermal deviation and wear once, at the static load (load shared along the
-    contact lines by the local pair stiffness of the stiffness level, :func:`line_stiffness`)."""
-    n = case.path.u.size
-    w = np.full(n, contact.load_per_length)
+    """Friction, thermal deviation and wear once, at the static load: friction at the contact
+    pass's shared line load w(u) (:mod:`femgear.contact.sharing`), wear with the load shared
+    along the contact lines by the local pair stiffness (:func:`line_stiffness`)."""
+    w = np.asarray(contact.line_load, dtype=float)      # load sharing between the pairs in contact
     mu = dT = zeta = wear = None
     if case.levels.lubrication != "none":
         mu, dT = friction_along_path(case, w)
@@ -76,7 +76,7 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         pair = case.pair
         k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
             case.stiffness.mesh_stiffness_per_width * pair.b
-        setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / 2,
+        setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / pair.n_helices,
                           c_l=line_stiffness(case, k_mean, stiffness),
                           coefficient=case.wear.coefficient, hardness=case.material.hardness)
         state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)

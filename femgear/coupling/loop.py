@@ -142,7 +142,7 @@ class CouplingSetup:
         c_l = line_stiffness(case, float(np.mean(model.stiffness.k_left)), stiffness)
         return cls(case=case, model=model, modal=modal_analysis(model),
                    lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
-                   c_l=c_l, static_force=case.operating.normal_force / 2, n_phase=n_phase, method=method)
+                   c_l=c_l, static_force=case.operating.normal_force / case.pair.n_helices, n_phase=n_phase, method=method)
 
 
 @dataclass(frozen=True)

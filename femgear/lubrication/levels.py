@@ -89,12 +89,15 @@ def friction_along_path(case: Case, w: np.ndarray, solver: Lubrication | None = 
 
 def static_friction(case: Case) -> float | Callable[[np.ndarray], np.ndarray]:
     """μ for the dynamics without coupling: 0 (``none``), ``friction.coefficient`` (``constant``),
-    else μ(u) of the lubrication level at the static load w' = F_bn / (2 L̄) (U-shaped, zero at
-    the pitch point), interpolated along the path."""
+    else μ(u) of the lubrication level at the static line load of the contact pass (load
+    shared between the tooth pairs in contact, :func:`femgear.contact.path.contact_along_path`;
+    U-shaped, zero at the pitch point), interpolated along the path."""
     level = case.levels.lubrication
     if level in ("none", "constant"):
         return 0.0 if level == "none" else case.friction.coefficient
+    from femgear.contact.path import contact_along_path
+
     u = case.path.u
-    w = np.full(u.size, case.operating.normal_force / (2 * case.pair.mean_contact_length))
+    w = contact_along_path(case.scene, pair=case.pair, u=u).line_load
     mu = friction_along_path(case, w)[0]
     return lambda x: np.interp(x, u, mu)
