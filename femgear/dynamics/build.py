@@ -54,8 +54,8 @@ def loop_spring(pair, T: np.ndarray, stiffness: float) -> np.ndarray:
     return stiffness * np.outer(wr, wr)
 
 
-def stiffness_table(case: Case, stiffness: StiffnessTable | str | None) -> StiffnessTable:
-    """The mesh stiffness table: a given table, "constant", "contact-line" or a stiffness level."""
+def stiffness_source(case: Case, stiffness):
+    """The mesh stiffness: a given table or TVMS, "constant", "contact-line" or a stiffness level."""
     if stiffness is None:
         stiffness = case.levels.stiffness
     if isinstance(stiffness, str):
@@ -66,8 +66,25 @@ def stiffness_table(case: Case, stiffness: StiffnessTable | str | None) -> Stiff
             return contact_line_stiffness(case.pair, c_gamma, case.stagger)
         from femgear.stiffness import mesh_stiffness_from_scene
 
-        return as_stiffness_table(mesh_stiffness_from_scene(case.scene, level=stiffness))
-    return as_stiffness_table(stiffness)
+        return mesh_stiffness_from_scene(case.scene, level=stiffness)
+    return stiffness
+
+
+def tooth_contact_deviation(source) -> MeshDeviation | None:
+    """The unloaded TE e_s = LTE_s − F_s/k_s of an ``ltca`` stiffness (None for other levels).
+
+    With the secant stiffness k_s of the LTCA at the operating load, the mesh law
+    N_s = k_s f(δ_s − e_s) reproduces the LTCA's own loads at that load (the LTCA's
+    excitation identity).  e_s is the kinematic error of the flank modifications: it
+    enters as a drive-flank deviation; the modifications are taken as equal on the coast
+    flanks (the coast table is the drive table: exact for the uniform part, the coast
+    flanks seldom touch).
+    """
+    exc = (getattr(source, "info", None) or {}).get("excitation")
+    if exc is None:
+        return None
+    e = np.array([exc["e_left"], exc["e_right"]], dtype=float)
+    return MeshDeviation(drive=e, coast=e.copy())
 
 
 def mesh_damping(geom: MeshGeometry, M24: np.ndarray, table: StiffnessTable, zeta_m: float) -> np.ndarray:
@@ -147,7 +164,8 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     K = st.K + (loop_spring(pair, st.T, load_stiffness) if load_stiffness > 0 else 0.0)
     geom = mesh_geometry(pair, half)
     G = geom.g @ st.T
-    table = stiffness_table(case, stiffness)
+    source = stiffness_source(case, stiffness)
+    table = as_stiffness_table(source)
     zeta_m = case.stiffness.damping_ratio if mesh_damping_ratio is None else mesh_damping_ratio
     K_mean = st.K + sum(k * np.outer(G[s], G[s]) for s, k in enumerate(table.mean))
     ratio = case.stiffness.rayleigh_ratio if rayleigh_ratio is None else rayleigh_ratio
@@ -168,7 +186,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         stagger=case.stagger, profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb,
         rayleigh=(a0, a1), geometry=geom, nominal_rate=rate, flexible_modes_hz=tuple(wflex / (2 * math.pi)),
         half_spacing=half, v_reg=case.friction.regularisation_speed if v_reg is None else v_reg,
-        load_stiffness=load_stiffness,
+        load_stiffness=load_stiffness, base_deviation=tooth_contact_deviation(source),
     )
     if friction is None:
         from femgear.lubrication.levels import static_friction
@@ -204,7 +222,10 @@ def with_friction(model: GearRotorModel, friction: Friction) -> GearRotorModel:
 
 
 def with_deviation(model: GearRotorModel, deviation: MeshDeviation | None) -> GearRotorModel:
-    """``model`` with the drive/coast flank deviations ``deviation`` (None: none)."""
+    """``model`` with the drive/coast flank deviations ``deviation`` (None: none) added to
+    the model's own (``base_deviation``: the flank modifications of the ``ltca`` level)."""
+    if model.base_deviation is not None:
+        deviation = model.base_deviation.plus(deviation)
     if deviation is not None and np.any(model.backlash + deviation.opening < 0):
         closing = -float(np.min(deviation.opening)) * 1e6
         raise SceneError("pair.backlash", f"the flank deviations close the dead zone by up to {closing:.3g} µm, more "

@@ -77,6 +77,18 @@ class MeshDeviation:
         if self.drive.shape != self.coast.shape:
             raise ValueError("MeshDeviation.drive and .coast must have the same shape")
 
+    def plus(self, other: MeshDeviation | None) -> MeshDeviation:
+        """The sum of two deviations, the coarser table interpolated onto the finer phase grid."""
+        if other is None:
+            return self
+        n = max(self.drive.shape[1], other.drive.shape[1])
+        ph = np.arange(n) / n
+
+        def on(a: np.ndarray) -> np.ndarray:
+            return a if a.shape[1] == n else np.array([periodic_interp(row, ph) for row in a])
+
+        return MeshDeviation(drive=on(self.drive) + on(other.drive), coast=on(self.coast) + on(other.coast))
+
     @property
     def shift(self) -> np.ndarray:
         """c_s = (d_D − d_C)/2: the shift of the dead zone [m]."""
@@ -124,6 +136,9 @@ class GearRotorModel:
     load_stiffness: float           #: power-loop stiffness [N m/rad]
     #: flank deviations of the drive and coast flanks per helix over one mesh period
     deviation: MeshDeviation | None = None
+    #: the part of ``deviation`` that belongs to the tooth geometry (the unloaded TE of the
+    #: flank modifications from the LTCA level); :func:`with_deviation` adds to it
+    base_deviation: MeshDeviation | None = None
 
     @property
     def n(self) -> int:

@@ -173,3 +173,34 @@ def test_rayleigh_damping_leaves_the_free_rotation_undamped(lumped):
     flex = phi[:, w2 > 1e-6 * w2.max()]
     c_modal = np.diag(flex.T @ lumped.C @ flex)
     assert np.all(c_modal >= a0 * (1 - 1e-9))                 # mass term a0 on every flexible mode (+ K, bearings)
+
+
+def test_ltca_excitation_enters_as_the_drive_flank_deviation(baseline_scene):
+    """An ``ltca`` stiffness carries e_s = LTE − F_s/k_s: the model's drive threshold moves by
+    e_s(φ) (N = k_s (G q − b − e_s)), and coupling deviations add to it, not replace it."""
+    from femgear.dynamics import MeshDeviation, build_model, with_deviation
+
+    n = 64
+    ph = np.arange(n) / n
+    k = 4e8 * (1 + 0.1 * np.cos(2 * np.pi * ph))
+    e = 2e-6 * np.sin(2 * np.pi * ph) ** 2
+
+    class FakeLTCA:                 # the MeshStiffness interface the ltca level returns
+        level = "ltca"
+        info = {"excitation": {"e_left": e, "e_right": e}}
+
+        def __call__(self, phase):
+            from femgear.dynamics.mesh import periodic_interp
+
+            kk = periodic_interp(k, np.asarray(phase))
+            return kk, kk
+
+    m = build_model(build_case(baseline_scene), "lumped", stiffness=FakeLTCA(), friction=0.0)
+    assert np.allclose(m.deviation.drive, [e, e]) and np.allclose(m.deviation.coast, [e, e])
+    i = 16                                            # φ = 1/4: e = 2 µm
+    x = m.backlash + e[i] + 1e-6
+    q = np.linalg.pinv(m.G) @ np.array([x, x])
+    N = m.mesh_forces(np.array(i / n / m.mesh_frequency), q, np.zeros(m.n))[1]
+    assert np.allclose(N, m.stiffness(np.array(i / n))[0] * 1e-6, rtol=1e-6)
+    worn = with_deviation(m, MeshDeviation(drive=np.full((2, n), 1e-6), coast=np.zeros((2, n))))
+    assert np.allclose(worn.deviation.drive, [e + 1e-6, e + 1e-6]) and np.allclose(worn.deviation.coast, [e, e])
