@@ -2,7 +2,7 @@
 results, or stop with exit 2 and ONE line naming a scene key (or, for a solver that does not
 converge, exit 1 and one line) — never a traceback, never an internal error, never NaN.
 
-Values are the baseline's scaled by 10^±3, plus the values users get wrong: zero,
+Values are the baseline's scaled by 10^±0.5 (often) or 10^±3, plus the values users get wrong: zero,
 negatives, inf, nan, strings holding numbers, booleans.  A cheap physics preset keeps
 each example fast (``make test``: bounded examples; ``make test-slow``: more, with dynamics).
 """
@@ -63,9 +63,10 @@ def overrides(draw):
     out = []
     for key in keys:
         base = _baseline(key)
-        scaled = st.floats(-3, 3).map(lambda e, b=base: b * 10.0**e if b else 10.0**e * 1e-4)
+        exponent = st.one_of(st.floats(-0.5, 0.5), st.floats(-3, 3))    # mostly near the baseline
+        scaled = exponent.map(lambda e, b=base: b * 10.0**e if b else 10.0**e * 1e-4)
         if isinstance(base, int) and not isinstance(base, bool):
-            scaled = st.integers(-5, 4 * base)
+            scaled = st.one_of(st.integers(base // 2, 2 * base), st.integers(-5, 4 * base))
         wrong = st.sampled_from([0.0, -1.0, math.inf, -math.inf, math.nan, True, str(base)])
         value = draw(st.one_of(scaled, scaled, scaled, wrong))
         out.append(f"{key}={_toml(value)}")
@@ -80,6 +81,7 @@ def _check(sets: list[str], physics: list[str], tmp_path: Path, capsys) -> None:
     rc = main(argv)
     stdout, stderr = capsys.readouterr()
     assert "Traceback" not in stderr
+    hypothesis.event(f"exit {rc}")
     if rc == 2:
         lines = stderr.strip().splitlines()
         assert len(lines) == 1, stderr
