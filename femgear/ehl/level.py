@@ -109,6 +109,12 @@ class Level:
         return sp.csr_matrix(np.where(band, K, 0.0))
 
     # -- residual ----------------------------------------------------------------------
+    def reynolds_residual(self, PI: np.ndarray, H0: float) -> np.ndarray:
+        """Film (with the deflection) and Reynolds residual at all nodes, no Jacobian: one
+        work unit of the solver benchmarks."""
+        P, H = self.film(PI, H0)
+        return self.reynolds.residual(P, H)
+
     def evaluate(self, PI: np.ndarray, H0: float, s: np.ndarray | None = None):
         """Residual F (length n_I + 1), linearization, film H (all nodes), scaling s and
         the active (cavitated) set. ``s`` is computed here when not given."""

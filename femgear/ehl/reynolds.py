@@ -102,6 +102,24 @@ class ReynoldsFE:
         self._wedge = -e.products(e.phi, e.grad[0])  # (W Q)_i = -int Q dphi_i/dX
         self.W = e.matrix(np.broadcast_to(self._wedge, (e.ne,) + self._wedge.shape))
 
+    def residual(self, P: np.ndarray, H: np.ndarray) -> np.ndarray:
+        """R = A P + W Q alone (no Jacobian): the operator's cheapest evaluation, the
+        work unit of the benchmarks; equals ``linearize(P, H).R``."""
+        e, rh = self.basis, self.rheology
+        Pe, He = P[e.T], H[e.T]
+        Pq = e.at_points(Pe)
+        eps, _, _ = rh.epsilon(Pq, e.at_points(He), self.lam_bar)
+        rho_q, _ = rh.density(Pq)
+        xi, _ = upwind_weight(self.beta * rho_q * self.h**2 / (2.0 * np.maximum(eps, 1e-300)))
+        c = (eps + self.ad_factor * 0.5 * self.beta * rho_q * self.h**2 * xi) * e.w
+        flux = sum((c * e.grad_at_points(Pe, d)) @ e.grad[d] for d in range(self.dim))
+        Q = rh.density(P)[0] * H
+        R = e.scatter(flux) + self.W @ Q
+        if self.sd_factor > 0.0 and self.beta > 0.0:
+            delta = self.sd_factor * 0.5 * self.h * xi * e.w
+            R += e.scatter((delta * e.grad_at_points(Q[e.T], 0)) @ e.grad[0])
+        return R
+
     def linearize(self, P: np.ndarray, H: np.ndarray) -> Linearization:
         e, rh = self.basis, self.rheology
         Pe, He = P[e.T], H[e.T]  # (ne, npe)

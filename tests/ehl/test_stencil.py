@@ -58,3 +58,17 @@ def test_assembly_matches_skfem(kind):
     for ref, new in pairs:
         assert abs(ref - new).max() <= 1e-13 * abs(ref).max()
     assert np.allclose(asm(_unit, basis), el.load(), rtol=1e-14, atol=0)
+
+
+@pytest.mark.parametrize("sd", [0.0, 1.0])
+def test_residual_alone_equals_the_linearisation_residual(sd):
+    from femgear.ehl import params as pr
+    from femgear.ehl.level import Level
+    from femgear.ehl.rheology import Rheology
+
+    lv = Level(Rheology(9.9, viscosity="roelands", ph=1e9, compressible=True),
+               pr.point_lam_bar(20.0), pr.POINT_LOAD, grid=Grid.build(Domain(), 1), sd_factor=sd)
+    PI = np.sqrt(np.maximum(1 - lv.X**2 - lv.Y**2, 0))[lv.interior] + 0.01
+    P, H = lv.film(PI, 0.3)
+    R = lv.reynolds.linearize(P, H).R
+    assert np.allclose(lv.reynolds_residual(PI, 0.3), R, rtol=0, atol=1e-13 * np.abs(R).max())
