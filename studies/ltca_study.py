@@ -2,7 +2,7 @@
 
     python studies/ltca_study.py [--coarse]
 
-1. Mesh convergence (segment levels 0, 1, 2; ``--coarse``: 0, 1): LTE peak-to-peak and
+1. Mesh convergence (segment levels 0–3; ``--coarse``: 0, 1): LTE peak-to-peak and
    mean secant mesh stiffness at the scene torque, unmodified flanks, 64 phases; the
    change between the two finest levels and the observed order p = ln(Δ₀₁/Δ₁₂)/ln(h₁/h₂).
 2. Mean mesh stiffness against ISO 6336 c_γα (both helices, normal direction) and PEM.
@@ -126,7 +126,7 @@ def run(coarse: bool = False) -> dict:
     from femgear.stiffness.tvms import mesh_stiffness
 
     scene, pair = setup()
-    levels = (0, 1) if coarse else (0, 1, 2)
+    levels = (0, 1) if coarse else (0, 1, 2, 3)
     conv = convergence(scene, pair, levels)
     factors = np.round(np.linspace(0.1, 2.0, 8 if coarse else 14), 3)
     h, design, model = harris(scene, pair, 0 if coarse else 1, factors)
