@@ -10,13 +10,15 @@ params       Moes groups <-> Hertzian dimensionless parameters (lam_bar, alpha_b
 rheology     Barus / Roelands viscosity, Dowson-Higginson density (dimensionless, with d/dP).
 grid         uniform nested node grids, bilinear prolongation.
 elastic      DC-FFT half-space deflection (point), log-kernel matrix (line).
-reynolds     Q1/P1 Reynolds residual and Jacobian blocks (scikit-fem) with artificial
-             diffusion and streamline diffusion, both differentiated exactly.
+stencil      Q1/P1 element tables on the uniform grid; assembly by array arithmetic.
+reynolds     Q1/P1 Reynolds residual and Jacobian blocks with artificial diffusion and
+             streamline diffusion, both differentiated exactly.
 level        one discretisation level: film, complementarity (cavitation) residual, dense Jacobian.
 newton       dense Newton (coarse grids, line) and Newton-Krylov with a multilevel
              preconditioner (fine grids); histories; ConvergenceError on failure.
 point, line  drivers: nested iteration, continuation strategies, result assembly.
-results      frozen EHLResult and centre-line quantities.
+results      frozen EHLResult (with error_estimate, tol, flags) and centre-line quantities.
+accuracy     Richardson error estimates from the nested levels, flags, inlet adequacy.
 output       VTK (pyvista) and centre-line PNG (matplotlib), imported lazily.
 dimensional  SI entry for point and line contacts.
 """

@@ -43,6 +43,9 @@ from femgear.ehl.rheology import Rheology
 CONTINUATION = (0.0, 0.25, 0.5, 0.75, 1.0)
 STABILISATION = (2.0, 1.5, 1.2)
 DEFAULT_LEVEL = 3  # 129^2
+# Newton stops after a full step onto this scaled residual (or a relative step < newton_tol):
+# 1e-8 moves Hc and Hmin by < 1e-7 relative, far below any grid's discretisation error
+RESIDUAL_TOL = 1e-8
 MAX_LEVEL = 5  # 513^2: the finest grid a tol-driven solve may reach
 
 
@@ -72,7 +75,7 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                 compressible: bool = False, ph: float | None = None, z: float = 0.68,
                 rigid: bool = False, ad_factor: float = 1.0, sd_factor: float = 1.0,
                 tol: float | None = None, newton_tol: float = 1e-5, max_level: int = MAX_LEVEL,
-                max_iter: int = 40) -> EHLResult:
+                residual_tol: float = RESIDUAL_TOL, max_iter: int = 40) -> EHLResult:
     """Isothermal point-contact EHL in Moes groups (M, L); returns :class:`EHLResult`.
 
     ``level`` is the finest grid (``16 * 2**level`` intervals along X), ``coarse_level``
@@ -131,10 +134,11 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
 
     def solve_on(lvs: list[Level], PI, H0):
         if len(lvs) == 1:
-            PI, H0, h = newton_dense(lvs[0], PI, H0, max_iter=max_iter, tol=newton_tol, case=case)
+            PI, H0, h = newton_dense(lvs[0], PI, H0, max_iter=max_iter, tol=newton_tol, case=case,
+                                     residual_tol=residual_tol)
         else:
             PI, H0, h = newton_krylov(lvs, PI, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                      reuse=factorised)
+                                      reuse=factorised, residual_tol=residual_tol)
         hist.extend(h)
         return PI, H0
 

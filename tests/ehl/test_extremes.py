@@ -14,6 +14,7 @@ SLOW_POINT_CASES = {
     "high load": (dict(M=1000.0, L=10.0, level=2), 0.10),
     "high L": (dict(M=20.0, L=30.0, level=2), 0.10),
     "very low speed": (dict(M=3000.0, L=5.0, level=2), None),
+    "M = 2000 at L = 10 (issue 16: converges or raises)": (dict(M=2000.0, L=10.0, level=2), None),
 }
 POINT_CASES = {
     "high load, coarse only": (dict(M=1000.0, L=10.0, level=1), None),
