@@ -17,13 +17,25 @@ def solids_of(scene) -> Solids:
 
 def scene_line_friction(scene, model: str = "eyring", n: int = 48):
     """``(w, R, ue, srr, T) -> TractionResult``: :func:`line_contact_friction` with the scene's
-    oil, materials and traction parameters bound (the ``formula`` level)."""
+    oil, materials and traction parameters bound (the ``formula`` level); with rough flanks
+    (``roughness.rq`` > 0) the mixed-lubrication split of :mod:`femgear.lubrication.mixed`."""
     oil, solids = OilLaw.from_scene(scene), solids_of(scene)
     E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
+    kw = dict(model=model, tau0=scene.oil.eyring_stress, limiting_shear=scene.oil.limiting_shear_coeff, n=n)
+    rough = scene.roughness
+    if rough.rq > 0:
+        from femgear.lubrication.mixed import Roughness, mixed_line_friction
+
+        r = Roughness(rough.rq, rough.eta_beta_sigma, rough.sigma_over_beta)
+
+        def mixed(w, R, ue, srr, T) -> TractionResult:
+            return mixed_line_friction(w, R, ue, srr, T, oil, E_red, solids, r, scene.friction.boundary_coefficient,
+                                       **kw)[0]
+
+        return mixed
 
     def solve(w, R, ue, srr, T) -> TractionResult:
-        return line_contact_friction(w, R, ue, srr, T, oil, E_red, solids, model=model, tau0=scene.oil.eyring_stress,
-                                     limiting_shear=scene.oil.limiting_shear_coeff, n=n)
+        return line_contact_friction(w, R, ue, srr, T, oil, E_red, solids, **kw)
 
     return solve
 

@@ -138,15 +138,22 @@ def line_contact_friction(w, R, ue, srr, T_bulk, oil: OilLaw, E_red: float, soli
     pressure, the Moes (1992) central film at the inlet viscosity η(0, T_bulk) times
     Gupta's thermal factor, then :func:`hertz_traction`.
     """
-    from femgear.contact.film import line_film
-
     w, R, ue, srr, T_bulk = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr, T_bulk)))
     if np.any(w <= 0) or np.any(R <= 0) or np.any(ue <= 0):
         raise ValueError("load, radius and entrainment speed must be positive")
+    h, b, p_h = thermal_central_film(w, R, ue, srr, T_bulk, oil, E_red, solids)
+    return hertz_traction(w, b, p_h, h, ue * (1 + srr / 2), ue * (1 - srr / 2), T_bulk, oil, solids,
+                          model=model, tau0=tau0, limiting_shear=limiting_shear, n=n)
+
+
+def thermal_central_film(w, R, ue, srr, T_bulk, oil: OilLaw, E_red, solids: Solids):
+    """(h_c, b, p_h): the Moes (1992) central film at the inlet viscosity η(0, T_bulk) times
+    Gupta's thermal factor, and the Hertz half-width and pressure (arrays broadcast; E_red
+    may be an array, as in the JGP split of :mod:`femgear.lubrication.mixed`)."""
+    from femgear.contact.film import line_film
+
     b = np.sqrt(8 * w * R / (np.pi * E_red))
     p_h = 2 * w / (np.pi * b)
     eta_in = oil.viscosity(0.0, T_bulk)
     h = line_film(w, R, ue, E_red, eta_in, oil.alpha)["central_moes"]
-    h = h * gupta_thermal_factor(p_h, E_red, srr, ue, eta_in, oil.beta_t, solids.k_oil)
-    return hertz_traction(w, b, p_h, h, ue * (1 + srr / 2), ue * (1 - srr / 2), T_bulk, oil, solids,
-                          model=model, tau0=tau0, limiting_shear=limiting_shear, n=n)
+    return h * gupta_thermal_factor(p_h, E_red, srr, ue, eta_in, oil.beta_t, solids.k_oil), b, p_h

@@ -158,6 +158,21 @@ class Friction(_Frozen):
 
     coefficient: float = Field(0.05, ge=0, le=0.5, description="friction coefficient μ [-]")
     regularisation_speed: Pos = Field(0.01, description="v_reg of the sliding sign tanh(v_s/v_reg) [m/s]")
+    boundary_coefficient: float = Field(
+        0.1, ge=0, le=0.5, description="boundary friction coefficient μ_b of asperity contacts (mixed lubrication, "
+                                       "used when roughness.rq > 0) [-]")
+
+
+class SurfaceRoughness(_Frozen):
+    """``[roughness]``: flank roughness for mixed lubrication (Greenwood–Tripp asperities, JGP split).
+
+    0 = smooth flanks (full-film EHL everywhere).  Used by the ``formula`` lubrication level.
+    """
+
+    rq: NonNeg = Field(0.0, description="composite RMS roughness σ = √(Rq1² + Rq2²) of the two flanks [m]")
+    eta_beta_sigma: Pos = Field(0.04, le=1.0, description="Greenwood–Tripp ηβσ (asperity density × radius × σ) [-]")
+    sigma_over_beta: Pos = Field(
+        3e-3, le=1.0, description="σ/β, roughness over the asperity tip radius (typical 1e-3…1e-2) [-]")
 
 
 class Stiffness(_Frozen):
@@ -343,6 +358,7 @@ class Scene(_Frozen):
     operating: Operating
     errors: Errors = Errors()
     friction: Friction = Friction()
+    roughness: SurfaceRoughness = SurfaceRoughness()
     stiffness: Stiffness = Stiffness()
     wear: Wear = Wear()
     thermal: Thermal = Thermal()
