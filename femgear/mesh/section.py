@@ -134,6 +134,16 @@ def _rot(x, y, a):
     return c * x - s * y, s * x + c * y
 
 
+def _check_tip_resolution(prof, h: float) -> None:
+    """Raise ValueError (naming ``h``) unless two elements of size h fit across the tooth tip."""
+    tip_arc = 2 * prof.ra * float(prof.half_angle(np.array([prof.ra * (1 - 1e-9)]))[0])
+    if not 0 < h <= tip_arc / 2:
+        raise ValueError(
+            f"mesh size h={h:.3g} m is too coarse: the tooth tip is {tip_arc * 1e3:.3f} mm wide and needs "
+            f"two elements across (h ≤ {tip_arc / 2:.3g} m)"
+        )
+
+
 def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3, bore_radius: float | None = None,
                  refine_at: tuple[float, float] | None = None, refine_ratio: float = 0.2,
                  refine_radius: float | None = None, _extrude: tuple | None = None):
@@ -151,12 +161,7 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
     r_bore = 0.5 * rf if bore_radius is None or bore_radius <= 0 else bore_radius
     if not 0 < r_bore < rf - 2 * pair.m_n:
         raise ValueError(f"bore_radius={r_bore:.4g} m leaves a rim thinner than 2 m_n below the root circle")
-    tip_arc = 2 * prof.ra * float(prof.half_angle(np.array([prof.ra * (1 - 1e-9)]))[0])
-    if not 0 < h <= tip_arc / 2:
-        raise ValueError(
-            f"mesh size h={h:.3g} m is too coarse: the tooth tip is {tip_arc * 1e3:.3f} mm wide and needs "
-            f"two elements across (h ≤ {tip_arc / 2:.3g} m)"
-        )
+    _check_tip_resolution(prof, h)
     full = n_teeth is None or n_teeth >= z
     nt = z if full else int(n_teeth)
     if nt < 1:
