@@ -79,6 +79,7 @@ def coupled_case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = Fal
            "flank_temperature_rise": state.flank_temperature_rise, "wear": state.wear,
            "thermal_deviation": state.thermal_deviation, "removed": state.removed, "mesh_force_phase": state.mesh_force,
            "drive_deviation": drive, "coast_deviation": coast, "b0": scene.pair.backlash,
+           "load_per_length": state.load_per_length,
            "amplitudes": dict(state.amplitudes)}
     if state.dynamics is not None:
         r = state.dynamics.response
