@@ -46,15 +46,25 @@ def test_film_reduction_over_srr_against_gupta():
         print(f"SRR {s:4.2f}: phi {phi:.3f}  Gupta {g:.3f}")
     phis = [r[1] for r in rows]
     assert phis[2] < phis[1] < phis[0] - 0.03                         # sliding reduces the film further
-    assert abs(rows[0][1] / rows[0][2] - 1) < 0.05                    # rolling: within 5 %
-    assert all(1.15 < phi / g < 1.40 for s, phi, g in rows[1:])      # sliding: measured +28/+30 %
+    assert abs(rows[0][1] / rows[0][2] - 1) < 0.05                    # rolling: within 5 % of Gupta
     phi, g = _phi(1.0e9, 10.0, 0.0)
     assert abs(phi / g - 1) < 0.05                                    # rolling at 1 GPa (measured −2.8 %)
 
 
+def test_regression_sliding_film_reduction_gap_to_gupta():
+    """Regression, not a validation: femgear's film with sliding stays 15–40 % above Gupta's fit
+    (measured +28/+30 % at SRR 0.5/1, 0.5 GPa, 10 m/s; see the test above for the reading).
+    A change of the thermal model that moves this gap shows here."""
+    for s in (0.5, 1.0):
+        phi, g = _phi(0.5e9, 10.0, s)
+        assert 1.15 < phi / g < 1.40
+
+
 def test_thermal_figures_grid_converged():
-    """Level 5/192 cells vs level 6/384 cells x 12 layers (measured: μ 0.0317 both, h_c equal,
-    max ΔT 15.6 → 18.7 K: the peak sits on the pressure spike and converges slowly, as p_max)."""
+    """Level 5/192 cells vs level 6/384 cells x 12 layers: μ within 3 % and h_c within 1 % (the
+    figures the coupling uses; measured: μ 0.0317 both, h_c equal).  The peak film temperature
+    sits on the pressure spike and converges slowly, as p_max (15.6 → 18.7 K): it is checked
+    only to grow with the grid by less than a quarter, a regression band, not a convergence."""
     a = solve_tehl_line(case.W, case.R, case.UE, 0.5, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0,
                         level=5, cells=192)
     b = solve_tehl_line(case.W, case.R, case.UE, 0.5, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0,
