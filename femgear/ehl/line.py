@@ -76,44 +76,19 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
 
     hist = History()
 
-    def direct(lev: int):
-        lv = make(1.0, lev)
-        P = np.sqrt(np.maximum(1.0 - lv.X**2, 0.0))[lv.interior]
-        P *= lv.load / (lv.m @ P)
-        i0 = int(np.argmin(np.abs(lv.X)))
-        H0 = float(moes_line_central(M, L)) / fac - float(lv.deflection(lv.full(P))[i0])
-        P_start, H0_start = P.copy(), H0
-        try:
-            P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                    reuse=reuse)
-            hist.extend(h)
-            return lv, P, H0
-        except ConvergenceError as exc:
-            hist.extend(History(**exc.history))
-        P, H0 = P_start, H0_start
-        for frac in CONTINUATION:  # continuation in alpha_bar
-            stage = lv if frac == 1.0 else make(frac, lev)
-            P, H0, h = newton_dense(stage, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                    reuse=reuse)
-            hist.extend(h)
-        return lv, P, H0
+    def newton(lv: Level, P, H0, residual_tol: float = RESIDUAL_TOL):
+        P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
+                                residual_tol=residual_tol, reuse=reuse)
+        hist.extend(h)
+        return P, H0
 
-    got = _warm(start, make, max(level - 1, 0), M, L, fac, hist, max_iter, newton_tol, case,
-                reuse)
+    got = _warm(start, make, max(level - 1, 0), M, L, fac, hist, newton)
     if got:
         lv, P, H0 = got
-        coarse_level = lv_index = max(level - 1, 0)
-    # a coarse grid cannot carry a very thin film (high M): refine the start level
-    for lv_index in ([] if got else range(min(coarse_level, level), level + 1)):
-        try:
-            lv, P, H0 = direct(lv_index)
-            break
-        except ConvergenceError as exc:
-            hist.extend(History(**exc.history))
-            if lv_index == level:
-                raise ConvergenceError(case, "no convergence from a Hertzian start on any "
-                                       "level", hist.as_dict()) from exc
-    coarse_level = lv_index
+        coarse_level = max(level - 1, 0)
+    else:
+        lv, P, H0, coarse_level = _cold(make, min(coarse_level, level), level, M, L, fac, hist,
+                                        newton, case)
     per_level = [_line_summary(lv, P, H0, fac, len(hist.residual), t0)]
     for k in range(coarse_level + 1, level + 1):
         if tol is not None and all(e is not None and e <= tol
@@ -123,19 +98,47 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
         P = (prolongation_1d(lv.n) @ lv.full(P))[fine.interior]
         if got:  # the neighbouring fine solution is closer than the prolonged coarse one
             P = _scaled_start(fine, start)
-        P, H0, h = newton_dense(fine, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                residual_tol=WARM_RESIDUAL_TOL if got else RESIDUAL_TOL,
-                                reuse=reuse)
-        hist.extend(h)
+        n0 = len(hist.residual)
+        P, H0 = newton(fine, P, H0, WARM_RESIDUAL_TOL if got else RESIDUAL_TOL)
         lv = fine
-        per_level.append(_line_summary(lv, P, H0, fac, len(h.residual), t0))
+        per_level.append(_line_summary(lv, P, H0, fac, len(hist.residual) - n0, t0))
     return _result("line", M, L, lv, P, H0, fac, hist, per_level, time.perf_counter() - t0,
                    tol=acc.DEFAULT_TOL if tol is None else tol,
                    extra_flags=(f"domain: {inlet}",) if inlet else ())
 
 
-def _warm(start: EHLResult | None, make, lev: int, M, L, fac, hist: History, max_iter,
-          newton_tol, case, reuse: dict):
+def _cold(make, first: int, level: int, M, L, fac, hist: History, newton, case):
+    """(level, P_I, H0, its index) from a Hertzian start on the first level that converges
+    from ``first`` up (a coarse grid cannot carry a very thin film: high M)."""
+    for lev in range(first, level + 1):
+        try:
+            return (*_direct(make, lev, M, L, fac, hist, newton), lev)
+        except ConvergenceError as exc:
+            hist.extend(History(**exc.history))
+            if lev == level:
+                raise ConvergenceError(case, "no convergence from a Hertzian start on any "
+                                       "level", hist.as_dict()) from exc
+    raise ValueError("level must be >= 0")
+
+
+def _direct(make, lev: int, M, L, fac, hist: History, newton):
+    """Level ``lev`` from the Hertz pressure and the Moes film, directly or with
+    continuation in alpha_bar."""
+    lv = make(1.0, lev)
+    P = np.sqrt(np.maximum(1.0 - lv.X**2, 0.0))[lv.interior]
+    P *= lv.load / (lv.m @ P)
+    i0 = int(np.argmin(np.abs(lv.X)))
+    H0 = float(moes_line_central(M, L)) / fac - float(lv.deflection(lv.full(P))[i0])
+    try:
+        return (lv, *newton(lv, P.copy(), H0))
+    except ConvergenceError as exc:
+        hist.extend(History(**exc.history))
+    for frac in CONTINUATION:  # continuation in alpha_bar
+        P, H0 = newton(lv if frac == 1.0 else make(frac, lev), P, H0)
+    return lv, P, H0
+
+
+def _warm(start: EHLResult | None, make, lev: int, M, L, fac, hist: History, newton):
     """(level, P_I, H0) solved on level ``lev`` from a neighbouring line solution
     ``start`` (Hertzian units: P(X) interpolated and scaled to the load, H0 shifted by the
     change of the Moes central film), or None when there is none or Newton fails there."""
@@ -148,12 +151,10 @@ def _warm(start: EHLResult | None, make, lev: int, M, L, fac, hist: History, max
     H0 = start.H0 + (float(moes_line_central(M, L)) / fac
                      - float(moes_line_central(start.M, start.L)) / pr.line_h_moes_factor(start.M))
     try:
-        P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                residual_tol=WARM_RESIDUAL_TOL, reuse=reuse)
+        P, H0 = newton(lv, P, H0, WARM_RESIDUAL_TOL)
     except ConvergenceError as exc:
         hist.extend(History(**exc.history))
         return None
-    hist.extend(h)
     return lv, P, H0
 
 
