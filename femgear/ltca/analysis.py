@@ -78,6 +78,7 @@ class LTCAResult:
     p_max_right: np.ndarray
     load_error: np.ndarray       #: |Σf − F| / F per phase
     line_load: tuple = ()        #: per phase: array (n, 5) of helix, line, u, ζ, w [N/m]
+    line_length: tuple = ()      #: per phase: segment length Δℓ of each point [m]
     seconds: float = 0.0
     info: dict = field(default_factory=dict)
 
@@ -100,6 +101,19 @@ class LTCAResult:
     def mean_stiffness(self) -> float:
         """Cycle mean of the total secant mesh stiffness [N/m]."""
         return float(np.mean(self.k_secant))
+
+    def loads_per_line(self, i: int) -> dict[tuple[str, int], float]:
+        """Total normal load [N] of each contact line at phase index ``i``: {(helix, line index): F}."""
+        if not self.line_load:
+            raise ValueError("no line loads kept: run mesh_cycle(..., keep_lines=True)")
+        arr = self.line_load[i]
+        out: dict[tuple[str, int], float] = {}
+        for h, name in enumerate(("left", "right")):
+            s = arr[:, 0] == h
+            for j in np.unique(arr[s, 1]).astype(int):
+                m = s & (arr[:, 1] == j)
+                out[(name, int(j))] = float(np.sum(arr[m, 4] * self.line_length[i][m]))
+        return out
 
     def excitation(self) -> dict[str, np.ndarray]:
         """Per helix: secant/tangent stiffness, loaded and unloaded TE, e_s = LTE − F_s/k_s (SI)."""
@@ -148,7 +162,7 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
     t0 = time.perf_counter()
     phases = np.arange(n_phases) / n_phases
     cols = {k: np.zeros(n_phases) for k in ("lte", "nl", "nr", "fl", "fr", "ksl", "ksr", "ktl", "ktr", "pl", "pr", "err")}
-    lines = []
+    lines, lengths = [], []
     Ep = reduced_modulus(E, nu)
     cb = math.cos(pair.beta_b)
     for i, ph in enumerate(phases):
@@ -174,6 +188,7 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
         cols["err"][i] = abs(sol.load.sum() - force) / force
         if keep_lines:
             lines.append(np.column_stack([pts.helix, pts.line, pts.u, pts.zeta, w]))
+            lengths.append(pts.length)
     return LTCAResult(phases, force, cols["lte"], cols["nl"], cols["nr"], cols["fl"], cols["fr"], cols["ksl"],
                       cols["ksr"], cols["ktl"], cols["ktr"], cols["pl"], cols["pr"], cols["err"], tuple(lines),
-                      time.perf_counter() - t0, {"n_line": n_line, "stagger": stagger})
+                      tuple(lengths), time.perf_counter() - t0, {"n_line": n_line, "stagger": stagger})

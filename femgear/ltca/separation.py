@@ -33,6 +33,32 @@ from femgear.ltca.flank import roll_range
 Deviation = Callable[[str, int, np.ndarray, np.ndarray], np.ndarray]
 
 
+def tabulated_deviation(tables: dict) -> Deviation:
+    """A :data:`Deviation` from arrays: ``tables[(helix, member)] = (rho, zeta, values)`` on a grid [m].
+
+    ``rho`` (n,) roll distances and ``zeta`` (m,) face coordinates, ascending; ``values`` (n, m)
+    the normal deviation (wear depth +, thermal growth −, pitch/profile deviation).  Bilinear,
+    clamped to the grid; (helix, member) pairs not given contribute nothing.
+    """
+    from scipy.interpolate import RegularGridInterpolator
+
+    interp = {}
+    for key, (rho, zeta, values) in tables.items():
+        values = np.asarray(values, float)
+        if values.shape != (len(rho), len(zeta)) or not np.all(np.isfinite(values)):
+            raise ValueError(f"deviation table {key}: values must be finite with shape (len(rho), len(zeta))")
+        interp[key] = (np.asarray(rho, float), np.asarray(zeta, float), RegularGridInterpolator((rho, zeta), values))
+
+    def extra(helix: str, member: int, rho: np.ndarray, zeta: np.ndarray) -> np.ndarray:
+        if (helix, member) not in interp:
+            return np.zeros(np.shape(rho))
+        r, z, f = interp[(helix, member)]
+        pts = np.column_stack([np.clip(np.ravel(rho), r[0], r[-1]), np.clip(np.ravel(zeta), z[0], z[-1])])
+        return f(pts).reshape(np.shape(rho))
+
+    return extra
+
+
 def _relief(x: np.ndarray, amount: float, length: float, shape: str) -> np.ndarray:
     e = 1.0 if shape == "linear" else 2.0
     return amount * np.clip(x / length, 0.0, None) ** e if amount > 0 else np.zeros_like(x)

@@ -146,3 +146,26 @@ def test_pressure_map_vtk(coarse_model, baseline_force, baseline_pair, tmp_path)
     path = write_flank_pressure(tmp_path / "p.vtu", r, baseline_pair, 210e9, 0.3)
     m = meshio.read(path)
     assert m.points.shape[1] == 3 and m.point_data["p_max"].max() > 1e8
+
+
+def test_line_loads_sum_to_the_helix_loads(coarse_model, baseline_force):
+    from femgear.ltca.analysis import mesh_cycle
+
+    r = mesh_cycle(coarse_model, baseline_force, None, n_phases=4)
+    for i in range(4):
+        per_line = r.loads_per_line(i)
+        assert sum(v for (h, _), v in per_line.items() if h == "left") == pytest.approx(r.force_left[i], rel=1e-9)
+        assert len(per_line) >= 2
+
+
+def test_tabulated_wear_on_one_helix_shifts_load_away(coarse_model, baseline_force, baseline_pair):
+    """A uniform 5 µm wear depth on the left pinion flank: a helix-wide gap, the right helix carries more."""
+    from femgear.ltca.analysis import mesh_cycle
+    from femgear.ltca.flank import roll_range
+    from femgear.ltca.separation import tabulated_deviation
+
+    r0, r1 = roll_range(baseline_pair, 1)
+    wear = tabulated_deviation({("left", 1): ([r0, r1], [0.0, baseline_pair.b], np.full((2, 2), 5e-6))})
+    r = mesh_cycle(coarse_model, baseline_force, None, n_phases=4, extra=wear)
+    assert np.all(r.force_right > r.force_left)
+    assert np.allclose(r.nlte_left, 5e-6) and np.allclose(r.nlte_right, 0.0)
