@@ -176,8 +176,8 @@ def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarr
     """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication."""
     pair, kin = setup.pair, setup.kin
     maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
-            for s, off in enumerate((0.0, setup.case.stagger))]
-    w = 0.5 * (maps[0].mean_load + maps[1].mean_load)
+            for s, off in enumerate((0.0, setup.case.stagger)[:pair.n_helices])]
+    w = np.mean([m.mean_load for m in maps], axis=0)
     w = np.maximum(w, 1e-3 * setup.static_force / pair.mean_contact_length)   # never-loaded ends
     T0 = setup.case.operating.ambient_temperature
     mu, dT = setup.lubrication(w=w, R=kin.R, ue=kin.ue, srr=np.abs(kin.srr), T=np.full(w.shape, T0))
@@ -198,7 +198,7 @@ def _wear(setup: CouplingSetup, force: np.ndarray) -> np.ndarray:
         return np.zeros((2, n))
     from femgear.wear import WearSetup, run_wear
 
-    ws = WearSetup(pair=setup.pair, kin=setup.kin, force=force.mean(axis=0), c_l=setup.c_l,
+    ws = WearSetup(pair=setup.pair, kin=setup.kin, force=force[:setup.pair.n_helices].mean(axis=0), c_l=setup.c_l,
                    coefficient=case.wear.coefficient, hardness=case.material.hardness, n_phase=setup.n_phase)
     state = run_wear(ws, case.wear.cycles)
     return np.array([state.h1, state.h2])

@@ -148,7 +148,11 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         raise SceneError("physics.dynamics", f"unknown dynamics level {level!r}; choose one of {', '.join(LEVELS)}")
     bearing_span = bearing_span or tuple(m.bearing_span for m in members)
     shaft_diameter = shaft_diameter or tuple(m.shaft_diameter for m in members)
-    half = 0.5 * (pair.b + case.groove_width)
+    # helix centres at ±half; a pair with one mesh (spur, single helix) meshes in the mid-plane: the
+    # two "halves" coincide and the right one carries no mesh (k_right = 0 from the stiffness level)
+    half = 0.5 * (pair.b + case.groove_width) if pair.n_helices == 2 else 0.0
+    if pair.n_helices == 1 and level != "lumped":
+        raise SceneError("physics.dynamics", f"a {pair.kind} pair (one mesh) runs with the lumped dynamics level")
     for name, span in zip(("pinion", "gear"), bearing_span):
         if not span > 2 * half:
             raise SceneError(f"{name}.bearing_span",

@@ -91,8 +91,10 @@ class StiffnessTable:
         kr = np.atleast_1d(np.asarray(self.k_right, dtype=float))
         if kl.shape != kr.shape or kl.ndim != 1:
             raise ValueError("StiffnessTable: k_left and k_right must be 1-D arrays of equal length")
-        if not (np.all(kl > 0) and np.all(kr > 0)) or not np.all(np.isfinite(kl + kr)):
-            raise ValueError("StiffnessTable: mesh stiffness must be positive and finite (k_left/k_right)")
+        absent_right = np.all(kr == 0)          # one-mesh pairs (spur, single helix): no right mesh
+        if not (np.all(kl > 0) and (absent_right or np.all(kr > 0))) or not np.all(np.isfinite(kl + kr)):
+            raise ValueError("StiffnessTable: mesh stiffness must be positive and finite (k_left/k_right; "
+                             "k_right may be 0 throughout for a pair with one mesh)")
         object.__setattr__(self, "k_left", kl)
         object.__setattr__(self, "k_right", kr)
 

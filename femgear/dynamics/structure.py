@@ -9,8 +9,9 @@
 
 Half bodies: mass m/2, polar inertia I/2, diametral inertia I/4 + (m/2) b²/12 (thin
 solid disc of the helix width b) — the scene gives only m and I per member.  Bearings:
-the scene's support stiffness and damping per direction, split equally over the two
-bearings of a member; they do not restrain θz (the member rotates).
+the scene's support stiffness and damping per direction (axially ``axial_stiffness`` /
+``axial_damping`` where given: the thrust bearings of a single helix), split equally
+over the two bearings of a member; they do not restrain θz (the member rotates).
 """
 
 from __future__ import annotations
@@ -67,12 +68,16 @@ def assemble_structure(members: tuple[Member, Member], material: Material, pair:
     ``shaft_diameter`` are (pinion, gear) values [m].
     """
     M24 = _half_bodies(members, pair)
-    Kb_list, Cb_list = [], []
+    Kb_list, Cb_list = [], []          # per bearing station, directions x, y, z
     for name, mem in zip(("pinion", "gear"), members):
-        Kb_list.append(require_positive(mem.support_stiffness, f"{name}.support_stiffness") / 2)
+        k = require_positive(mem.support_stiffness, f"{name}.support_stiffness")
         if mem.support_damping < 0:
             raise SceneError(f"{name}.support_damping", "must be non-negative")
-        Cb_list.append(mem.support_damping / 2)
+        k_ax = getattr(mem, "axial_stiffness", None)           # thrust bearings (single helix), else the radial value
+        c_ax = getattr(mem, "axial_damping", None)
+        Kb_list.append(np.diag([k, k, k if k_ax is None else k_ax]) / 2)
+        c = mem.support_damping
+        Cb_list.append(np.diag([c, c, c if c_ax is None else c_ax]) / 2)
 
     if level == "lumped":
         T = tie_matrix(half)
@@ -85,8 +90,8 @@ def assemble_structure(members: tuple[Member, Member], material: Material, pair:
             zb = bearing_span[member] / 2
             for j, z in enumerate((-zb, zb)):
                 J = point_jacobian(np.array([0.0, 0.0, z]))
-                K[sl, sl] += Kb_list[member] * J.T @ J
-                Cb[sl, sl] += Cb_list[member] * J.T @ J
+                K[sl, sl] += J.T @ Kb_list[member] @ J
+                Cb[sl, sl] += J.T @ Cb_list[member] @ J
                 row = 3 * (2 * member + j)
                 bearing_map[row:row + 3, sl] = J
     else:
@@ -113,8 +118,8 @@ def assemble_structure(members: tuple[Member, Member], material: Material, pair:
                 keep.extend(range(node, node + 6))
             for j, node in enumerate((base, base + 18)):
                 for d in range(3):
-                    Kfull[node + d, node + d] += Kb_list[member]
-                    Cfull[node + d, node + d] += Cb_list[member]
+                    Kfull[node + d, node + d] += Kb_list[member][d, d]
+                    Cfull[node + d, node + d] += Cb_list[member][d, d]
                 bearing_nodes.append(node)
         K, M, Tg = guyan(Kfull, Mfull, np.array(keep))
         Cb = Tg.T @ Cfull @ Tg

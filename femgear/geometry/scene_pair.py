@@ -47,12 +47,10 @@ def _check_kind(scene) -> None:
                 raise SceneError(f"{name}.axial_stiffness",
                                  "a single-helical pair needs the axial (thrust) bearing stiffness of each member: "
                                  "its axial mesh force is not balanced by a second helix")
-    if p.kind != "double-helical":
-        for key, level in (("dynamics", scene.physics.dynamics), ("wear", scene.physics.wear)):
-            if level != "none":
-                raise SceneError(f"physics.{key}",
-                                 f"the {key} model is built for double-helical pairs (two meshes); a {p.kind} pair "
-                                 f"runs with physics.{key} = 'none' (quasi-static contact, rating, power loss)")
+    if p.kind != "double-helical" and scene.physics.dynamics == "timoshenko":
+        raise SceneError("physics.dynamics",
+                         f"the timoshenko level joins two helix halves by shaft elements; a {p.kind} pair has one "
+                         "mesh in the mid-plane: use physics.dynamics = 'lumped'")
 
 
 def rack_coefficients(pair_table) -> tuple[float, float, float]:

@@ -90,6 +90,8 @@ def load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.nda
     ``force`` is the helix's normal force [N], a scalar or one value per phase.
     """
     force = np.atleast_1d(np.asarray(force, dtype=float))
+    if math.sin(pair.beta_b) == 0.0:
+        return _spur_load_map(pair, u, force, deviation, c_l, offset)
     n_phase = n_phase or (force.size if force.size > 1 else 64)
     phases = np.arange(n_phase) / n_phase
     force = np.broadcast_to(force, phases.shape) if force.size == 1 else force
@@ -99,3 +101,27 @@ def load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.nda
     count = loaded.sum(axis=0)
     mean = np.where(count > 0, w.sum(axis=0) / np.maximum(count, 1), 0.0)
     return LoadMap(u=u, mean_load=mean, loaded_fraction=count / n_phase)
+
+
+def _spur_load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.ndarray,
+                   c_l: float | np.ndarray, offset: float = 0.0) -> LoadMap:
+    """Spur pairs: a contact line is the whole face width at one position, so position u is
+    loaded once per base pitch, together with the pairs at u ± k p_bt on the path.  At that
+    instant (mesh phase (u − u_A)/p_bt − offset) the approach δ satisfies
+    Σ_k c_l(u_k) b max(δ − h(u_k), 0) = F, and w'(u) = c_l(u) max(δ − h(u), 0)."""
+    c = np.broadcast_to(np.asarray(c_l, dtype=float), u.shape)
+    phases = np.arange(force.size) / force.size
+    w = np.zeros(u.shape)
+    for i, ui in enumerate(u):
+        k = np.arange(-4, 5)
+        uk = ui + k * pair.p_bt
+        uk = uk[(uk >= pair.u_start - 1e-12) & (uk <= pair.u_end + 1e-12)]
+        hk, ck = np.interp(uk, u, deviation), np.interp(uk, u, c) * pair.b
+        F = float(np.interp(((ui - pair.u_start) / pair.p_bt - offset) % 1.0, phases, force, period=1.0))
+        if F <= 0:
+            continue
+        lo = float(hk.min())
+        hi = lo + 1.01 * F / ck.sum() + float(np.ptp(hk)) + 1e-30
+        delta = brentq(lambda d: float(np.sum(ck * np.maximum(d - hk, 0.0))) - F, lo, hi, xtol=1e-16, rtol=1e-13)
+        w[i] = c[i] * max(delta - deviation[i], 0.0)
+    return LoadMap(u=u, mean_load=w, loaded_fraction=(w > 0).astype(float))

@@ -102,9 +102,8 @@ def test_double_helical_default_kind_unchanged(baseline_pair):
     assert math.degrees(baseline_pair.beta) == pytest.approx(30.0)
 
 
-def test_dynamics_and_wear_refused_for_one_mesh_pairs():
-    """Until the dynamics and wear models carry one mesh, a spur/single-helical pair with them is one clear line."""
-    err = _error(FZG, "physics.dynamics=lumped")
+def test_timoshenko_refused_for_one_mesh_pairs():
+    """One-mesh pairs run the lumped dynamics (one mesh in the mid-plane); the timoshenko level,
+    which joins two helix halves by shaft elements, is one clear line."""
+    err = _error(FZG, "physics.dynamics=timoshenko")
     assert err.key == "physics.dynamics" and "spur" in str(err)
-    err = _error(FZG, "physics.wear=archard")
-    assert err.key == "physics.wear"
