@@ -19,10 +19,12 @@ shown by default); ``--json`` commands print one JSON object as the last line of
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import logging
 import signal
 import sys
+from collections.abc import Iterator
 from typing import NoReturn
 
 from femgear.errors import FemgearError
@@ -75,21 +77,32 @@ def _add_global_options(parser: argparse.ArgumentParser) -> None:
                 _add_global_options(child)
 
 
-def configure_logging(verbose: int = 0, quiet: bool = False) -> None:
-    """Log records of ``femgear.*`` to stderr as ``femgear: level: message``."""
-    level = logging.ERROR if quiet else (logging.WARNING, logging.INFO)[min(verbose, 1)]
-    if verbose >= 2:
-        level = logging.DEBUG
-    logger = logging.getLogger("femgear")
-    for handler in list(logger.handlers):
-        if getattr(handler, "_femgear_cli", False):
-            logger.removeHandler(handler)
+@contextlib.contextmanager
+def cli_logging(verbose: int = 0, quiet: bool = False) -> Iterator[None]:
+    """While a command runs: records of ``femgear.*`` to stderr as ``femgear: level: message``
+    (warnings by default, INFO with -v, DEBUG with -vv, errors only with -q); Python warnings
+    (numpy's RuntimeWarnings inside a diverging iteration, ...) only with -v.  The previous
+    logging state is restored afterwards (the CLI may run inside another program or a test).
+    """
+    level = logging.ERROR if quiet else (logging.WARNING, logging.INFO, logging.DEBUG)[min(verbose, 2)]
     handler = logging.StreamHandler(sys.stderr)
-    handler._femgear_cli = True  # type: ignore[attr-defined]
     handler.setFormatter(_Formatter())
-    logger.addHandler(handler)
-    logger.setLevel(level)
-    logger.propagate = False
+    loggers = {logging.getLogger("femgear"): level,
+               logging.getLogger("py.warnings"): logging.WARNING if verbose else logging.CRITICAL}
+    saved = {lg: (lg.level, lg.propagate) for lg in loggers}
+    for lg, lvl in loggers.items():
+        lg.addHandler(handler)
+        lg.setLevel(lvl)
+        lg.propagate = False
+    logging.captureWarnings(True)
+    try:
+        yield
+    finally:
+        logging.captureWarnings(False)
+        for lg, (lvl, propagate) in saved.items():
+            lg.removeHandler(handler)
+            lg.setLevel(lvl)
+            lg.propagate = propagate
 
 
 class _Formatter(logging.Formatter):
@@ -105,12 +118,21 @@ def _raise_interrupt(signum, frame) -> NoReturn:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
-    configure_logging(args.verbose, args.quiet)
     previous = signal.getsignal(signal.SIGTERM)
     try:
         signal.signal(signal.SIGTERM, _raise_interrupt)  # SIGTERM stops cleanly, like Ctrl-C
     except ValueError:  # not the main thread (e.g. called from a test runner thread)
         previous = None
+    try:
+        with cli_logging(args.verbose, args.quiet):
+            return _dispatch(args)
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+
+
+def _dispatch(args: argparse.Namespace) -> int:
+    """Run the command; every expected failure becomes one line and an exit code."""
     try:
         return int(args.func(args) or 0)
     except FemgearError as exc:
@@ -143,9 +165,6 @@ def main(argv: list[str] | None = None) -> int:
         print(f"femgear: internal error: {type(exc).__name__}: {exc} (rerun with --debug for the traceback)",
               file=sys.stderr)
         return EXIT_SOLVER
-    finally:
-        if previous is not None:
-            signal.signal(signal.SIGTERM, previous)
 
 
 if __name__ == "__main__":  # pragma: no cover
