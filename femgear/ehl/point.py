@@ -110,140 +110,152 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
     if inlet and domain is None:
         raise SceneError("M", f"(M, L) = ({M:g}, {L:g}): {inlet}; pass a larger domain= "
                          "to solve it anyway (the result is then flagged)")
-    tol_eff = acc.DEFAULT_TOL if tol is None else tol
+    solver = _NestedPoint(M, L, ratio=ratio, dom=dom, coarse_level=coarse_level, level=level,
+                          tol=tol, rigid=rigid, ad_factor=ad_factor, sd_factor=sd_factor, t0=t0,
+                          rheology=dict(viscosity=viscosity, ph=ph, z=z, compressible=compressible),
+                          newton=dict(max_iter=max_iter, tol=newton_tol, case=case,
+                                      residual_tol=residual_tol))
+    PI, H0, per_level, fine = solver.solve_at(M)
+    return _result("point", M, L, fine, PI, H0, solver.fac, solver.hist, per_level,
+                   time.perf_counter() - t0, tol=acc.DEFAULT_TOL if tol is None else tol,
+                   extra_flags=(f"domain: {inlet}",) if inlet else ())
 
-    def make(M_: float, frac: float, lev: int, stab: float = 1.0) -> Level:
-        rheo = Rheology(pr.point_alpha_bar(M_, L) * frac, viscosity=viscosity, ph=ph, z=z,
-                        compressible=compressible)
-        return Level(rheo, pr.point_lam_bar(M_), pr.POINT_LOAD, grid=Grid.build(dom, lev),
-                     ratio=ratio, rigid=rigid, ad_factor=ad_factor * stab,
-                     sd_factor=sd_factor * stab)
 
-    levels = _LazyLevels(lambda k: make(M, 1.0, k), coarse_level, level)
-    hist = History()
-    factorised: dict = {}  # Level -> factorised preconditioner level, kept across levels
+class _NestedPoint:
+    """One point-contact solve: the nested iteration over the levels with its fallbacks
+    (alpha and load continuation, stabilisation continuation; see the module docstring)."""
 
-    def nvm_hertz(M_: float) -> float:
+    def __init__(self, M: float, L: float, *, ratio: float, dom: Domain, coarse_level: int,
+                 level: int, tol: float | None, rigid: bool, ad_factor: float, sd_factor: float,
+                 t0: float, rheology: dict, newton: dict):
+        self.M, self.L, self.ratio, self.dom = M, L, ratio, dom
+        self.coarse_level, self.level, self.tol = coarse_level, level, tol
+        self.rigid, self.ad_factor, self.sd_factor = rigid, ad_factor, sd_factor
+        self.t0, self.rheology, self.newton, self.case = t0, rheology, newton, newton["case"]
+        self.fac = pr.point_h_moes_factor(M)
+        self.hist = History()
+        self.factorised: dict = {}  # Level -> factorised preconditioner level, kept across levels
+        self.levels = _LazyLevels(lambda k: self.make(M, 1.0, k), coarse_level, level)
+
+    def make(self, M_: float, frac: float, lev: int, stab: float = 1.0) -> Level:
+        rheo = Rheology(pr.point_alpha_bar(M_, self.L) * frac, **self.rheology)
+        return Level(rheo, pr.point_lam_bar(M_), pr.POINT_LOAD, grid=Grid.build(self.dom, lev),
+                     ratio=self.ratio, rigid=self.rigid, ad_factor=self.ad_factor * stab,
+                     sd_factor=self.sd_factor * stab)
+
+    def nvm_hertz(self, M_: float) -> float:
         """NVM central film in Hertzian units."""
-        return float(nvm_central(M_, L, ratio)) / pr.point_h_moes_factor(M_)
+        return float(nvm_central(M_, self.L, self.ratio)) / pr.point_h_moes_factor(M_)
 
-    def hertz(lv: Level, M_: float):
-        PI = _hertz_start(lv, ratio)
-        H0 = nvm_hertz(M_) - float(lv.deflection(lv.full(PI))[np.argmin(lv.X**2 + lv.Y**2)])
+    def hertz(self, lv: Level, M_: float):
+        PI = _hertz_start(lv, self.ratio)
+        H0 = self.nvm_hertz(M_) - float(lv.deflection(lv.full(PI))[np.argmin(lv.X**2 + lv.Y**2)])
         return PI, H0
 
-    def solve_on(lvs: list[Level], PI, H0):
-        if len(lvs) == 1:
-            PI, H0, h = newton_dense(lvs[0], PI, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                     residual_tol=residual_tol)
-        else:
-            PI, H0, h = newton_krylov(lvs, PI, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                      reuse=factorised, residual_tol=residual_tol)
-        hist.extend(h)
-        return PI, H0
-
-    def attempt(lvs, PI, H0):
+    def attempt(self, lvs, PI, H0):
+        """(PI, H0) solved on the finest of ``lvs`` (dense Newton on one level), or None."""
         try:
-            return solve_on(lvs, PI, H0)
+            if len(lvs) == 1:
+                PI, H0, h = newton_dense(lvs[0], PI, H0, **self.newton)
+            else:
+                PI, H0, h = newton_krylov(lvs, PI, H0, reuse=self.factorised, **self.newton)
         except ConvergenceError as exc:
-            hist.extend(History(**exc.history))
+            self.hist.extend(History(**exc.history))
             return None
+        self.hist.extend(h)
+        return PI, H0
 
-    def start_solve(lvs: list[Level], M_: float, stab: float):
+    def summary(self, lv: Level, PI, H0, its: int, ad: float) -> dict:
+        return _level_summary(lv, PI, H0, self.fac, its, self.t0, self.ad_factor * ad)
+
+    def start_solve(self, lvs, M_: float, stab: float):
         """(PI, H0, n) for load M_ on the n-th level, or None: (1) dense Newton on the
         coarse level from Hertz, (2) with continuation in alpha_bar, (3) Newton-Krylov on
         the next level from Hertz (a coarse grid cannot carry a very thin film)."""
-        got = attempt(lvs[:1], *hertz(lvs[0], M_))
+        got = self.attempt(lvs[:1], *self.hertz(lvs[0], M_))
         if got:
             return (*got, 1)
-        PI, H0 = hertz(lvs[0], M_)
+        PI, H0 = self.hertz(lvs[0], M_)
         for frac in CONTINUATION:
-            stage = lvs[0] if frac == 1.0 else make(M_, frac, coarse_level, stab)
-            got = attempt([stage], PI, H0)
+            stage = lvs[0] if frac == 1.0 else self.make(M_, frac, self.coarse_level, stab)
+            got = self.attempt([stage], PI, H0)
             if not got:
                 break
             PI, H0 = got
         else:
             return PI, H0, 1
         if len(lvs) > 1:
-            got = attempt(lvs[:2], *hertz(lvs[1], M_))
+            got = self.attempt(lvs[:2], *self.hertz(lvs[1], M_))
             if got:
                 return (*got, 2)
         return None
 
-    def stabilised(lvs: list[Level], M_: float, k: int):
+    def stabilised(self, lvs, M_: float, k: int):
         """Level k with the stabilisation continuation of :data:`STABILISATION`: nested
         solve up to level k with the largest factor, then Newton on level k with each
         smaller factor from the previous solution; (PI, H0) and the smallest factor that
         converged, or (None, None)."""
         try:
-            PI, H0, _, _ = solve_at(M_, STABILISATION[0], k + coarse_level)
+            PI, H0, _, _ = self.solve_at(M_, STABILISATION[0], k + self.coarse_level)
         except ConvergenceError:
             return None, None
         got, used = (PI, H0), STABILISATION[0]
         for factor in STABILISATION[1:]:
-            nxt = attempt(lvs[:k] + [make(M_, 1.0, k + coarse_level, factor)], *got)
+            nxt = self.attempt(lvs[:k] + [self.make(M_, 1.0, k + self.coarse_level, factor)], *got)
             if not nxt:
                 break
             got, used = nxt, factor
         return got, used
 
-    def refine(lvs: list[Level], M_: float, PI, H0, start: int, per_level: list, stab: float):
+    def refine(self, lvs, M_: float, PI, H0, start: int, per_level: list, stab: float):
         """Nested iteration from level ``start`` to the finest, or with ``tol`` to the first
         level whose error estimate meets it; (PI, H0, that level)."""
         k = start - 1
         for k in range(start, len(lvs)):
-            if tol is not None and lvs is levels and all(e is not None and e <= tol
-                                       for e in acc.error_estimate(per_level).values()):
+            if self.tol is not None and lvs is self.levels and all(
+                    e is not None and e <= self.tol for e in acc.error_estimate(per_level).values()):
                 return PI, H0, lvs[k - 1]
             fine, prev = lvs[k], lvs[k - 1]
             P0 = (prolongation(prev.grid, fine.grid) @ prev.full(PI))[fine.interior]
-            n0 = len(hist.residual)
-            got, used = attempt(lvs[: k + 1], P0, H0), stab
+            n0 = len(self.hist.residual)
+            got, used = self.attempt(lvs[: k + 1], P0, H0), stab
             if not got and stab == 1.0:
-                got, used = stabilised(lvs, M_, k)
+                got, used = self.stabilised(lvs, M_, k)
             if not got:
-                raise ConvergenceError(case, f"no convergence on level {k + coarse_level} "
+                raise ConvergenceError(self.case, f"no convergence on level {k + self.coarse_level} "
                                        f"(M={M_:g}, also with stabilisation continuation)",
-                                       hist.as_dict())
+                                       self.hist.as_dict())
             PI, H0 = got
-            per_level.append(_level_summary(fine, PI, H0, fac, len(hist.residual) - n0, t0,
-                                            ad_factor * used))
+            per_level.append(self.summary(fine, PI, H0, len(self.hist.residual) - n0, used))
         return PI, H0, lvs[k]
 
-    def solve_at(M_: float, stab: float = 1.0, top: int = level, depth: int = 0):
+    def solve_at(self, M_: float, stab: float = 1.0, top: int | None = None, depth: int = 0):
         """(PI, H0) on level ``top`` for load M_, the level summaries and that level.
         Without a start, continuation in the load on level ``top``: solve M_/sqrt(2)
         (recursively), shift H0 by the NVM change of the central film and take Newton from
         there (solutions in Hertzian units are close: ~4 Newton iterations a step)."""
-        lvs = (levels if (M_, stab, top) == (M, 1.0, level) else
-               _LazyLevels(lambda k: make(M_, 1.0, k, stab), coarse_level, top))
-        got = start_solve(lvs, M_, stab)
+        top = self.level if top is None else top
+        lvs = (self.levels if (M_, stab, top) == (self.M, 1.0, self.level) else
+               _LazyLevels(lambda k: self.make(M_, 1.0, k, stab), self.coarse_level, top))
+        got = self.start_solve(lvs, M_, stab)
         if got:
             PI, H0, start = got
-            per_level = [_level_summary(lvs[start - 1], PI, H0, fac, len(hist.residual), t0,
-                                        ad_factor * stab)]
-            PI, H0, last = refine(lvs, M_, PI, H0, start, per_level, stab)
+            per_level = [self.summary(lvs[start - 1], PI, H0, len(self.hist.residual), stab)]
+            PI, H0, last = self.refine(lvs, M_, PI, H0, start, per_level, stab)
             return PI, H0, per_level, last
         if M_ <= 20.0 or depth >= 8:
-            raise ConvergenceError(case, f"no start at M={M_:g} (direct, alpha continuation, "
-                                   "next-level Newton-Krylov)", hist.as_dict())
+            raise ConvergenceError(self.case, f"no start at M={M_:g} (direct, alpha continuation, "
+                                   "next-level Newton-Krylov)", self.hist.as_dict())
         Mp = M_ / math.sqrt(2.0)
-        PI, H0, _, _ = solve_at(Mp, stab, top, depth + 1)
-        n0 = len(hist.residual)
-        H0 += nvm_hertz(M_) - nvm_hertz(Mp)
-        got = attempt(lvs, PI, H0)
+        PI, H0, _, _ = self.solve_at(Mp, stab, top, depth + 1)
+        n0 = len(self.hist.residual)
+        H0 += self.nvm_hertz(M_) - self.nvm_hertz(Mp)
+        got = self.attempt(lvs, PI, H0)
         if not got:
-            raise ConvergenceError(case, f"load continuation {Mp:g} -> {M_:g} failed",
-                                   hist.as_dict())
+            raise ConvergenceError(self.case, f"load continuation {Mp:g} -> {M_:g} failed",
+                                   self.hist.as_dict())
         PI, H0 = got
-        per_level = [_level_summary(lvs[-1], PI, H0, fac, len(hist.residual) - n0, t0,
-                                    ad_factor * stab)]
-        return PI, H0, per_level, lvs[-1]
-
-    PI, H0, per_level, fine = solve_at(M)
-    return _result("point", M, L, fine, PI, H0, fac, hist, per_level, time.perf_counter() - t0,
-                   tol=tol_eff, extra_flags=(f"domain: {inlet}",) if inlet else ())
+        return PI, H0, [self.summary(lvs[-1], PI, H0, len(self.hist.residual) - n0, stab)], lvs[-1]
 
 
 class _LazyLevels:
