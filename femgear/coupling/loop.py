@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -168,7 +168,7 @@ class CouplingState:
         return self.wear.sum(axis=0) - self.thermal_deviation.sum(axis=0)
 
     @property
-    def amplitudes(self) -> dict[str, float]:
+    def amplitudes(self) -> Mapping[str, float]:
         return {} if self.dynamics is None else self.dynamics.amplitudes
 
 

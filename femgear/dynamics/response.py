@@ -18,6 +18,7 @@ Definitions (SI):
 
 from __future__ import annotations
 
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -36,6 +37,40 @@ class Spectrum:
     order: np.ndarray       #: frequency in mesh orders f/f_m [-]
 
 
+class Amplitudes(Mapping[str, float]):
+    """Steady-state figures of a response by name, immutable (the names :func:`analyse` writes):
+
+    ``<member>.displacement|velocity.x|y|z`` and ``<member>.torsion_velocity`` for the member
+    centres (pinion, gear), ``<half>.displacement.x|y|z`` for the four helix halves,
+    ``mesh_force.L|R.mean|amplitude``, ``contact_loss_fraction.L|R``,
+    ``bearing_acceleration.<station>.peak`` and ``dte_rms`` (SI; amplitudes are half
+    peak-to-peak).  The flat names are the JSON contract of ``dynamics.amplitudes``.
+    """
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: Mapping[str, float] = ()):
+        object.__setattr__(self, "_values", {str(k): float(v) for k, v in dict(values).items()})
+
+    def __setattr__(self, name, value):
+        raise AttributeError("Amplitudes are immutable")
+
+    def __getitem__(self, key: str) -> float:
+        return self._values[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __repr__(self) -> str:
+        return f"Amplitudes({self._values!r})"
+
+    def __reduce__(self):
+        return (Amplitudes, (self._values,))
+
+
 @dataclass(frozen=True)
 class Response:
     """Steady-state time histories and their summary values."""
@@ -47,7 +82,7 @@ class Response:
     mesh_force: np.ndarray        #: (n_t, 2) dynamic normal mesh forces [N]
     bearing_acceleration: np.ndarray  #: (n_t, 4, 3) pinion-L/R, gear-L/R bearing stations [m/s^2]
     mesh_frequency: float
-    amplitudes: dict = field(default_factory=dict)   #: see :func:`analyse`
+    amplitudes: Amplitudes = field(default_factory=Amplitudes)   #: see :class:`Amplitudes`
 
     @property
     def dte(self) -> np.ndarray:
@@ -161,4 +196,4 @@ def analyse(sim: Simulation, transient_cycles: float = 50.0) -> Response:
     for j, station in enumerate(("pinion_L", "pinion_R", "gear_L", "gear_R")):
         amps[f"bearing_acceleration.{station}.peak"] = float(np.max(np.linalg.norm(bearing[:, j, :2], axis=1)))
     amps["dte_rms"] = float(np.sqrt(np.mean(resp.dte**2)))
-    return Response(**{**resp.__dict__, "amplitudes": amps})
+    return Response(**{**resp.__dict__, "amplitudes": Amplitudes(amps)})

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from femgear.dynamics.integrate import Simulation, expo_step, simulate, stability_limit
 from femgear.dynamics.modal import ModalResult, modal_analysis
 from femgear.dynamics.model import GearRotorModel
-from femgear.dynamics.response import Response, analyse
+from femgear.dynamics.response import Amplitudes, Response, analyse
 
 #: Newmark/HHT needs this many times the steps of rk4/expo for the same accuracy (benchmark)
 NEWMARK_STEP_FACTOR = 8
@@ -45,7 +45,7 @@ class DynamicsRun:
         return self.simulation.model
 
     @property
-    def amplitudes(self) -> dict[str, float]:
+    def amplitudes(self) -> Amplitudes:
         """Steady-state amplitudes by name (:func:`femgear.dynamics.response.analyse`)."""
         return self.response.amplitudes
 
