@@ -134,7 +134,30 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
         src_shear = np.zeros_like(src_shear)
         a_comp = np.zeros_like(a_comp)
     c = props.c_oil
-    k_f = props.k_oil
+    A, idx, iq1, iq2 = _energy_matrix(m, G, a_comp, dx, dz, c, props.k_oil, J1, J2)
+    rhs = np.zeros(A.shape[0])
+    rhs[idx] = src_shear + a_comp * T_bulk
+    sol = spla.spsolve(A, rhs)
+    if not np.all(np.isfinite(sol)):
+        raise ConvergenceError("tehl energy", "non-finite temperatures")
+    th = sol[idx]
+    q1, q2 = sol[iq1], sol[iq2]
+    gen_shear = float(src_shear.sum())
+    gen_comp = float(np.sum(a_comp * (T_bulk + th)))
+    conv = float(c * (np.sum(np.maximum(m[-1], 0) * th[-1]) - np.sum(np.minimum(m[0], 0) * th[0])))
+    s1, s2 = float(q1.sum() * dx), float(q2.sum() * dx)
+    gen = gen_shear + gen_comp
+    scale = max(abs(gen_shear), abs(s1) + abs(s2) + abs(conv), 1e-300)
+    heat_d = {"generated": gen, "shear": gen_shear, "compression": gen_comp, "solid1": s1, "solid2": s2,
+              "convected": conv, "balance_error": (gen - s1 - s2 - conv) / scale}
+    return EnergyState(theta=th, surface1=J1 @ q1, surface2=J2 @ q2, tau_couette=tau_c,
+                       tau_poiseuille=0.5 * h * dpdx, heat=heat_d)
+
+
+def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2):
+    """Upwind finite-volume matrix of the film energy equation with the two Jaeger walls:
+    unknowns theta (nt, nz) then the wall fluxes q1, q2 per cell; (A, idx, iq1, iq2)."""
+    nt, nz = a_comp.shape
     n_u = nz + 2
     N = nt * n_u
     idx = np.arange(nt)[:, None] * n_u + np.arange(nz)[None, :]  # theta unknowns
@@ -175,21 +198,5 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
         r, cc = np.nonzero(gJ)
         add(iq[r], iq[cc], gJ[r, cc])
         add(iq, edge, -g)
-    rhs = np.zeros(N)
-    rhs[idx] = src_shear + a_comp * T_bulk
     A = sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(N, N))
-    sol = spla.spsolve(A, rhs)
-    if not np.all(np.isfinite(sol)):
-        raise ConvergenceError("tehl energy", "non-finite temperatures")
-    th = sol[idx]
-    q1, q2 = sol[iq1], sol[iq2]
-    gen_shear = float(src_shear.sum())
-    gen_comp = float(np.sum(a_comp * (T_bulk + th)))
-    conv = float(c * (np.sum(np.maximum(m[-1], 0) * th[-1]) - np.sum(np.minimum(m[0], 0) * th[0])))
-    s1, s2 = float(q1.sum() * dx), float(q2.sum() * dx)
-    gen = gen_shear + gen_comp
-    scale = max(abs(gen_shear), abs(s1) + abs(s2) + abs(conv), 1e-300)
-    heat_d = {"generated": gen, "shear": gen_shear, "compression": gen_comp, "solid1": s1, "solid2": s2,
-              "convected": conv, "balance_error": (gen - s1 - s2 - conv) / scale}
-    return EnergyState(theta=th, surface1=J1 @ q1, surface2=J2 @ q2, tau_couette=tau_c,
-                       tau_poiseuille=0.5 * h * dpdx, heat=heat_d)
+    return A, idx, iq1, iq2
