@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from femgear.dynamics.run import DynamicsRun
+from femgear.io.atomic import write_bytes_atomic
 from femgear.io.results import write_json
 
 
@@ -36,16 +35,12 @@ def dynamics_summary(run: DynamicsRun) -> dict[str, Any]:
 
 
 def _save_npz(path: Path, **arrays: np.ndarray) -> Path:
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".npz")
-    os.close(fd)
-    try:
-        np.savez_compressed(tmp, **arrays)
-        os.replace(tmp, path)
-        os.chmod(path, 0o644)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
+    """``np.savez_compressed`` through :func:`femgear.io.atomic.write_bytes_atomic` (fsync, rename, 0644)."""
+    import io
+
+    buf = io.BytesIO()
+    np.savez_compressed(buf, **arrays)
+    return write_bytes_atomic(path, buf.getvalue())
 
 
 def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True) -> dict[str, Path]:
