@@ -216,7 +216,7 @@ def with_friction(model: GearRotorModel, friction: Friction) -> GearRotorModel:
         return replace(model, mu=0.0, friction=None, torque_full=torque)
     ftab = friction_table(model.pair, geom.h0 @ rate, geom.h1 @ rate, model.stagger, model.v_reg, mu_of_u=mu_of_u)
     # the load torque absorbs the mean friction power, so the free rotation does not drift
-    N0 = T1 / 2 / geom.g[0, 5]
+    N0 = T1 / model.pair.n_helices / geom.g[0, 5]     # mean normal force of a loaded helix
     Qf = -mu * N0 * (ftab.A.mean(axis=1) @ geom.h0 + ftab.B.mean(axis=1) @ geom.h1)
     rigid = rate / rate[5]
     loss = Qf @ rigid
