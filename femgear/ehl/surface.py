@@ -149,3 +149,35 @@ def correlation_length(z: np.ndarray, h: float, axis: int = -1) -> float:
     if k == 0:
         raise ArgumentError("z", "the autocorrelation never falls to 1/e: sample too short")
     return float(h * (k - 1 + (c[k - 1] - np.exp(-1.0)) / (c[k - 1] - c[k])))
+
+
+def peak_feature(peak, R: float, a: float) -> Callable:
+    """The scene's ``[roughness.peak]`` (metres: amplitude, wavelength l_b, x0) as a
+    Hertzian-unit profile f(X) for a contact of reduced radius ``R`` and Hertz half width
+    (line) or radius (point) ``a`` [m]: heights h R / a^2, lengths x / a."""
+    A, lb, x0 = hertz_height(peak.amplitude, R, a), peak.wavelength / a, peak.x0 / a
+
+    def feature(X, Y=None):
+        return paper_peak(X, Y, amplitude=A, half_width=lb, x0=x0)
+
+    return feature
+
+
+def synthetic_feature(synthetic, R: float, a: float, *, extent: tuple[float, float],
+                      h: float) -> Callable:
+    """The scene's ``[roughness.synthetic]`` as a Hertzian-unit profile f(X) on
+    [extent[0], extent[1]] (Hertzian X) sampled every ``h`` (Hertzian; the solver's node
+    spacing, so a moving surface shifts by whole samples), linear in between and held
+    constant beyond: a transverse profile (1-D, the line contact's roughness; a point
+    contact sees it as ridges). Same seed, same surface."""
+    lo, hi = extent
+    n = int(np.ceil((hi - lo) / h)) + 1
+    z = random_surface(n, h * a, rq=synthetic.rq, corr_length=synthetic.correlation_length,
+                       acf=synthetic.acf, seed=synthetic.seed)
+    xs, Z = lo + h * np.arange(n), hertz_height(1.0, R, a) * z
+
+    def feature(X, Y=None):
+        Rx = np.interp(np.asarray(X, dtype=float), xs, Z)
+        return Rx if Y is None else np.broadcast_to(Rx, np.broadcast(Rx, Y).shape).copy()
+
+    return feature

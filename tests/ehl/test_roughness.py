@@ -158,3 +158,18 @@ def test_scene_roughness_tables():
 def test_scene_roughness_errors_name_the_key(overrides, key):
     with pytest.raises(SceneError, match=key.replace(".", r"\.")):
         _scene(*overrides)
+
+
+def test_scene_features_in_hertzian_units():
+    """[roughness.peak] in metres -> Hertzian profile: A_b R / b^2 at x0/b, zero beyond l_b;
+    [roughness.synthetic] -> heights with Rq R / b^2 (within 10 % on a long sample)."""
+    from femgear.ehl.surface import peak_feature, synthetic_feature
+
+    s = _scene("roughness.peak.amplitude=0.2e-6", "roughness.peak.wavelength=20e-6", "roughness.peak.x0=-1e-4",
+               "roughness.synthetic.rq=0.1e-6", "roughness.synthetic.correlation_length=5e-6")
+    R, b = 0.02, 200e-6
+    f = peak_feature(s.roughness.peak, R, b)
+    assert f(np.array([-0.5, -0.5 + 0.1, 0.0])) == pytest.approx([0.2e-6 * R / b**2, 0.0, 0.0])
+    g = synthetic_feature(s.roughness.synthetic, R, b, extent=(-50.0, 50.0), h=0.005)
+    z = g(np.linspace(-50, 50, 20001))
+    assert z.std() == pytest.approx(0.1e-6 * R / b**2, rel=0.10)
