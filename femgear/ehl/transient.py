@@ -94,7 +94,10 @@ class TransientLineResult:
 
     Per step n (``T[n]``, n = 0 the steady start): ``H_centre`` H(X=0), ``H0``,
     ``Hmin``, ``Pmax``, ``newton`` iterations. ``snapshots``: {step: (P, H)} for the
-    requested steps. ``x`` nodes, ``dT``, ``speed`` c, ``scheme``."""
+    requested steps. ``x`` nodes, ``dT``, ``speed`` c, ``scheme``; ``flags``: those of the
+    steady start (its error estimate against its tolerance, a truncated inlet).
+    Cavitation is the Reynolds condition at every T (not mass-conserving): a feature
+    leaving through the outlet is followed only qualitatively there."""
 
     M: float
     L: float
@@ -112,6 +115,7 @@ class TransientLineResult:
     fac: float = 1.0
     seconds: float = 0.0
     steady_Hc: float = 0.0
+    flags: tuple[str, ...] = ()
 
     def amplitude(self, T_from: float) -> float:
         """Half the peak-to-peak of H(X=0, T) for T >= ``T_from`` (Venner et al. 1997's
@@ -259,7 +263,8 @@ class _Recorder:
                                    H_centre=a[:, 1], H0=a[:, 2], Hmin=a[:, 3], Pmax=a[:, 4],
                                    newton=a[:, 5].astype(int), snapshots=self.snaps, dT=float(dT),
                                    speed=float(speed), scheme=scheme, fac=fac,
-                                   seconds=seconds, steady_Hc=float(steady.Hc_hertz))
+                                   seconds=seconds, steady_Hc=float(steady.Hc_hertz),
+                                   flags=tuple(steady.flags))
 
 
 def nabla_line(wavelength: float, M: float, L: float) -> float:

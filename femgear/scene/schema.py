@@ -177,8 +177,9 @@ class RoughnessPeak(_Frozen):
     x0: float = Field(0.0, description="position of the peak along the rolling direction, from the contact "
                                        "centre (at t = 0 when moving; negative = inlet side) [m]")
     member: Literal["pinion", "gear"] = Field("pinion", description="flank that carries the peak (the paper: pinion)")
-    moving: bool = Field(True, description="the peak moves with its flank through the contact (transient "
-                                           "Reynolds); false: fixed in the contact frame (steady)")
+    moving: bool = Field(False, description="true: the peak moves with its flank through the contact (transient "
+                                            "Reynolds); false (the paper's model): fixed at x0 in the contact frame, "
+                                            "steady")
 
 
 class SyntheticSurface(_Frozen):

@@ -142,7 +142,7 @@ def test_scene_roughness_tables():
                "roughness.synthetic.rq=0.1e-6", "roughness.synthetic.correlation_length=15e-6",
                "roughness.synthetic.seed=7")
     p, y = s.roughness.peak, s.roughness.synthetic
-    assert (p.amplitude, p.wavelength, p.x0, p.member, p.moving) == (0.2e-6, 20e-6, -1e-4, "pinion", True)
+    assert (p.amplitude, p.wavelength, p.x0, p.member, p.moving) == (0.2e-6, 20e-6, -1e-4, "pinion", False)
     assert (y.rq, y.correlation_length, y.acf, y.seed) == (0.1e-6, 15e-6, "exponential", 7)
 
 
