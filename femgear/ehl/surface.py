@@ -181,3 +181,21 @@ def synthetic_feature(synthetic, R: float, a: float, *, extent: tuple[float, flo
         return Rx if Y is None else np.broadcast_to(Rx, np.broadcast(Rx, Y).shape).copy()
 
     return feature
+
+
+def scene_features(roughness, R: float, a: float, *, extent: tuple[float, float],
+                   h: float) -> list[tuple[Callable, str, bool]]:
+    """The deterministic roughness of a scene's ``[roughness]`` table at one contact
+    (reduced radius ``R``, Hertz half width or radius ``a`` [m]) as a list of
+    (Hertzian profile f(X[, Y]), member carrying it, moving): the single peak and the
+    synthetic surface when present, empty for smooth flanks. A stationary one enters
+    ``solve_line``/``solve_point`` as ``surface=f``; a moving one enters the transient
+    solvers with c = :func:`surface_speed`(SRR, member). ``extent``/``h``: the sampled
+    range and spacing (Hertzian X) of a synthetic surface."""
+    out: list[tuple[Callable, str, bool]] = []
+    if roughness.peak is not None:
+        out.append((peak_feature(roughness.peak, R, a), roughness.peak.member, roughness.peak.moving))
+    if roughness.synthetic is not None:
+        s = roughness.synthetic
+        out.append((synthetic_feature(s, R, a, extent=extent, h=h), s.member, s.moving))
+    return out

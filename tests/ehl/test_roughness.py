@@ -173,3 +173,8 @@ def test_scene_features_in_hertzian_units():
     g = synthetic_feature(s.roughness.synthetic, R, b, extent=(-50.0, 50.0), h=0.005)
     z = g(np.linspace(-50, 50, 20001))
     assert z.std() == pytest.approx(0.1e-6 * R / b**2, rel=0.10)
+    from femgear.ehl.surface import scene_features
+
+    feats = scene_features(s.roughness, R, b, extent=(-50.0, 50.0), h=0.005)
+    assert [(m, mv) for _, m, mv in feats] == [("pinion", False), ("pinion", True)]
+    assert scene_features(_scene().roughness, R, b, extent=(-5.0, 2.0), h=0.01) == []

@@ -79,3 +79,15 @@ def test_bad_arguments():
         solve_line_transient(20.0, 10.0, lambda xi: 0 * xi, T_end=1.0, scheme="cn")
     with pytest.raises(ArgumentError, match="T_end"):
         solve_line_transient(20.0, 10.0, lambda xi: 0 * xi, T_end=0.0)
+
+
+@pytest.mark.slow
+def test_point_peak_passage_converges():
+    """The paper's peak entering a circular contact (65^2): every step converges, the film
+    and pressure stay finite, and the peak thins the film once it is inside (X > -0.5)."""
+    from femgear.ehl.transient import solve_point_transient
+
+    feature = partial(paper_peak, amplitude=0.1, half_width=0.3, x0=-1.5)
+    r = solve_point_transient(20.0, 10.0, feature, T_end=1.5, level=2)
+    assert np.all(np.isfinite(r.Hmin)) and np.all(r.newton[1:] > 0)
+    assert r.Hmin[-1] < 0.95 * r.Hmin[0]
