@@ -36,9 +36,8 @@ from pathlib import Path  # noqa: E402
 import numpy as np  # noqa: E402
 
 from femgear.ehl.surface import paper_peak, surface_speed  # noqa: E402
-from femgear.ehl.transient import (amplitude_reduction_fit, entering_waviness,  # noqa: E402
-                                   measure_amplitude_reduction, solve_line_transient,
-                                   steady_hc_hertz)
+from femgear.ehl.transient import (amplitude_reduction_fit, measure_amplitude_reduction,  # noqa: E402
+                                   solve_line_transient, steady_hc_hertz)
 
 OUT = Path(__file__).resolve().parents[1] / "out" / "roughness"
 NABLA = (1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0)

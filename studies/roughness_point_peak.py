@@ -22,8 +22,6 @@ import sys  # noqa: E402
 import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
-import numpy as np  # noqa: E402
-
 from femgear.ehl import params as pr  # noqa: E402
 from femgear.ehl.point import default_domain  # noqa: E402
 from femgear.ehl.surface import paper_peak  # noqa: E402
