@@ -23,6 +23,7 @@ from femgear.ehl.newton import RESIDUAL_TOL, History, newton_dense
 from femgear.ehl.point import CONTINUATION, _result
 from femgear.ehl.results import EHLResult
 from femgear.ehl.rheology import Rheology
+from femgear.ehl.surface import apply_surface, evaluate
 
 X0_DEFAULT = -4.5
 DEFAULT_LEVEL = 6  # 1025 nodes
@@ -35,7 +36,8 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
                compressible: bool = False, ph: float | None = None, z: float = 0.68,
                ad_factor: float = 1.0, sd_factor: float = 1.0, tol: float | None = None,
                newton_tol: float = 1e-8, max_level: int = MAX_LEVEL, max_iter: int = 60,
-               start: EHLResult | None = None, reuse: dict | None = None):
+               start: EHLResult | None = None, reuse: dict | None = None,
+               surface=None):
     """Isothermal line-contact EHL in Moes line groups (M, L); returns EHLResult.
 
     Domain X in [x0, x1] (x0 default -4.5, checked against the fully flooded inlet
@@ -50,6 +52,10 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
     fails from it, the cold start is used. ``reuse``: a dict the caller keeps across a
     sequence of solves; the LU factors of each level's Jacobian are kept there and
     reused as GMRES preconditioners (:func:`femgear.ehl.newton.newton_dense`).
+
+    ``surface``: stationary roughness R(X) in Hertzian units (:mod:`femgear.ehl.surface`),
+    a callable f(X) or nodal values on the finest grid; the film is H0 + X^2/2 + D - R.
+    None (default) leaves the smooth solve untouched.
     """
     if M <= 0 or L < 0:
         raise ValueError("need M > 0 and L >= 0")
@@ -68,11 +74,11 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
                          "anyway (the result is then flagged)")
 
     def make(frac: float, lev: int) -> Level:
-        rheo = Rheology(pr.line_alpha_bar(M, L) * frac, viscosity=viscosity, ph=ph, z=z,
-                        compressible=compressible)
-        x = np.linspace(x0, x1, 16 * 2**lev + 1)
-        return Level(rheo, pr.line_lam_bar(M), pr.LINE_LOAD, x=x, ad_factor=ad_factor,
-                     sd_factor=sd_factor)
+        lv = line_level(M, L, np.linspace(x0, x1, 16 * 2**lev + 1), frac,
+                        rheology=dict(viscosity=viscosity, ph=ph, z=z, compressible=compressible),
+                        ad_factor=ad_factor, sd_factor=sd_factor)
+        apply_surface(lv, evaluate(surface, lv.X, fine_x=np.linspace(x0, x1, 16 * 2**level + 1)))
+        return lv
 
     hist = History()
 
@@ -105,6 +111,15 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
     return _result("line", M, L, lv, P, H0, fac, hist, per_level, time.perf_counter() - t0,
                    tol=acc.DEFAULT_TOL if tol is None else tol,
                    extra_flags=(f"domain: {inlet}",) if inlet else ())
+
+
+def line_level(M: float, L: float, x: np.ndarray, frac: float = 1.0, *, rheology: dict,
+               ad_factor: float = 1.0, sd_factor: float = 1.0) -> Level:
+    """The smooth line-contact Level on nodes ``x`` (Hertzian X) for Moes (M, L), with
+    alpha_bar scaled by ``frac`` (continuation); ``rheology`` as Rheology's keywords."""
+    rheo = Rheology(pr.line_alpha_bar(M, L) * frac, **rheology)
+    return Level(rheo, pr.line_lam_bar(M), pr.LINE_LOAD, x=x, ad_factor=ad_factor,
+                 sd_factor=sd_factor)
 
 
 def _cold(make, first: int, level: int, M, L, fac, hist: History, newton, case):

@@ -39,6 +39,7 @@ from femgear.ehl.level import Level
 from femgear.ehl.newton import History, newton_dense, newton_krylov
 from femgear.ehl.results import EHLResult, centre_values
 from femgear.ehl.rheology import Rheology
+from femgear.ehl.surface import apply_surface, evaluate
 
 CONTINUATION = (0.0, 0.25, 0.5, 0.75, 1.0)
 STABILISATION = (2.0, 1.5, 1.2)
@@ -75,7 +76,8 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                 compressible: bool = False, ph: float | None = None, z: float = 0.68,
                 rigid: bool = False, ad_factor: float = 1.0, sd_factor: float = 1.0,
                 tol: float | None = None, newton_tol: float = 1e-5, max_level: int = MAX_LEVEL,
-                residual_tol: float = RESIDUAL_TOL, max_iter: int = 40) -> EHLResult:
+                residual_tol: float = RESIDUAL_TOL, max_iter: int = 40,
+                surface=None) -> EHLResult:
     """Isothermal point-contact EHL in Moes groups (M, L); returns :class:`EHLResult`.
 
     ``level`` is the finest grid (``16 * 2**level`` intervals along X), ``coarse_level``
@@ -93,6 +95,10 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
     inlet distance for the NVM film: a case whose inlet it would truncate (low M, e.g.
     (3, 10)) raises :class:`SceneError` with the reason; an explicit ``domain`` that
     truncates it is solved and flagged.
+
+    ``surface``: stationary roughness R(X, Y) in Hertzian units (:mod:`femgear.ehl.surface`),
+    a callable f(X, Y) evaluated on every level's nodes; the film is H0 + G + D - R. None
+    (default) leaves the smooth solve untouched.
     """
     if M <= 0 or L < 0 or ratio <= 0:
         raise ValueError("need M > 0, L >= 0, ratio > 0")
@@ -112,6 +118,7 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                          "to solve it anyway (the result is then flagged)")
     solver = _NestedPoint(M, L, ratio=ratio, dom=dom, coarse_level=coarse_level, level=level,
                           tol=tol, rigid=rigid, ad_factor=ad_factor, sd_factor=sd_factor, t0=t0,
+                          surface=surface,
                           rheology=dict(viscosity=viscosity, ph=ph, z=z, compressible=compressible),
                           newton=dict(max_iter=max_iter, tol=newton_tol, case=case,
                                       residual_tol=residual_tol))
@@ -127,8 +134,9 @@ class _NestedPoint:
 
     def __init__(self, M: float, L: float, *, ratio: float, dom: Domain, coarse_level: int,
                  level: int, tol: float | None, rigid: bool, ad_factor: float, sd_factor: float,
-                 t0: float, rheology: dict, newton: dict):
+                 t0: float, rheology: dict, newton: dict, surface=None):
         self.M, self.L, self.ratio, self.dom = M, L, ratio, dom
+        self.surface = surface
         self.coarse_level, self.level, self.tol = coarse_level, level, tol
         self.rigid, self.ad_factor, self.sd_factor = rigid, ad_factor, sd_factor
         self.t0, self.rheology, self.newton, self.case = t0, rheology, newton, newton["case"]
@@ -139,9 +147,11 @@ class _NestedPoint:
 
     def make(self, M_: float, frac: float, lev: int, stab: float = 1.0) -> Level:
         rheo = Rheology(pr.point_alpha_bar(M_, self.L) * frac, **self.rheology)
-        return Level(rheo, pr.point_lam_bar(M_), pr.POINT_LOAD, grid=Grid.build(self.dom, lev),
-                     ratio=self.ratio, rigid=self.rigid, ad_factor=self.ad_factor * stab,
-                     sd_factor=self.sd_factor * stab)
+        lv = Level(rheo, pr.point_lam_bar(M_), pr.POINT_LOAD, grid=Grid.build(self.dom, lev),
+                   ratio=self.ratio, rigid=self.rigid, ad_factor=self.ad_factor * stab,
+                   sd_factor=self.sd_factor * stab)
+        apply_surface(lv, evaluate(self.surface, lv.X, lv.Y))
+        return lv
 
     def nvm_hertz(self, M_: float) -> float:
         """NVM central film in Hertzian units."""

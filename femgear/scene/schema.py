@@ -163,16 +163,54 @@ class Friction(_Frozen):
                                        "used when roughness.rq > 0) [-]")
 
 
+class RoughnessPeak(_Frozen):
+    """``[roughness.peak]``: the seed paper's single roughness peak (its sec. 3.1.2, eq. 22), a
+    transverse ridge R = (A_b/2)[1 + cos(π(x − x0)/l_b)] for |x − x0| ≤ l_b, 0 elsewhere, on one flank.
+
+    Heights count towards the other flank (a peak thins the film: h = h0 + g + v − R; the paper's
+    eq. 23 writes + R_r, which with its eq. 22 would be a dent).  Film term of the EHL solvers
+    (:mod:`femgear.ehl.surface`, :mod:`femgear.ehl.transient`).
+    """
+
+    amplitude: Pos = Field(description="peak height A_b [m]")
+    wavelength: Pos = Field(description="the paper's wavelength l_b: half the base width of the peak [m]")
+    x0: float = Field(0.0, description="position of the peak along the rolling direction, from the contact "
+                                       "centre (at t = 0 when moving; negative = inlet side) [m]")
+    member: Literal["pinion", "gear"] = Field("pinion", description="flank that carries the peak (the paper: pinion)")
+    moving: bool = Field(False, description="true: the peak moves with its flank through the contact (transient "
+                                            "Reynolds); false (the paper's model): fixed at x0 in the contact frame, "
+                                            "steady")
+
+
+class SyntheticSurface(_Frozen):
+    """``[roughness.synthetic]``: a seeded Gaussian random surface on one flank (FFT filtering,
+    :func:`femgear.ehl.surface.random_surface`) for deterministic rough EHL.  Independent of
+    ``roughness.rq``, which feeds the statistical (Greenwood–Tripp) mixed-lubrication model.
+    """
+
+    rq: Pos = Field(description="RMS height Rq of the synthetic surface [m]")
+    correlation_length: Pos = Field(description="correlation length β: the ACF falls to 1/e at β [m]")
+    acf: Literal["exponential", "gaussian"] = Field(
+        "exponential", description="autocorrelation exp(−r/β) or exp(−(r/β)²)")
+    seed: int = Field(0, ge=0, description="seed of the random generator (same seed, same surface)")
+    member: Literal["pinion", "gear"] = Field("pinion", description="flank that carries the surface")
+    moving: bool = Field(True, description="the surface moves with its flank through the contact")
+
+
 class SurfaceRoughness(_Frozen):
     """``[roughness]``: flank roughness for mixed lubrication (Greenwood–Tripp asperities, JGP split).
 
     0 = smooth flanks (full-film EHL everywhere).  Used by the ``formula`` lubrication level.
+    The sub-tables ``[roughness.peak]`` (the paper's single peak) and ``[roughness.synthetic]``
+    (a seeded random surface) describe deterministic roughness for the EHL solvers; absent = none.
     """
 
     rq: NonNeg = Field(0.0, description="composite RMS roughness σ = √(Rq1² + Rq2²) of the two flanks [m]")
     eta_beta_sigma: Pos = Field(0.04, le=1.0, description="Greenwood–Tripp ηβσ (asperity density × radius × σ) [-]")
     sigma_over_beta: Pos = Field(
         3e-3, le=1.0, description="σ/β, roughness over the asperity tip radius (typical 1e-3…1e-2) [-]")
+    peak: RoughnessPeak | None = Field(None, description="the paper's single roughness peak (eq. 22); none if absent")
+    synthetic: SyntheticSurface | None = Field(None, description="a seeded Gaussian random surface; none if absent")
 
 
 class Stiffness(_Frozen):
