@@ -26,7 +26,13 @@ P1 is the default (``order=1``) for the 60 s budget; its bias is stiff, as expec
 linear tetrahedra in bending.
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
-tooth near the tip.  Results are cached on disk (``out/cache/ltca`` or
+tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
+size: a depth that shrinks with the mesh moves the target of a refinement study (the
+reading then converges to a different split at every level).  The split is insensitive
+to the depth where the FE is converged: one mid-flank unit load on the baseline pinion,
+P2 level 1 (144 k DOF), gives bulk = 9.48/9.47/9.55e-10 m/N at d = 0.7/0.9/1.2 mm
+(``out/exp`` experiment quoted in notes/h12-readme.md), while P1 at level 5 (114 k DOF)
+is still 11 % below at 1.2 mm (P1 tetrahedra are stiff in bending; the error falls as h²).  Results are cached on disk (``out/cache/ltca`` or
 ``$FEMGEAR_CACHE``) under a hash of geometry, material, mesh and grid.
 """
 
@@ -48,6 +54,7 @@ from femgear.ltca.halfspace import boussinesq_depth
 from femgear.mesh.segment import SegmentSpec
 
 CACHE_VERSION = 1
+DEFAULT_DEPTH = 0.4    #: reading depth below the flank, in normal modules (clipped near the tip)
 
 
 @dataclass(frozen=True)
@@ -109,7 +116,7 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
                       poisson_ratio: float, order: int = 1, n_rho: int = 7, n_z: int = 9,
                       depth: float | None = None, cache: bool = True) -> MemberCompliance:
     """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present."""
-    d0 = depth if depth is not None else 2.0 * spec.h_tooth
+    d0 = depth if depth is not None else DEFAULT_DEPTH * pair.m_n
     key = _key(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     path = cache_dir() / f"member{member}-{key}.npz"
     if cache and path.exists():
