@@ -30,9 +30,9 @@ tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the
 size: a depth that shrinks with the mesh moves the target of a refinement study (the
 reading then converges to a different split at every level).  The split is insensitive
 to the depth where the FE is converged: one mid-flank unit load on the baseline pinion,
-P2 level 1 (144 k DOF), gives bulk = 9.48/9.47/9.55e-10 m/N at d = 0.7/0.9/1.2 mm
-(``out/exp`` experiment quoted in notes/h12-readme.md), while P1 at level 5 (114 k DOF)
-is still 11 % below at 1.2 mm (P1 tetrahedra are stiff in bending; the error falls as h²).  Results are cached on disk (``out/cache/ltca`` or
+P2 level 1 (144 k DOF), gives bulk = 9.48/9.47/9.55e-10 m/N at d = 0.7/0.9/1.2 mm, while P1
+at level 5 (114 k DOF) is still 11 % below at 1.2 mm (P1 tetrahedra are stiff in bending)
+(``python studies/ltca_element_order.py --split``).  Results are cached on disk (``out/cache/ltca`` or
 ``$FEMGEAR_CACHE``) under a hash of geometry, material, mesh and grid.
 """
 
@@ -135,9 +135,58 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
     return result
 
 
-def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberCompliance:
+def flank_unit_loads(pair: GearPair, member: int, model, grid_rho: np.ndarray, grid_z: np.ndarray):
+    """Load vectors of unit normal hat loads (1 N each) at the (ρ, z) grid nodes of the loaded flank.
+
+    Returns (loads, xq, weights): ``loads[g]`` the FE load vector of node g (grid index
+    i_ρ·n_z + i_z), ``xq`` (3, n_q) the flank quadrature points and ``weights[g]`` (n_q,) the
+    share of node g's 1 N carried by each quadrature point.
+    """
     from skfem import FacetBasis, LinearForm
 
+    mesh = model.mesh
+    rb = pair.rb1 if member == 1 else pair.rb2
+    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries["loaded_flank"])
+    xq = np.asarray(fb.global_coordinates())                      # (3, n_facets, n_qp)
+    rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
+    hats = _bilinear(grid_rho, grid_z, rq.ravel(), xq[2].ravel()).T.reshape(grid_rho.size * grid_z.size, *rq.shape)
+    dA = fb.dx                                                # (n_facets, n_qp) quadrature weights × area
+
+    @LinearForm
+    def pressure(v, w):                                       # traction −p n (into the tooth)
+        return -w.p * (w.n[0] * v[0] + w.n[1] * v[1] + w.n[2] * v[2])
+
+    loads, weights = [], []
+    for g in range(hats.shape[0]):
+        area = float(np.sum(hats[g] * dA))
+        if area <= 0:
+            raise ValueError(f"flank grid node {g} carries no flank area: the loaded_flank region misses the active flank")
+        loads.append(pressure.assemble(fb, p=hats[g] / area))
+        weights.append((hats[g] * dA).ravel() / area)
+    return loads, xq.reshape(3, -1), weights
+
+
+def halfspace_reading(x: np.ndarray, normals: np.ndarray, xq: np.ndarray, weight: np.ndarray, E: float,
+                      nu: float) -> np.ndarray:
+    """Half-space approach at points ``x`` (3, n) below flank points of normals ``normals`` for one hat load
+    spread over the quadrature points ``xq`` with ``weight`` (Boussinesq at depth, tangent-plane distances)."""
+    s = weight > 0
+    v = x[:, :, None] - xq[:, s][:, None, :]                       # (3, n, n_q)
+    dn = -np.einsum("ig,igq->gq", normals, v)                      # depth below the tangent plane
+    r = np.sqrt(np.maximum(np.sum(v**2, axis=0) - dn**2, 0.0))
+    return boussinesq_depth(r, dn, E, nu) @ weight[s]
+
+
+def reading_points(pair: GearPair, member: int, rho: np.ndarray, z: np.ndarray, depth: np.ndarray, tooth: int = 0):
+    """(points (3, n) at ``depth`` below the flank of ``tooth``, outward normals (3, n))."""
+    p = flank_points(pair, member, rho, z, tooth)
+    n = flank_normals(pair, member, rho, z, tooth)
+    x = p - depth * _transverse(n)
+    x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
+    return x, n
+
+
+def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberCompliance:
     from femgear.body.elastic3d import Elastic3D
     from femgear.mesh.segment import helix_segment
 
@@ -145,20 +194,10 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
     mesh = helix_segment(pair, member, spec)
     t_mesh = time.perf_counter() - t0
     model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=1e-8)
-    rb = pair.rb1 if member == 1 else pair.rb2
     r0, r1 = roll_range(pair, member)
     grid_rho = np.linspace(r0, r1, n_rho)
     grid_z = np.linspace(0.0, pair.b, n_z)
-    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries["loaded_flank"])
-    xq = np.asarray(fb.global_coordinates())                      # (3, n_facets, n_qp)
-    rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
-    hats = _bilinear(grid_rho, grid_z, rq.ravel(), xq[2].ravel()).T.reshape(n_rho * n_z, *rq.shape)
-    dA = fb.dx                                                # (n_facets, n_qp) quadrature weights × area
-
-    @LinearForm
-    def pressure(v, w):                                       # traction −p n (into the tooth)
-        return -w.p * (w.n[0] * v[0] + w.n[1] * v[1] + w.n[2] * v[2])
-
+    loads, xq, weights = flank_unit_loads(pair, member, model, grid_rho, grid_z)
     RR, ZZ = np.meshgrid(grid_rho, grid_z, indexing="ij")
     rho_g, z_g = RR.ravel(), ZZ.ravel()
     depth = np.minimum(d0, 0.5 * half_thickness(pair, member, rho_g))
@@ -166,36 +205,18 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
     offsets = np.arange(-half, half + 1)
     probes = []
     for k in offsets:
-        p = flank_points(pair, member, rho_g, z_g, int(k))
-        n = flank_normals(pair, member, rho_g, z_g, int(k))
-        x = p - depth * _transverse(n)
-        x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
+        x, n = reading_points(pair, member, rho_g, z_g, depth, int(k))
         probes.append((model.probe_matrices(x), n))
     ng = rho_g.size
     G = np.zeros((offsets.size, ng, ng))
     for g in range(ng):
-        area = float(np.sum(hats[g] * dA))
-        if area <= 0:
-            raise ValueError(f"flank grid node {g} carries no flank area: the loaded_flank region misses the active flank")
-        f = pressure.assemble(fb, p=hats[g] / area)
-        u = model.solve(f, case=f"flank compliance member {member}, grid node {g}")
+        u = model.solve(loads[g], case=f"flank compliance member {member}, grid node {g}")
         for i, (mats, n) in enumerate(probes):
             disp = np.vstack([M @ u for M in mats])
             G[i, :, g] = -np.sum(disp * n, axis=0)
     # half-space part of the same reading, tooth 0
-    p0 = flank_points(pair, member, rho_g, z_g, 0)
-    n0 = flank_normals(pair, member, rho_g, z_g, 0)
-    x0 = p0 - depth * _transverse(n0)
-    HS = np.zeros((ng, ng))
-    xq2 = xq.reshape(3, -1)
-    for g in range(ng):
-        area = float(np.sum(hats[g] * dA))
-        w = (hats[g] * dA).ravel() / area
-        s = w > 0
-        v = x0[:, :, None] - xq2[:, s][:, None, :]                     # (3, n_grid, n_q)
-        dn = -np.einsum("ig,igq->gq", n0, v)                           # depth below the tangent plane
-        r = np.sqrt(np.maximum(np.sum(v**2, axis=0) - dn**2, 0.0))
-        HS[:, g] = boussinesq_depth(r, dn, E, nu) @ w[s]
+    x0, n0 = reading_points(pair, member, rho_g, z_g, depth, 0)
+    HS = np.column_stack([halfspace_reading(x0, n0, xq, weights[g], E, nu) for g in range(ng)])
     bulk = G.copy()
     mid = int(np.nonzero(offsets == 0)[0][0])
     bulk[mid] -= HS
