@@ -103,7 +103,7 @@ def ltca_table(source) -> StiffnessTable | None:
         return None
     n, H = max(LTCA_TABLE_SAMPLES, exc["k_secant_left"].size), info.get("resolved_orders")
     return StiffnessTable(band_limited(exc["k_secant_left"], n, H), band_limited(exc["k_secant_right"], n, H),
-                          label="ltca")
+                          label=f"ltca:{H}")
 
 
 def tooth_contact_deviation(source) -> MeshDeviation | None:

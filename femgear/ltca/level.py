@@ -10,9 +10,9 @@ Resolved mesh orders.  The contact lines are cut into a whole number of points, 
 secant stiffness carries a discretisation noise floor (≈ 1e-4 of the mean here) at every
 mesh order; at low speed the orders 50–100 of that floor fall on the 2.6–5 kHz modes of
 the rotor model and dominate the bearing accelerations.  :func:`resolved_orders` finds
-the mesh orders the contact discretisation resolves — the orders up to the first whose
-stiffness harmonic changes by more than :data:`RESOLUTION_TOLERANCE` of itself when the
-points per contact line are doubled (64 phases) — and ``info['resolved_orders']`` tells
+the mesh orders the contact discretisation resolves — the orders up to the first band
+whose stiffness harmonics change by more than :data:`RESOLUTION_TOLERANCE` of themselves
+when the points per contact line are doubled (64 phases) — and ``info['resolved_orders']`` tells
 the dynamics to keep only those (:func:`femgear.dynamics.build.ltca_table`).
 """
 
@@ -30,8 +30,11 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
     """(H, change): mesh orders 1…H of the total secant stiffness are resolved by ``n_line`` points per line.
 
     ``change[h − 1]`` = |K_h(n_line) − K_h(2 n_line)| / |K_h(2 n_line)| for the complex harmonics K_h of
-    k_s,left + k_s,right at ``n_phases`` phases; H = the last order before the first change above
-    :data:`RESOLUTION_TOLERANCE` (at least 1).
+    k_s,left + k_s,right at ``n_phases`` phases.  H = the last order before the first whose running median
+    of ``change`` over the orders h − 1, h, h + 1 exceeds :data:`RESOLUTION_TOLERANCE` (at least 1): the
+    median ignores a single nearly vanishing harmonic (whose relative change is large while its
+    amplitude is negligible, e.g. order 4 at 200 N m on the baseline) and stops where the
+    discretisation noise dominates the orders as a band.
     """
     from femgear.ltca.analysis import mesh_cycle
 
@@ -42,7 +45,8 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
         spectra.append(np.fft.rfft(r.k_secant)[1:n_phases // 2])
     a, b = spectra
     change = np.abs(a - b) / np.maximum(np.abs(b), 1e-300)
-    bad = np.nonzero(change > RESOLUTION_TOLERANCE)[0]
+    median = np.array([np.median(change[max(0, i - 1):i + 2]) for i in range(change.size)])
+    bad = np.nonzero(median > RESOLUTION_TOLERANCE)[0]
     return (max(1, int(bad[0])) if bad.size else change.size), change
 
 
