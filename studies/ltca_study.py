@@ -183,6 +183,8 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
             "mean_deflection_um": float(ref.lte.mean() * 1e6), "single_pair_deflection_um": float(ref.lte.max() * 1e6),
             "factors": list(factors), "lte_pp_um": [p * 1e6 for p in pp], "lte_pp_unmodified_um": [p * 1e6 for p in pp0],
             "argmin_factor": float(factors[int(np.argmin(pp))]),
+            "local_minima_factors": [float(factors[i]) for i in range(1, len(pp) - 1) if pp[i] < pp[i - 1] and pp[i] < pp[i + 1]],
+            "argmin_ratio_factor": float(factors[int(np.argmin(np.asarray(pp) / np.asarray(pp0)))]),
             "lte_pp_at_design_vs_amount_um": [p * 1e6 for p in pp_design], "amounts_um": (amounts * 1e6).tolist(),
             "tip_relief_optimised_um": Ca_opt * 1e6, "lte_pp_optimised_um": [p * 1e6 for p in ppo],
             "argmin_factor_optimised": float(factors[int(np.argmin(ppo))])}, design, model
@@ -238,7 +240,9 @@ def _print_harris(h, title):
     print(f"Harris map, {title} (ε_α {h['eps_alpha']:.2f}, ε_β {h['eps_beta']:.2f}): design {h['design_force']:.0f} N, "
           f"mean deflection {h['mean_deflection_um']:.2f} µm, single-pair {h['single_pair_deflection_um']:.2f} µm; "
           f"tip relief {h['tip_relief_um']:.2f} µm over {h['relief_length_mm']:.2f} mm → LTE p-p minimum at "
-          f"{h['argmin_factor']:.2f} × design load")
+          f"{h['argmin_factor']:.2f} × design load; local minima at "
+          + ", ".join(f"{f:.2f}" for f in h["local_minima_factors"]) + " ×; LTE p-p relieved / unmodified smallest at "
+          f"{h['argmin_ratio_factor']:.2f} × design load")
     print(f"  relief minimising LTE p-p at the design load: {h['tip_relief_optimised_um']:.2f} µm → minimum at "
           f"{h['argmin_factor_optimised']:.2f} × design load")
     for f, p, po, p0 in zip(h["factors"], h["lte_pp_um"], h["lte_pp_optimised_um"], h["lte_pp_unmodified_um"]):
