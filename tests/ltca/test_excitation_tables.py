@@ -65,3 +65,13 @@ def test_rig_measure_is_the_largest_spectral_line_along_the_line_of_action():
     assert m["fft1"] == pytest.approx(0.8 * 1.1, rel=0.01)       # the larger station of point 1
     assert m["fft2"] == pytest.approx(0.8 * 1.3, rel=0.01)
     assert m["peak2"] > m["fft2"] and m["radial2"] >= m["peak2"]
+
+
+def test_observed_order_recovers_the_order_of_a_power_law():
+    """Three levels of f(h) = f* + C h^p with uneven spacing give back p (Roache's observed order)."""
+    from studies.ltca_study import observed_order
+
+    h = [1.0, 0.75, 0.6]
+    for p in (0.8, 2.0, 3.1):
+        assert observed_order(h, [5.0 + 0.3 * x**p for x in h]) == pytest.approx(p, rel=1e-6)
+    assert math.isnan(observed_order(h, [1.0, 1.2, 1.1]))       # oscillating: no asymptotic range
