@@ -18,12 +18,15 @@ subtracting the half-space part it already holds):
   between contact points of the same tooth (Hertz strips), is added by
   :mod:`femgear.ltca.contact`.
 
-Element order (measured on the baseline pair, 5 × 7 grid, 64 phases, 200 N m): P2 tets at
-level 0 (111 k DOF per member, 712 s to build here) give a mean mesh stiffness of
-8.21e8 N/m and LTE p-p 0.511 µm; P1 at level 1 (20 k DOF, 40 s) 8.63e8 (+5.1 %) and
-0.462 µm (−9.6 %); P1 at level 3 (47 k DOF, 102 s) 8.33e8 (+1.4 %) and 0.495 µm (−3.1 %).
-P1 is the default (``order=1``) for the 60 s budget; its bias is stiff, as expected of
-linear tetrahedra in bending.
+Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, unmodified;
+``python studies/ltca_study.py``): P1 levels 1/2/3/4 (20 k … 76 k DOF per member) give a mean
+mesh stiffness of 8.60/8.45/8.32/8.26e8 N/m and LTE p-p 0.453/0.469/0.480/0.488 µm (the two
+finest differ by 0.7 % and 1.6 %); Richardson puts level 1 at +5 % in stiffness.  P1 is the
+default (``order=1``, level 1: mesh + compliance ≈ 40 s) for the 60 s budget; its bias is
+stiff, as expected of linear tetrahedra in bending.  P2 converges much faster per element
+but one P2 unit load costs 16–22 s with SA-AMG here (111 k DOF, 53 CG iterations), so 63 loads
+take ≈ 20 min a member.  (With the earlier depth 2 h_tooth: P2 level 0 8.21e8 N/m, LTE p-p
+0.511 µm on a 5 × 7 grid; ``python studies/ltca_element_order.py --ltca``.)
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
