@@ -25,8 +25,9 @@ finest differ by 0.7 % and 1.6 %); Richardson puts level 1 at +5 % in stiffness.
 default (``order=1``, level 1: mesh + compliance ≈ 40 s) for the 60 s budget; its bias is
 stiff, as expected of linear tetrahedra in bending.  P2 converges much faster per element
 but one P2 unit load costs 16–22 s with SA-AMG here (111 k DOF, 53 CG iterations), so 63 loads
-take ≈ 20 min a member.  (With the earlier depth 2 h_tooth: P2 level 0 8.21e8 N/m, LTE p-p
-0.511 µm on a 5 × 7 grid; ``python studies/ltca_element_order.py --ltca``.)
+take ≈ 20 min a member.  On a 5 × 7 grid (``python studies/ltca_element_order.py --ltca``):
+P1 level 1 / P1 level 3 / P2 level 0 (112 k DOF, 620 s) give 8.58 / 8.33 / 8.16e8 N/m and LTE
+p-p 0.470 / 0.495 / 0.515 µm: the P1 default is 5.2 % stiff and 8.8 % low in LTE p-p against P2.
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
