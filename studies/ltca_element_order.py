@@ -1,12 +1,14 @@
 """P1 or P2 tetrahedra for the LTCA flank kernels: one measurement, both orders, several meshes.
 
-    python studies/ltca_element_order.py [--quick | --ltca]
+    python studies/ltca_element_order.py [--quick | --ltca | --split]
 
 For the baseline pinion, a 3 × 3 flank grid (hat loads of 1 N): the FE approach at the
 reading depth under the mid-flank, mid-face load (``fe_self``) and its half-space-free bulk
 part, with DOFs and wall time, for P1 at segment levels 0–3 and P2 at levels 0–1
 (``--quick``: P1 0–1, P2 0).  Prints a table and a JSON line (out/ltca_element_order.json).
 ``--ltca``: the LTCA outputs themselves for P1 (levels 1, 3) and P2 (level 0), see :func:`run_ltca`.
+``--split``: one mid-flank unit load, read at several depths d: the FE approach, its half-space
+part and the bulk (their difference), P1 levels 0–5 and P2 levels 0–1 (:func:`run_split`, ~5 min).
 """
 
 from __future__ import annotations
@@ -70,7 +72,57 @@ def run_ltca() -> list[dict]:
     return rows
 
 
+SPLIT_DEPTHS_MM = (0.5, 0.7, 0.9, 1.2)
+
+
+def run_split() -> list[dict]:
+    """FE − half-space split for the mid node of a 7 × 9 flank grid of the baseline pinion, one solve per mesh.
+
+    With a converged FE the bulk (FE minus half-space at the same depth) should not depend on the
+    reading depth d (the local part is the half-space's); d is clipped to half the half tooth thickness.
+    """
+    import numpy as np
+
+    from femgear.body.elastic3d import Elastic3D
+    from femgear.geometry.gear import GearPair
+    from femgear.ltca.compliance import flank_unit_loads, halfspace_reading, reading_points
+    from femgear.ltca.flank import half_thickness, roll_range
+    from femgear.mesh.segment import default_spec, helix_segment
+    from femgear.scene import load_scene
+
+    scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
+    pair = GearPair.from_scene(scene)
+    E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
+    r0, r1 = roll_range(pair, 1)
+    gr, gz = np.linspace(r0, r1, 7), np.linspace(0.0, pair.b, 9)
+    rho, z = np.array([gr[3]]), np.array([gz[4]])
+    rows = []
+    for order, level in [(1, lv) for lv in range(6)] + [(2, 0), (2, 1)]:
+        t0 = time.perf_counter()
+        model = Elastic3D(helix_segment(pair, 1, default_spec(pair, 1, level)), E, nu, order=order)
+        loads, xq, weights = flank_unit_loads(pair, 1, model, gr, gz)
+        u = model.solve(loads[3 * 9 + 4])
+        row = {"order": order, "level": level, "ndofs": int(model.basis.N), "fe": [], "hs": [], "bulk": []}
+        for d in SPLIT_DEPTHS_MM:
+            x, n = reading_points(pair, 1, rho, z, np.minimum(d * 1e-3, 0.5 * half_thickness(pair, 1, rho)))
+            fe = -float(np.sum(np.vstack([M @ u for M in model.probe_matrices(x)]) * n))
+            hs = float(halfspace_reading(x, n, xq, weights[3 * 9 + 4], E, nu)[0])
+            row["fe"].append(fe), row["hs"].append(hs), row["bulk"].append(fe - hs)
+        row["seconds"] = time.perf_counter() - t0
+        rows.append(row)
+    return rows
+
+
 def main(argv) -> None:
+    if "--split" in argv:
+        rows = run_split()
+        print("order level   DOF    bulk = FE − half-space at d = " + " / ".join(f"{d} mm" for d in SPLIT_DEPTHS_MM)
+              + " [1e-10 m/N]   (FE at the last depth)")
+        for r in rows:
+            print(f"P{r['order']}  {r['level']:4d} {r['ndofs']:7d}   " + " / ".join(f"{b * 1e10:.3f}" for b in r["bulk"])
+                  + f"   ({r['fe'][-1] * 1e10:.3f})  {r['seconds']:.0f} s")
+        print(json.dumps(rows))
+        return
     if "--ltca" in argv:
         rows = run_ltca()
         print("order level  DOF pinion/gear  build [s]  k mean [N/m]  LTE p-p [µm]  LTE mean [µm]")

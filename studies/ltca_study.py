@@ -2,15 +2,19 @@
 
     python studies/ltca_study.py [--coarse]
 
-1. Mesh convergence (segment levels 0–3; ``--coarse``: 0, 1): LTE peak-to-peak and
-   mean secant mesh stiffness at the scene torque, unmodified flanks, 64 phases; the
-   change between the two finest levels and the observed order p = ln(Δ₀₁/Δ₁₂)/ln(h₁/h₂).
+1. Mesh convergence (P1 segment levels 1–4, h_tooth = m_n/3 … m_n/6; ``--coarse``: 0, 1): LTE
+   peak-to-peak and mean secant mesh stiffness at the scene torque, unmodified flanks, 64
+   phases; the change between the two finest levels, the observed order p of the three
+   finest (:func:`observed_order`), the Richardson extrapolation and each level's error
+   against it (level 1 is the default: mesh + compliance ≤ 60 s; level 4 costs ~5 min a member).
 2. Mean mesh stiffness against ISO 6336 c_γα (both helices, normal direction) and PEM.
-3. Harris map: linear tip relief on both members designed for the scene load, (a) amount =
-   the unmodified mean deflection at that load, relief length 0.4 p_bt (rule fixed before
-   the run), (b) amount minimising LTE p-p at the design load (Tavakoli & Houser, ASME
-   JMTAD 108:86, 1986); LTE p-p against load 0.1–2 × design, PNG ``out/ltca_harris.png``;
-   the same for the near-spur pair (β = 1°, segment level 0), the case of the classic map.
+3. Harris map: a linear "long" tip relief on both members designed for the scene load
+   (:func:`relief_design`): the baseline (β = 30°) with the helical rule C_a = w/c_γ (the mean
+   mesh deflection), the near-spur pair (β = 1°, segment level 0, the case of the classic map)
+   with the spur rule C_a = F_bt/(b c′) (the single-pair deflection) and, for comparison, with
+   the helical rule; each also with the amount minimising LTE p-p at the design load
+   (Tavakoli & Houser, ASME JMTAD 108:86, 1986); LTE p-p against load 0.1–2 × design, PNG
+   ``out/ltca_harris.png``.
 4. Discretisation of the contact problem: 64 vs 128 phases (LTE harmonics 1–5), 16 vs 32
    points per contact line (LTE p-p, mean stiffness).
 5. The pressure map of the design case on the 3-D pinion flank, ``out/ltca_pressure.vtu``.
@@ -59,12 +63,40 @@ def convergence(scene, pair, levels, phases=64):
         out["change_finest_lte_pp"] = abs(b["lte_pp_um"] - a["lte_pp_um"]) / abs(b["lte_pp_um"])
         out["change_finest_k_mean"] = abs(b["k_mean"] - a["k_mean"]) / b["k_mean"]
     if len(rows) >= 3:
+        h = [r["h_tooth_mm"] for r in rows[-3:]]
         for key in ("lte_pp_um", "k_mean"):
-            d01 = abs(rows[-2][key] - rows[-3][key])
-            d12 = abs(rows[-1][key] - rows[-2][key])
-            ratio = rows[-2]["h_tooth_mm"] / rows[-1]["h_tooth_mm"]
-            out[f"order_{key}"] = math.log(d01 / d12) / math.log(ratio) if d01 > 0 and d12 > 0 else float("nan")
+            f = [r[key] for r in rows[-3:]]
+            p = observed_order(h, f)
+            out[f"order_{key}"] = p
+            if math.isfinite(p):           # Richardson: f(h) = f* + C h^p through the two finest
+                extra = f[2] + (f[2] - f[1]) * h[2] ** p / (h[1] ** p - h[2] ** p)
+                out[f"extrapolated_{key}"] = extra
+                out[f"default_error_{key}"] = [(r[key] - extra) / extra for r in rows]
     return out
+
+
+def observed_order(h, f) -> float:
+    """Order p of f(h) = f* + C h^p through three levels of any spacing (bisection on p ∈ [0.2, 8]).
+
+    (Roache, *Verification and Validation in Computational Science and Engineering*, 1998,
+    §5.4: the observed order from three grids; with a constant refinement ratio r it is
+    ln(Δ₀₁/Δ₁₂)/ln r.)  NaN when the changes do not shrink monotonically (no asymptotic range).
+    """
+    d01, d12 = f[1] - f[0], f[2] - f[1]
+    if d01 == 0 or d12 == 0 or d01 * d12 < 0 or abs(d12) >= abs(d01):
+        return float("nan")
+    target = d01 / d12
+
+    def g(p):
+        return (h[0] ** p - h[1] ** p) / (h[1] ** p - h[2] ** p) - target
+
+    lo, hi = 0.2, 8.0
+    if g(lo) * g(hi) > 0:
+        return float("nan")
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if g(lo) * g(mid) > 0 else (lo, mid)
+    return 0.5 * (lo + hi)
 
 
 def discretisation(scene, pair, level):
@@ -99,7 +131,33 @@ def near_spur_pair(pair):
     return replace(pair, beta=math.radians(1.0))
 
 
-def harris(scene, pair, level, factors, phases=32):
+def relief_design(pair, unmodified, rule: str) -> tuple[float, float]:
+    """(amount, length) of a linear tip relief on both members designed for the load of ``unmodified``.
+
+    Length: the "long" relief over the two-pair zone, L_Ca = (ε_α − 1) p_bt = g_α − p_bt,
+    starting at the highest point of single tooth contact (Smith, *Gear Noise and
+    Vibration*, 2nd ed. 2003, ch. 5: the Harris map; [RECALLED]).  Amount, the deflection
+    the relief is to take up at the design load [RECALLED: Niemann & Winter,
+    *Maschinenelemente* II, 1989, §21; Smith ch. 5]:
+    - ``spur``: the single-pair deflection C_a = F_bt/(b c′) — a tooth pair alone carries the
+      whole load at the start of its relief; from the LTCA: the largest loaded TE of the
+      unmodified pair over the cycle (its single-pair zone);
+    - ``helical``: the load per unit length on the total contact lines over the stiffness per
+      unit length, C_a = w/c_γ = F_bn/(L̄ c_γ,n) = the mean mesh deflection; from the LTCA:
+      the cycle mean of the loaded TE (normal, both helices).
+    """
+    length = pair.g_alpha - pair.p_bt
+    if rule == "spur":
+        return float(unmodified.lte.max()), length
+    if rule == "helical":
+        return float(unmodified.lte.mean()), length
+    raise ValueError(f"rule must be 'spur' or 'helical', got {rule!r}")
+
+
+def harris(scene, pair, level, factors, phases=32, rule="helical"):
+    """LTE p-p against load for a linear tip relief designed by ``rule`` (:func:`relief_design`) for the scene
+    load, for the relief amount minimising LTE p-p at that load (Tavakoli & Houser, ASME JMTAD 108:86, 1986),
+    and unmodified."""
     from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
 
@@ -107,11 +165,9 @@ def harris(scene, pair, level, factors, phases=32):
     Fd = normal_force(pair, scene.operating.torque, scene.operating.driver)
     model = build_model(pair, E, nu, level=level)
     ref = mesh_cycle(model, Fd, None, n_phases=phases, keep_lines=False)
-    Ca = float(ref.lte.mean())
-    length = 0.4 * pair.p_bt
+    Ca, length = relief_design(pair, ref, rule)
     mods = Modifications(tip_relief=Ca, tip_relief_length=length)
-    # relief designed by minimising LTE p-p at the design load (Tavakoli & Houser 1986): amount scan
-    amounts = Ca * np.linspace(0.25, 5.0, 20)
+    amounts = Ca * np.linspace(0.1, 3.0, 30)
     pp_design = [mesh_cycle(model, Fd, Modifications(tip_relief=a, tip_relief_length=length), n_phases=phases,
                             keep_lines=False).lte_peak_to_peak() for a in amounts]
     Ca_opt = float(amounts[int(np.argmin(pp_design))])
@@ -122,9 +178,14 @@ def harris(scene, pair, level, factors, phases=32):
         pp0.append(mesh_cycle(model, f * Fd, None, n_phases=phases, keep_lines=False).lte_peak_to_peak())
         ppo.append(mesh_cycle(model, f * Fd, mods_opt, n_phases=phases, keep_lines=False).lte_peak_to_peak())
     design = mesh_cycle(model, Fd, mods_opt, n_phases=64)
-    return {"design_force": Fd, "tip_relief_um": Ca * 1e6, "relief_length_mm": length * 1e3,
+    return {"rule": rule, "eps_alpha": pair.eps_alpha, "eps_beta": pair.b * math.sin(pair.beta) / (math.pi * pair.m_n),
+            "design_force": Fd, "tip_relief_um": Ca * 1e6, "relief_length_mm": length * 1e3,
+            "mean_deflection_um": float(ref.lte.mean() * 1e6), "single_pair_deflection_um": float(ref.lte.max() * 1e6),
             "factors": list(factors), "lte_pp_um": [p * 1e6 for p in pp], "lte_pp_unmodified_um": [p * 1e6 for p in pp0],
             "argmin_factor": float(factors[int(np.argmin(pp))]),
+            "local_minima_factors": [float(factors[i]) for i in range(1, len(pp) - 1) if pp[i] < pp[i - 1] and pp[i] < pp[i + 1]],
+            "argmin_ratio_factor": float(factors[int(np.argmin(np.asarray(pp) / np.asarray(pp0)))]),
+            "lte_pp_at_design_vs_amount_um": [p * 1e6 for p in pp_design], "amounts_um": (amounts * 1e6).tolist(),
             "tip_relief_optimised_um": Ca_opt * 1e6, "lte_pp_optimised_um": [p * 1e6 for p in ppo],
             "argmin_factor_optimised": float(factors[int(np.argmin(ppo))])}, design, model
 
@@ -134,22 +195,30 @@ def run(coarse: bool = False) -> dict:
     from femgear.stiffness.tvms import mesh_stiffness
 
     scene, pair = setup()
-    levels = (0, 1) if coarse else (0, 1, 2, 3)
+    levels = (0, 1) if coarse else (1, 2, 3, 4)
     conv = convergence(scene, pair, levels)
     factors = np.round(np.linspace(0.1, 2.0, 8 if coarse else 14), 3)
-    h, design, model = harris(scene, pair, 0 if coarse else 1, factors)
-    h_spur = None if coarse else harris(scene, near_spur_pair(pair), 0, factors)[0]
+    h, design, model = harris(scene, pair, 0 if coarse else 1, factors, rule="helical")
+    h_spur = None if coarse else harris(scene, near_spur_pair(pair), 0, factors, rule="spur")[0]
+    h_spur_helical = None if coarse else harris(scene, near_spur_pair(pair), 0, factors, rule="helical")[0]
     disc = discretisation(scene, pair, 0 if coarse else 1)
     iso = mesh_stiffness(pair, "iso6336", n_positions=16)
     pem = mesh_stiffness(pair, "pem", n_positions=64)
-    out = {"convergence": conv, "discretisation": disc, "harris": h, "harris_near_spur": h_spur, "k_iso6336": iso.mean, "k_pem": pem.mean,
-           "k_ltca": conv["rows"][-1]["k_mean"], "design_p_max_GPa": float(design.p_max_left.max() / 1e9)}
+    out = {"convergence": conv, "discretisation": disc, "harris": h, "harris_near_spur": h_spur,
+           "harris_near_spur_helical_rule": h_spur_helical, "k_iso6336": iso.mean, "k_pem": pem.mean,
+           "k_ltca": conv["rows"][-1]["k_mean"], "k_ltca_default": conv["rows"][0]["k_mean"],
+           "level_default": conv["rows"][0]["level"], "level_finest": conv["rows"][-1]["level"], "design_p_max_GPa": float(design.p_max_left.max() / 1e9)}
     (ROOT / "out").mkdir(exist_ok=True)
     out["vtk"] = str(write_flank_pressure(ROOT / "out" / "ltca_pressure.vtu", design, pair,
                                           scene.material.youngs_modulus, scene.material.poisson_ratio))
-    _plot([x for x in (h, h_spur) if x is not None], ROOT / "out" / "ltca_harris.png")
+    _plot([(out[k], t) for k, t in HARRIS_TITLES.items()], ROOT / "out" / "ltca_harris.png")
     (ROOT / "out" / "ltca_study.json").write_text(json.dumps(out, indent=1))
     return out
+
+
+HARRIS_TITLES = {"harris": "baseline pair (β = 30°), helical rule C_a = w/c_γ",
+                 "harris_near_spur": "near-spur pair (β = 1°), spur rule C_a = F_bt/(b c′)",
+                 "harris_near_spur_helical_rule": "near-spur pair (β = 1°), helical rule C_a = w/c_γ"}
 
 
 def _plot(maps, path):
@@ -160,10 +229,24 @@ def _plot(maps, path):
 
     from femgear.plot import save_figure
 
+    maps = [(h, t) for h, t in maps if h is not None]
     fig, axes = plt.subplots(1, len(maps), figsize=(6 * len(maps), 4), squeeze=False)
-    for ax, h, title in zip(axes[0], maps, ("baseline pair (β = 30°, ε_β 0.93)", "near-spur pair (β = 1°)")):
+    for ax, (h, title) in zip(axes[0], maps):
         _harris_panel(ax, h, title)
     save_figure(fig, path)
+
+
+def _print_harris(h, title):
+    print(f"Harris map, {title} (ε_α {h['eps_alpha']:.2f}, ε_β {h['eps_beta']:.2f}): design {h['design_force']:.0f} N, "
+          f"mean deflection {h['mean_deflection_um']:.2f} µm, single-pair {h['single_pair_deflection_um']:.2f} µm; "
+          f"tip relief {h['tip_relief_um']:.2f} µm over {h['relief_length_mm']:.2f} mm → LTE p-p minimum at "
+          f"{h['argmin_factor']:.2f} × design load; local minima at "
+          + ", ".join(f"{f:.2f}" for f in h["local_minima_factors"]) + " ×; LTE p-p relieved / unmodified smallest at "
+          f"{h['argmin_ratio_factor']:.2f} × design load")
+    print(f"  relief minimising LTE p-p at the design load: {h['tip_relief_optimised_um']:.2f} µm → minimum at "
+          f"{h['argmin_factor_optimised']:.2f} × design load")
+    for f, p, po, p0 in zip(h["factors"], h["lte_pp_um"], h["lte_pp_optimised_um"], h["lte_pp_unmodified_um"]):
+        print(f"  {f:5.2f} × design: LTE p-p {p:.4f} µm, optimised relief {po:.4f} µm (unmodified {p0:.4f} µm)")
 
 
 def _harris_panel(ax, h, title):
@@ -187,28 +270,23 @@ def main(argv) -> None:
               f"{r['lte_pp_um']:12.4f}  {r['lte_mean_um']:13.4f}  {r['k_mean']:.4e}")
     c = out["convergence"]
     print(f"change between the two finest: LTE p-p {c.get('change_finest_lte_pp', float('nan')):.2%}, "
-          f"k mean {c.get('change_finest_k_mean', float('nan')):.2%}; observed order LTE p-p "
+          f"k mean {c.get('change_finest_k_mean', float('nan')):.2%}; observed order (three finest) LTE p-p "
           f"{c.get('order_lte_pp_um', float('nan')):.2f}, k {c.get('order_k_mean', float('nan')):.2f}")
+    for key, name in (("lte_pp_um", "LTE p-p"), ("k_mean", "k mean")):
+        if f"extrapolated_{key}" in c:
+            print(f"  {name}: Richardson-extrapolated {c[f'extrapolated_{key}']:.5g}; error per level "
+                  + " ".join(f"L{r['level']} {e:+.2%}" for r, e in zip(c["rows"], c[f"default_error_{key}"])))
     for name, d in out["discretisation"].items():
         print(f"{name}: LTE p-p {d['lte_pp_um']:.4f} µm, harmonics 1-5 [µm] " + " ".join(f"{x:.4f}" for x in d["harmonics_um"])
               + "; 128 vs 64 phases: harmonic change / largest " + " ".join(f"{x:.1e}" for x in d["phases_128_harmonics_change"])
               + f"; 32 vs 16 points per line: LTE p-p {d['points_32_lte_pp_change']:.2%}, k {d['points_32_k_change']:.2%}")
-    print(f"mean mesh stiffness (both helices, normal): LTCA {out['k_ltca']:.4e}, ISO 6336 c_γα {out['k_iso6336']:.4e} "
-          f"({out['k_ltca'] / out['k_iso6336'] - 1:+.1%}), PEM {out['k_pem']:.4e} ({out['k_ltca'] / out['k_pem'] - 1:+.1%})")
-    h = out["harris"]
-    print(f"Harris map: tip relief {h['tip_relief_um']:.2f} µm over {h['relief_length_mm']:.2f} mm, design "
-          f"{h['design_force']:.0f} N; LTE p-p minimum at {h['argmin_factor']:.2f} × design load")
-    print(f"  relief minimising LTE p-p at the design load: {h['tip_relief_optimised_um']:.2f} µm; its LTE p-p "
-          f"minimum at {h['argmin_factor_optimised']:.2f} × design load")
-    for f, p, po, p0 in zip(h["factors"], h["lte_pp_um"], h["lte_pp_optimised_um"], h["lte_pp_unmodified_um"]):
-        print(f"  {f:5.2f} × design: LTE p-p {p:.4f} µm, optimised relief {po:.4f} µm (unmodified {p0:.4f} µm)")
-    hs = out["harris_near_spur"]
-    if hs is not None:
-        print(f"near-spur pair (β = 1°): relief {hs['tip_relief_um']:.2f} µm → minimum at {hs['argmin_factor']:.2f} × design; "
-              f"relief minimising p-p at the design load {hs['tip_relief_optimised_um']:.2f} µm → minimum at "
-              f"{hs['argmin_factor_optimised']:.2f} × design")
-        for f, p, po, p0 in zip(hs["factors"], hs["lte_pp_um"], hs["lte_pp_optimised_um"], hs["lte_pp_unmodified_um"]):
-            print(f"  {f:5.2f} × design: LTE p-p {p:.4f} µm, optimised relief {po:.4f} µm (unmodified {p0:.4f} µm)")
+    for key, lv in (("k_ltca_default", out["level_default"]), ("k_ltca", out["level_finest"])):
+        print(f"mean mesh stiffness (both helices, normal): LTCA level {lv} {out[key]:.4e}, ISO 6336 c_γα "
+              f"{out['k_iso6336']:.4e} ({out[key] / out['k_iso6336'] - 1:+.1%}), PEM {out['k_pem']:.4e} "
+              f"({out[key] / out['k_pem'] - 1:+.1%})")
+    for key, title in HARRIS_TITLES.items():
+        if out.get(key) is not None:
+            _print_harris(out[key], title)
     print(f"design case p_max {out['design_p_max_GPa']:.2f} GPa; pressure map {out['vtk']}; PNG out/ltca_harris.png")
     print(json.dumps(out))
 

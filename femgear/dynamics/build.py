@@ -70,20 +70,59 @@ def stiffness_source(case: Case, stiffness):
     return stiffness
 
 
+LTCA_TABLE_SAMPLES = 512   #: samples per mesh period of the band-limited LTCA tables
+
+
+def band_limited(samples: np.ndarray, n: int, orders: int | None = None) -> np.ndarray:
+    """The trigonometric interpolant of one period of ``samples`` (length m) at n ≥ m equidistant phases.
+
+    Keeps the mesh orders 0 … ``orders`` (default: all below the Nyquist order m/2; the
+    Nyquist term of an even m is dropped: its phase is unknown) and adds none: the
+    resampled table carries exactly the mesh orders the LTCA resolved.  (notes ltca_methods §5: resample with FFT, never
+    linearly — a piecewise-linear table has kinks at every sample, i.e. spurious mesh
+    orders m, 2m, … that, at low speed, fall on the 5–8 kHz mesh modes.)
+    """
+    x = np.asarray(samples, dtype=float)
+    m = x.size
+    if n < m:
+        raise ValueError(f"band_limited: n = {n} must be ≥ the number of samples {m}")
+    X = np.fft.rfft(x)
+    keep = (m + 1) // 2 if orders is None else min((m + 1) // 2, orders + 1)     # orders 0 … keep − 1
+    Y = np.zeros(n // 2 + 1, dtype=complex)
+    Y[:keep] = X[:keep] * (n / m)
+    return np.fft.irfft(Y, n=n)
+
+
+def ltca_table(source) -> StiffnessTable | None:
+    """The secant stiffness of an ``ltca`` level as a table band-limited to the mesh orders its contact
+    discretisation resolves (``info['resolved_orders']``, :func:`femgear.ltca.level.resolved_orders`);
+    None for other levels."""
+    info = getattr(source, "info", None) or {}
+    exc = info.get("excitation")
+    if exc is None:
+        return None
+    n, H = max(LTCA_TABLE_SAMPLES, exc["k_secant_left"].size), info.get("resolved_orders")
+    return StiffnessTable(band_limited(exc["k_secant_left"], n, H), band_limited(exc["k_secant_right"], n, H),
+                          label=f"ltca:{H}")
+
+
 def tooth_contact_deviation(source) -> MeshDeviation | None:
     """The unloaded TE e_s = LTE_s − F_s/k_s of an ``ltca`` stiffness (None for other levels).
 
     With the secant stiffness k_s of the LTCA at the operating load, the mesh law
     N_s = k_s f(δ_s − e_s) reproduces the LTCA's own loads at that load (the LTCA's
-    excitation identity).  e_s is the kinematic error of the flank modifications: it
-    enters as a drive-flank deviation; the modifications are taken as equal on the coast
-    flanks (the coast table is the drive table: exact for the uniform part, the coast
-    flanks seldom touch).
+    excitation identity; with k_s = F_s/(LTE − NLTE_s), e_s = NLTE_s).  e_s is the
+    kinematic error of the flank modifications: it enters once, as a drive-flank
+    deviation; the modifications are taken as equal on the coast flanks (the coast table
+    is the drive table: exact for the uniform part, the coast flanks seldom touch).
+    Band-limited like :func:`ltca_table`, on the same phase grid and to the same orders.
     """
-    exc = (getattr(source, "info", None) or {}).get("excitation")
+    info = getattr(source, "info", None) or {}
+    exc = info.get("excitation")
     if exc is None:
         return None
-    e = np.array([exc["e_left"], exc["e_right"]], dtype=float)
+    n, H = max(LTCA_TABLE_SAMPLES, exc["e_left"].size), info.get("resolved_orders")
+    e = np.array([band_limited(exc["e_left"], n, H), band_limited(exc["e_right"], n, H)])
     return MeshDeviation(drive=e, coast=e.copy())
 
 
@@ -169,7 +208,8 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     geom = mesh_geometry(pair, half)
     G = geom.g @ st.T
     source = stiffness_source(case, stiffness)
-    table = as_stiffness_table(source)
+    table = ltca_table(source)
+    table = as_stiffness_table(source) if table is None else table
     zeta_m = case.stiffness.damping_ratio if mesh_damping_ratio is None else mesh_damping_ratio
     K_mean = st.K + sum(k * np.outer(G[s], G[s]) for s, k in enumerate(table.mean))
     ratio = case.stiffness.rayleigh_ratio if rayleigh_ratio is None else rayleigh_ratio

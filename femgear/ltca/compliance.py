@@ -18,15 +18,25 @@ subtracting the half-space part it already holds):
   between contact points of the same tooth (Hertz strips), is added by
   :mod:`femgear.ltca.contact`.
 
-Element order (measured on the baseline pair, 5 × 7 grid, 64 phases, 200 N m): P2 tets at
-level 0 (111 k DOF per member, 712 s to build here) give a mean mesh stiffness of
-8.21e8 N/m and LTE p-p 0.511 µm; P1 at level 1 (20 k DOF, 40 s) 8.63e8 (+5.1 %) and
-0.462 µm (−9.6 %); P1 at level 3 (47 k DOF, 102 s) 8.33e8 (+1.4 %) and 0.495 µm (−3.1 %).
-P1 is the default (``order=1``) for the 60 s budget; its bias is stiff, as expected of
-linear tetrahedra in bending.
+Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, unmodified;
+``python studies/ltca_study.py``): P1 levels 1/2/3/4 (20 k … 76 k DOF per member) give a mean
+mesh stiffness of 8.60/8.45/8.32/8.26e8 N/m and LTE p-p 0.453/0.469/0.480/0.488 µm (the two
+finest differ by 0.7 % and 1.6 %); Richardson puts level 1 at +5 % in stiffness.  P1 is the
+default (``order=1``, level 1: mesh + compliance ≈ 40 s) for the 60 s budget; its bias is
+stiff, as expected of linear tetrahedra in bending.  P2 converges much faster per element
+but one P2 unit load costs 16–22 s with SA-AMG here (111 k DOF, 53 CG iterations), so 63 loads
+take ≈ 20 min a member.  On a 5 × 7 grid (``python studies/ltca_element_order.py --ltca``):
+P1 level 1 / P1 level 3 / P2 level 0 (112 k DOF, 620 s) give 8.58 / 8.33 / 8.16e8 N/m and LTE
+p-p 0.470 / 0.495 / 0.515 µm: the P1 default is 5.2 % stiff and 8.8 % low in LTE p-p against P2.
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
-tooth near the tip.  Results are cached on disk (``out/cache/ltca`` or
+tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
+size: a depth that shrinks with the mesh moves the target of a refinement study (the
+reading then converges to a different split at every level).  The split is insensitive
+to the depth where the FE is converged: one mid-flank unit load on the baseline pinion,
+P2 level 1 (144 k DOF), gives bulk = 9.48/9.47/9.55e-10 m/N at d = 0.7/0.9/1.2 mm, while P1
+at level 5 (114 k DOF) is still 11 % below at 1.2 mm (P1 tetrahedra are stiff in bending)
+(``python studies/ltca_element_order.py --split``).  Results are cached on disk (``out/cache/ltca`` or
 ``$FEMGEAR_CACHE``) under a hash of geometry, material, mesh and grid.
 """
 
@@ -48,6 +58,7 @@ from femgear.ltca.halfspace import boussinesq_depth
 from femgear.mesh.segment import SegmentSpec
 
 CACHE_VERSION = 1
+DEFAULT_DEPTH = 0.4    #: reading depth below the flank, in normal modules (clipped near the tip)
 
 
 @dataclass(frozen=True)
@@ -109,7 +120,7 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
                       poisson_ratio: float, order: int = 1, n_rho: int = 7, n_z: int = 9,
                       depth: float | None = None, cache: bool = True) -> MemberCompliance:
     """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present."""
-    d0 = depth if depth is not None else 2.0 * spec.h_tooth
+    d0 = depth if depth is not None else DEFAULT_DEPTH * pair.m_n
     key = _key(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     path = cache_dir() / f"member{member}-{key}.npz"
     if cache and path.exists():
@@ -128,9 +139,58 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
     return result
 
 
-def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberCompliance:
+def flank_unit_loads(pair: GearPair, member: int, model, grid_rho: np.ndarray, grid_z: np.ndarray):
+    """Load vectors of unit normal hat loads (1 N each) at the (ρ, z) grid nodes of the loaded flank.
+
+    Returns (loads, xq, weights): ``loads[g]`` the FE load vector of node g (grid index
+    i_ρ·n_z + i_z), ``xq`` (3, n_q) the flank quadrature points and ``weights[g]`` (n_q,) the
+    share of node g's 1 N carried by each quadrature point.
+    """
     from skfem import FacetBasis, LinearForm
 
+    mesh = model.mesh
+    rb = pair.rb1 if member == 1 else pair.rb2
+    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries["loaded_flank"])
+    xq = np.asarray(fb.global_coordinates())                      # (3, n_facets, n_qp)
+    rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
+    hats = _bilinear(grid_rho, grid_z, rq.ravel(), xq[2].ravel()).T.reshape(grid_rho.size * grid_z.size, *rq.shape)
+    dA = fb.dx                                                # (n_facets, n_qp) quadrature weights × area
+
+    @LinearForm
+    def pressure(v, w):                                       # traction −p n (into the tooth)
+        return -w.p * (w.n[0] * v[0] + w.n[1] * v[1] + w.n[2] * v[2])
+
+    loads, weights = [], []
+    for g in range(hats.shape[0]):
+        area = float(np.sum(hats[g] * dA))
+        if area <= 0:
+            raise ValueError(f"flank grid node {g} carries no flank area: the loaded_flank region misses the active flank")
+        loads.append(pressure.assemble(fb, p=hats[g] / area))
+        weights.append((hats[g] * dA).ravel() / area)
+    return loads, xq.reshape(3, -1), weights
+
+
+def halfspace_reading(x: np.ndarray, normals: np.ndarray, xq: np.ndarray, weight: np.ndarray, E: float,
+                      nu: float) -> np.ndarray:
+    """Half-space approach at points ``x`` (3, n) below flank points of normals ``normals`` for one hat load
+    spread over the quadrature points ``xq`` with ``weight`` (Boussinesq at depth, tangent-plane distances)."""
+    s = weight > 0
+    v = x[:, :, None] - xq[:, s][:, None, :]                       # (3, n, n_q)
+    dn = -np.einsum("ig,igq->gq", normals, v)                      # depth below the tangent plane
+    r = np.sqrt(np.maximum(np.sum(v**2, axis=0) - dn**2, 0.0))
+    return boussinesq_depth(r, dn, E, nu) @ weight[s]
+
+
+def reading_points(pair: GearPair, member: int, rho: np.ndarray, z: np.ndarray, depth: np.ndarray, tooth: int = 0):
+    """(points (3, n) at ``depth`` below the flank of ``tooth``, outward normals (3, n))."""
+    p = flank_points(pair, member, rho, z, tooth)
+    n = flank_normals(pair, member, rho, z, tooth)
+    x = p - depth * _transverse(n)
+    x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
+    return x, n
+
+
+def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberCompliance:
     from femgear.body.elastic3d import Elastic3D
     from femgear.mesh.segment import helix_segment
 
@@ -138,20 +198,10 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
     mesh = helix_segment(pair, member, spec)
     t_mesh = time.perf_counter() - t0
     model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=1e-8)
-    rb = pair.rb1 if member == 1 else pair.rb2
     r0, r1 = roll_range(pair, member)
     grid_rho = np.linspace(r0, r1, n_rho)
     grid_z = np.linspace(0.0, pair.b, n_z)
-    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries["loaded_flank"])
-    xq = np.asarray(fb.global_coordinates())                      # (3, n_facets, n_qp)
-    rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
-    hats = _bilinear(grid_rho, grid_z, rq.ravel(), xq[2].ravel()).T.reshape(n_rho * n_z, *rq.shape)
-    dA = fb.dx                                                # (n_facets, n_qp) quadrature weights × area
-
-    @LinearForm
-    def pressure(v, w):                                       # traction −p n (into the tooth)
-        return -w.p * (w.n[0] * v[0] + w.n[1] * v[1] + w.n[2] * v[2])
-
+    loads, xq, weights = flank_unit_loads(pair, member, model, grid_rho, grid_z)
     RR, ZZ = np.meshgrid(grid_rho, grid_z, indexing="ij")
     rho_g, z_g = RR.ravel(), ZZ.ravel()
     depth = np.minimum(d0, 0.5 * half_thickness(pair, member, rho_g))
@@ -159,36 +209,18 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
     offsets = np.arange(-half, half + 1)
     probes = []
     for k in offsets:
-        p = flank_points(pair, member, rho_g, z_g, int(k))
-        n = flank_normals(pair, member, rho_g, z_g, int(k))
-        x = p - depth * _transverse(n)
-        x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
+        x, n = reading_points(pair, member, rho_g, z_g, depth, int(k))
         probes.append((model.probe_matrices(x), n))
     ng = rho_g.size
     G = np.zeros((offsets.size, ng, ng))
     for g in range(ng):
-        area = float(np.sum(hats[g] * dA))
-        if area <= 0:
-            raise ValueError(f"flank grid node {g} carries no flank area: the loaded_flank region misses the active flank")
-        f = pressure.assemble(fb, p=hats[g] / area)
-        u = model.solve(f, case=f"flank compliance member {member}, grid node {g}")
+        u = model.solve(loads[g], case=f"flank compliance member {member}, grid node {g}")
         for i, (mats, n) in enumerate(probes):
             disp = np.vstack([M @ u for M in mats])
             G[i, :, g] = -np.sum(disp * n, axis=0)
     # half-space part of the same reading, tooth 0
-    p0 = flank_points(pair, member, rho_g, z_g, 0)
-    n0 = flank_normals(pair, member, rho_g, z_g, 0)
-    x0 = p0 - depth * _transverse(n0)
-    HS = np.zeros((ng, ng))
-    xq2 = xq.reshape(3, -1)
-    for g in range(ng):
-        area = float(np.sum(hats[g] * dA))
-        w = (hats[g] * dA).ravel() / area
-        s = w > 0
-        v = x0[:, :, None] - xq2[:, s][:, None, :]                     # (3, n_grid, n_q)
-        dn = -np.einsum("ig,igq->gq", n0, v)                           # depth below the tangent plane
-        r = np.sqrt(np.maximum(np.sum(v**2, axis=0) - dn**2, 0.0))
-        HS[:, g] = boussinesq_depth(r, dn, E, nu) @ w[s]
+    x0, n0 = reading_points(pair, member, rho_g, z_g, depth, 0)
+    HS = np.column_stack([halfspace_reading(x0, n0, xq, weights[g], E, nu) for g in range(ng)])
     bulk = G.copy()
     mid = int(np.nonzero(offsets == 0)[0][0])
     bulk[mid] -= HS

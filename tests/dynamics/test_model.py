@@ -187,7 +187,7 @@ def test_ltca_excitation_enters_as_the_drive_flank_deviation(baseline_scene):
 
     class FakeLTCA:                 # the MeshStiffness interface the ltca level returns
         level = "ltca"
-        info = {"excitation": {"e_left": e, "e_right": e}}
+        info = {"excitation": {"e_left": e, "e_right": e, "k_secant_left": k, "k_secant_right": k}}
 
         def __call__(self, phase):
             from femgear.dynamics.mesh import periodic_interp
@@ -196,11 +196,15 @@ def test_ltca_excitation_enters_as_the_drive_flank_deviation(baseline_scene):
             return kk, kk
 
     m = build_model(build_case(baseline_scene), "lumped", stiffness=FakeLTCA(), friction=0.0)
-    assert np.allclose(m.deviation.drive, [e, e]) and np.allclose(m.deviation.coast, [e, e])
+    # the tables are resampled by FFT onto a finer grid (k and e here are trigonometric: exact)
+    nf = m.deviation.drive.shape[1]
+    ef = 2e-6 * np.sin(2 * np.pi * np.arange(nf) / nf) ** 2
+    assert nf >= n and np.allclose(m.deviation.drive, [ef, ef], atol=1e-15) and np.allclose(m.deviation.coast, [ef, ef])
+    assert np.allclose(m.stiffness.k_left, 4e8 * (1 + 0.1 * np.cos(2 * np.pi * np.arange(nf) / nf)), rtol=1e-12)
     i = 16                                            # φ = 1/4: e = 2 µm
     x = m.backlash + e[i] + 1e-6
     q = np.linalg.pinv(m.G) @ np.array([x, x])
     N = m.mesh_forces(np.array(i / n / m.mesh_frequency), q, np.zeros(m.n))[1]
     assert np.allclose(N, m.stiffness(np.array(i / n))[0] * 1e-6, rtol=1e-6)
     worn = with_deviation(m, MeshDeviation(drive=np.full((2, n), 1e-6), coast=np.zeros((2, n))))
-    assert np.allclose(worn.deviation.drive, [e + 1e-6, e + 1e-6]) and np.allclose(worn.deviation.coast, [e, e])
+    assert np.allclose(worn.deviation.drive, [ef + 1e-6, ef + 1e-6]) and np.allclose(worn.deviation.coast, [ef, ef])
