@@ -39,15 +39,16 @@ class Level:
             self.X, self.Y = X, Y
             self.geometry = 0.5 * X**2 + 0.5 * ratio * Y**2
             self.interior = grid.interior()
-            self.defl = point_deflection(grid.nx, grid.ny, grid.h)
+            self.defl = point_deflection(grid.nx, grid.ny, grid.h, grid.hy)
             self.shape = (grid.ny, grid.nx)
-            self.h, self.dim = grid.h, 2
+            self.h, self.hy, self.dim = grid.h, grid.dy, 2
         else:
             self.X = np.asarray(x, dtype=float)
             self.Y = np.zeros_like(self.X)
             self.geometry = 0.5 * self.X**2
             self.interior = np.arange(1, self.X.size - 1)
             self.h, self.dim = float(x[1] - x[0]), 1
+            self.hy = self.h
             self._K = line_kernel(self.X, self.h)
             self.shape = (self.X.size,)
         # the artificial diffusion models the elastic transport of P (reynolds.py): none
@@ -102,7 +103,10 @@ class Level:
         if self.rigid:
             return sp.csr_matrix((self.n, self.interior.size))
         if self.dim == 2:
-            full = self.defl.local(np.arange(self.n), r)
+            # stretched cells (hy = k hx): the kernel along X decays over k times more
+            # cells (K(i hx, 0) ~ hy/i), so keep the same physical radius r hy along X
+            rx = r if self.hy == self.h else int(np.ceil(r * self.hy / self.h))
+            full = self.defl.local(np.arange(self.n), r, rx)
             return full[:, self.interior].tocsr()
         K = self._K[:, self.interior]
         band = np.abs(np.arange(self.n)[:, None] - self.interior[None, :]) <= r

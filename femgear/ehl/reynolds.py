@@ -91,12 +91,16 @@ class ReynoldsFE:
         self.rheology, self.lam_bar = rheology, lam_bar
         self.beta, self.ad_factor, self.sd_factor = beta, ad_factor, sd_factor
         if grid is not None:
-            self.basis = UniformElements.quad(grid.nx, grid.ny, grid.h)
+            self.basis = UniformElements.quad(grid.nx, grid.ny, grid.h, grid.hy)
             self.h, self.dim = grid.h, 2
+            # stretched cells hy = k h: the diffusion along Y is scaled by k^2, i.e. it is
+            # isotropic in the cell-scaled coordinates (X/h, Y/hy)
+            self.ad_y = None if grid.hy is None else (grid.hy / grid.h) ** 2
         else:
             x = np.asarray(x, dtype=float)
             self.basis = UniformElements.line(x.size, float(x[1] - x[0]))
             self.h, self.dim = float(x[1] - x[0]), 1
+            self.ad_y = None
         e = self.basis
         self.mass = e.load()  # int phi_i (= h^dim inside)
         self._wedge = -e.products(e.phi, e.grad[0])  # (W Q)_i = -int Q dphi_i/dX
@@ -111,8 +115,13 @@ class ReynoldsFE:
         eps, _, _ = rh.epsilon(Pq, e.at_points(He), self.lam_bar)
         rho_q, _ = rh.density(Pq)
         xi, _ = upwind_weight(self.beta * rho_q * self.h**2 / (2.0 * np.maximum(eps, 1e-300)))
-        c = (eps + self.ad_factor * 0.5 * self.beta * rho_q * self.h**2 * xi) * e.w
-        flux = sum((c * e.grad_at_points(Pe, d)) @ e.grad[d] for d in range(self.dim))
+        art = self.ad_factor * 0.5 * self.beta * rho_q * self.h**2 * xi
+        if self.ad_y is None:
+            c = (eps + art) * e.w
+            flux = sum((c * e.grad_at_points(Pe, d)) @ e.grad[d] for d in range(self.dim))
+        else:
+            flux = sum(((eps + art * s) * e.w * e.grad_at_points(Pe, d)) @ e.grad[d]
+                       for d, s in enumerate((1.0, self.ad_y)))
         Q = rh.density(P)[0] * H
         R = e.scatter(flux) + self.W @ Q
         if self.sd_factor > 0.0 and self.beta > 0.0:
@@ -134,7 +143,11 @@ class ReynoldsFE:
         Q = rho * H
         gq = [e.grad_at_points(Pe, d) for d in range(self.dim)]
         # element matrices [e, test, trial]
-        Ae = e.weighted(eps + eps_art, e.stiffness)
+        if self.ad_y is None:
+            Ae = e.weighted(eps + eps_art, e.stiffness)
+        else:
+            Ae = (e.weighted(eps + eps_art, e.stiffness_d[0])
+                  + e.weighted(eps + self.ad_y * eps_art, e.stiffness_d[1]))
         We = np.broadcast_to(self._wedge, Ae.shape)
         # streamline diffusion of Q (optional): delta = sd (h/2) xi(Pe), differentiated
         # through eps: d delta/d eps = -sd Pe^2 xi'(Pe) / (beta rho h)
@@ -146,7 +159,8 @@ class ReynoldsFE:
             We = We + e.weighted(delta, e.streamline)
             ax = ax + ddelta * e.grad_at_points(Q[e.T], 0)
         # d/dcoefficient terms: int phi_trial (a . grad phi_test)
-        ay = g * gq[1] if self.dim == 2 else None
+        gy = g if self.ad_y is None else 1.0 - self.ad_y * self.ad_factor * p2xi
+        ay = gy * gq[1] if self.dim == 2 else None
         EP = e.coef_grad(deps_P * ax, None if ay is None else deps_P * ay)
         EH = e.coef_grad(deps_H * ax, None if ay is None else deps_H * ay)
         Qe, dQe = Q[e.T], (drho * H)[e.T]
