@@ -85,17 +85,15 @@ class PointDeflection:
         j, i = np.divmod(flat_index, self.nx)
         return self.K[np.abs(j[:, None] - j[None, :]), np.abs(i[:, None] - i[None, :])]
 
-    def local(self, flat_index: np.ndarray, r: int, rx: int | None = None) -> sp.csr_matrix:
-        """Influence matrix truncated to |di| <= rx (default r), |dj| <= r between nodes
-        ``flat_index``."""
-        rx = r if rx is None else rx
+    def local(self, flat_index: np.ndarray, r: int) -> sp.csr_matrix:
+        """Influence matrix truncated to |di|, |dj| <= r between nodes ``flat_index``."""
         n = self.nx * self.ny
         pos = -np.ones(n, dtype=np.int64)
         pos[flat_index] = np.arange(flat_index.size)
         j, i = np.divmod(flat_index, self.nx)
         rows, cols, vals = [], [], []
         for dj in range(-r, r + 1):
-            for di in range(-rx, rx + 1):
+            for di in range(-r, r + 1):
                 jj, ii = j + dj, i + di
                 ok = (jj >= 0) & (jj < self.ny) & (ii >= 0) & (ii < self.nx)
                 tgt = pos[np.where(ok, jj * self.nx + ii, 0)]

@@ -103,10 +103,7 @@ class Level:
         if self.rigid:
             return sp.csr_matrix((self.n, self.interior.size))
         if self.dim == 2:
-            # stretched cells (hy = k hx): the kernel along X decays over k times more
-            # cells (K(i hx, 0) ~ hy/i), so keep the same physical radius r hy along X
-            rx = r if self.hy == self.h else int(np.ceil(r * self.hy / self.h))
-            full = self.defl.local(np.arange(self.n), r, rx)
+            full = self.defl.local(np.arange(self.n), r)
             return full[:, self.interior].tocsr()
         K = self._K[:, self.interior]
         band = np.abs(np.arange(self.n)[:, None] - self.interior[None, :]) <= r
