@@ -13,10 +13,12 @@ Frame: X along the entrainment, normal to the contact line, Y along it. The roll
 velocity of a helical pair lies in the transverse plane, at beta_b to X; the solver takes
 the entrainment speed of the path (its transverse rolling speed) along X and neglects the
 component along the contact line, i.e. along the major axis of the slender ellipse. By
-Chittenden et al.'s (1985) oblique-entrainment fit the effective radius in the flow
-direction is 1/R_e = cos^2 th/R_x + sin^2 th/R_y ~ cos^2 th/R_x for a slender ellipse, so
-the neglect changes h_c by about (cos^2 beta_b)^0.47 (-6 % at beta_b = 28 deg, the paper's
-pair; exponent of R in the Hamrock-Dowson h_c); reported, not modelled.
+Chittenden et al.'s (1985) oblique-entrainment fit (recalled, /work/shared/notes/
+ehl_extensions.md) the film follows the radius in the flow direction, 1/R_e = cos^2 th/R_x
++ sin^2 th/R_y ~ cos^2 th/R_x for a slender ellipse (th = beta_b), and h_c ~ R^0.46 at fixed
+speed and load (Hamrock-Dowson), so solving with R_x instead of R_e gives h_c lower by a
+factor ~ (cos^2 beta_b)^0.46: 0.89 at beta_b = 28 deg (the paper's pair; 1 for spur gears).
+Reported, not modelled.
 
 ``POINT_LEVEL`` is the grid level used by default (16 2^k intervals along X, stretched in
 Y): level 1 (33 x ~33 nodes) meets the path speed target (studies/benchmarks/tehl_point.py
