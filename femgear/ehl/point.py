@@ -73,17 +73,19 @@ def default_domain(ratio: float = 1.0, H_hertz: float | None = None) -> Domain:
     2000); a low-M case whose inlet this truncates is refused by :func:`solve_point`.
 
     lambda != 1: the domain follows the Hertz ellipse (a, b) = :func:`hertz_ellipse`:
-    X in [-x_in a, 1.5 a], Y in [-3 b, 3 b], and stretched cells hy/hx = b/a, so the
+    X in [-x_in a, x_in a / 3], Y in [-3 b, 3 b], and stretched cells hy/hx = b/a, so the
     contact has as many nodes across it in Y as in X and a slender contact costs the same
     as a circular one. The inlet x_in = max(4.5, 1.2 m*), with m* Hamrock & Dowson's (1977)
     fully flooded inlet distance in units of a for the expected central film ``H_hertz``
     (Hertzian units on a_c; converted to a by (a_c/a)^2): at low M and small lambda the
-    inlet build-up reaches ~12 a (M = 20, lambda = 0.02)."""
+    inlet build-up reaches ~12 a (M = 20, lambda = 0.02). The outlet x_in a / 3 (1.5 a for
+    the default inlet) keeps X = 0 on a node of every level (12 of the 16 level-0 intervals
+    upstream), so that Hc is read at the centre on every level."""
     if ratio == 1.0:
         return Domain(-4.5, 1.5, -3.0, 3.0)
     a, b, _ = hertz_ellipse(ratio)
     x_in = 4.5 if H_hertz is None else max(4.5, 1.2 * acc.inlet_distance(H_hertz / a**2))
-    return Domain(-x_in * a, 1.5 * a, -3.0 * b, 3.0 * b, aspect=b / a)
+    return Domain(-x_in * a, x_in * a / 3.0, -3.0 * b, 3.0 * b, aspect=b / a)
 
 
 def _hertz_start(level: Level, ratio: float) -> np.ndarray:
