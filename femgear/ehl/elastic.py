@@ -5,8 +5,11 @@ H = h R/a^2 the deflection is
 
     D(X, Y) = (2/pi^2) iint P(X', Y') / sqrt((X-X')^2 + (Y-Y')^2) dX' dY'.
 
-P is taken piecewise constant on the cell h x h centred at each node; the cell
-integral of 1/r has a closed form (Love 1929; Johnson, Contact Mechanics, 1985, 3.25).
+P is taken piecewise constant on the cell h x h centred at each node (or hx x hy on a
+stretched grid for slender elliptic contacts); the cell integral of 1/r over a rectangle
+has a closed form (Love 1929; Johnson, Contact Mechanics, 1985, 3.25): with the corner
+offsets a, b = dx +/- hx/2 and c, d = dy +/- hy/2 it is F(a,c) - F(a,d) - F(b,c) + F(b,d),
+F the antiderivative below (tested against brute-force quadrature, tests/ehl/test_elliptic.py).
 The discrete convolution over the node grid is evaluated with DC-FFT (Liu, Wang & Liu,
 Wear 243 (2000) 101): the kernel for offsets -(n-1)..(n-1) is wrapped into a 2n
 array, P is zero-padded to 2n, and the circular convolution then equals the linear
@@ -33,27 +36,30 @@ def _F(x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return t1 + t2
 
 
-def cell_influence(dx: np.ndarray, dy: np.ndarray, h: float) -> np.ndarray:
-    """(2/pi^2) * integral of 1/r over the h x h cell centred at offset (dx, dy)."""
+def cell_influence(dx: np.ndarray, dy: np.ndarray, h: float, hy: float | None = None) -> np.ndarray:
+    """(2/pi^2) * integral of 1/r over the h x hy cell (hy = h: square) centred at offset (dx, dy)."""
+    hy = h if hy is None else hy
     a, b = dx + h / 2, dx - h / 2
-    c, d = dy + h / 2, dy - h / 2
+    c, d = dy + hy / 2, dy - hy / 2
     val = _F(a, c) - _F(a, d) - _F(b, c) + _F(b, d)
     return (2.0 / np.pi**2) * val
 
 
 class PointDeflection:
-    """DC-FFT deflection operator on an (ny, nx) node grid with spacing h.
+    """DC-FFT deflection operator on an (ny, nx) node grid with spacing h (along x) and
+    hy along y (None: square cells, hy = h).
 
     ``apply(P2d)`` returns D on the same grid. ``dense(mask)`` returns the full matrix
     restricted to the flattened nodes in ``mask`` (for the coarse-grid direct solve),
     ``local(r)`` the kernel truncated to offsets |i|,|j| <= r as a sparse matrix.
     """
 
-    def __init__(self, nx: int, ny: int, h: float):
+    def __init__(self, nx: int, ny: int, h: float, hy: float | None = None):
         self.nx, self.ny, self.h = nx, ny, h
+        self.hy = h if hy is None else hy
         ix = np.arange(nx) * h
-        iy = np.arange(ny) * h
-        self.K = cell_influence(ix[None, :], iy[:, None], h)  # (ny, nx), offsets >= 0
+        iy = np.arange(ny) * self.hy
+        self.K = cell_influence(ix[None, :], iy[:, None], h, hy)  # (ny, nx), offsets >= 0
         # any period N >= 2n - 1 keeps the circular convolution linear on the grid; the
         # next 5-smooth length avoids 2 (16 2^k + 1) = 2 x prime sizes (514 = 2 x 257:
         # 82 ms per transform pair against 12 ms at 540)
@@ -128,6 +134,6 @@ def line_kernel(x: np.ndarray, h: float) -> np.ndarray:
 
 
 @lru_cache(maxsize=8)
-def point_deflection(nx: int, ny: int, h: float) -> PointDeflection:
+def point_deflection(nx: int, ny: int, h: float, hy: float | None = None) -> PointDeflection:
     """Cached :class:`PointDeflection` (its kernel transform is built once per grid)."""
-    return PointDeflection(nx, ny, h)
+    return PointDeflection(nx, ny, h, hy)

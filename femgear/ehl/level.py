@@ -39,15 +39,16 @@ class Level:
             self.X, self.Y = X, Y
             self.geometry = 0.5 * X**2 + 0.5 * ratio * Y**2
             self.interior = grid.interior()
-            self.defl = point_deflection(grid.nx, grid.ny, grid.h)
+            self.defl = point_deflection(grid.nx, grid.ny, grid.h, grid.hy)
             self.shape = (grid.ny, grid.nx)
-            self.h, self.dim = grid.h, 2
+            self.h, self.hy, self.dim = grid.h, grid.dy, 2
         else:
             self.X = np.asarray(x, dtype=float)
             self.Y = np.zeros_like(self.X)
             self.geometry = 0.5 * self.X**2
             self.interior = np.arange(1, self.X.size - 1)
             self.h, self.dim = float(x[1] - x[0]), 1
+            self.hy = self.h
             self._K = line_kernel(self.X, self.h)
             self.shape = (self.X.size,)
         # the artificial diffusion models the elastic transport of P (reynolds.py): none

@@ -27,10 +27,12 @@ from __future__ import annotations
 
 import math
 import time
+from functools import lru_cache
 
 import numpy as np
 
 from femgear.contact.film import nvm_central
+from femgear.contact.hertz import hertz_point
 from femgear.errors import ConvergenceError, SceneError
 from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
@@ -50,25 +52,75 @@ RESIDUAL_TOL = 1e-8
 MAX_LEVEL = 5  # 513^2: the finest grid a tol-driven solve may reach
 
 
-def default_domain(ratio: float = 1.0) -> Domain:
-    """X in [-4.5, 1.5], Y in [-3, 3] (Venner & Lubrecht 2000), Y widened by
-    lambda^(-2/3) for wide elliptical contacts (lambda = R_x/R_y < 1)."""
-    sy = max(1.0, ratio ** (-2.0 / 3.0))
-    return Domain(-4.5, 1.5, -3.0 * sy, 3.0 * sy)
+@lru_cache(maxsize=64)
+def hertz_ellipse(ratio: float) -> tuple[float, float, float]:
+    """(a, b, p_h) of the dry Hertz ellipse for lambda = R_x/R_y = ``ratio`` in the units of
+    the circular contact on R_x (a/a_c, b/a_c, p_h/p_c): a along X (entrainment), b along Y.
+
+    Exact elliptic-integral solution (Johnson 1985, eq. 4.39; :func:`femgear.contact.hertz.
+    hertz_point`) with F = 1, R_x = 1, E' = 3/2, for which a_c = (3 F R_x / 2E')^(1/3) = 1
+    and p_c = 3F/(2 pi a_c^2) = 3/(2 pi). At lambda = 0.02: a = 0.4712, b = 5.688,
+    p_h = 0.373 (the table of /work/shared/notes/ehl_extensions.md, tested)."""
+    if ratio == 1.0:
+        return 1.0, 1.0, 1.0
+    hz = hertz_point(1.0, 1.0, 1.0 / ratio, 1.5)
+    return hz.a, hz.b, hz.max_pressure * 2.0 * math.pi / 3.0
+
+
+def default_domain(ratio: float = 1.0, H_hertz: float | None = None) -> Domain:
+    """The contact domain in units of the circular contact on R_x (a_c).
+
+    lambda = R_x/R_y = 1: X in [-4.5, 1.5], Y in [-3, 3], square cells (Venner & Lubrecht
+    2000); a low-M case whose inlet this truncates is refused by :func:`solve_point`.
+
+    lambda != 1: the domain follows the Hertz ellipse (a, b) = :func:`hertz_ellipse`:
+    X in [-x_in a, x_in a / 3], Y in [-3 b, 3 b], and stretched cells hy/hx = b/a, so the
+    contact has as many nodes across it in Y as in X and a slender contact costs the same
+    as a circular one. The inlet x_in = max(4.5, 1.2 m*), with m* Hamrock & Dowson's (1977)
+    fully flooded inlet distance in units of a for the expected central film ``H_hertz``
+    (Hertzian units on a_c; converted to a by (a_c/a)^2): at low M and small lambda the
+    inlet build-up reaches ~12 a (M = 20, lambda = 0.02). The outlet x_in a / 3 (1.5 a for
+    the default inlet) keeps X = 0 on a node of every level (12 of the 16 level-0 intervals
+    upstream), so that Hc is read at the centre on every level."""
+    if ratio == 1.0:
+        return Domain(-4.5, 1.5, -3.0, 3.0)
+    a, b, _ = hertz_ellipse(ratio)
+    x_in = 4.5 if H_hertz is None else max(4.5, 1.2 * acc.inlet_distance(H_hertz / a**2))
+    return Domain(-x_in * a, x_in * a / 3.0, -3.0 * b, 3.0 * b, aspect=b / a)
 
 
 def _hertz_start(level: Level, ratio: float) -> np.ndarray:
-    """Dry Hertz pressure on an ellipse of aspect ~ lambda^(-2/3), scaled to the load.
+    """Dry Hertz pressure on the contact ellipse, scaled to the load.
 
-    On a grid coarser than the contact (huge domains at small M) the ellipse is widened
-    to two cells, so that the start carries the load on some nodes (never 0/0)."""
-    ay = ratio ** (-2.0 / 3.0) if ratio > 0 else 1.0
-    ax = ay ** -0.5
-    grow = max(1.0, 2.0 * level.h / min(ax, ay))
-    ax, ay = grow * ax, grow * ay
+    lambda = 1: the circle of radius 1. lambda != 1: the exact Hertz ellipse
+    (:func:`hertz_ellipse`). On a grid coarser than the contact (huge domains at small M)
+    the ellipse is widened to two cells in each direction, so that the start carries the
+    load on some nodes (never 0/0)."""
+    if ratio == 1.0:
+        ax = ay = 1.0
+        grow = max(1.0, 2.0 * level.h / min(ax, ay))
+        ax, ay = grow * ax, grow * ay
+    else:
+        a, b, _ = hertz_ellipse(ratio)
+        ax = a * max(1.0, 2.0 * level.h / a)
+        ay = b * max(1.0, 2.0 * level.hy / b)
     P = np.sqrt(np.maximum(1.0 - (level.X / ax) ** 2 - (level.Y / ay) ** 2, 0.0))
     PI = P[level.interior]
     return PI * level.load / (level.m @ PI)
+
+
+def _krylov_cap(ratio: float) -> dict:
+    """Elliptic contacts on stretched cells: GMRES capped at 5 restarts (300 iterations);
+    a preconditioner gone stale (a moved active set) otherwise costs up to 18000 iterations
+    before Newton rebuilds it (measured: 300 s of a 20 s solve). Circular: unchanged."""
+    return {} if ratio == 1.0 else {"maxiter_krylov": 5}
+
+
+def _inlet_problem(dom: Domain, expected: float, ratio: float) -> str | None:
+    """The inlet check of :mod:`accuracy` in units of the ellipse's X semi-axis a
+    (Hamrock & Dowson's m* is measured in the semi-axis along the rolling direction)."""
+    a = hertz_ellipse(ratio)[0]
+    return acc.inlet_problem(dom.x0 / a, expected / a**2)
 
 
 def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: int = 1,
@@ -110,9 +162,9 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
     t0 = time.perf_counter()
     case = f"ehl point M={M:g} L={L:g} ratio={ratio:g} level={level}"
     fac = pr.point_h_moes_factor(M)
-    dom = domain or default_domain(ratio)
     expected = float(nvm_central(M, L, ratio)) / fac
-    inlet = None if rigid else acc.inlet_problem(dom.x0, expected)
+    dom = domain or default_domain(ratio, None if rigid else expected)
+    inlet = None if rigid else _inlet_problem(dom, expected, ratio)
     if inlet and domain is None:
         raise SceneError("M", f"(M, L) = ({M:g}, {L:g}): {inlet}; pass a larger domain= "
                          "to solve it anyway (the result is then flagged)")
@@ -168,7 +220,8 @@ class _NestedPoint:
             if len(lvs) == 1:
                 PI, H0, h = newton_dense(lvs[0], PI, H0, **self.newton)
             else:
-                PI, H0, h = newton_krylov(lvs, PI, H0, reuse=self.factorised, **self.newton)
+                PI, H0, h = newton_krylov(lvs, PI, H0, reuse=self.factorised, **self.newton,
+                                          **_krylov_cap(self.ratio))
         except ConvergenceError as exc:
             self.hist.extend(History(**exc.history))
             return None

@@ -1,6 +1,6 @@
 """Q1 / P1 element tables on a uniform grid, and assembly by array arithmetic.
 
-On a uniform grid of square cells (or equal 1-D intervals) every element is the same
+On a uniform grid of square or equal rectangular cells (or equal 1-D intervals) every element is the same
 affine image of the reference element, so the basis values ``phi[q, a]``, physical
 gradients ``grad[d][q, a]`` and weights ``w[q]`` at the quadrature points are one set of
 constants.  An element matrix with a coefficient c(e, q) at the points is then the
@@ -11,7 +11,7 @@ Layout (the same as scikit-fem's ``MeshQuad``/``ElementQuad1`` and ``MeshLine``/
 ``ElementLineP1`` with ``intorder=2``, so quadrature-point arrays are interchangeable):
 elements row-major (e = j (nx-1) + i), element nodes (i, j), (i+1, j), (i+1, j+1),
 (i, j+1); 2 x 2 Gauss points (xi, eta) = (g1, g1), (g1, g2), (g2, g1), (g2, g2),
-g = (1 -/+ 1/sqrt 3)/2, weight h^2/4 each; in 1-D the two points g1, g2, weight h/2.
+g = (1 -/+ 1/sqrt 3)/2, weight h hy/4 each (gradients d/dY scaled by 1/hy); in 1-D the two points g1, g2, weight h/2.
 Element matrices are indexed [e, test, trial].
 """
 
@@ -36,11 +36,14 @@ class UniformElements:
         self._indptr = np.concatenate([[0], np.cumsum(np.bincount(keys // n, minlength=n))]).astype(np.int32)
         # constant tables [q, test, trial]
         self.stiffness = np.einsum("q,dqi,dqj->qij", w, np.array(grad), np.array(grad))
+        # per direction (stretched cells: the artificial diffusion is scaled per direction)
+        self.stiffness_d = [np.einsum("q,qi,qj->qij", w, g, g) for g in grad]
         self.streamline = np.einsum("q,qi,qj->qij", w, grad[0], grad[0])
         self._coef = [np.einsum("q,qi,qj->qij", w, g, phi) for g in grad]
 
     @classmethod
-    def quad(cls, nx: int, ny: int, h: float) -> "UniformElements":
+    def quad(cls, nx: int, ny: int, h: float, hy: float | None = None) -> "UniformElements":
+        """Q1 on nx x ny nodes, cells h x hy (hy None: square, h x h)."""
         ii, jj = np.meshgrid(np.arange(nx - 1), np.arange(ny - 1))
         n0 = (jj * nx + ii).ravel()
         T = np.stack([n0, n0 + 1, n0 + 1 + nx, n0 + nx], axis=1)
@@ -48,8 +51,8 @@ class UniformElements:
         eta = np.array([_G[0], _G[1], _G[0], _G[1]])
         phi = np.stack([(1 - xi) * (1 - eta), xi * (1 - eta), xi * eta, (1 - xi) * eta], axis=1)
         gx = np.stack([-(1 - eta), 1 - eta, eta, -eta], axis=1) / h
-        gy = np.stack([-(1 - xi), -xi, xi, 1 - xi], axis=1) / h
-        return cls(T, nx * ny, phi, (gx, gy), np.full(4, h * h / 4.0))
+        gy = np.stack([-(1 - xi), -xi, xi, 1 - xi], axis=1) / (h if hy is None else hy)
+        return cls(T, nx * ny, phi, (gx, gy), np.full(4, h * (h if hy is None else hy) / 4.0))
 
     @classmethod
     def line(cls, n: int, h: float) -> "UniformElements":

@@ -12,6 +12,7 @@ radius [m], entrainment speed [m/s], |slide-to-roll| [-], bulk temperature [K]),
 | formula    | thermal Eyring traction of the Hertzian film (:mod:`.path`)             |
 | ehl-line   | FE line EHL with Eyring traction, Blok flash temperature (:mod:`femgear.ehl.path`) |
 | tehl       | thermal EHL line solves (:mod:`femgear.tehl.solver`); ``repeated``: a friction map of them |
+| tehl-point | thermal EHL of the crowned flanks' elliptic contacts (:mod:`femgear.tehl.point_level`), direct solves |
 
 A new level is one entry in :data:`LEVELS` (and its name in :mod:`femgear.scene.levels`).
 """
@@ -54,12 +55,21 @@ def _tehl(case: Case, repeated: bool) -> Lubrication:
     return tehl_map_solver(case.scene) if repeated else tehl_line_solver(case.scene)
 
 
+def _tehl_point(case: Case, repeated: bool) -> Lubrication:
+    """Direct solves also when ``repeated`` (a friction map of point solves would cost
+    ~170 of them; the path's 21+ direct solves are cheaper)."""
+    from femgear.tehl.point_level import tehl_point_solver
+
+    return tehl_point_solver(case.scene, pair=case.pair)
+
+
 LEVELS: dict[str, Callable[[Case, bool], Lubrication]] = {
     "none": lambda case, repeated: _constant(0.0),
     "constant": lambda case, repeated: _constant(case.friction.coefficient),
     "formula": _formula,
     "ehl-line": _ehl_line,
     "tehl": _tehl,
+    "tehl-point": _tehl_point,
 }
 
 

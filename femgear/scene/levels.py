@@ -10,7 +10,7 @@ from __future__ import annotations
 
 LEVELS: dict[str, tuple[str, ...]] = {
     "stiffness": ("constant", "iso6336", "pem", "fe", "ltca"),
-    "lubrication": ("none", "constant", "formula", "ehl-line", "ehl-point", "tehl"),
+    "lubrication": ("none", "constant", "formula", "ehl-line", "ehl-point", "tehl", "tehl-point"),
     "thermal": ("none", "analytic", "fe"),
     "wear": ("none", "archard"),
     "dynamics": ("none", "lumped", "timoshenko"),
@@ -19,7 +19,7 @@ LEVELS: dict[str, tuple[str, ...]] = {
 
 AVAILABLE: dict[str, frozenset[str]] = {
     "stiffness": frozenset({"constant", "iso6336", "pem", "fe", "ltca"}),
-    "lubrication": frozenset({"none", "constant", "formula", "ehl-line", "tehl"}),
+    "lubrication": frozenset({"none", "constant", "formula", "ehl-line", "tehl", "tehl-point"}),
     "thermal": frozenset({"none", "analytic", "fe"}),
     "wear": frozenset({"none", "archard"}),
     "dynamics": frozenset({"none", "lumped", "timoshenko"}),

@@ -1,4 +1,10 @@
-"""Thermal EHL of a circular point contact, strip-wise energy equation (reduced form).
+"""Thermal EHL of a circular or elliptic point contact, strip-wise energy equation (reduced form).
+
+Elliptic contacts (R_y != R_x): the frame has X along the entrainment, across the major
+axis of the ellipse (for a gear pair: across the contact line), and the domain and the
+stretched grid of :func:`femgear.ehl.point.default_domain`. The entrainment is taken
+normal to the contact line; the oblique entrainment of a helical pair (angle beta_b to
+that normal) is not modelled (see :mod:`femgear.tehl.point_level`).
 
 The Reynolds problem is the isothermal FE point EHL of :mod:`femgear.ehl.point` (Q1,
 Newton–Krylov with the multilevel preconditioner) with the temperature field in its
@@ -20,6 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from femgear.contact.film import nvm_central
 from femgear.ehl import params as pr
 from femgear.ehl.dimensional import solve_point_dimensional
 from femgear.ehl.grid import Grid
@@ -60,24 +67,27 @@ class TEHLPointResult:
 
 
 def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float, oil: OilLaw, E_red: float,
-                     props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
-                     level: int = 2, nz: int = 6, heat: bool = True, compressible: bool = True, tol: float = 0.1,
-                     relax: float = 0.8, max_iter: int = 40, max_rise: float = 400.0, max_step: float = 25.0,
-                     newton_tol: float = 1e-5) -> TEHLPointResult:
-    """Thermal EHL of a circular contact: load [N], radius R [m], entrainment speed, SRR,
-    bulk temperature; options as :func:`femgear.tehl.solve_tehl_line` (``level`` of the point grid)."""
-    for name, v in (("load", load), ("R", R), ("ue", ue), ("T_bulk", T_bulk)):
+                     props: ThermalProps, *, Ry: float | None = None, model: str = "eyring", tau0: float = 5e6,
+                     limiting_shear: float = 0.0, level: int = 2, nz: int = 6, heat: bool = True,
+                     compressible: bool = True, tol: float = 0.1, relax: float = 0.8, max_iter: int = 40,
+                     max_rise: float = 400.0, max_step: float = 25.0, newton_tol: float = 1e-5) -> TEHLPointResult:
+    """Thermal EHL of a point contact: load [N], radius R = R_x [m] along the entrainment,
+    ``Ry`` across it (None: circular), entrainment speed, SRR, bulk temperature; options as
+    :func:`femgear.tehl.solve_tehl_line` (``level`` of the point grid)."""
+    Ry = R if Ry is None else Ry
+    for name, v in (("load", load), ("R", R), ("Ry", Ry), ("ue", ue), ("T_bulk", T_bulk)):
         if not (v > 0 and math.isfinite(v)):
             raise ValueError(f"{name} must be positive and finite (got {v!r})")
-    case = f"tehl point F={load:.4g} R={R:.4g} ue={ue:.4g} srr={srr:.4g} T={T_bulk:.4g}"
+    case = f"tehl point F={load:.4g} R={R:.4g} Ry={Ry:.4g} ue={ue:.4g} srr={srr:.4g} T={T_bulk:.4g}"
     t0 = time.perf_counter()
     v1, v2 = ue * (1 + srr / 2), ue * (1 - srr / 2)
     ehl_oil = ehl_oil_at(oil, T_bulk, compressible)
-    iso = solve_point_dimensional(load, R, None, ue, E_red, ehl_oil, level=level)
+    ratio = R / Ry
+    iso = solve_point_dimensional(load, R, Ry, ue, E_red, ehl_oil, level=level)
     t_iso = time.perf_counter() - t0
     res, a, ph = iso.result, iso.a, iso.ph
     hs = a * a / R
-    dom = default_domain(1.0)
+    dom = default_domain(ratio, float(nvm_central(res.M, res.L, ratio)) / pr.point_h_moes_factor(res.M))
     levels, rheos = [], []
     for k in range(1, level + 1):
         rh = ThermalRheology(pr.point_alpha_bar(res.M, res.L), viscosity=ehl_oil.viscosity, ph=ph,
@@ -85,7 +95,7 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
                              compressible=compressible, T_bulk=T_bulk, s0=oil.s0 if oil.model == "roelands" else 0.0,
                              beta_t=oil.beta_t, expansion=oil.expansion, T_ref=oil.T0)
         rheos.append(rh)
-        levels.append(Level(rh, pr.point_lam_bar(res.M), pr.POINT_LOAD, grid=Grid.build(dom, k), ratio=1.0,
+        levels.append(Level(rh, pr.point_lam_bar(res.M), pr.POINT_LOAD, grid=Grid.build(dom, k), ratio=ratio,
                             ad_factor=1.0, sd_factor=1.0))
     fine = levels[-1]
     g = fine.grid
@@ -93,7 +103,7 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
     nt = g.nx - 1
     J1 = jaeger_matrix(nt, (g.x[-1] - g.x[0]) * a, props.B1, v1)
     J2 = jaeger_matrix(nt, (g.x[-1] - g.x[0]) * a, props.B2, v2)
-    dy = g.h * a
+    dy = g.dy * a
     sol = {"PI": res.P.ravel()[fine.interior].copy(), "H0": res.H0, "P": res.P, "H": res.H}
 
     def energy(theta):

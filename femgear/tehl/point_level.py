@@ -1,0 +1,63 @@
+"""The ``tehl-point`` lubrication level: thermal EHL of the crowned flanks' elliptic contacts.
+
+At each path position the pair's contact is an ellipse (:mod:`femgear.contact.crowning`:
+R_x across the contact line from the profile radius and the crowning, R_y along it from
+the lead crowning ``modifications.crowning``; the load of one tooth pair from the line
+load of the load sharing times its mean contact-line length). The contact is solved by
+:func:`femgear.tehl.point.solve_tehl_point` (isothermal nested start, then the strip-wise
+energy loop) in the map signature of every lubrication level
+(:mod:`femgear.lubrication.levels`): ``solver(w=, R=, ue=, srr=, T=) -> (mu, dT)``, μ the
+sliding (Couette) friction, dT the largest film temperature rise.
+
+Frame: X along the entrainment, normal to the contact line, Y along it. The rolling
+velocity of a helical pair lies in the transverse plane, at beta_b to X; the solver takes
+the entrainment speed of the path (its transverse rolling speed) along X and neglects the
+component along the contact line, i.e. along the major axis of the slender ellipse. By
+Chittenden et al.'s (1985) oblique-entrainment fit (recalled, /work/shared/notes/
+ehl_extensions.md) the film follows the radius in the flow direction, 1/R_e = cos^2 th/R_x
++ sin^2 th/R_y ~ cos^2 th/R_x for a slender ellipse (th = beta_b), and h_c ~ R^0.46 at fixed
+speed and load (Hamrock-Dowson), so solving with R_x instead of R_e gives h_c lower by a
+factor ~ (cos^2 beta_b)^0.46: 0.89 at beta_b = 28 deg (the paper's pair; 1 for spur gears).
+Reported, not modelled.
+
+``POINT_LEVEL`` is the grid level used by default (16 2^k intervals along X, stretched in
+Y): level 1 (33 x ~33 nodes) meets the path speed target (studies/benchmarks/tehl_point.py
+reports its time and its difference from level 2).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from femgear.contact.crowning import crowned_contact
+from femgear.tehl.point import solve_tehl_point
+from femgear.tehl.solver import tehl_setup
+
+POINT_LEVEL = 1
+
+
+def tehl_point_solver(scene, level: int | None = None, pair=None, details: list | None = None, **options):
+    """Direct thermal point-EHL solves (one per query point) in the map signature.
+
+    ``details``: a list that receives each :class:`femgear.tehl.point.TEHLPointResult`
+    (films, pressure, temperature for studies). An uncrowned pair raises SceneError naming
+    ``modifications.crowning``."""
+    geo = crowned_contact(scene, pair)
+    setup = {**tehl_setup(scene), **options}
+    level = POINT_LEVEL if level is None else level
+
+    def solve(w, R, ue, srr, T):
+        w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
+                                                 for a in (w, R, ue, srr, T)))
+        Rx, Ry = geo.radii(R)
+        F = geo.load(w)
+        mu, dT = np.empty(w.shape), np.empty(w.shape)
+        for i in np.ndindex(w.shape):
+            r = solve_tehl_point(float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]),
+                                 Ry=float(Ry[i]), level=level, **setup)
+            mu[i], dT[i] = r.mu, r.dT_max
+            if details is not None:
+                details.append(r)
+        return mu, dT
+
+    return solve

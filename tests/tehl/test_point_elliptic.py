@@ -1,0 +1,79 @@
+"""The ``tehl-point`` level: crowned-flank curvature, the elliptic thermal point EHL, the
+scene refusal of an uncrowned flank and the level in the lubrication registry."""
+
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from femgear.case import build_case
+from femgear.contact.crowning import CrownedContact, crowned_contact
+from femgear.contact.path import contact_along_path
+from femgear.errors import SceneError
+from femgear.lubrication.levels import lubrication_solver
+from femgear.scene import scene_from_dict
+from femgear.tehl.point import solve_tehl_point
+
+from ._case import E_RED, OIL, PROPS, TAU0
+
+BASE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
+
+
+def _scene(crowning=None, lubrication="tehl-point"):
+    d = tomllib.loads(BASE.read_text())
+    if crowning is not None:
+        d["modifications"] = {"crowning": crowning}
+    d["physics"]["lubrication"] = lubrication
+    return scene_from_dict(d)
+
+
+def test_uncrowned_flank_refused_naming_the_key():
+    with pytest.raises(SceneError, match=r"modifications\.crowning"):
+        _scene(None)
+    with pytest.raises(SceneError, match=r"modifications\.crowning"):
+        crowned_contact(_scene(None, lubrication="formula"))
+
+
+def test_crowning_radii_spur_and_helical():
+    """Spur (beta_b = 0): R_x = R, R_y = b^2/(8 (C1 + C2)). Helical: the eigenvalues of the
+    curvature tensor, close to 1/R + kappa sin^2 and kappa cos^2 (kappa R << 1)."""
+    spur = CrownedContact(kappa=8 * 20e-6 / 0.02**2, beta_b=0.0, contact_length=0.02)
+    Rx, Ry = spur.radii(0.01)
+    assert float(Rx) == pytest.approx(0.01, rel=1e-12)
+    assert float(Ry) == pytest.approx(0.02**2 / (8 * 20e-6), rel=1e-12)
+    hel = CrownedContact(kappa=0.5, beta_b=math.radians(28.0), contact_length=0.01)
+    Rx, Ry = hel.radii(0.01)
+    s2, c2 = math.sin(hel.beta_b) ** 2, math.cos(hel.beta_b) ** 2
+    assert 1 / float(Rx) == pytest.approx(100.0 + 0.5 * s2, rel=1e-5)
+    assert 1 / float(Ry) == pytest.approx(0.5 * c2, rel=2e-3)  # - (kappa s c)^2 R
+    # invariants of the tensor: trace and determinant
+    assert 1 / Rx + 1 / Ry == pytest.approx(100.0 + 0.5, rel=1e-12)
+
+
+def test_baseline_crowned_contact_and_level():
+    """10 um on both members of the paper's pair: slender ellipses (lambda ~ 0.005), the load
+    of one tooth pair; the registered level solves one position (grid level 1)."""
+    scene = _scene(10e-6)
+    case = build_case(scene)
+    geo = crowned_contact(scene, case.pair)
+    assert geo.kappa == pytest.approx(8 * 20e-6 / case.pair.b**2)
+    Rx, Ry = geo.radii(case.path.R)
+    assert np.all((Rx / Ry > 0.003) & (Rx / Ry < 0.006))
+    cp = contact_along_path(scene, pair=case.pair, u=case.path.u)
+    i = int(np.argmax(np.abs(case.path.srr)))
+    solver = lubrication_solver(case)
+    mu, dT = solver(w=cp.line_load[i], R=case.path.R[i], ue=case.path.ue[i], srr=abs(case.path.srr[i]),
+                    T=scene.operating.ambient_temperature)
+    assert 0.005 < float(mu[0]) < 0.1 and 1.0 < float(dT[0]) < 100.0
+
+
+def test_elliptic_thermal_film_thicker_than_circular():
+    """Same load and R_x: the wide ellipse (lambda = 0.1) carries a thicker film (NVM: +30 %
+    at these conditions, the isothermal start) and a lower pressure."""
+    kw = dict(oil=OIL, E_red=E_RED, props=PROPS, tau0=TAU0, level=1)
+    circ = solve_tehl_point(100.0, 0.0123, 1.09, 0.3, 313.0, **kw)
+    ell = solve_tehl_point(100.0, 0.0123, 1.09, 0.3, 313.0, Ry=0.123, **kw)
+    assert ell.hc > 1.1 * circ.hc and ell.pmax < circ.pmax
+    assert np.all(np.isfinite(ell.p)) and ell.dT_max > 0
