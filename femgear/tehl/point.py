@@ -33,7 +33,8 @@ from femgear.ehl.grid import Grid
 from femgear.ehl.level import Level
 from femgear.ehl.newton import newton_krylov
 from femgear.ehl.point import default_domain
-from femgear.errors import ConvergenceError
+from femgear.ehl.surface import apply_surface, evaluate, scene_features
+from femgear.errors import ConvergenceError, SceneError
 from femgear.lubrication.oil import OilLaw
 from femgear.tehl.energy import ThermalProps, jaeger_matrix, solve_energy
 from femgear.tehl.line import ehl_oil_at
@@ -70,10 +71,15 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
                      props: ThermalProps, *, Ry: float | None = None, model: str = "eyring", tau0: float = 5e6,
                      limiting_shear: float = 0.0, level: int = 2, nz: int = 6, heat: bool = True,
                      compressible: bool = True, tol: float = 0.1, relax: float = 0.8, max_iter: int = 40,
-                     max_rise: float = 400.0, max_step: float = 25.0, newton_tol: float = 1e-5) -> TEHLPointResult:
+                     max_rise: float = 400.0, max_step: float = 25.0, newton_tol: float = 1e-5,
+                     roughness=None) -> TEHLPointResult:
     """Thermal EHL of a point contact: load [N], radius R = R_x [m] along the entrainment,
     ``Ry`` across it (None: circular), entrainment speed, SRR, bulk temperature; options as
-    :func:`femgear.tehl.solve_tehl_line` (``level`` of the point grid)."""
+    :func:`femgear.tehl.solve_tehl_line` (``level`` of the point grid).
+
+    ``roughness``: a scene's ``[roughness]`` table; its stationary features (the paper's
+    single peak, eq. 22, fixed at x0; a synthetic surface) enter the film of the thermal
+    solve (:func:`rough_levels`); the isothermal start (``hc_isothermal``) is smooth."""
     Ry = R if Ry is None else Ry
     for name, v in (("load", load), ("R", R), ("Ry", Ry), ("ue", ue), ("T_bulk", T_bulk)):
         if not (v > 0 and math.isfinite(v)):
@@ -99,6 +105,7 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
                             ad_factor=1.0, sd_factor=1.0))
     fine = levels[-1]
     g = fine.grid
+    rough_levels(levels, roughness, R, a)
     xf = g.x * a
     nt = g.nx - 1
     J1 = jaeger_matrix(nt, (g.x[-1] - g.x[0]) * a, props.B1, v1)
@@ -158,3 +165,21 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
     if not all(math.isfinite(v) for v in (out.hc, out.pmax, out.dT_max, out.mu)):
         raise ConvergenceError(case, "non-finite result")
     return out
+
+
+def rough_levels(levels: list[Level], roughness, R: float, a: float) -> None:
+    """Subtract the stationary roughness of the scene table ``roughness`` (metres; the
+    contact of radius ``R`` along X and Hertz radius ``a``) from the gap of every level.
+    A feature that moves with its flank needs the transient solver
+    (:mod:`femgear.ehl.transient`) and is refused here with the key that asks for it."""
+    if roughness is None:
+        return
+    g = levels[-1].grid
+    feats = scene_features(roughness, R, a, extent=(float(g.x[0]), float(g.x[-1])), h=float(g.x[1] - g.x[0]))
+    for (f, _member, moving), key in zip(feats, ("peak", "synthetic") if roughness.peak else ("synthetic",)):
+        if moving:
+            raise SceneError(f"roughness.{key}.moving", "a steady point TEHL takes stationary roughness only "
+                             "(set moving = false, or use femgear.ehl.transient for a feature passing through)")
+    for lv in levels:
+        total = sum(evaluate(f, lv.X, lv.Y) for f, _m, _mv in feats) if feats else None
+        apply_surface(lv, total)

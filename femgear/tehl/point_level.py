@@ -7,7 +7,9 @@ load of the load sharing times its mean contact-line length). The contact is sol
 :func:`femgear.tehl.point.solve_tehl_point` (isothermal nested start, then the strip-wise
 energy loop) in the map signature of every lubrication level
 (:mod:`femgear.lubrication.levels`): ``solver(w=, R=, ue=, srr=, T=) -> (mu, dT)``, μ the
-sliding (Couette) friction, dT the largest film temperature rise.
+sliding (Couette) friction, dT the largest film temperature rise.  The scene's stationary
+roughness (``[roughness.peak]`` fixed at x0, the paper's model; ``[roughness.synthetic]``)
+enters each contact's film (:func:`femgear.tehl.point.rough_levels`).
 
 Frame: X along the entrainment, normal to the contact line, Y along it. The rolling
 velocity of a helical pair lies in the transverse plane, at beta_b to X; the solver takes
@@ -43,7 +45,8 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
     (films, pressure, temperature for studies). An uncrowned pair raises SceneError naming
     ``modifications.crowning``."""
     geo = crowned_contact(scene, pair)
-    setup = {**tehl_setup(scene), **options}
+    rough = scene.roughness if (scene.roughness.peak or scene.roughness.synthetic) else None
+    setup = {**tehl_setup(scene), "roughness": rough, **options}
     level = POINT_LEVEL if level is None else level
 
     def solve(w, R, ue, srr, T):
