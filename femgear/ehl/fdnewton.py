@@ -83,6 +83,7 @@ class CoarseNewton:
         jj, ii = np.meshgrid(np.arange(1, ny - 1), np.arange(1, nx - 1), indexing="ij")
         self.I = (jj * nx + ii).ravel()
         self.Kd = dense_kernel(lv, self.I)
+        self._lu, self._c = None, None
 
     def merit(self, P, H0, f, g, c):
         """F, the film and the active (cavitated: min picks P) set."""
@@ -113,39 +114,54 @@ class CoarseNewton:
         return J
 
     def solve(self, P: np.ndarray, H0: float, f: np.ndarray, g: float, case: str = "ehl fas coarse",
-              strict: bool = True):
+              strict: bool = True, max_iter: int | None = None, chord: bool = False):
         """Newton from (P, H0) -> (P, H0, iterations) (``g`` None: H0 fixed, no load
         equation); raises on failure, or
         (``strict=False``: inside a cycle, where the coarse grid only approximates the
-        fine one) returns the iterate of smallest residual."""
+        fine one) returns the iterate of smallest residual, after at most ``max_iter``
+        steps (default: the solver's). ``chord``: keep the last LU factors while they
+        halve the residual each step (the coarse problems of successive cycles differ
+        little; a factorisation costs ~10 residuals)."""
+        max_iter = self.max_iter if max_iter is None else max_iter
         lv, I = self.lv, self.I
         P = np.maximum(P, 0.0)
-        JP, _ = jacobian_blocks(lv, P, lv.film(P, H0))
-        c = 1.0 / np.maximum(np.abs(JP[np.arange(I.size), I].A1), 1e-12)
+        if chord and self._c is not None:  # the row scaling of the kept factors
+            c = self._c
+        else:
+            JP, _ = jacobian_blocks(lv, P, lv.film(P, H0))
+            c = 1.0 / np.maximum(np.abs(JP[np.arange(I.size), I].A1), 1e-12)
+        self._c = c
         F, H, act = self.merit(P, H0, f, g, c)
         hist: list[float] = []
         best = (np.inf, P, H0)
         cap = min(MAX_DP, MAX_LOG_ETA / max(lv.rheology.alpha_bar, 1e-12))
         try:
-            for it in range(self.max_iter):
+            for it in range(max_iter + 1):
                 hist.append(float(np.linalg.norm(F)))
                 if hist[-1] < best[0]:
                     best = (hist[-1], P, H0)
                 if hist[-1] < self.tol:
                     return P, H0, it
-                try:
-                    lu = sla.lu_factor(self.jacobian(P, H, c, act, g), check_finite=False)
-                except (sla.LinAlgError, ValueError) as exc:
-                    raise ConvergenceError(case, f"singular coarse Jacobian ({exc})",
-                                           {"residual": hist}) from exc
+                if it == max_iter:
+                    break
+                lu = self._lu if chord else None
+                if lu is None:
+                    try:
+                        lu = sla.lu_factor(self.jacobian(P, H, c, act, g), check_finite=False)
+                    except (sla.LinAlgError, ValueError) as exc:
+                        raise ConvergenceError(case, f"singular coarse Jacobian ({exc})",
+                                               {"residual": hist}) from exc
+                    self._lu = lu
                 dx = sla.lu_solve(lu, -F, check_finite=False)
                 P, H0, F, H, act = self._search(P, H0, dx, F, f, g, c, cap, case, hist)
-            raise ConvergenceError(case, f"no convergence in {self.max_iter} coarse Newton "
+                if np.linalg.norm(F) > 0.5 * hist[-1]:
+                    self._lu = None  # a slow (chord) step: refactorise next time
+            raise ConvergenceError(case, f"no convergence in {max_iter} coarse Newton "
                                    "iterations", {"residual": hist})
         except ConvergenceError:
             if strict or not np.isfinite(best[0]):
                 raise
-            return best[1], best[2], self.max_iter
+            return best[1], best[2], max_iter
 
     def _search(self, P, H0, dx, F, f, g, c, cap, case, hist):
         big = float(np.max(np.abs(dx[:-1]))) if dx.size > 1 else 0.0
