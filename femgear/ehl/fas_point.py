@@ -1,13 +1,17 @@
 """Point-contact EHL by full multigrid (the ``method='fas'`` of :func:`solve_point`).
 
-Levels k = 0..top of :class:`femgear.ehl.grid.Grid` (``16 * 2**k`` intervals along X, the
-same nodes as the Newton solver's levels), the FD discretisation of :mod:`fd` with the
-second-order upstream wedge on every level, FAS cycles of :mod:`fas`.
+Grid levels of :class:`femgear.ehl.grid.Grid` (``16 * 2**k`` intervals along X, the same
+nodes as the Newton solver's levels) from the coarsest multigrid grid (17^2; 33^2 when
+alpha_bar > ``COARSE_33_ALPHA``) to the finest; the FD discretisation of :mod:`fd` with
+the second-order upstream wedge on every level but the coarsest (first-order upwind
+there: a coarse-grid approximation only, no term of the error estimate); FAS cycles of
+:mod:`fas`.
 
 Start (cold): the coarsest grid (17^2) by dense Newton from the dry Hertz pressure and the
-NVM film, first with the first-order upwind wedge (more robust from a far start), then
-with the second-order one from that solution; when the direct start fails, with
-continuation in alpha_bar (as the Newton solver). Start (warm, ``start=`` a neighbouring
+NVM film, with continuation in alpha_bar when the direct start fails. Otherwise (and
+always on a 33^2 coarsest grid) the Newton FE solver's start (``fallback_start``: coarse
+levels, continuation) is interpolated one grid finer and the FD equations are cycled
+from there. Start (warm, ``start=`` a neighbouring
 point solution): its pressure interpolated (Hertzian units) onto the grid one level
 below the finest, H0 shifted by the NVM change of the central film, cycles there and on
 the finest grid (two levels: the result still carries a Richardson estimate).
@@ -40,15 +44,20 @@ from femgear.ehl.rheology import Rheology
 ALPHA_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
 # the coarsest grid (17^2) takes the first-order upwind wedge (a coarse-grid approximation
 # of the finer grids' second-order operator; its solution is no term of the estimate)
-SECOND_ORDER_FROM = 1
+SECOND_ORDER_FROM = 1  # FAS level index (0 = the coarsest)
+COARSE_33_ALPHA = 12.0
 
 
 class FasPoint:
     """One multigrid point-contact solve (levels built on first use)."""
 
     def __init__(self, M: float, L: float, *, ratio: float, dom: Domain, rheology: dict,
-                 rigid: bool, case: str, opts: FasOptions | None = None):
+                 rigid: bool, case: str, opts: FasOptions | None = None, coarsest: int | None = None):
         self.M, self.L, self.ratio, self.dom, self.rigid = M, L, ratio, dom, rigid
+        # the coarsest grid: 17^2, or 33^2 beyond alpha_bar = COARSE_33_ALPHA (a coarser grid
+        # cannot carry the correction of a strongly piezoviscous film)
+        alpha = pr.point_alpha_bar(M, L)
+        self.coarsest = (1 if alpha > COARSE_33_ALPHA else 0) if coarsest is None else coarsest
         self.rheo = Rheology(pr.point_alpha_bar(M, L), **rheology)
         self.lam, self.fac, self.case = pr.point_lam_bar(M), pr.point_h_moes_factor(M), case
         self.fas = FAS(self.level, opts or FasOptions(), case)
@@ -56,7 +65,7 @@ class FasPoint:
     def level(self, k: int, wedge: str | None = None, alpha_frac: float = 1.0) -> FDLevel:
         wedge = wedge or ("first" if k < SECOND_ORDER_FROM else "second")
         rheo = self.rheo if alpha_frac == 1.0 else replace(self.rheo, alpha_bar=self.rheo.alpha_bar * alpha_frac)
-        return FDLevel(Grid.build(self.dom, k), rheo, self.lam, pr.POINT_LOAD, ratio=self.ratio,
+        return FDLevel(Grid.build(self.dom, k + self.coarsest), rheo, self.lam, pr.POINT_LOAD, ratio=self.ratio,
                        rigid=self.rigid, wedge=wedge)
 
     def films(self, k: int, P: np.ndarray, H0: float) -> tuple[float, float]:
@@ -68,27 +77,26 @@ class FasPoint:
     def nvm_hertz(self, M: float, L: float) -> float:
         return float(nvm_central(M, L, self.ratio)) / pr.point_h_moes_factor(M)
 
-    def cold_start(self, top: int) -> tuple[np.ndarray, float, int]:
+    def cold_start(self) -> tuple[np.ndarray, float, int]:
         """(P, H0, 0) solved on the coarsest grid (module docstring)."""
+        lv = self.fas.levels[0]
+        ay = self.ratio ** (-2.0 / 3.0)
+        P = np.sqrt(np.maximum(1.0 - lv.X**2 * ay - (lv.Y / ay) ** 2, 0.0))
+        P *= lv.load / lv.load_of(P)
+        j0, i0 = int(np.argmin(np.abs(lv.grid.y))), int(np.argmin(np.abs(lv.grid.x)))
+        H0 = self.nvm_hertz(self.M, self.L) - float(lv.film(P, 0.0)[j0, i0])
+        f0 = np.zeros((lv.ny - 2, lv.nx - 2))
         errors = []
-        for k in (0,):
-            lv = self.fas.levels[k]
-            ay = self.ratio ** (-2.0 / 3.0)
-            P = np.sqrt(np.maximum(1.0 - lv.X**2 * ay - (lv.Y / ay) ** 2, 0.0))
-            P *= lv.load / lv.load_of(P)
-            j0, i0 = int(np.argmin(np.abs(lv.grid.y))), int(np.argmin(np.abs(lv.grid.x)))
-            H0 = self.nvm_hertz(self.M, self.L) - float(lv.film(P, 0.0)[j0, i0])
-            f0 = np.zeros((lv.ny - 2, lv.nx - 2))
-            for fracs in ((1.0,), ALPHA_STEPS):
-                try:
-                    Pk, Hk = P, H0
-                    for frac in fracs:
-                        first = CoarseNewton(self.level(k, "first", frac))
-                        Pk, Hk, _ = first.solve(Pk, Hk, f0, lv.load, self.case)
-                    Pk, Hk, _ = CoarseNewton(lv).solve(Pk, Hk, f0, lv.load, self.case)
-                    return Pk, Hk, k
-                except ConvergenceError as exc:
-                    errors.append(str(exc))
+        for fracs in ((1.0,), ALPHA_STEPS):
+            try:
+                Pk, Hk = P, H0
+                for frac in fracs:
+                    first = CoarseNewton(self.level(0, "first", frac))
+                    Pk, Hk, _ = first.solve(Pk, Hk, f0, lv.load, self.case)
+                Pk, Hk, _ = CoarseNewton(lv).solve(Pk, Hk, f0, lv.load, self.case)
+                return Pk, Hk, 0
+            except ConvergenceError as exc:
+                errors.append(str(exc))
         raise ConvergenceError(self.case, "no coarse-grid start (direct and alpha continuation): "
                                + " | ".join(errors), self.fas.hist.as_dict())
 
@@ -106,9 +114,13 @@ class FasPoint:
 
     def solve(self, top: int, tol: float | None, t0: float, start: EHLResult | None = None,
               fallback_start=None):
-        """(P, H0, level reached, per-level summaries). ``fallback_start()`` -> (P (ny, nx),
-        H0, k), a start on level k from another solver, is used when the coarse-grid
-        Newton start fails (high M: the coarsest grids cannot carry the thin film)."""
+        """(P, H0, FAS level index reached, per-level summaries); ``top`` is a grid level
+        (``16 * 2**top`` intervals). ``fallback_start()`` -> (P (ny, nx), H0, grid level),
+        a start from another solver, is used when the coarse-grid Newton start fails (high
+        M: the coarsest grids cannot carry the thin film)."""
+        top -= self.coarsest
+        if top < 0:
+            raise ConvergenceError(self.case, "grid level below the coarsest multigrid grid")
         per_level: list[dict] = []
 
         def on_level(k, P, H0, cycles):
@@ -127,13 +139,16 @@ class FasPoint:
             P, H0, k = self.fas.fmg(P, H0, top - 1, top, self.films, on_level, solved=False)
         else:
             try:
-                P, H0, k0 = self.cold_start(top)
+                if self.coarsest > 0 and fallback_start is not None:
+                    raise ConvergenceError(self.case, "33^2 coarsest grid: Newton start")
+                P, H0, k0 = self.cold_start()
                 solved = True
             except ConvergenceError:
                 if fallback_start is None:
                     raise
                 P, H0, k0 = fallback_start()
-                if k0 >= top:
+                k0 -= self.coarsest
+                if k0 >= top or k0 < 0:
                     raise
                 P, k0, solved = _prolong_start(P), k0 + 1, False  # FD solved one level finer
             P, H0, k = self.fas.fmg(P, H0, k0, top, self.films, on_level, solved=solved)

@@ -146,3 +146,13 @@ def test_fas_257_converges_and_refines_the_estimate():
     hc = [lv["Hc"] for lv in r.levels]
     assert r.load_error < 1e-6 and abs(hc[-1] / hc[-2] - 1) < 0.01
     assert r.error_estimate["Hc"] < 0.005
+
+
+def test_strongly_piezoviscous_case_on_a_33_coarsest_grid():
+    """(50, 10), alpha_bar 13.4: from the Newton solver's coarse start, FAS cycles with a
+    33^2 coarsest grid converge (on a 17^2 coarsest grid they stalled); Hc within 4 % of
+    NVM (measured +1.5 %) and the load balanced."""
+    r = solve_point(50.0, 10.0, level=3, method="fas")
+    assert "fallback" not in r.history and r.levels[-1]["method"] == "fas"
+    assert r.Hc == pytest.approx(float(nvm_central(50.0, 10.0)), rel=0.04)
+    assert r.load_error < 1e-6 and 0.0 < r.Hmin < r.Hc
