@@ -151,12 +151,16 @@ class FAS:
         raise ConvergenceError(self.case, f"FAS: no convergence in {it + 1} cycles on "
                                f"{lv.nx}x{lv.ny}", self.hist.as_dict())
 
+    def select_relax(self, top: int) -> None:
+        """The relaxation factors of a solve whose finest level is ``top``."""
+        self.relax = self.opts.relax if self.levels[top].nx <= 129 else self.opts.relax_fine
+
     def fmg(self, P: np.ndarray, H0: float, first: int, top: int, films, on_level,
             solved: bool = False):
         """Full multigrid from (P, H0) on level ``first`` (``solved``: already converged
         there) to ``top``; ``on_level(k, P, H0, cycles)`` after each level returns True to
         stop there. Returns (P, H0, the level reached)."""
-        self.relax = self.opts.relax if self.levels[top].nx <= 129 else self.opts.relax_fine
+        self.select_relax(top)
         if solved:
             self.record(first, P, H0)
             n = 0

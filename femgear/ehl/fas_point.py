@@ -12,9 +12,10 @@ NVM film, with continuation in alpha_bar when the direct start fails. Otherwise 
 always on a 33^2 coarsest grid) the Newton FE solver's start (``fallback_start``: coarse
 levels, continuation) is interpolated one grid finer and the FD equations are cycled
 from there. Start (warm, ``start=`` a neighbouring
-point solution): its pressure interpolated (Hertzian units) onto the grid one level
-below the finest, H0 shifted by the NVM change of the central film, cycles there and on
-the finest grid (two levels: the result still carries a Richardson estimate).
+point solution): its pressure interpolated (Hertzian units) onto the finest grid, H0
+shifted by the NVM change of the central film, cycles there; then cycles on the grid
+below from the injected solution (two levels: the result still carries a Richardson
+estimate, at a quarter of the cost of a finest-grid cycle each).
 
 Each level is cycled until the central and minimum films change by less than
 ``film_tol`` per cycle and the load error is below ``load_tol``; the per-level films feed
@@ -35,7 +36,7 @@ from femgear.errors import ConvergenceError
 from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
 from femgear.ehl.fas import FAS, FasOptions
-from femgear.ehl.fd import FDLevel, prolong_cubic
+from femgear.ehl.fd import FDLevel, inject, prolong_cubic
 from femgear.ehl.fdnewton import CoarseNewton
 from femgear.ehl.grid import Domain, Grid
 from femgear.ehl.results import EHLResult
@@ -112,6 +113,18 @@ class FasPoint:
         H0 = start.H0 + self.nvm_hertz(self.M, self.L) - self.nvm_hertz(start.M, start.L)
         return P, H0
 
+    def _warm(self, start: EHLResult, top: int, on_level):
+        """Cycles on the finest grid from ``start``, then on the grid below from the
+        injected solution (its films make the two-level error estimate)."""
+        fas = self.fas
+        fas.select_relax(top)
+        P, H0 = self.warm_start(start, top)
+        P, H0, n = fas.solve_level(top, P, H0, self.films, final=True)
+        Pc, H0c, nc = fas.solve_level(top - 1, inject(P), H0, self.films, final=False)
+        on_level(top - 1, Pc, H0c, nc)
+        on_level(top, P, H0, n)
+        return P, H0, top
+
     def solve(self, top: int, tol: float | None, t0: float, start: EHLResult | None = None,
               fallback_start=None):
         """(P, H0, FAS level index reached, per-level summaries); ``top`` is a grid level
@@ -134,9 +147,8 @@ class FasPoint:
             return tol is not None and all(e is not None and e <= tol
                                            for e in acc.error_estimate(per_level).values())
 
-        if start is not None and top >= 1:
-            P, H0 = self.warm_start(start, top - 1)
-            P, H0, k = self.fas.fmg(P, H0, top - 1, top, self.films, on_level, solved=False)
+        if start is not None and top >= 2:
+            P, H0, k = self._warm(start, top, on_level)
         else:
             try:
                 if self.coarsest > 0 and fallback_start is not None:
