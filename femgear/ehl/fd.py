@@ -62,27 +62,36 @@ class FDLevel:
         return float(self.cell * P.sum())
 
     # -- operator -------------------------------------------------------------------------
-    def faces(self, eps: np.ndarray):
-        """Face coefficients (west, east, south, north) / h^2 of the interior nodes."""
-        c = eps[1:-1, 1:-1]
-        return ((eps[1:-1, :-2] + c) / (2 * self.hx**2), (eps[1:-1, 2:] + c) / (2 * self.hx**2),
-                (eps[:-2, 1:-1] + c) / (2 * self.hy**2), (eps[2:, 1:-1] + c) / (2 * self.hy**2))
+    def faces(self, eps: np.ndarray, rows: np.ndarray | None = None):
+        """Face coefficients (west, east, south, north) / h^2 of the interior nodes (of the
+        interior rows ``rows`` only, when given)."""
+        j = slice(1, -1) if rows is None else rows + 1
+        jm = slice(None, -2) if rows is None else rows
+        jp = slice(2, None) if rows is None else rows + 2
+        c = eps[j, 1:-1]
+        return ((eps[j, :-2] + c) / (2 * self.hx**2), (eps[j, 2:] + c) / (2 * self.hx**2),
+                (eps[jm, 1:-1] + c) / (2 * self.hy**2), (eps[jp, 1:-1] + c) / (2 * self.hy**2))
 
     def wedge_term(self, Q: np.ndarray) -> np.ndarray:
-        """Upwind D_X Q at the interior nodes."""
-        first = (Q[1:-1, 1:-1] - Q[1:-1, :-2]) / self.hx
+        """Upwind D_X Q at the interior nodes of the rows of ``Q`` (full rows)."""
+        first = (Q[:, 1:-1] - Q[:, :-2]) / self.hx
         if self.wedge == "first":
             return first
         out = first.copy()
-        out[:, 1:] = (3 * Q[1:-1, 2:-1] - 4 * Q[1:-1, 1:-2] + Q[1:-1, :-3]) / (2 * self.hx)
+        out[:, 1:] = (3 * Q[:, 2:-1] - 4 * Q[:, 1:-2] + Q[:, :-3]) / (2 * self.hx)
         return out
 
-    def operator(self, P: np.ndarray, H: np.ndarray, eps: np.ndarray, rho: np.ndarray) -> np.ndarray:
-        w, e, s, n = self.faces(eps)
-        Pc = P[1:-1, 1:-1]
-        lap = (w * (P[1:-1, :-2] - Pc) + e * (P[1:-1, 2:] - Pc)
-               + s * (P[:-2, 1:-1] - Pc) + n * (P[2:, 1:-1] - Pc))
-        return lap - self.wedge_term(rho * H)
+    def operator(self, P: np.ndarray, H: np.ndarray, eps: np.ndarray, rho: np.ndarray,
+                 rows: np.ndarray | None = None, faces=None) -> np.ndarray:
+        """L at the interior nodes (of the interior rows ``rows`` only, when given)."""
+        w, e, s, n = self.faces(eps, rows) if faces is None else faces
+        j = slice(1, -1) if rows is None else rows + 1
+        jm = slice(None, -2) if rows is None else rows
+        jp = slice(2, None) if rows is None else rows + 2
+        Pc = P[j, 1:-1]
+        lap = (w * (P[j, :-2] - Pc) + e * (P[j, 2:] - Pc)
+               + s * (P[jm, 1:-1] - Pc) + n * (P[jp, 1:-1] - Pc))
+        return lap - self.wedge_term(rho[j] * H[j])
 
     def residual(self, P: np.ndarray, H0: float, f: np.ndarray):
         """(f - L) on the interior, the film H and (eps, rho)."""

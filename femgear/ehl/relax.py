@@ -45,7 +45,6 @@ class RelaxOptions:
     omega_dist: float = 0.7
     bandwidth: int = 3
     xi_switch: float = XI_SWITCH
-    dist_jacobi: bool = False
 
 
 def sweep(lv: FDLevel, P: np.ndarray, H0: float, f: np.ndarray, opts: RelaxOptions) -> float:
@@ -72,18 +71,21 @@ def _wedge_coefficients(lv: FDLevel, bw: int) -> dict[int, np.ndarray]:
     return out
 
 
-def line_matrix(lv: FDLevel, eps: np.ndarray, rho: np.ndarray, rows: np.ndarray, dist: np.ndarray,
+def line_matrix(lv: FDLevel, faces, rho: np.ndarray, rows: np.ndarray, dist: np.ndarray,
                 bw: int) -> dict[int, np.ndarray]:
-    """A_d (offset d = -(bw+1)..bw+1) of the lines ``rows`` (interior row indices):
+    """A_d (offset d = -(bw+1)..bw+1) of the lines ``rows`` (interior row indices), with
+    the face coefficients ``faces`` of those lines:
     A_d = J_d - s_(i+d) (J_(d-1) + J_(d+1) + Joff_d) / 4 (module docstring)."""
-    w, e, s, n = (a[rows] for a in lv.faces(eps))
+    w, e, s, n = faces
     ni = lv.nx - 2
-    R = [rho[rows + 1][:, np.clip(np.arange(1, ni + 1) + o, 0, ni + 1)]
+    scalar = not getattr(lv.rheology, "compressible", True)  # rho = 1: scalar kernel parts
+    R = [1.0 if scalar else rho[rows + 1][:, np.clip(np.arange(1, ni + 1) + o, 0, ni + 1)]
          for o, _ in lv.wedge_weights()]
     c = _wedge_coefficients(lv, bw)
     c0, c1 = c[0], c[1]
     nd = c0.shape[0]
     sig = dist.astype(float) / 4.0
+    pois = {0: -(w + e + s + n), -1: w, 1: e}  # J_0 = -(w+e+s+n), J_(-1) = w, J_1 = e
     A = {}
     for k in range(nd):
         d = k - bw - 1
@@ -94,9 +96,11 @@ def line_matrix(lv: FDLevel, eps: np.ndarray, rho: np.ndarray, rows: np.ndarray,
             sd[:, : ni - d] = sig[:, d:]
         else:
             sd[:, -d:] = sig[:, :d]
-        a = sum(-(c0[k, m] - sd * nb0[m]) * R[m] for m in range(len(R)))
-        # Poiseuille part: J_0 = -(w+e+s+n), J_(-1) = w, J_1 = e, Joff_0 = s + n
-        pois = {0: -(w + e + s + n), -1: w, 1: e}
+        if scalar:
+            a = sd * nb0.sum() - c0[k].sum()
+        else:
+            a = sum(-(c0[k, m] - sd * nb0[m]) * R[m] for m in range(len(R)))
+        # Poiseuille part (Joff_0 = s + n)
         a = a + pois.get(d, 0.0) - sd * (pois.get(d - 1, 0.0) + pois.get(d + 1, 0.0)
                                          + (s + n if d == 0 else 0.0))
         A[d] = a
@@ -122,19 +126,18 @@ def _solve_lines(A: dict[int, np.ndarray], rhs: np.ndarray, active: np.ndarray) 
 
 def relax_colour(lv: FDLevel, P: np.ndarray, H0: float, f: np.ndarray, colour: int,
                  opts: RelaxOptions) -> float:
-    """Relax the interior lines ``colour``, ``colour`` + 2, ... in place; rms residual before."""
-    r, H, eps, rho = lv.residual(P, H0, f)
+    """Relax the interior lines ``colour``, ``colour`` + 2, ... in place; the rms residual
+    of those lines before."""
     rows = np.arange(colour, lv.ny - 2, 2)
+    H = lv.film(P, H0)
+    eps, rho = lv.coefficients(P, H)
+    faces = lv.faces(eps, rows)
+    rl = f[rows] - lv.operator(P, H, eps, rho, rows, faces)
     Pl = P[rows + 1, 1:-1]
-    rl = r[rows]
     active = (Pl <= 0.0) & (rl >= 0.0)
-    norm = float(np.sqrt(np.mean(lv.complementarity(P, r) ** 2)))
+    norm = float(np.sqrt(np.mean(np.where(active, 0.0, rl) ** 2)))
     dist = (eps[rows + 1, 1:-1] < opts.xi_switch * lv.hx**2) & ~active
-    A = line_matrix(lv, eps, rho, rows, dist, opts.bandwidth)
-    if opts.dist_jacobi:  # distributive rows: Jacobi (diagonal only)
-        for d in A:
-            if d != 0:
-                A[d] = np.where(dist, 0.0, A[d])
+    A = line_matrix(lv, faces, rho, rows, dist, opts.bandwidth)
     delta = _solve_lines(A, rl, active)
     delta *= np.where(dist, opts.omega_dist, opts.omega_gs)
     # at most a factor e^MAX_LOG_ETA of viscosity per sweep anywhere (as the Newton step cap)
