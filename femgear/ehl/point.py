@@ -156,9 +156,11 @@ def fas_suits(M: float, L: float, level: int, rigid: bool, viscosity: str, compr
     """Whether ``method='auto'`` takes the multigrid solver: Barus, incompressible, elastic,
     a finest grid of 129^2 or more (on 65^2 the FD scheme's error, ~3 % at (20, 10), is
     over twice the FE scheme's), and alpha_bar = alpha p_h <= FAS_ALPHA_MAX. Measured
-    (benchmark and tests): the multigrid converges in 5-8 cycles per level at (10, 10),
-    (20, 10), (20, 5) (alpha_bar 4.9-9.9); from alpha_bar ~13 ((50, 10), (20, 20), (200,
-    10)) its cycles stall on the coarse grids and Newton is the faster route."""
+    (benchmark and tests): the multigrid converges in 4-8 cycles per level at (10, 10),
+    (20, 10), (20, 5) (alpha_bar 4.9-9.9); at (50, 10), (100, 10) (alpha_bar 13-17) it
+    converges on a 33^2 coarsest grid but its 129^2 answer is less accurate than Newton's
+    ((100, 10): estimate 4.3 %); from alpha_bar ~20 ((20, 20), (100, 20), (200, 10)) its
+    cycles stall on 65^2 and Newton is the only route."""
     return (viscosity == "barus" and not compressible and not rigid and level >= 3
             and pr.point_alpha_bar(M, L) <= FAS_ALPHA_MAX)
 
