@@ -116,16 +116,18 @@ class FAS:
             sweep(lv, P, H0, f, ro)
         return P, H0
 
-    def record(self, k: int, P, H0) -> None:
-        """Append the rms complementarity residual and the load error of level k (f = 0)."""
+    def record(self, k: int, P, H0) -> np.ndarray:
+        """Append the rms complementarity residual and the load error of level k (f = 0);
+        returns the film."""
         lv = self.levels[k]
-        r, _, _, _ = lv.residual(P, H0, np.zeros((lv.ny - 2, lv.nx - 2)))
+        r, H, _, _ = lv.residual(P, H0, np.zeros((lv.ny - 2, lv.nx - 2)))
         res = float(np.sqrt(np.mean(lv.complementarity(P, r) ** 2)))
         self.hist.residual.append(res)
         self.hist.load_error.append(abs(lv.load_of(P) - lv.load) / lv.load)
         self.hist.level.append(lv.nx * lv.ny)
         if not (np.isfinite(res) and np.isfinite(H0) and np.all(np.isfinite(P))):
             raise ConvergenceError(self.case, "non-finite multigrid iterate", self.hist.as_dict())
+        return H
 
     def solve_level(self, k: int, P: np.ndarray, H0: float, films,
                     final: bool = True) -> tuple[np.ndarray, float, int]:
@@ -139,8 +141,8 @@ class FAS:
         for it in range(o.max_cycles):
             with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
                 P, H0 = self.cycle(k, P, H0, f, lv.load)
-            self.record(k, P, H0)
-            cur = (*films(k, P, H0), H0)
+            H = self.record(k, P, H0)
+            cur = (*films(k, P, H0, H), H0)
             change = max(abs(a - b) / max(abs(b), 1e-3) for a, b in zip(cur, prev))
             prev = cur
             if change < ftol and self.hist.load_error[-1] < ltol:

@@ -69,9 +69,10 @@ class FasPoint:
         return FDLevel(Grid.build(self.dom, k + self.coarsest), rheo, self.lam, pr.POINT_LOAD, ratio=self.ratio,
                        rigid=self.rigid, wedge=wedge)
 
-    def films(self, k: int, P: np.ndarray, H0: float) -> tuple[float, float]:
+    def films(self, k: int, P: np.ndarray, H0: float, H: np.ndarray | None = None) -> tuple[float, float]:
+        """(Hc, Hmin) in Moes units of level k's state (``H``: its film, when known)."""
         lv = self.fas.levels[k]
-        H = lv.film(P, H0)
+        H = lv.film(P, H0) if H is None else H
         j0, i0 = int(np.argmin(np.abs(lv.grid.y))), int(np.argmin(np.abs(lv.grid.x)))
         return float(H[j0, i0] * self.fac), float(H.min() * self.fac)
 
