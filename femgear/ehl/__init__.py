@@ -17,6 +17,11 @@ level        one discretisation level: film, complementarity (cavitation) residu
 newton       dense Newton (coarse grids, line) and Newton-Krylov with a multilevel
              preconditioner (fine grids); histories; ConvergenceError on failure.
 point, line  drivers: nested iteration, continuation strategies, result assembly.
+fd           finite-difference point operator (second-order upstream wedge) and grid transfers.
+relax        zebra line relaxation, Gauss-Seidel / distributive (Venner & Lubrecht 2000).
+fdnewton     dense semi-smooth Newton of one FD grid (the multigrid's coarsest-grid solver).
+fas          FAS cycles and full multigrid; fas_point: the point driver (method='fas').
+assemble     EHLResult from solved fields (shared by the Newton and multigrid drivers).
 results      frozen EHLResult (with error_estimate, tol, flags) and centre-line quantities.
 accuracy     Richardson error estimates from the nested levels, flags, inlet adequacy.
 output       VTK (pyvista) and centre-line PNG (matplotlib), imported lazily.

@@ -121,6 +121,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     J1 = jaeger_matrix(cells, (X1 - x0) * b, props.B1, v1)
     J2 = jaeger_matrix(cells, (X1 - x0) * b, props.B2, v2)
     sol = {"PI": res.P[lv.interior].copy(), "H0": res.H0, "P": res.P, "H": res.H}
+    reuse: dict = {}  # LU factors kept across the thermal re-solves (newton_dense)
 
     def energy(theta):
         st = solve_energy(xf, np.interp(xf, X * b, sol["P"] * ph), np.interp(xc, X * b, sol["H"] * hs), v1, v2,
@@ -132,7 +133,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
         T_nodes = T_bulk + np.interp(X * b, xc, theta.mean(axis=1))
         rheo.state["node"] = T_nodes
         rheo.state["quad"] = lv.reynolds.basis.interpolate(T_nodes)
-        sol["PI"], sol["H0"], hist = newton_dense(lv, sol["PI"], sol["H0"], tol=newton_tol, case=case)
+        sol["PI"], sol["H0"], hist = newton_dense(lv, sol["PI"], sol["H0"], tol=newton_tol, case=case,
+                                                  reuse=reuse)
         sol["P"], sol["H"] = lv.film(sol["PI"], sol["H0"])
         return len(hist.residual)
 

@@ -12,10 +12,15 @@
    in the same run: seconds / WU is the cost in residual evaluations.
 2. ``tol``-driven solves: ``solve_point(M, L, tol=0.01, max_level=LMAX)`` (levels chosen
    by the solver).
+   Each case is solved by both point methods, ``method='fas'`` (full multigrid, FD; a
+   failed multigrid solve falls back to Newton, marked "fallback") and ``'newton'`` (FE
+   Newton-Krylov), in the same run.
 3. Line contact, a 41-position path of a gear mesh (load, radius and speed varying
    smoothly; Roelands + Dowson-Higginson): the path solved position by position with
    warm starts (``start=``, ``reuse=``), against the median of cold solves of single
    positions of it.
+4. Point contact, a 41-position path (M = 20 (1 + 0.5 sin(pi s)), L = 10, 129^2, FAS):
+   warm starts from the previous position against the median cold solve.
 Prints tables and one JSON line (the last).
 """
 
@@ -71,16 +76,17 @@ def work_unit(M: float, L: float, level: int, result) -> float:
     return statistics.median(times)
 
 
-def point_table(M: float, L: float, lmax: int, repeats: int) -> dict:
+def point_table(M: float, L: float, lmax: int, repeats: int, method: str = "newton") -> dict:
     rows = []
-    for lev in range(1, lmax + 1):
-        m = measure(lambda: solve_point(M, L, level=lev), repeats=repeats)
+    for lev in range(1 if method == "newton" else 2, lmax + 1):
+        m = measure(lambda: solve_point(M, L, level=lev, method=method), repeats=repeats)
         r = m.value
         wu = work_unit(M, L, lev, r)
         rows.append({"level": lev, "nodes": r.nodes, "seconds": m.seconds, "wu_seconds": wu,
                      "work_units": m.seconds / wu, "peak_MB": m.peak_bytes / 2**20,
                      "Hc": r.Hc, "Hmin": r.Hmin, "est_Hc": r.error_estimate["Hc"],
-                     "est_Hmin": r.error_estimate["Hmin"], "newton": r.history["level"].count(r.nodes)})
+                     "est_Hmin": r.error_estimate["Hmin"], "newton": r.history["level"].count(r.nodes),
+                     "fallback": "fallback" in r.history})
     fin = rows[-1]
     first = None
     for k, row in enumerate(rows):
@@ -90,9 +96,9 @@ def point_table(M: float, L: float, lmax: int, repeats: int) -> dict:
         if first is None and k < len(rows) - 1 and max(abs(row["err_Hc_%"]), abs(row["err_Hmin_%"])) <= 1.0:
             first = row
     nvm = float(nvm_central(M, L))
-    print(f"\n(M, L) = ({M:g}, {L:g})   NVM Hc = {nvm:.4f}")
+    print(f"\n(M, L) = ({M:g}, {L:g}), method {method}   NVM Hc = {nvm:.4f}")
     print(f"{'level':>5} {'nodes':>6} {'s (med)':>8} {'WU [ms]':>8} {'WU':>6} {'peak MB':>8} {'Hc':>7} "
-          f"{'Hmin':>7} {'est Hc %':>8} {'est Hm %':>8} {'Newton':>6} {'Hc vs fin %':>11} "
+          f"{'Hmin':>7} {'est Hc %':>8} {'est Hm %':>8} {'its':>6} {'Hc vs fin %':>11} "
           f"{'Hm vs fin %':>11} {'x prev':>6}")
     for row in rows:
         ratio = "" if row["cost_ratio"] is None else f"{row['cost_ratio']:.2f}"
@@ -100,17 +106,20 @@ def point_table(M: float, L: float, lmax: int, repeats: int) -> dict:
         print(f"{row['level']:>5} {row['nodes']:>6} {row['seconds']:>8.2f} {1e3 * row['wu_seconds']:>8.2f} "
               f"{row['work_units']:>6.0f} {row['peak_MB']:>8.1f} {row['Hc']:>7.4f} {row['Hmin']:>7.4f} "
               f"{est[0]:>8} {est[1]:>8} {row['newton']:>6} {row['err_Hc_%']:>+11.3f} "
-              f"{row['err_Hmin_%']:>+11.3f} {ratio:>6}")
+              f"{row['err_Hmin_%']:>+11.3f} {ratio:>6}{'  fallback' if row['fallback'] else ''}")
     if first:
         print(f"Hc and Hmin within 1 % of the finest level from level {first['level']} "
               f"({first['nodes']} nodes): {first['seconds']:.2f} s, {first['work_units']:.0f} WU; "
               f"Hc vs NVM {100 * (first['Hc'] / nvm - 1):+.2f} %")
+    ratios = [row["cost_ratio"] for row in rows[1:] if row["level"] >= 3]
+    if ratios:
+        print(f"cost per refinement from 129^2 on: {', '.join(f'{x:.2f}' for x in ratios)}")
     return {"rows": rows, "first_within_1pct": first and first["level"], "nvm": nvm}
 
 
 def tol_runs(repeats: int, lmax: int) -> dict:
     out = {}
-    for M, L in CASES:
+    for M, L in CASES:  # method 'auto': FAS at (20, 10), Newton at (200, 10)
         m = measure(lambda: solve_point(M, L, tol=0.01, max_level=lmax), repeats=repeats)
         r = m.value
         out[f"M{M:g}_L{L:g}"] = {"seconds": m.seconds, "nodes": r.nodes, "Hc": r.Hc, "Hmin": r.Hmin,
@@ -155,13 +164,39 @@ def path_run(level: int, n: int, repeats: int) -> dict:
             "ratio": m.seconds / cold_s, "max_rel_dev_hc": dev}
 
 
+def point_path(level: int, n: int, repeats: int) -> dict:
+    """A load path M = 20 (1 + 0.5 sin(pi s)) at L = 10 by FAS with warm starts."""
+    Ms = 20.0 * (1.0 + 0.5 * np.sin(np.pi * np.linspace(0.0, 1.0, n)))
+    picks = list(range(0, n, max(1, n // 6)))
+    cold_s = statistics.median(measure(lambda i=i: solve_point(Ms[i], 10.0, level=level, method="fas"),
+                                       repeats=repeats, trace_memory=False).seconds for i in picks)
+
+    def path():
+        prev, out = None, []
+        for M in Ms:
+            prev = solve_point(M, 10.0, level=level, method="fas", start=prev)
+            out.append(prev)
+        return out
+
+    m = measure(path, repeats=1, trace_memory=False)
+    ref = {i: solve_point(Ms[i], 10.0, level=level, method="fas") for i in picks}
+    dev = max(abs(m.value[i].Hc / c.Hc - 1) for i, c in ref.items())
+    print(f"\npoint path, {n} positions, level {level}, FAS: warm path {m.seconds:.2f} s = "
+          f"{m.seconds / cold_s:.1f} x one cold solve ({cold_s:.3f} s); max |Hc warm/cold - 1| = {dev:.1e}")
+    return {"positions": n, "level": level, "path_seconds": m.seconds, "cold_seconds": cold_s,
+            "ratio": m.seconds / cold_s, "max_rel_dev_hc": dev}
+
+
 def run(args: argparse.Namespace) -> dict:
     lmax = 2 if args.quick else args.lmax
     repeats = 1 if args.quick else args.repeats
     out = {"point": {f"M{M:g}_L{L:g}": point_table(M, L, lmax, repeats) for M, L in CASES}}
+    # FAS at (20, 10); (200, 10) lies outside its range (alpha_bar 21: method "auto" -> Newton)
+    out["point_fas"] = {f"M{M:g}_L{L:g}": point_table(M, L, lmax, repeats, "fas") for M, L in CASES[:1]}
     print()
     out["tol"] = tol_runs(repeats, lmax)
     out["path"] = path_run(args.path_level, 9 if args.quick else 41, repeats)
+    out["point_path"] = point_path(2 if args.quick else 3, 9 if args.quick else 41, repeats)
     return out
 
 

@@ -71,7 +71,7 @@ def test_point_pressure_ripple_is_johnsons():
     """Point contact, transverse waviness lambda = 0.5 a, A = 0.003 on 129^2: the centre-line
     ripple is (pi/4) k A within 3 %."""
     lam, A = 0.5, 0.003
-    r0 = solve_point(20.0, 10.0, level=3)
+    r0 = solve_point(20.0, 10.0, level=3, method="newton")  # the rough solve is Newton's
     r = solve_point(20.0, 10.0, level=3, surface=partial(harmonic, amplitude=A, wavelength=lam))
     j = int(np.argmin(np.abs(r.y)))
     assert _ripple(r.x, r.P[j] - r0.P[j], lam) == pytest.approx(np.pi / 4 * 2 * np.pi / lam * A, rel=0.03)
