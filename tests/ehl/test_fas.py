@@ -168,3 +168,15 @@ def test_wide_elliptic_contact_agrees_with_newton():
     assert fas.levels[-1]["method"] == "fas" and "fallback" not in fas.history
     assert fas.Hc == pytest.approx(newton.Hc, rel=0.01)
     assert fas.Hmin == pytest.approx(newton.Hmin, rel=0.01)
+
+
+@pytest.mark.parametrize("M, ratio", [(20.0, 0.1), pytest.param(100.0, 0.05, marks=pytest.mark.slow)])
+def test_slender_elliptic_contact_on_stretched_cells_agrees_with_newton(M, ratio):
+    """Stretched cells (hy/hx = b/a, rectangular-cell kernel) on 129^2: the FD multigrid and
+    the FE Newton solver are independent discretisations of the same problem; they agree
+    to 1 % (measured 0.4 % / 0.5 %), and the multigrid is the default there."""
+    fas = solve_point(M, 10.0, level=3, ratio=ratio)
+    newton = solve_point(M, 10.0, level=3, ratio=ratio, method="newton")
+    assert fas.levels[-1]["method"] == "fas" and "fallback" not in fas.history
+    assert fas.Hc == pytest.approx(newton.Hc, rel=0.01)
+    assert fas.Hmin == pytest.approx(newton.Hmin, rel=0.01)
