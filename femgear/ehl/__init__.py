@@ -21,6 +21,8 @@ fd           finite-difference point operator (second-order upstream wedge) and 
 relax        zebra line relaxation, Gauss-Seidel / distributive (Venner & Lubrecht 2000).
 fdnewton     dense semi-smooth Newton of one FD grid (the multigrid's coarsest-grid solver).
 fas          FAS cycles and full multigrid; fas_point: the point driver (method='fas').
+surface      roughness as a film term: the paper's single peak, waviness, seeded random surfaces.
+transient    transient Reynolds (squeeze term, BDF2) for roughness moving through a contact.
 assemble     EHLResult from solved fields (shared by the Newton and multigrid drivers).
 results      frozen EHLResult (with error_estimate, tol, flags) and centre-line quantities.
 accuracy     Richardson error estimates from the nested levels, flags, inlet adequacy.
