@@ -34,6 +34,8 @@ def setup() -> argparse.Namespace:
     ap.add_argument("--level", type=int, default=3)
     ap.add_argument("--cases", nargs="*", default=["20,10", "100,10"])
     ap.add_argument("--ratios", nargs="*", type=float, default=[0.5, 0.2, 0.1, 0.05, 0.02])
+    ap.add_argument("--method", default="auto", choices=("auto", "fas", "newton"),
+                    help="point solver (auto: the multigrid inside its range, Newton elsewhere)")
     return ap.parse_args()
 
 
@@ -46,9 +48,9 @@ def hd_moes(M: float, L: float, ratio: float) -> float:
     return float(hamrock_dowson_central(U, G, W, k)) / (2 * U) ** 0.5
 
 
-def one(M: float, L: float, ratio: float, level: int) -> dict:
+def one(M: float, L: float, ratio: float, level: int, method: str = "auto") -> dict:
     t0 = time.perf_counter()
-    r = solve_point(M, L, ratio=ratio, level=level)
+    r = solve_point(M, L, ratio=ratio, level=level, method=method)
     sec = time.perf_counter() - t0
     hc = [lv["Hc"] for lv in r.levels]
     nvm = float(nvm_central(M, L, ratio))
@@ -56,7 +58,8 @@ def one(M: float, L: float, ratio: float, level: int) -> dict:
             "Hc_levels": hc, "grid_change": abs(hc[-1] / hc[-2] - 1) if len(hc) > 1 else None,
             "nvm": nvm, "dev_nvm": r.Hc / nvm - 1, "hd": hd_moes(M, L, ratio),
             "dev_hd": r.Hc / hd_moes(M, L, ratio) - 1, "in_nvm_range": NVM_RANGE[0] <= ratio <= NVM_RANGE[1],
-            "seconds": sec, "nodes": r.nodes, "newton": r.iterations, "flags": list(r.flags)}
+            "seconds": sec, "nodes": r.nodes, "newton": r.iterations, "flags": list(r.flags),
+            "method": r.levels[-1].get("method", "newton")}
 
 
 def main() -> None:
@@ -66,11 +69,11 @@ def main() -> None:
           f"{'grid%':>6} {'s':>6} {'s(lam=1)':>8} range")
     for case in args.cases:
         M, L = (float(v) for v in case.split(","))
-        circ = one(M, L, 1.0, args.level)
+        circ = one(M, L, 1.0, args.level, args.method)
         rows.append(circ)
         for lam in args.ratios:
             try:
-                row = one(M, L, lam, args.level)
+                row = one(M, L, lam, args.level, args.method)
             except Exception as exc:  # report and go on: the table shows every case
                 print(f"{M:5g} {L:4g} {lam:6g} failed: {exc}")
                 rows.append({"M": M, "L": L, "ratio": lam, "error": str(exc)})
