@@ -183,8 +183,10 @@ def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F):
     """GMRES on the exact (row-scaled) dense-level Jacobian preconditioned by ``lu``;
     (dx, iterations) or (None, iterations) when it needs more than DENSE_REUSE_KRYLOV."""
     I = level.interior
-    JP = lin.JP[I][:, I].tocsr()
-    JH = lin.JH[I].tocsr()
+    if I.size and I[-1] - I[0] + 1 == I.size:  # contiguous (line contact): slicing is cheaper
+        I = slice(int(I[0]), int(I[-1]) + 1)
+    JP = lin.JP.tocsr()[I][:, I]
+    JH = lin.JH.tocsr()[I]
     colH = np.asarray(JH.sum(axis=1)).ravel()
     n = F.size
 
