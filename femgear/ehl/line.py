@@ -279,7 +279,7 @@ class _PathHistory:
         pf, pc = self.predict(start, M, L, lev), self.predict(start, M, L, lev - 1)
         if pf is None or pc is None or pc[0].size != coarse[0].size:
             return _scaled_start(fine, start), coarse[1]
-        dP = prolongation_1d(pc[0].size) @ (coarse[0] - pc[0])
+        dP = np.interp(fine.X, fine.X[::2], coarse[0] - pc[0])  # linear prolongation
         dH0 = coarse[1] - pc[1]
         return _on_level(fine, pf[0] + dP), pf[1] + dH0
 
