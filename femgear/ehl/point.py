@@ -125,6 +125,27 @@ def _inlet_problem(dom: Domain, expected: float, ratio: float) -> str | None:
     return acc.inlet_problem(dom.x0 / a, expected / a**2)
 
 
+# the rigid film of a slender contact spreads along the contact line to |Y| ~ sqrt(2 H / lambda);
+# beyond this fraction of the domain's half-width the default domain truncates it and Hc comes
+# out low (studies/ehl_elliptic_regimes.py: (20, 0) at lambda 0.1 (ratio 0.34) +13 %, (20, 10)
+# at lambda 0.05 / 0.02 (0.52 / 0.81) +11 / +38 % on enlarged domains; (100, 10) (<= 0.28) unaffected)
+SIDE_EXTENT_MAX = 0.33
+
+
+def _side_problem(dom: Domain, expected: float, ratio: float) -> str | None:
+    """A slender contact whose rigid-film side extent sqrt(2 H / lambda) (H the expected
+    central film, Hertzian units) exceeds SIDE_EXTENT_MAX of the domain's Y half-width:
+    the solution may be truncated along the contact line (flagged, not refused: the
+    criterion is calibrated on a few cases and also flags some that are not truncated)."""
+    if ratio >= 1.0:
+        return None
+    r = math.sqrt(2.0 * expected / ratio) / min(-dom.y0, dom.y1)
+    if r <= SIDE_EXTENT_MAX:
+        return None
+    return (f"rigid-film side extent sqrt(2H/lambda) is {r:.2f} of the domain half-width "
+            f"(> {SIDE_EXTENT_MAX}): the film may be truncated along the contact line and Hc low")
+
+
 def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: int = 1,
                 ratio: float = 1.0, domain: Domain | None = None, viscosity: str = "barus",
                 compressible: bool = False, ph: float | None = None, z: float = 0.68,
@@ -182,7 +203,8 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
         raise SceneError("M", f"(M, L) = ({M:g}, {L:g}): {inlet}; pass a larger domain= "
                          "to solve it anyway (the result is then flagged)")
     rheology = dict(viscosity=viscosity, ph=ph, z=z, compressible=compressible)
-    flags = (f"domain: {inlet}",) if inlet else ()
+    side = None if rigid else _side_problem(dom, expected, ratio)
+    flags = tuple(f"domain: {m}" for m in (inlet, side) if m)
     fallback = []
     solver = _NestedPoint(M, L, ratio=ratio, dom=dom, coarse_level=coarse_level, level=level,
                           tol=tol, rigid=rigid, ad_factor=ad_factor, sd_factor=sd_factor, t0=t0,
