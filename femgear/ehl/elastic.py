@@ -49,8 +49,8 @@ class PointDeflection:
     """DC-FFT deflection operator on an (ny, nx) node grid with spacing h (along x) and
     hy along y (None: square cells, hy = h).
 
-    ``apply(P2d)`` returns D on the same grid. ``dense(mask)`` returns the full matrix
-    restricted to the flattened nodes in ``mask`` (for the coarse-grid direct solve),
+    ``apply(P2d)`` returns D on the same grid. ``dense(rows, cols)`` returns the matrix
+    between flattened nodes (for the coarse-grid direct solves),
     ``local(r)`` the kernel truncated to offsets |i|,|j| <= r as a sparse matrix.
     """
 
@@ -80,10 +80,13 @@ class PointDeflection:
         f = sfft.fft(sfft.rfft(P2d, n=Nx, axis=1), n=Ny, axis=0)
         return sfft.irfft(sfft.ifft(f * self._khat, axis=0)[:ny], n=Nx, axis=1)[:, :nx]
 
-    def dense(self, flat_index: np.ndarray) -> np.ndarray:
-        """Dense influence matrix between the flattened grid nodes ``flat_index``."""
-        j, i = np.divmod(flat_index, self.nx)
-        return self.K[np.abs(j[:, None] - j[None, :]), np.abs(i[:, None] - i[None, :])]
+    def dense(self, rows: np.ndarray, cols: np.ndarray | None = None) -> np.ndarray:
+        """Dense influence matrix from the flattened grid nodes ``cols`` (default ``rows``)
+        to the nodes ``rows``."""
+        cols = rows if cols is None else cols
+        j, i = np.divmod(rows, self.nx)
+        jc, ic = np.divmod(cols, self.nx)
+        return self.K[np.abs(j[:, None] - jc[None, :]), np.abs(i[:, None] - ic[None, :])]
 
     def local(self, flat_index: np.ndarray, r: int) -> sp.csr_matrix:
         """Influence matrix truncated to |di|, |dj| <= r between nodes ``flat_index``."""

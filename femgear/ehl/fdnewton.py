@@ -67,13 +67,6 @@ def jacobian_blocks(lv: FDLevel, P: np.ndarray, H: np.ndarray):
     return _stencil(lv, eP), _stencil(lv, eH)
 
 
-def dense_kernel(lv: FDLevel, interior: np.ndarray) -> np.ndarray:
-    """Influence matrix (all nodes x interior nodes) of the level's kernel."""
-    j, i = np.divmod(np.arange(lv.nx * lv.ny), lv.nx)
-    jI, iI = np.divmod(interior, lv.nx)
-    return lv.K[np.abs(j[:, None] - jI[None, :]), np.abs(i[:, None] - iI[None, :])]
-
-
 class CoarseNewton:
     """Exact solver of one small FD level: ``solve(P, H0, f, g)`` -> (P, H0, iterations)."""
 
@@ -82,7 +75,8 @@ class CoarseNewton:
         nx, ny = lv.nx, lv.ny
         jj, ii = np.meshgrid(np.arange(1, ny - 1), np.arange(1, nx - 1), indexing="ij")
         self.I = (jj * nx + ii).ravel()
-        self.Kd = dense_kernel(lv, self.I)
+        self.Kd = (np.zeros((lv.nx * lv.ny, self.I.size)) if lv.rigid
+                   else lv.defl.dense(np.arange(lv.nx * lv.ny), self.I))
         self._lu, self._c = None, None
 
     def merit(self, P, H0, f, g, c):

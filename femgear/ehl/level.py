@@ -87,10 +87,7 @@ class Level:
         if self.rigid:
             return np.zeros((self.n, I.size))
         if self.dim == 2:
-            allidx = np.arange(self.n)
-            j, i = np.divmod(allidx, self.grid.nx)
-            jI, iI = np.divmod(I, self.grid.nx)
-            return self.defl.K[np.abs(j[:, None] - jI[None, :]), np.abs(i[:, None] - iI[None, :])]
+            return self.defl.dense(np.arange(self.n), I)
         return self._K[:, I]
 
     def local_kernel(self, r: int) -> sp.csr_matrix:

@@ -174,12 +174,12 @@ def rough_levels(levels: list[Level], roughness, R: float, a: float) -> None:
     (:mod:`femgear.ehl.transient`) and is refused here with the key that asks for it."""
     if roughness is None:
         return
-    g = levels[-1].grid
-    feats = scene_features(roughness, R, a, extent=(float(g.x[0]), float(g.x[-1])), h=float(g.x[1] - g.x[0]))
-    for (f, _member, moving), key in zip(feats, ("peak", "synthetic") if roughness.peak else ("synthetic",)):
-        if moving:
+    for key in ("peak", "synthetic"):
+        if getattr(roughness, key) is not None and getattr(roughness, key).moving:
             raise SceneError(f"roughness.{key}.moving", "a steady point TEHL takes stationary roughness only "
                              "(set moving = false, or use femgear.ehl.transient for a feature passing through)")
+    g = levels[-1].grid
+    feats = scene_features(roughness, R, a, extent=(float(g.x[0]), float(g.x[-1])), h=float(g.x[1] - g.x[0]))
     for lv in levels:
         total = sum(evaluate(f, lv.X, lv.Y) for f, _m, _mv in feats) if feats else None
         apply_surface(lv, total)
