@@ -7,10 +7,11 @@ The claims of README "femgear against the paper's claims" that studies/wear_cycl
 studies/temperature_rise.py (a 45 K flank temperature rise raises velocity, slightly
 lowers displacement) measure, on the coupled baseline with ``physics.stiffness`` =
 ``pem`` (the paper's energy method) and ``ltca`` (unmodified flanks, as the paper's gear).
-With ``ltca`` the wear and thermal deviations enter as with PEM (contact-line means as
-drive/coast deviation tables, :mod:`femgear.coupling.profile`); the LTCA itself is run
-once per case at the operating load (re-running it on the worn topography each pass is
-not done).  Amplitudes: half peak-to-peak of the member centres, steady state; Δ % against
+With ``pem`` the wear and thermal deviations enter as contact-line means (drive/coast
+deviation tables, :mod:`femgear.coupling.profile`); with ``ltca`` each coupling pass
+re-runs the LTCA on the worn and expanded drive flanks (the compliance is reused;
+:func:`femgear.dynamics.build.with_deviated_tooth_contact`) and the coast flanks take the
+contact-line mean of the thermal expansion.  Amplitudes: half peak-to-peak of the member centres, steady state; Δ % against
 the new gear (wear cases) or against thermal off (45 K).  Prints a table and a JSON line;
 writes ``out/ltca_claims/ltca_claims.json``.
 """

@@ -5,7 +5,11 @@ One iteration:
 1. flank deviations → the drive- and coast-flank deviation tables of each helix over
    one mesh period (:mod:`femgear.coupling.profile`): wear h1 + h2 acts on the loaded
    (drive) flanks only, thermal expansion ζ_T1 + ζ_T2 on both; each enters the
-   dynamics once (:class:`femgear.dynamics.model.MeshDeviation`);
+   dynamics once (:class:`femgear.dynamics.model.MeshDeviation`).  With the ``ltca``
+   stiffness level the drive flanks' deviations instead re-run the loaded tooth contact
+   analysis on the worn and expanded topography (the compliance is reused), whose loaded
+   TE excites the dynamics (:func:`femgear.dynamics.build.with_deviated_tooth_contact`);
+   the coast flanks keep the contact-line mean of −ζ_T;
 2. dynamics with the mesh stiffness, μ(u) and those deviations → the dynamic mesh
    force of each helix over one mesh period (phase average of the steady state);
 3. load sharing along the contact lines → passage-mean load intensity w̄'(u);
@@ -37,8 +41,10 @@ import numpy as np
 
 from femgear.case import Case
 from femgear.coupling.profile import mesh_deviation
-from femgear.dynamics.build import build_model, with_deviation, with_friction
-from femgear.dynamics.model import GearRotorModel
+from femgear.dynamics.build import (
+    build_model, stiffness_source, with_deviated_tooth_contact, with_deviation, with_friction,
+)
+from femgear.dynamics.model import GearRotorModel, MeshDeviation
 from femgear.dynamics.modal import ModalResult, modal_analysis
 from femgear.dynamics.run import DynamicsRun, run_dynamics
 from femgear.errors import ConvergenceError
@@ -122,6 +128,7 @@ class CouplingSetup:
     static_force: float            #: normal force per helix [N]
     n_phase: int = 128
     method: str | None = None      #: integrator; None: the dynamics' default for the model
+    ltca: dict | None = None       #: the unworn LTCA cycle of an ``ltca`` stiffness (re-run on deviated flanks)
 
     @property
     def pair(self):
@@ -138,11 +145,14 @@ class CouplingSetup:
     @classmethod
     def from_case(cls, case: Case, n_phase: int = 128, lubrication: Lubrication | None = None,
                   method: str | None = None, stiffness: MeshStiffness | None = None) -> CouplingSetup:
-        model = build_model(case, stiffness=stiffness, friction=0.0)
+        source = stiffness_source(case, stiffness)
+        model = build_model(case, stiffness=source, friction=0.0)
         c_l = line_stiffness(case, float(np.mean(model.stiffness.k_left)), stiffness)
+        info = getattr(source, "info", None) or {}
         return cls(case=case, model=model, modal=modal_analysis(model),
                    lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
-                   c_l=c_l, static_force=case.operating.normal_force / case.pair.n_helices, n_phase=n_phase, method=method)
+                   c_l=c_l, static_force=case.operating.normal_force / case.pair.n_helices, n_phase=n_phase, method=method,
+                   ltca=info if "model" in info and "excitation" in info else None)
 
 
 @dataclass(frozen=True)
@@ -160,6 +170,7 @@ class CouplingState:
     mesh_force_change: float = math.nan   #: max relative change of the mesh force against the previous pass
     mu_change: float = math.nan           #: max absolute change of μ against the previous pass
     dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)   #: the pass's run
+    lte_peak_to_peak: float = math.nan    #: loaded TE p-p of the deviated flanks (``ltca`` only) [m]
     seconds: float = 0.0
 
     @property
@@ -204,18 +215,33 @@ def _wear(setup: CouplingSetup, force: np.ndarray) -> np.ndarray:
     return np.array([state.h1, state.h2])
 
 
-def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun]:
-    """Dynamic mesh force per helix over one mesh period for the inputs in ``state``."""
+def _deviated_model(setup: CouplingSetup, state: CouplingState) -> tuple[GearRotorModel, MeshDeviation | None, float]:
+    """The model, the deviation tables it still needs, and the LTE p-p of an ``ltca`` re-run (nan without)."""
+    u, wear, zeta = setup.kin.u, state.wear, state.thermal_deviation
+    deviation = mesh_deviation(setup.pair, u, wear.sum(axis=0), zeta.sum(axis=0), setup.case.stagger, setup.n_phase)
+    if setup.ltca is None:
+        return setup.model, deviation, math.nan
+    if deviation is None:
+        return setup.model, None, setup.ltca["lte_peak_to_peak"]
+    from femgear.ltca.level import deviated_cycle
+    from femgear.ltca.separation import path_deviation
+
+    worn = deviated_cycle(setup.ltca, path_deviation(setup.pair, u, wear - zeta))
+    coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)
+    return with_deviated_tooth_contact(setup.model, setup.ltca, worn), coast_only, worn["lte_peak_to_peak"]
+
+
+def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, float]:
+    """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the LTCA's LTE p-p)."""
     u_tab, mu_tab = setup.kin.u, state.mu
     mu = (lambda u: np.interp(u, u_tab, mu_tab)) if np.any(mu_tab > 0) else 0.0
-    deviation = mesh_deviation(setup.pair, u_tab, state.wear.sum(axis=0), state.thermal_deviation.sum(axis=0),
-                               setup.case.stagger, setup.n_phase)
-    model = with_deviation(with_friction(setup.model, mu), deviation)
+    base, deviation, lte = _deviated_model(setup, state)
+    model = with_deviation(with_friction(base, mu), deviation)
     num = setup.case.numerics
     run = run_dynamics(model, method=setup.method or num.dynamics_method, cycles=num.dynamics_cycles,
                        transient_cycles=num.transient_cycles, steps_per_period=num.steps_per_mesh_period,
                        modal=setup.modal)
-    return phase_average(run.response, setup.n_phase), run
+    return phase_average(run.response, setup.n_phase), run, lte
 
 
 def phase_average(res, n_phase: int) -> np.ndarray:
@@ -254,7 +280,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
     yield state
     while True:
         t0 = time.perf_counter()
-        force, run = _dynamics(setup, state)
+        force, run, lte = _dynamics(setup, state)
         wear_new = _wear(setup, force)
         w, mu_new, dT = _contact_response(setup, force, state.removed)
         rise, zeta_new = _thermal(setup, dT)
@@ -262,7 +288,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
         state = CouplingState(state.iteration + 1, force, w, mix(state.mu, mu_new), dT, rise,
                               mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new),
                               float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
-                              float(np.max(np.abs(mu_new - state.mu))), run, time.perf_counter() - t0)
+                              float(np.max(np.abs(mu_new - state.mu))), run, lte, time.perf_counter() - t0)
         for name, value in (("mesh_force", force), ("mu", state.mu), ("wear", state.wear)):
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError("coupling", f"non-finite {name} in iteration {state.iteration}")

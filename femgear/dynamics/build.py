@@ -126,6 +126,32 @@ def tooth_contact_deviation(source) -> MeshDeviation | None:
     return MeshDeviation(drive=e, coast=e.copy())
 
 
+def with_deviated_tooth_contact(model: GearRotorModel, unworn: dict, deviated: dict) -> GearRotorModel:
+    """``model`` (built on the ``ltca`` cycle ``unworn``) excited by the LTCA of deviated flanks ``deviated``.
+
+    ``unworn``/``deviated``: the ``info`` of :func:`femgear.ltca.level.ltca_cycle` and of
+    :func:`femgear.ltca.level.deviated_cycle` (wear, thermal growth).  The stiffness table
+    stays the unworn secant k_s,0 (the structure, its modes and the integrators'
+    propagators stay valid); the drive-flank deviation becomes e'_s = LTE − F_s/k_s,0 of
+    the deviated cycle, so that the mesh law N_s = k_s,0 (δ − e'_s) reproduces the deviated
+    LTCA's own loads and approach at the operating load (the excitation identity of
+    :func:`tooth_contact_deviation` with the unworn secant; only the response to load
+    changes about the operating point keeps the unworn secant).  Wear acts on the drive
+    flanks: the coast flanks keep the unworn e_s.  Band-limited to the unworn cycle's orders.
+    """
+    if model.base_deviation is None:
+        raise ValueError("with_deviated_tooth_contact: the model was not built on an ltca stiffness")
+    k0, exc = unworn["excitation"], deviated["excitation"]
+    n, H = model.base_deviation.drive.shape[1], unworn.get("resolved_orders")
+    rows = []
+    for h in ("left", "right"):
+        k = k0[f"k_secant_{h}"]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            e = np.where(k > 0, exc[f"lte_{h}"] - exc[f"force_{h}"] / np.where(k > 0, k, 1.0), exc[f"lte_{h}"])
+        rows.append(band_limited(e, n, H))
+    return replace(model, base_deviation=MeshDeviation(drive=np.array(rows), coast=model.base_deviation.coast))
+
+
 def mesh_damping(geom: MeshGeometry, M24: np.ndarray, table: StiffnessTable, zeta_m: float) -> np.ndarray:
     """c_s = 2 ζ_m sqrt(k̄_s m_eq,s), m_eq,s = 1/Σ_j g_sj²/m_j [N s/m]."""
     if not 0 <= zeta_m < 1:

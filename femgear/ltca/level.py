@@ -62,8 +62,24 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
     orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
     info = {"ltca": res, "excitation": res.excitation(), "model_seconds": model.seconds,
             "lte_peak_to_peak": res.lte_peak_to_peak(), "force": force, "resolved_orders": orders,
-            "harmonic_change": change}
+            "harmonic_change": change, "model": model, "modifications": modifications,
+            "options": {"n_phases": n_positions, "stagger": stagger, "n_line": n_line}}
     return res, info
+
+
+def deviated_cycle(info: dict, extra) -> dict:
+    """The LTCA ``info`` of :func:`ltca_cycle` re-run with the flank deviation ``extra`` (wear, thermal growth).
+
+    The same model (its compliance is reused: no FE solve), force, modifications, phases and
+    contact points; the resolved mesh orders are kept from the unworn cycle (the contact
+    discretisation, which sets them, does not change).  ``extra``: a
+    :data:`femgear.ltca.separation.Deviation` added to the modifications' separation.
+    """
+    from femgear.ltca.analysis import mesh_cycle
+
+    res = mesh_cycle(info["model"], info["force"], info["modifications"], extra=extra, keep_lines=False,
+                     **info["options"])
+    return {**info, "ltca": res, "excitation": res.excitation(), "lte_peak_to_peak": res.lte_peak_to_peak()}
 
 
 def ltca_options_from_scene(scene) -> dict:

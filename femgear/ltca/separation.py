@@ -59,6 +59,26 @@ def tabulated_deviation(tables: dict) -> Deviation:
     return extra
 
 
+def path_deviation(pair: GearPair, u: np.ndarray, removed: np.ndarray) -> Deviation:
+    """A face-uniform :data:`Deviation` of both members from depths along the path of contact.
+
+    ``removed`` (2, n): normal depth removed from the pinion's and the gear's drive flank
+    (wear +, thermal growth −) at the path positions ``u`` (distance from T₁, ascending) [m],
+    the same on both helices.  The pinion's flank point at u has roll distance ρ₁ = u, the
+    gear's ρ₂ = T₁T₂ − u.
+    """
+    u = np.asarray(u, float)
+    removed = np.asarray(removed, float)
+    if removed.shape != (2, u.size) or u.size < 2 or np.any(np.diff(u) <= 0):
+        raise ValueError("path_deviation: removed must be (2, n) at n >= 2 ascending path positions u")
+    zeta = np.array([0.0, pair.b])
+    tables = {}
+    for helix in ("left", "right"):
+        tables[(helix, 1)] = (u, zeta, np.repeat(removed[0][:, None], 2, axis=1))
+        tables[(helix, 2)] = ((pair.line_of_action - u)[::-1], zeta, np.repeat(removed[1][::-1, None], 2, axis=1))
+    return tabulated_deviation(tables)
+
+
 def _relief(x: np.ndarray, amount: float, length: float, shape: str) -> np.ndarray:
     e = 1.0 if shape == "linear" else 2.0
     return amount * np.clip(x / length, 0.0, None) ** e if amount > 0 else np.zeros_like(x)

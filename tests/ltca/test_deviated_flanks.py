@@ -1,0 +1,84 @@
+"""The LTCA re-run on deviated (worn, expanded) flanks that the coupling loop uses with ``ltca``.
+
+Verification against exact properties of the contact problem: a depth removed uniformly
+from a flank opens every gap by that depth, so the loads and the secant stiffness are
+unchanged and the loaded TE, the no-load TE and the unloaded TE e_s all move by it.
+"""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from femgear.geometry import path_positions
+
+
+@pytest.fixture(scope="module")
+def unworn(coarse_model, baseline_force):
+    from femgear.ltca.analysis import mesh_cycle
+    from femgear.scene.schema import Modifications
+
+    mods = Modifications(tip_relief=3e-6, tip_relief_length=2.5e-3, crowning=5e-6)
+    options = {"n_phases": 16, "stagger": 0.0, "n_line": 8}
+    res = mesh_cycle(coarse_model, baseline_force, mods, keep_lines=False, **options)
+    return {"model": coarse_model, "force": baseline_force, "modifications": mods, "options": options,
+            "resolved_orders": None, "ltca": res, "excitation": res.excitation(),
+            "lte_peak_to_peak": res.lte_peak_to_peak()}
+
+
+def test_path_deviation_reads_each_member_at_its_roll_distance(baseline_pair):
+    """Pinion: ρ₁ = u; gear: ρ₂ = T₁T₂ − u; the same on both helices, uniform over the face."""
+    from femgear.ltca.separation import path_deviation
+
+    p = baseline_pair
+    u = path_positions(p, 41)
+    removed = np.array([2e-6 * (u - u[0]) / np.ptp(u), -1e-6 * (u[-1] - u) / np.ptp(u)])
+    extra = path_deviation(p, u, removed)
+    probe = np.linspace(u[0], u[-1], 17)
+    for helix in ("left", "right"):
+        for zeta in (0.0, 0.3 * p.b, p.b):
+            z = np.full(probe.shape, zeta)
+            assert np.allclose(extra(helix, 1, probe, z), 2e-6 * (probe - u[0]) / np.ptp(u), atol=1e-18)
+            assert np.allclose(extra(helix, 2, p.line_of_action - probe, z), -1e-6 * (u[-1] - probe) / np.ptp(u),
+                               atol=1e-18)
+    with pytest.raises(ValueError, match="removed"):
+        path_deviation(p, u, removed[:1])
+
+
+def test_uniform_removal_moves_the_te_by_its_depth_and_keeps_the_loads(unworn, baseline_pair):
+    from femgear.ltca.level import deviated_cycle
+    from femgear.ltca.separation import path_deviation
+
+    u = path_positions(baseline_pair, 41)
+    depth = 2e-6 + 1e-6                        # pinion 2 µm, gear 1 µm
+    worn = deviated_cycle(unworn, path_deviation(baseline_pair, u, np.array([np.full(u.size, 2e-6),
+                                                                               np.full(u.size, 1e-6)])))
+    a, b = unworn["excitation"], worn["excitation"]
+    for h in ("left", "right"):
+        assert np.allclose(b[f"force_{h}"], a[f"force_{h}"], rtol=1e-9)
+        assert np.allclose(b[f"k_secant_{h}"], a[f"k_secant_{h}"], rtol=1e-7)
+        assert np.allclose(b[f"lte_{h}"] - a[f"lte_{h}"], depth, rtol=1e-7)
+        assert np.allclose(b[f"e_{h}"] - a[f"e_{h}"], depth, rtol=1e-6)
+    assert worn["lte_peak_to_peak"] == pytest.approx(unworn["lte_peak_to_peak"], rel=1e-6)
+
+
+def test_a_worn_cycle_excites_the_drive_flanks_once_and_keeps_the_stiffness(unworn, baseline_pair, baseline_scene):
+    """with_deviated_tooth_contact: e'_s = LTE − F_s/k_s,0 on the drive flanks (here e_s + depth), the unworn
+    coast flanks and the unworn stiffness table (the integrators' propagators stay valid)."""
+    from femgear.case import build_case
+    from femgear.dynamics.build import build_model, with_deviated_tooth_contact
+    from femgear.ltca.level import deviated_cycle
+    from femgear.ltca.separation import path_deviation
+
+    class Source:
+        info = unworn
+
+    model = build_model(build_case(baseline_scene), stiffness=Source, friction=0.0)
+    u = path_positions(baseline_pair, 41)
+    worn = deviated_cycle(unworn, path_deviation(baseline_pair, u, np.full((2, u.size), 0.5e-6)))
+    new = with_deviated_tooth_contact(model, unworn, worn)
+    assert new.stiffness is model.stiffness
+    assert np.allclose(new.base_deviation.drive - model.base_deviation.drive, 1e-6, rtol=1e-6)
+    assert np.array_equal(new.base_deviation.coast, model.base_deviation.coast)
+    with pytest.raises(ValueError, match="ltca"):
+        with_deviated_tooth_contact(replace(model, base_deviation=None), unworn, worn)
