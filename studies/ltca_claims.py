@@ -42,6 +42,7 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
             c = cases[i * len(CASES) + j]
             rows[name] = {f"{m}.{q}.{ax}": C.amplitude(c, m, q, ax) for m, q, ax in KEYS}
             rows[name]["converged"] = c["converged"]
+            rows[name]["lte_um"] = 1e6 * c["lte_peak_to_peak"]     # loaded TE p-p of the deviated flanks (ltca)
         for name, r in rows.items():         # wear against the new gear, 45 K against thermal off
             base = rows["thermal off" if name == "45 K" else "new"]
             r["change_percent"] = {k: 100 * (r[k] / base[k] - 1) for k in (f"{m}.{q}.{ax}" for m, q, ax in KEYS)}
@@ -51,12 +52,12 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
 
 def table(res: dict) -> str:
     head = f"{'stiffness':9s} {'case':>9s} | " + " | ".join(f"{m[0]} {ax}{'[µm]' if q == 'displacement' else '_v[m/s]':8s} (Δ%)"
-                                                           for m, q, ax in KEYS)
+                                                           for m, q, ax in KEYS) + " | LTE p-p [µm]"
     lines = [head, "-" * len(head)]
     for lv, rows in res["levels"].items():
         for name, r in rows.items():
             cells = [f"{r[f'{m}.{q}.{ax}']:10.4g} ({r['change_percent'][f'{m}.{q}.{ax}']:+6.1f})" for m, q, ax in KEYS]
-            lines.append(f"{lv:9s} {name:>9s} | " + " | ".join(cells))
+            lines.append(f"{lv:9s} {name:>9s} | " + " | ".join(cells) + f" | {r['lte_um']:.3f}")
     return "\n".join(lines)
 
 

@@ -82,3 +82,30 @@ def test_a_worn_cycle_excites_the_drive_flanks_once_and_keeps_the_stiffness(unwo
     assert np.array_equal(new.base_deviation.coast, model.base_deviation.coast)
     with pytest.raises(ValueError, match="ltca"):
         with_deviated_tooth_contact(replace(model, base_deviation=None), unworn, worn)
+
+
+def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, baseline_scene):
+    """In the loop with ``ltca`` a uniform 1 µm of pinion wear moves the drive-flank excitation by 1 µm in all
+    (through the re-run LTCA), not 2 µm (LTCA + contact-line mean); a uniform expansion closes the coast flanks."""
+    from types import SimpleNamespace
+
+    from femgear.case import build_case
+    from femgear.coupling.loop import _deviated_model
+    from femgear.dynamics.build import build_model
+
+    class Source:
+        info = unworn
+
+    case = build_case(baseline_scene)
+    model = build_model(case, stiffness=Source, friction=0.0)
+    u = path_positions(baseline_pair, 41)
+    setup = SimpleNamespace(kin=SimpleNamespace(u=u), pair=baseline_pair, case=SimpleNamespace(stagger=0.0),
+                            n_phase=64, ltca=unworn, model=model)
+    wear = np.array([np.full(u.size, 1e-6), np.zeros(u.size)])
+    zeta = np.array([np.zeros(u.size), np.full(u.size, 0.4e-6)])
+    base, extra, lte = _deviated_model(setup, SimpleNamespace(wear=wear, thermal_deviation=zeta))
+    assert np.allclose(base.base_deviation.drive - model.base_deviation.drive, 1e-6 - 0.4e-6, rtol=1e-6)
+    assert np.all(extra.drive == 0) and np.allclose(extra.coast, -0.4e-6, rtol=1e-12)
+    assert lte == pytest.approx(unworn["lte_peak_to_peak"], rel=1e-6)
+    same, none, _ = _deviated_model(setup, SimpleNamespace(wear=0 * wear, thermal_deviation=0 * zeta))
+    assert same is model and none is None
