@@ -88,7 +88,7 @@ class Level:
             return np.zeros((self.n, I.size))
         if self.dim == 2:
             return self.defl.dense(np.arange(self.n), I)
-        return self._K[:, I]
+        return np.ascontiguousarray(self._K[:, I])
 
     def local_kernel(self, r: int) -> sp.csr_matrix:
         """K[:, interior] truncated to offsets <= r (sparse), for preconditioners; cached."""
