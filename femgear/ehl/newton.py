@@ -201,8 +201,12 @@ def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F):
         out[-1] = level.m @ vP
         return out
 
-    dx, its, ok = gmres_right(matvec, lambda r: sla.lu_solve(lu, r, check_finite=False), -F,
-                              _dense_forcing(F), DENSE_REUSE_KRYLOV)
+    getrs = sla.get_lapack_funcs("getrs", (lu[0],))  # lu_solve without its checks
+
+    def psolve(r):
+        return getrs(lu[0], lu[1], r)[0]
+
+    dx, its, ok = gmres_right(matvec, psolve, -F, _dense_forcing(F), DENSE_REUSE_KRYLOV)
     if not ok:
         return None, its
     dx[:-1][act] = -F[:-1][act]
