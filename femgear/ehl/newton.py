@@ -142,7 +142,8 @@ def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
 
     With ``reuse`` (a dict kept by the caller across the solves of a sequence), the LU
     factors of the last Jacobian of the same size are kept and the Newton system is
-    solved by GMRES on the exact Jacobian preconditioned by them; the Jacobian is
+    solved by right-preconditioned GMRES (:mod:`femgear.ehl.krylov`) on the exact
+    Jacobian preconditioned by them; the Jacobian is
     factorised again only when GMRES needs more than :data:`DENSE_REUSE_KRYLOV`
     iterations. A Newton step then costs O(n^2) instead of O(n^3)."""
     Kd = level.dense_kernel()
