@@ -31,8 +31,8 @@ MAX_LEVEL = 8  # 4097 nodes: the finest grid a tol-driven solve may reach (dense
 LIMIT = 3.0  # predictor increments capped at LIMIT x their rms (see _PathHistory)
 # warm-started solves of a sequence stop at this scaled residual: on the 41-position
 # benchmark path (studies/benchmarks/ehl.py) the answers then equal the cold ones (residual
-# 1e-10) to |Hc| 7e-10, |Hmin| 4e-8, |Pmax| 2e-7 relative, and it saves about one finest-
-# level Newton iteration per position against 1e-8
+# 1e-10) to 1.3e-9 (Hc), 8e-8 (Hmin), 8e-7 (Pmax, the outlet spike) relative, and it saves
+# about one finest-level Newton iteration per position against 1e-8
 WARM_RESIDUAL_TOL = 1e-6
 # the coarser level of a warm solve only feeds the two-level error estimate and the fine
 # start: at 1e-4 the estimates move by 1.3 % (Hc) and 0.7 % (Hmin) of themselves on that
@@ -65,6 +65,8 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
     last two solutions on each level: when they end at ``start``, the warm start is the
     secant prediction of :class:`_PathHistory` (fewer Newton iterations); a finest-level
     Newton that fails from the prediction is restarted from the prolonged coarse level.
+    A warm solve stops at the scaled residuals :data:`WARM_RESIDUAL_TOL` (finest level)
+    and :data:`COARSE_WARM_RESIDUAL_TOL` (the level below, which feeds the error estimate).
 
     ``surface``: stationary roughness R(X) in Hertzian units (:mod:`femgear.ehl.surface`),
     a callable f(X) or nodal values on the finest grid; the film is H0 + X^2/2 + D - R.
