@@ -39,6 +39,13 @@ WARM_RESIDUAL_TOL = 1e-6
 # path (an estimate, not a bound; 1e-3 moved them by 5 % and 18 %) and it saves more than
 # half a Newton iteration per solve against 1e-6
 COARSE_WARM_RESIDUAL_TOL = 1e-4
+# a finest-level Newton from the predicted start that has not converged in this many
+# iterations restarts from the prolonged coarse solution: converging warm solves take 2-6;
+# on coarser paths (9-21 positions for the benchmark's mesh cycle) some predictions led
+# Newton into damped steps (alpha 0.03-0.05, residual stuck at 4e-2) for the full
+# max_iter = 60 iterations before the restart (fine iterations on the 21-position path:
+# 431 -> 120)
+WARM_MAX_ITER = 8
 
 
 def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: int = 4,
@@ -97,9 +104,9 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
 
     hist = History()
 
-    def newton(lv: Level, P, H0, residual_tol: float = RESIDUAL_TOL):
-        P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                residual_tol=residual_tol, reuse=reuse)
+    def newton(lv: Level, P, H0, residual_tol: float = RESIDUAL_TOL, iterations: int = max_iter):
+        P, H0, h = newton_dense(lv, P, H0, max_iter=min(iterations, max_iter), tol=newton_tol,
+                                case=case, residual_tol=residual_tol, reuse=reuse)
         hist.extend(h)
         return P, H0
 
@@ -205,7 +212,7 @@ def _fine_warm(fine: Level, predicted: tuple, coarse: tuple, hist: History, newt
     Newton fails from it, from the ``coarse`` solution (nodal P, H0) prolonged (as a cold
     solve)."""
     try:
-        return newton(fine, *predicted, WARM_RESIDUAL_TOL)
+        return newton(fine, *predicted, WARM_RESIDUAL_TOL, WARM_MAX_ITER)
     except ConvergenceError as exc:
         hist.extend(History(**exc.history))
     P = (prolongation_1d(coarse[0].size) @ coarse[0])[fine.interior]

@@ -92,3 +92,28 @@ def test_mesh_path_warm_equals_cold_with_few_factorisations(monkeypatch):
             assert warm.iterations < c.iterations
         prev = warm
     assert count[0] <= len(idx) - 1, count[0]
+
+
+def test_coarse_path_bad_predictions_restart_early():
+    """On an 11-position version of the mesh cycle (steps 4x the benchmark's) the secant
+    prediction of positions 6-9 sends the finest-level Newton into damped steps that do
+    not converge; the warm solve then restarts from the prolonged coarse solution after
+    WARM_MAX_ITER iterations (it used to spend the full max_iter = 60), and still gives
+    the cold answer."""
+    from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
+    from femgear.ehl.line import WARM_MAX_ITER
+
+    oil = EHLOil(eta0=0.02, alpha=2.0e-8, viscosity="roelands", compressible=True)
+    w, R, ue = _mesh_path(11)
+    prev, reuse, restarted = None, {}, 0
+    for i in range(4, 9):
+        r = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, start=prev, reuse=reuse)
+        fine = r.result.history["level"].count(r.result.nodes)
+        assert fine <= 25, (i, fine)  # was 67-69 before the early restart
+        restarted += fine > WARM_MAX_ITER
+        if i >= 6:
+            c = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5).result
+            assert r.result.Hc == pytest.approx(c.Hc, rel=1e-6)
+            assert r.result.Hmin == pytest.approx(c.Hmin, rel=1e-6)
+        prev = r.result
+    assert restarted >= 1  # the case this test is about did occur
