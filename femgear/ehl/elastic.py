@@ -121,6 +121,22 @@ def line_influence(x: np.ndarray, h: float) -> np.ndarray:
     return -(G(d + h / 2) - G(d - h / 2)) / np.pi
 
 
+def line_kernel_interior(x: np.ndarray, h: float) -> np.ndarray:
+    """K[:, 1:-1] of :func:`line_kernel` (the columns of the interior nodes, where P is
+    unknown) as a C-contiguous array, cached (read-only) like the kernel: the dense line
+    Jacobian and its Newton-Krylov products use it at every step of a sequence."""
+    if x.size > 2049:
+        return np.ascontiguousarray(line_influence(x, h)[:, 1:-1])
+    return _line_kernel_interior(int(x.size), float(h))
+
+
+@lru_cache(maxsize=4)
+def _line_kernel_interior(n: int, h: float) -> np.ndarray:
+    K = np.ascontiguousarray(_line_kernel(n, h)[:, 1:-1])
+    K.setflags(write=False)
+    return K
+
+
 @lru_cache(maxsize=4)
 def _line_kernel(n: int, h: float) -> np.ndarray:
     K = line_influence(h * np.arange(n), h)  # depends on offsets only

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from femgear.ehl.elastic import line_kernel, point_deflection
+from femgear.ehl.elastic import line_kernel, line_kernel_interior, point_deflection
 from femgear.ehl.grid import Grid
 from femgear.ehl.reynolds import Linearization, ReynoldsFE
 from femgear.ehl.rheology import Rheology
@@ -88,7 +88,7 @@ class Level:
             return np.zeros((self.n, I.size))
         if self.dim == 2:
             return self.defl.dense(np.arange(self.n), I)
-        return self._K[:, I]
+        return line_kernel_interior(self.X, self.h)  # interior = 1..n-2 on a line
 
     def local_kernel(self, r: int) -> sp.csr_matrix:
         """K[:, interior] truncated to offsets <= r (sparse), for preconditioners; cached."""

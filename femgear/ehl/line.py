@@ -29,11 +29,23 @@ X0_DEFAULT = -4.5
 DEFAULT_LEVEL = 6  # 1025 nodes
 MAX_LEVEL = 8  # 4097 nodes: the finest grid a tol-driven solve may reach (dense Newton)
 LIMIT = 3.0  # predictor increments capped at LIMIT x their rms (see _PathHistory)
-WARM_RESIDUAL_TOL = 1e-8  # warm-started solves of a sequence stop at this scaled residual
+# warm-started solves of a sequence stop at this scaled residual: on the 41-position
+# benchmark path (studies/benchmarks/ehl.py) the answers then equal the cold ones (residual
+# 1e-10) to 1.3e-9 (Hc), 8e-8 (Hmin), 8e-7 (Pmax, the outlet spike) relative, and it saves
+# about one finest-level Newton iteration per position against 1e-8
+WARM_RESIDUAL_TOL = 1e-6
 # the coarser level of a warm solve only feeds the two-level error estimate and the fine
-# start: at 1e-6 its Hc moves < 1e-9 relative (the 41-position benchmark path: 7e-10, the
-# estimates 1e-5 relative) and it saves about one Newton iteration per solve
-COARSE_WARM_RESIDUAL_TOL = 1e-6
+# start: at 1e-4 the estimates move by 1.3 % (Hc) and 0.7 % (Hmin) of themselves on that
+# path (an estimate, not a bound; 1e-3 moved them by 5 % and 18 %) and it saves more than
+# half a Newton iteration per solve against 1e-6
+COARSE_WARM_RESIDUAL_TOL = 1e-4
+# a finest-level Newton from the predicted start that has not converged in this many
+# iterations restarts from the prolonged coarse solution: converging warm solves take 2-6;
+# on coarser paths (9-21 positions for the benchmark's mesh cycle) some predictions led
+# Newton into damped steps (alpha 0.03-0.05, residual stuck at 4e-2) for the full
+# max_iter = 60 iterations before the restart (fine iterations on the 21-position path:
+# 431 -> 120)
+WARM_MAX_ITER = 8
 
 
 def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: int = 4,
@@ -60,6 +72,8 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
     last two solutions on each level: when they end at ``start``, the warm start is the
     secant prediction of :class:`_PathHistory` (fewer Newton iterations); a finest-level
     Newton that fails from the prediction is restarted from the prolonged coarse level.
+    A warm solve stops at the scaled residuals :data:`WARM_RESIDUAL_TOL` (finest level)
+    and :data:`COARSE_WARM_RESIDUAL_TOL` (the level below, which feeds the error estimate).
 
     ``surface``: stationary roughness R(X) in Hertzian units (:mod:`femgear.ehl.surface`),
     a callable f(X) or nodal values on the finest grid; the film is H0 + X^2/2 + D - R.
@@ -90,9 +104,9 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
 
     hist = History()
 
-    def newton(lv: Level, P, H0, residual_tol: float = RESIDUAL_TOL):
-        P, H0, h = newton_dense(lv, P, H0, max_iter=max_iter, tol=newton_tol, case=case,
-                                residual_tol=residual_tol, reuse=reuse)
+    def newton(lv: Level, P, H0, residual_tol: float = RESIDUAL_TOL, iterations: int = max_iter):
+        P, H0, h = newton_dense(lv, P, H0, max_iter=min(iterations, max_iter), tol=newton_tol,
+                                case=case, residual_tol=residual_tol, reuse=reuse)
         hist.extend(h)
         return P, H0
 
@@ -111,13 +125,12 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
                                    for e in acc.error_estimate(per_level).values()):
             break
         fine = make(1.0, k)
-        P = (prolongation_1d(lv.n) @ lv.full(P))[fine.interior]
         n0 = len(hist.residual)
         if got:  # the predicted fine solution is closer than the prolonged coarse one
             P, H0 = _fine_warm(fine, path.fine_start(fine, start, M, L, k, solved[k - 1]),
-                               (P, H0), hist, newton)
+                               solved[k - 1], hist, newton)
         else:
-            P, H0 = newton(fine, P, H0)
+            P, H0 = newton(fine, (prolongation_1d(lv.n) @ lv.full(P))[fine.interior], H0)
         lv = fine
         solved[k] = (lv.full(P), H0)
         per_level.append(_line_summary(lv, P, H0, fac, len(hist.residual) - n0, t0))
@@ -194,14 +207,16 @@ def _warm(start: EHLResult | None, make, lev: int, M, L, fac, hist: History, new
     return lv, P, H0
 
 
-def _fine_warm(fine: Level, predicted: tuple, prolonged: tuple, hist: History, newton):
+def _fine_warm(fine: Level, predicted: tuple, coarse: tuple, hist: History, newton):
     """(P_I, H0) on the finest level of a warm solve from the ``predicted`` start; when
-    Newton fails from it, from the ``prolonged`` coarse solution (as a cold solve)."""
+    Newton fails from it, from the ``coarse`` solution (nodal P, H0) prolonged (as a cold
+    solve)."""
     try:
-        return newton(fine, *predicted, WARM_RESIDUAL_TOL)
+        return newton(fine, *predicted, WARM_RESIDUAL_TOL, WARM_MAX_ITER)
     except ConvergenceError as exc:
         hist.extend(History(**exc.history))
-    return newton(fine, *prolonged, WARM_RESIDUAL_TOL)
+    P = (prolongation_1d(coarse[0].size) @ coarse[0])[fine.interior]
+    return newton(fine, P, coarse[1], WARM_RESIDUAL_TOL)
 
 
 def _scaled_start(level: Level, start: EHLResult) -> np.ndarray:

@@ -28,6 +28,7 @@ import scipy.sparse.linalg as spla
 
 from femgear.errors import ConvergenceError
 from femgear.ehl.grid import prolongation
+from femgear.ehl.krylov import gmres_right
 from femgear.ehl.level import Level
 
 MAX_DP = 1.0
@@ -141,7 +142,8 @@ def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
 
     With ``reuse`` (a dict kept by the caller across the solves of a sequence), the LU
     factors of the last Jacobian of the same size are kept and the Newton system is
-    solved by GMRES on the exact Jacobian preconditioned by them; the Jacobian is
+    solved by right-preconditioned GMRES (:mod:`femgear.ehl.krylov`) on the exact
+    Jacobian preconditioned by them; the Jacobian is
     factorised again only when GMRES needs more than :data:`DENSE_REUSE_KRYLOV`
     iterations. A Newton step then costs O(n^2) instead of O(n^3)."""
     Kd = level.dense_kernel()
@@ -180,39 +182,36 @@ def _dense_forcing(F: np.ndarray) -> float:
 
 
 def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F):
-    """GMRES on the exact (row-scaled) dense-level Jacobian preconditioned by ``lu``;
-    (dx, iterations) or (None, iterations) when it needs more than DENSE_REUSE_KRYLOV."""
+    """Right-preconditioned GMRES (:func:`femgear.ehl.krylov.gmres_right`) on the exact
+    (row-scaled) dense-level Jacobian with ``lu`` as preconditioner; (dx, iterations) or
+    (None, iterations) when it needs more than DENSE_REUSE_KRYLOV. The Jacobian is applied
+    on full-length vectors (the boundary rows are dropped after the product): no sparse
+    slicing per Newton step."""
     I = level.interior
-    if I.size and I[-1] - I[0] + 1 == I.size:  # contiguous (line contact): slicing is cheaper
-        I = slice(int(I[0]), int(I[-1]) + 1)
-    JP = lin.JP.tocsr()[I][:, I]
-    JH = lin.JH.tocsr()[I]
-    colH = np.asarray(JH.sum(axis=1)).ravel()
-    n = F.size
+    JP, JH = lin.JP, lin.JH
+    colH = (JH @ np.ones(level.n))[I]
+    full = np.zeros(level.n)
 
     def matvec(v):
         vP = v[:-1]
         out = np.empty_like(v)
-        r = s * (JP @ vP + JH @ (Kd @ vP) + colH * v[-1])
+        full[I] = vP
+        r = s * ((JP @ full + JH @ (Kd @ vP))[I] + colH * v[-1])
         r[act] = vP[act]
         out[:-1] = r
         out[-1] = level.m @ vP
         return out
 
-    count = [0]
+    getrs = sla.get_lapack_funcs("getrs", (lu[0],))  # lu_solve without its checks
 
-    def cb(_):
-        count[0] += 1
+    def psolve(r):
+        return getrs(lu[0], lu[1], r)[0]
 
-    A = spla.LinearOperator((n, n), matvec=matvec, dtype=float)
-    M = spla.LinearOperator((n, n), matvec=lambda r: sla.lu_solve(lu, r, check_finite=False),
-                            dtype=float)
-    dx, info = spla.gmres(A, -F, M=M, rtol=_dense_forcing(F), atol=0.0, restart=DENSE_REUSE_KRYLOV,
-                          maxiter=1, callback=cb, callback_type="pr_norm")
-    if info != 0 or not np.all(np.isfinite(dx)):
-        return None, count[0]
+    dx, its, ok = gmres_right(matvec, psolve, -F, _dense_forcing(F), DENSE_REUSE_KRYLOV)
+    if not ok:
+        return None, its
     dx[:-1][act] = -F[:-1][act]
-    return dx, count[0]
+    return dx, its
 
 
 class _PrecLevel:

@@ -44,3 +44,76 @@ def test_secant_prediction_beats_the_previous_solution():
     exact = solve_line(Ms[3], Ls[3], level=5)
     assert abs(H0_pred - exact.H0) < 0.5 * abs(prev.H0 - exact.H0)
     assert np.abs(P_pred - exact.P).mean() < 0.5 * np.abs(prev.P - exact.P).mean()
+
+
+def _mesh_path(n=41):
+    """The gear-mesh path of studies/benchmarks/ehl.py (load share 0.7-1 of 300 kN/m,
+    R 6-16 mm, u_e 10-12 m/s; Roelands + Dowson-Higginson)."""
+    s = np.linspace(0.0, 1.0, n)
+    return 3e5 * (0.7 + 0.3 * np.sin(np.pi * s)), 0.006 + 0.01 * s, 10.0 + 2.0 * s
+
+
+def test_mesh_path_warm_equals_cold_with_few_factorisations(monkeypatch):
+    """Positions 30-37 of the benchmark's 41-position gear-mesh path at level 5, where the
+    outlet pressure spike moves about a cell per position: each warm solve gives the cold
+    Hc and Hmin to 1e-6 (Pmax, the spike, to 1e-5) and the same error estimates to 5 %,
+    in fewer Newton iterations, and the kept LU factors serve most Newton steps (the
+    Jacobian is factorised on at most one of the two levels per position; a left-
+    preconditioned GMRES refactorised 2-3 times per position)."""
+    import scipy.linalg as sla
+
+    import femgear.ehl.newton as nw
+    from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
+
+    oil = EHLOil(eta0=0.02, alpha=2.0e-8, viscosity="roelands", compressible=True)
+    w, R, ue = _mesh_path()
+    idx = range(30, 38)
+    cold = {i: solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5).result for i in idx}
+    count, factor = [0], sla.lu_factor
+
+    def lu_factor(*a, **k):
+        count[0] += 1
+        return factor(*a, **k)
+
+    prev, reuse = None, {}
+    for i in idx:
+        if i == idx[1]:
+            count[0] = 0
+            monkeypatch.setattr(nw.sla, "lu_factor", lu_factor)
+        warm = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, start=prev,
+                                      reuse=reuse).result
+        c = cold[i]
+        assert warm.Hc == pytest.approx(c.Hc, rel=1e-6)
+        assert warm.Hmin == pytest.approx(c.Hmin, rel=1e-6)
+        assert warm.Pmax == pytest.approx(c.Pmax, rel=1e-5)
+        for k in ("Hc", "Hmin"):
+            assert warm.error_estimate[k] == pytest.approx(c.error_estimate[k], rel=0.05)
+        if prev is not None:
+            assert warm.iterations < c.iterations
+        prev = warm
+    assert count[0] <= len(idx) - 1, count[0]
+
+
+def test_coarse_path_bad_predictions_restart_early():
+    """On an 11-position version of the mesh cycle (steps 4x the benchmark's) the secant
+    prediction of positions 6-9 sends the finest-level Newton into damped steps that do
+    not converge; the warm solve then restarts from the prolonged coarse solution after
+    WARM_MAX_ITER iterations (it used to spend the full max_iter = 60), and still gives
+    the cold answer."""
+    from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
+    from femgear.ehl.line import WARM_MAX_ITER
+
+    oil = EHLOil(eta0=0.02, alpha=2.0e-8, viscosity="roelands", compressible=True)
+    w, R, ue = _mesh_path(11)
+    prev, reuse, restarted = None, {}, 0
+    for i in range(4, 9):
+        r = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, start=prev, reuse=reuse)
+        fine = r.result.history["level"].count(r.result.nodes)
+        assert fine <= 25, (i, fine)  # was 67-69 before the early restart
+        restarted += fine > WARM_MAX_ITER
+        if i >= 6:
+            c = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5).result
+            assert r.result.Hc == pytest.approx(c.Hc, rel=1e-6)
+            assert r.result.Hmin == pytest.approx(c.Hmin, rel=1e-6)
+        prev = r.result
+    assert restarted >= 1  # the case this test is about did occur
