@@ -134,10 +134,10 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
         src_shear = np.zeros_like(src_shear)
         a_comp = np.zeros_like(a_comp)
     c = props.c_oil
-    A, idx, iq1, iq2 = _energy_matrix(m, G, a_comp, dx, dz, c, props.k_oil, J1, J2)
+    A, far, idx, iq1, iq2 = _energy_matrix(m, G, a_comp, dx, dz, c, props.k_oil, J1, J2)
     rhs = np.zeros(A.shape[0])
     rhs[idx] = src_shear + a_comp * T_bulk
-    sol = spla.spsolve(A, rhs)
+    sol = linear_solve(A, far, rhs, np.r_[idx.ravel(), iq1, iq2], idx.size)
     if not np.all(np.isfinite(sol)):
         raise ConvergenceError("tehl energy", "non-finite temperatures")
     th = sol[idx]
@@ -154,9 +154,50 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
                        tau_poiseuille=0.5 * h * dpdx, heat=heat_d)
 
 
+JAEGER_BAND = 2      # cells of the Jaeger operators kept in the preconditioner
+KRYLOV = 40          # GMRES iterations allowed on it (measured 5-9)
+ERROR_K = 1e-7       # accepted temperature error estimate [K] (direct solves agree to ~1e-8 K)
+
+
+def linear_solve(A: sp.csc_matrix, far: sp.csc_matrix, rhs: np.ndarray, order: np.ndarray,
+                 n_theta: int) -> np.ndarray:
+    """A x = rhs for the energy matrix A = near + ``far`` (``far``: the entries of the dense
+    Jaeger operators more than ``JAEGER_BAND`` cells off the diagonal).
+
+    GMRES (Saad & Schultz 1986) on A, preconditioned by the sparse LU (SuperLU, minimum
+    degree on A + A^T, unknowns permuted by ``order``: the ``n_theta`` film temperatures
+    first, then the wall fluxes) of the near part: the Abel kernel 1/sqrt(x - xi) of the far
+    field is smooth, so that GMRES needs 5-9 iterations, and the factorisation has a tenth
+    of the fill of the full matrix (27k against 207k entries at 192 x 8 cells; 1.4 ms against
+    24 ms).  Accepted when the error estimate M^-1 (rhs - A x) is below ``ERROR_K`` on the
+    temperatures and 1e-8 relative on the fluxes (then added as a last correction);
+    otherwise the full matrix is factorised."""
+    near = A - far
+    lu = spla.splu(near[order][:, order].tocsc(), permc_spec="MMD_AT_PLUS_A")
+    n = A.shape[0]
+
+    def precondition(r):
+        y = np.empty_like(r)
+        y[order] = lu.solve(r[order])
+        return y
+
+    x, _ = spla.gmres(A, rhs, x0=precondition(rhs), M=spla.LinearOperator((n, n), matvec=precondition),
+                      rtol=1e-12, atol=0.0, restart=KRYLOV, maxiter=1)
+    err = precondition(rhs - A @ x)
+    th, q = order[:n_theta], order[n_theta:]
+    scale = max(float(np.max(np.abs(x[q]))), 1e-300) if q.size else 1.0
+    if (np.all(np.isfinite(err)) and float(np.max(np.abs(err[th]))) < ERROR_K
+            and (not q.size or float(np.max(np.abs(err[q]))) < 1e-8 * scale)):
+        return x + err
+    x = np.empty_like(rhs)
+    x[order] = spla.splu(A[order][:, order].tocsc(), permc_spec="MMD_AT_PLUS_A").solve(rhs[order])
+    return x
+
+
 def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2):
     """Upwind finite-volume matrix of the film energy equation with the two Jaeger walls:
-    unknowns theta (nt, nz) then the wall fluxes q1, q2 per cell; (A, idx, iq1, iq2)."""
+    unknowns theta (nt, nz) then the wall fluxes q1, q2 per cell; (A, far, idx, iq1, iq2),
+    ``far`` the part of A from Jaeger entries more than ``JAEGER_BAND`` cells off the diagonal."""
     nt, nz = a_comp.shape
     n_u = nz + 2
     N = nt * n_u
@@ -192,11 +233,15 @@ def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2):
     g = 2 * k_f / dz
     add(idx[:, 0], iq1, dx)
     add(idx[:, -1], iq2, dx)
+    far_r, far_c, far_v = [], [], []
     for iq, J, edge in ((iq1, J1, idx[:, 0]), (iq2, J2, idx[:, -1])):
         gJ = g[:, None] * J
         gJ[np.diag_indices(nt)] += 1.0
         r, cc = np.nonzero(gJ)
         add(iq[r], iq[cc], gJ[r, cc])
         add(iq, edge, -g)
+        k = np.abs(r - cc) > JAEGER_BAND
+        far_r.append(iq[r[k]]), far_c.append(iq[cc[k]]), far_v.append(gJ[r[k], cc[k]])
     A = sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(N, N))
-    return A, idx, iq1, iq2
+    far = sp.csc_matrix((np.concatenate(far_v), (np.concatenate(far_r), np.concatenate(far_c))), shape=(N, N))
+    return A, far, idx, iq1, iq2
