@@ -27,8 +27,9 @@ moving-heat-source solution as a boundary operator (Carslaw & Jaeger, *Conductio
 Heat in Solids*, 2nd ed. 1959, §10.7; Jaeger 1942): the surface temperature rise of body j is
 θ_j(x) = ∫ q_j(ξ)/√(x − ξ) dξ / (B_j √(π |v_j|)), B_j = √(k ρ c), upstream side first
 (the Abel matrix of :mod:`femgear.lubrication.flash`).  q_j = 2 k_f (θ_wall cell − θ_j)/Δz.
-All relations are linear in the temperature once viscosities are frozen: one sparse
-solve per thermal iteration.
+All relations are linear in the temperature once viscosities are frozen: one linear
+solve per thermal iteration (:func:`linear_solve`: the film with the near part of the
+Jaeger operators factorised, their dense far field by iterative refinement).
 """
 
 from __future__ import annotations
