@@ -135,10 +135,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     res = iso.result
     b, ph = iso.a, iso.ph
     hs = b * b / R
-    rheo = ThermalRheology(pr.line_alpha_bar(res.M, res.L), viscosity=ehl_oil.viscosity, ph=ph,
-                           z=ehl_oil.roelands_z() if ehl_oil.viscosity == "roelands" else 0.68,
-                           compressible=compressible, T_bulk=T_bulk, s0=oil.s0 if oil.model == "roelands" else 0.0,
-                           beta_t=oil.beta_t, expansion=oil.expansion, T_ref=oil.T0)
+    rheo = _thermal_rheology(res, ehl_oil, oil, ph, compressible, T_bulk)
     lengths = (X1 - x0) * b
 
     def cells_of(nt):  # thermal finite-volume band: faces, centres, Jaeger operators
@@ -191,6 +188,14 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     xf, xc = stages[-1][1][:2]
     film = stages[-1][0]
     return _result(st, theta, iso, film.X, film.P, film.H, b, ph, hs, xf, xc, w, T_bulk, its, newton_its, t0, t_iso)
+
+
+def _thermal_rheology(res, ehl_oil: EHLOil, oil: OilLaw, ph: float, compressible: bool, T_bulk: float):
+    """The Reynolds rheology of the isothermal solve ``res`` with the temperature hook."""
+    return ThermalRheology(pr.line_alpha_bar(res.M, res.L), viscosity=ehl_oil.viscosity, ph=ph,
+                           z=ehl_oil.roelands_z() if ehl_oil.viscosity == "roelands" else 0.68,
+                           compressible=compressible, T_bulk=T_bulk, s0=oil.s0 if oil.model == "roelands" else 0.0,
+                           beta_t=oil.beta_t, expansion=oil.expansion, T_ref=oil.T0)
 
 
 class _Film:
