@@ -71,8 +71,8 @@ class TEHLResult:
     mu_couette: float         #: ∫τ_c dx / w', signed like v2 − v1 [-]
     mu_poiseuille: float      #: ∫(h/2) p' dx / w' (rolling part) [-]
     heat: dict                #: heat flows [W/m] and the relative balance error
-    iterations: int           #: thermal iterations
-    newton_iterations: int
+    iterations: int           #: thermal iterations (energy solves), the coarse stage included
+    newton_iterations: int    #: Newton steps of the thermal re-solves, both grids
     seconds: float
     seconds_isothermal: float
     b: float                  #: Hertz half-width [m]
