@@ -27,8 +27,9 @@ moving-heat-source solution as a boundary operator (Carslaw & Jaeger, *Conductio
 Heat in Solids*, 2nd ed. 1959, §10.7; Jaeger 1942): the surface temperature rise of body j is
 θ_j(x) = ∫ q_j(ξ)/√(x − ξ) dξ / (B_j √(π |v_j|)), B_j = √(k ρ c), upstream side first
 (the Abel matrix of :mod:`femgear.lubrication.flash`).  q_j = 2 k_f (θ_wall cell − θ_j)/Δz.
-All relations are linear in the temperature once viscosities are frozen: one sparse
-solve per thermal iteration.
+All relations are linear in the temperature once viscosities are frozen: one linear
+solve per thermal iteration (:func:`linear_solve`: the film with the near part of the
+Jaeger operators factorised, their dense far field by iterative refinement).
 """
 
 from __future__ import annotations
@@ -134,14 +135,14 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
         src_shear = np.zeros_like(src_shear)
         a_comp = np.zeros_like(a_comp)
     c = props.c_oil
-    A, idx, iq1, iq2 = _energy_matrix(m, G, a_comp, dx, dz, c, props.k_oil, J1, J2)
-    rhs = np.zeros(A.shape[0])
-    rhs[idx] = src_shear + a_comp * T_bulk
-    sol = spla.spsolve(A, rhs)
+    args = (m, G, a_comp, dx, dz, c, props.k_oil, J1, J2)
+    rhs = np.zeros(nt * (nz + 2))
+    rhs[:nt * nz] = (src_shear + a_comp * T_bulk).ravel()
+    sol = linear_solve(args, rhs, nt * nz)
     if not np.all(np.isfinite(sol)):
         raise ConvergenceError("tehl energy", "non-finite temperatures")
-    th = sol[idx]
-    q1, q2 = sol[iq1], sol[iq2]
+    th = sol[:nt * nz].reshape(nt, nz)
+    q1, q2 = sol[nt * nz:nt * (nz + 1)], sol[nt * (nz + 1):]
     gen_shear = float(src_shear.sum())
     gen_comp = float(np.sum(a_comp * (T_bulk + th)))
     conv = float(c * (np.sum(np.maximum(m[-1], 0) * th[-1]) - np.sum(np.minimum(m[0], 0) * th[0])))
@@ -154,14 +155,69 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
                        tau_poiseuille=0.5 * h * dpdx, heat=heat_d)
 
 
-def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2):
-    """Upwind finite-volume matrix of the film energy equation with the two Jaeger walls:
-    unknowns theta (nt, nz) then the wall fluxes q1, q2 per cell; (A, idx, iq1, iq2)."""
+JAEGER_BAND = 2      # cells of the Jaeger operators kept in the preconditioner
+SWEEPS = 30          # preconditioned Richardson sweeps allowed (measured 9-11)
+DIRECT_MAX = 1000    # up to this many unknowns a direct solve is cheaper (measured: 3.3 vs 3.5 ms at 960)
+
+
+def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int) -> np.ndarray:
+    """The energy system of :func:`_energy_matrix` (``args``) for ``rhs``: the ``n_theta``
+    film temperatures, then the wall fluxes of body 1 and body 2.
+
+    Systems of up to ``DIRECT_MAX`` unknowns (the point contact's rows, the coarse stage of
+    the nested line loop) by a direct sparse solve (SuperLU).  Larger ones split the
+    matrix A = N + F: N, the film with the Jaeger operators cut to ``JAEGER_BAND`` cells
+    about the diagonal, is factorised (sparse LU, minimum degree on N + N^T: a tenth of the
+    fill of A, 27k against 207k entries at 192 x 8 cells; 1.4 ms against 24 ms); F, the far
+    field of the Abel kernel 1/sqrt(x - xi) (smooth), is applied as two dense products.
+    Preconditioned Richardson iteration x += N^-1 (rhs - A x) (iterative refinement with an
+    approximate factorisation, Golub & Van Loan, *Matrix Computations*, 4th ed. §3.5.3)
+    contracts the error 6-8 times per sweep; it stops when the correction is below 1e-9 K
+    on the temperatures and 1e-10 relative on the fluxes (direct solves agree to ~1e-8 K),
+    otherwise A is factorised."""
+    if rhs.size <= DIRECT_MAX:
+        return spla.spsolve(_energy_matrix(*args), rhs)
+    near = _energy_matrix(*args, band=JAEGER_BAND)
+    lu = spla.splu(near, permc_spec="MMD_AT_PLUS_A")
+    far = _jaeger_far(args[-2], args[-1], 2 * args[6] / args[4], n_theta)
+    x = lu.solve(rhs)
+    last = np.inf
+    for _ in range(SWEEPS):
+        d = lu.solve(rhs - near @ x - far(x))
+        x += d
+        dt, dq = float(np.max(np.abs(d[:n_theta]))), float(np.max(np.abs(d[n_theta:])))
+        if not np.isfinite(dt + dq) or dt > 4 * last:
+            break
+        if dt < 1e-9 and dq <= 1e-10 * float(np.max(np.abs(x[n_theta:]))):
+            return x
+        last = dt
+    return spla.splu(_energy_matrix(*args), permc_spec="MMD_AT_PLUS_A").solve(rhs)
+
+
+def _jaeger_far(J1: np.ndarray, J2: np.ndarray, g: np.ndarray, n_theta: int):
+    """x -> F x: the Jaeger entries more than ``JAEGER_BAND`` cells off the diagonal, rows
+    of the wall fluxes (g J q), as dense products."""
+    nt = J1.shape[0]
+    i = np.arange(nt)
+    cut = np.abs(i[:, None] - i[None, :]) > JAEGER_BAND
+    F1, F2 = g[:, None] * np.where(cut, J1, 0.0), g[:, None] * np.where(cut, J2, 0.0)
+
+    def apply(x):
+        out = np.zeros_like(x)
+        out[n_theta:n_theta + nt] = F1 @ x[n_theta:n_theta + nt]
+        out[n_theta + nt:] = F2 @ x[n_theta + nt:]
+        return out
+    return apply
+
+
+def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2, band: int | None = None):
+    """Upwind finite-volume matrix (CSC) of the film energy equation with the two Jaeger
+    walls: unknowns theta (nt, nz) cell by cell, then the wall fluxes q1 and q2 per cell;
+    ``band``: the Jaeger operators cut to that many cells about the diagonal (None: all)."""
     nt, nz = a_comp.shape
-    n_u = nz + 2
-    N = nt * n_u
-    idx = np.arange(nt)[:, None] * n_u + np.arange(nz)[None, :]  # theta unknowns
-    iq1, iq2 = np.arange(nt) * n_u + nz, np.arange(nt) * n_u + nz + 1
+    N = nt * (nz + 2)
+    idx = np.arange(nt * nz).reshape(nt, nz)                     # theta unknowns
+    iq1, iq2 = nt * nz + np.arange(nt), nt * (nz + 1) + np.arange(nt)
     rows, cols, vals = [], [], []
 
     def add(r, cc, v):
@@ -192,11 +248,16 @@ def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2):
     g = 2 * k_f / dz
     add(idx[:, 0], iq1, dx)
     add(idx[:, -1], iq2, dx)
+    if band is None:
+        r, cc = np.nonzero(np.ones((nt, nt), dtype=bool) if nt else np.zeros((0, 0), dtype=bool))
+    else:
+        r = np.repeat(np.arange(nt), 2 * band + 1)
+        cc = r + np.tile(np.arange(-band, band + 1), nt)
+        keep = (cc >= 0) & (cc < nt)
+        r, cc = r[keep], cc[keep]
     for iq, J, edge in ((iq1, J1, idx[:, 0]), (iq2, J2, idx[:, -1])):
-        gJ = g[:, None] * J
-        gJ[np.diag_indices(nt)] += 1.0
-        r, cc = np.nonzero(gJ)
-        add(iq[r], iq[cc], gJ[r, cc])
+        v = g[r] * J[r, cc] + (r == cc)
+        nz_ = v != 0.0
+        add(iq[r[nz_]], iq[cc[nz_]], v[nz_])
         add(iq, edge, -g)
-    A = sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(N, N))
-    return A, idx, iq1, iq2
+    return sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(N, N))

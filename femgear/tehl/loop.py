@@ -44,8 +44,11 @@ def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> n
 
 
 def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol: float, relax: float,
-                 max_step: float, max_rise: float, max_iter: int, case: str, depth: int = 5):
-    """Returns (state, θ, thermal iterations, Newton iterations)."""
+                 max_step: float, max_rise: float, max_iter: int, case: str, depth: int = 5,
+                 solved: bool = True):
+    """Returns (state, θ, thermal iterations, Newton iterations).  ``solved`` = False: the
+    EHL state that ``energy`` sees is only a prediction (a prolonged coarse-grid solution),
+    not yet re-solved at θ; the loop then does not stop before one ``resolve``."""
     history: list[float] = []
     d_theta: list[np.ndarray] = []
     d_res: list[np.ndarray] = []
@@ -57,7 +60,7 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
         history.append(change)
         if not np.isfinite(change):
             raise ConvergenceError(case, "non-finite temperatures", {"temperature_change": history})
-        if change < tol:
+        if change < tol and solved:
             return st, new, it, newton_its
         if len(history) > 1 and change > history[-2]:
             beta = max(0.5 * beta, 0.05)
@@ -77,6 +80,7 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
         for attempt in range(4):
             try:
                 newton_its += resolve(theta + step)
+                solved = True
                 break
             except ConvergenceError as exc:
                 if attempt == 3:

@@ -1,12 +1,15 @@
 """Benchmark: cost of a line-contact TEHL solve against the isothermal one, and a TEHL map.
 
-    python studies/benchmarks/tehl.py [--levels 4,5,6] [--repeats 3] [--samples 12] [--quick]
+    python studies/benchmarks/tehl.py [--levels 4,5,6] [--repeats 5] [--samples 12] [--quick] [--line-only]
 
 1. At a mid-path contact of the paper baseline (w' = 84.3 kN/m, R = 12.3 mm, u_e = 1.09 m/s,
-   oil at 313 K) and SRR 0, 0.3, 1.0: median wall time of the isothermal FE line EHL
+   oil at 313 K) and SRR 0, 0.3, 1.0: wall time of the isothermal FE line EHL
    (:func:`femgear.ehl.dimensional.solve_line_dimensional`) and of the TEHL solve
    (:func:`femgear.tehl.solve_tehl_line`, which includes its isothermal start) per grid level,
-   and their ratio (issue 5 target: ≤ ~5×).
+   timed in alternation (iso, TEHL, iso, TEHL, ...: a shared machine's load hits both
+   alike), medians and the median of the per-pair ratios (issue 16 target: ≤ 2×); beside
+   it the TEHL loop on the fine grid alone (``coarse=False``, the loop before the nested
+   iteration) and the differences of the two answers (h_c, h_min, μ, peak rise).
 2. Point contact at the seed paper's benchmark condition (500 N, 10 m/s, 80 °C, R = 20 mm
    assumed): isothermal FE point EHL vs :func:`femgear.tehl.point.solve_tehl_point` at grid
    level ``--point-level`` (2 = 65 x 65), SRR 0 and 0.3.
@@ -42,35 +45,70 @@ def _median_time(fn, repeats):
     return float(np.median(ts)), v
 
 
-def main() -> dict:
+def _pairs(iso, tehl, repeats):
+    """Alternating timings: (median iso [s], median tehl [s], median of the ratios, last result)."""
+    a, b = [], []
+    for _ in range(repeats):
+        t = time.perf_counter()
+        iso()
+        a.append(time.perf_counter() - t)
+        t = time.perf_counter()
+        r = tehl()
+        b.append(time.perf_counter() - t)
+    a, b = np.array(a), np.array(b)
+    return float(np.median(a)), float(np.median(b)), float(np.median(b / a)), r
+
+
+def _line_rows(levels, repeats, setup, oil):
+    """Part 1: the line TEHL against the isothermal solve, nested and on the fine grid alone."""
     from femgear.ehl.dimensional import solve_line_dimensional
-    from femgear.scene import load_scene
     from femgear.tehl import solve_tehl_line
+
+    rows = []
+    print(f"{'level':>5} {'SRR':>5} {'iso [s]':>8} {'tehl [s]':>8} {'ratio':>6} {'fine-only':>9} {'its':>4} "
+          f"{'newton':>6} {'dT [K]':>7} {'mu':>7} {'d hc':>8} {'d hmin':>8} {'d mu':>8} {'d dT':>6}")
+    for lev in levels:
+        def iso():
+            return solve_line_dimensional(W, R, UE, setup["E_red"], oil, level=lev)
+        for srr in (0.0, 0.3, 1.0):
+            t_iso, t_th, ratio, r = _pairs(iso, lambda: solve_tehl_line(W, R, UE, srr, T0, level=lev, **setup),
+                                           repeats)
+            _, t_pl, ratio_pl, p = _pairs(iso, lambda: solve_tehl_line(W, R, UE, srr, T0, level=lev, coarse=False,
+                                                                       **setup), repeats)
+            d = {"hc": r.hc / p.hc - 1, "hmin": r.hmin / p.hmin - 1, "mu": r.mu / p.mu - 1 if p.mu else 0.0,
+                 "dT": r.dT_max - p.dT_max}
+            rows.append({"level": lev, "srr": srr, "isothermal_s": t_iso, "tehl_s": t_th, "ratio": ratio,
+                         "fine_only_s": t_pl, "fine_only_ratio": ratio_pl, "thermal_iterations": r.iterations,
+                         "newton_iterations": r.newton_iterations, "dT_max": r.dT_max, "mu": r.mu,
+                         "hc": r.hc, "hmin": r.hmin, "vs_fine_only": d})
+            print(f"{lev:5d} {srr:5.2f} {t_iso:8.3f} {t_th:8.3f} {ratio:6.2f} {ratio_pl:9.2f} {r.iterations:4d} "
+                  f"{r.newton_iterations:6d} {r.dT_max:7.2f} {r.mu:7.4f} {d['hc']:8.1e} {d['hmin']:8.1e} "
+                  f"{d['mu']:8.1e} {d['dT']:6.3f}")
+    return rows
+
+
+def main() -> dict:
+    from femgear.scene import load_scene
     from femgear.tehl.line import ehl_oil_at
     from femgear.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes, tehl_setup
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--levels", default="4,5,6")
-    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--repeats", type=int, default=5)
     ap.add_argument("--samples", type=int, default=12)
     ap.add_argument("--point-level", type=int, default=2)
     ap.add_argument("--quick", action="store_true", help="level 4, one repeat, a 32-point map (CI)")
+    ap.add_argument("--line-only", action="store_true", help="part 1 only (the line TEHL against the isothermal)")
     args = ap.parse_args()
     levels = [4] if args.quick else [int(v) for v in args.levels.split(",")]
     repeats = 1 if args.quick else args.repeats
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
     setup = tehl_setup(scene)
     oil = ehl_oil_at(setup["oil"], T0)
-    rows = []
-    print(f"{'level':>5} {'SRR':>5} {'iso [s]':>8} {'tehl [s]':>8} {'ratio':>6} {'thermal its':>11} {'dT [K]':>7} {'mu':>7}")
-    for lev in levels:
-        t_iso, _ = _median_time(lambda: solve_line_dimensional(W, R, UE, setup["E_red"], oil, level=lev), repeats)
-        for srr in (0.0, 0.3, 1.0):
-            t_th, r = _median_time(lambda: solve_tehl_line(W, R, UE, srr, T0, level=lev, **setup), repeats)
-            rows.append({"level": lev, "srr": srr, "isothermal_s": t_iso, "tehl_s": t_th, "ratio": t_th / t_iso,
-                         "thermal_iterations": r.iterations, "dT_max": r.dT_max, "mu": r.mu})
-            print(f"{lev:5d} {srr:5.2f} {t_iso:8.3f} {t_th:8.3f} {t_th / t_iso:6.2f} {r.iterations:11d} "
-                  f"{r.dT_max:7.1f} {r.mu:7.4f}")
+    rows = _line_rows(levels, repeats, setup, oil)
+    if args.line_only:
+        print(json.dumps({"solve": rows}))
+        return {"solve": rows}
     from femgear.ehl.dimensional import solve_point_dimensional
     from femgear.tehl.point import solve_tehl_point
 
