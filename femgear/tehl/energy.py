@@ -157,16 +157,13 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
 
 JAEGER_BAND = 2      # cells of the Jaeger operators kept in the preconditioner
 SWEEPS = 30          # preconditioned Richardson sweeps allowed (measured 9-11)
-DIRECT_MAX = 1000    # up to this many unknowns a direct solve is cheaper (measured: 3.3 vs 3.5 ms at 960)
 
 
 def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int) -> np.ndarray:
     """The energy system of :func:`_energy_matrix` (``args``) for ``rhs``: the ``n_theta``
     film temperatures, then the wall fluxes of body 1 and body 2.
 
-    Systems of up to ``DIRECT_MAX`` unknowns (the point contact's rows, the coarse stage of
-    the nested line loop) by a direct sparse solve (SuperLU).  Larger ones split the
-    matrix A = N + F: N, the film with the Jaeger operators cut to ``JAEGER_BAND`` cells
+    The matrix is split A = N + F: N, the film with the Jaeger operators cut to ``JAEGER_BAND`` cells
     about the diagonal, is factorised (sparse LU, minimum degree on N + N^T: a tenth of the
     fill of A, 27k against 207k entries at 192 x 8 cells; 1.4 ms against 24 ms); F, the far
     field of the Abel kernel 1/sqrt(x - xi) (smooth), is applied as two dense products.
@@ -174,9 +171,10 @@ def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int) -> np.ndarray:
     approximate factorisation, Golub & Van Loan, *Matrix Computations*, 4th ed. §3.5.3)
     contracts the error 6-8 times per sweep; it stops when the correction is below 1e-9 K
     on the temperatures and 1e-10 relative on the fluxes (direct solves agree to ~1e-8 K),
-    otherwise A is factorised."""
-    if rhs.size <= DIRECT_MAX:
-        return spla.spsolve(_energy_matrix(*args), rhs)
+    otherwise A is factorised.  Also the smaller systems (the point contact's rows, the
+    coarse stage of the nested line loop; ~650-960 unknowns) are solved this way: a direct
+    sparse solve of A cost more there (line level 5, SRR 1: TEHL/isothermal 2.56 -> 2.23x;
+    point TEHL level 2, SRR 0.3: 8.2-9.0 -> 7.0-7.8 s; answers equal to 1e-12 relative)."""
     near = _energy_matrix(*args, band=JAEGER_BAND)
     lu = spla.splu(near, permc_spec="MMD_AT_PLUS_A")
     far = _jaeger_far(args[-2], args[-1], 2 * args[6] / args[4], n_theta)
