@@ -158,6 +158,19 @@ def test_fas_257_converges_and_refines_the_estimate():
     assert fine[-1] < fine[0] / 20
 
 
+@pytest.mark.slow
+def test_fas_257_limit_cycle_continues_with_w_cycles():
+    """(10, 10) on 257^2: the V-cycles settle in a period-2 limit cycle at the pressure
+    spike (before: no convergence, fallback to Newton); the level continues with W-cycles
+    and converges (measured 8 cycles), Hc within 1 % of 129^2 and of NVM within 4 %."""
+    r = solve_point(10.0, 10.0, level=4, method="fas")
+    assert "fallback" not in r.history and r.levels[-1]["method"] == "fas"
+    assert r.levels[-1]["iterations"] <= 12 and r.load_error < 1e-5
+    hc = [lv["Hc"] for lv in r.levels]
+    assert abs(hc[-1] / hc[-2] - 1) < 0.01 and r.error_estimate["Hc"] < 0.005
+    assert r.Hc == pytest.approx(float(nvm_central(10.0, 10.0)), rel=0.04)
+
+
 def test_strongly_piezoviscous_case_on_a_33_coarsest_grid():
     """(50, 10), alpha_bar 13.4: from the Newton solver's coarse start, FAS cycles with a
     33^2 coarsest grid converge (on a 17^2 coarsest grid they stalled); Hc within 4 % of
