@@ -18,8 +18,11 @@ discretisation of :mod:`femgear.ehl.fd`:
 * FMG: the coarsest grid solved from the start, then on each finer grid the cubic
   interpolation of the coarser solution followed by V (gamma = 1) or W (gamma = 2)
   cycles until the films change by less than ``film_tol`` per cycle and the load error
-  is below ``load_tol``. The central and minimum films of every FMG level feed the
-  Richardson error estimate (:mod:`femgear.ehl.accuracy`).
+  is below ``load_tol``; a level whose residual grows in a cycle from the third on
+  continues with W-cycles (measured: (10, 10) on 257^2 sat in a period-2 limit cycle of
+  its V-cycles at the pressure spike, dP ~ 4e-3 on 8 nodes and Hmin +-1e-4, and fell back
+  to Newton; W-cycles converge, 8 cycles in all). The central and minimum films of every
+  FMG level feed the Richardson error estimate (:mod:`femgear.ehl.accuracy`).
 
 Every cycle appends the rms complementarity residual and the relative load error of its
 level to the history (:class:`femgear.ehl.newton.History`); a level that does not reach
@@ -27,8 +30,11 @@ its tolerances within ``max_cycles``, or whose residual grows or stalls, raises
 :class:`ConvergenceError` with that history.
 
 Measured (2-core Xeon, shared; ``studies/benchmarks/ehl.py``): (20, 10) converges in
-4 / 4 / 6 cycles on 33^2 / 65^2 / 129^2 (coarse-grid convergence factor ~0.2-0.3 per
-cycle), 257^2 in 14 cycles with the smaller distributive factor; from alpha_bar ~13
+4 / 4 / 5 cycles on 33^2 / 65^2 / 129^2 (coarse-grid convergence factor ~0.2-0.3 per
+cycle), 257^2 in 4 / 4 / 3 / 5 (``relax_fine``: the Gauss-Seidel factor 0.6; with 0.8
+the line sweeps diverge at the outlet constriction and the cycles took 14). Warm starts
+along a path (``warm=`` of :meth:`FAS.solve_level`): one or two V-cycles per grid from the
+secant prediction of :mod:`fas_point`. From alpha_bar ~13
 ((50, 10), (20, 20), (200, 10)) the cycles stall on the coarse grids, which is why
 ``solve_point(method='auto')`` keeps the Newton solver there.
 """
@@ -46,6 +52,12 @@ from femgear.ehl.newton import History
 from femgear.ehl.relax import RelaxOptions, sweep
 
 
+# the contraction credited to a warm cycle: its residual ratio clipped to [0.1, 0.5] (0.5:
+# the largest film contraction per V-cycle measured on the FMG levels of (20, 10), 0.28-0.45;
+# a larger residual ratio is the residual floor of the spike, reached from a good start)
+WARM_Q = (0.1, 0.5)
+
+
 @dataclass(frozen=True)
 class FasOptions:
     """Cycle parameters (Venner & Lubrecht's standard: 2 pre-, 1 post-sweep, V-cycle)."""
@@ -55,16 +67,26 @@ class FasOptions:
     gamma: int = 1
     max_cycles: int = 30
     film_tol: float = 1e-4  # relative change of Hc, Hmin, H0 per cycle (finest level)
-    load_tol: float = 1e-6
+    # the load error moves the films by about 0.07 x itself (h ~ W^-0.067, Hamrock & Dowson
+    # 1977): 1e-5 is far below film_tol; at 1e-6 the 257^2 cycles of (20, 5) and (10, 10)
+    # stall on a period-2 oscillation of the load error of 1e-6 - 4e-5
+    load_tol: float = 1e-5
     # the FMG levels below the finest (a start and a term of the error estimate)
     coarse_film_tol: float = 1e-3
     coarse_load_tol: float = 1e-4
     coarse_newton: int = 3  # Newton steps on the coarsest grid per cycle
+    # (pre, post) sweeps of the cycles from a predicted state (a path): measured on the
+    # 41-position benchmark path, (1, 1) costs 7.5 cold solves in sweeps, (2, 1) 10.1, both
+    # with warm films within 4e-4 of the cold ones
+    warm_sweeps: tuple[int, int] = (1, 1)
     relax: RelaxOptions = field(default_factory=RelaxOptions)
-    # solves finer than 129^2 (all their levels): a smaller distributive factor (measured
-    # at (20, 10): 0.7 converges in 6 cycles on 129^2 but oscillates on 257^2, also when
-    # only the 257^2 level takes 0.5; 0.5 on all levels takes 9 / 14 cycles)
-    relax_fine: RelaxOptions = field(default_factory=lambda: RelaxOptions(omega_dist=0.5))
+    # solves finer than 129^2 (all their levels): a smaller Gauss-Seidel factor. Measured
+    # at (20, 10) on 257^2: with omega_gs 0.8 the line Gauss-Seidel sweeps alone diverge at
+    # the outlet constriction (X ~ 0.72, the residual grows from the 7th sweep on; also
+    # with xi_switch 0.1 or 1 and with the first-order wedge), so more smoothing (V(3,2),
+    # W-cycles) diverges and V(2,1) oscillates (14 cycles with omega_dist 0.5); with
+    # omega_gs 0.5 the sweeps smooth monotonically, and omega_gs 0.6 takes 5 cycles
+    relax_fine: RelaxOptions = field(default_factory=lambda: RelaxOptions(omega_dist=0.7, omega_gs=0.6))
 
 
 class _Levels:
@@ -87,6 +109,7 @@ class FAS:
         self.coarse = CoarseNewton(self.levels[0])
         self.hist = History()
         self.relax = self.opts.relax
+        self.sweeps, self.gamma = (self.opts.pre, self.opts.post), self.opts.gamma
 
     def cycle(self, k: int, P: np.ndarray, H0: float, f: np.ndarray, g: float):
         """One FAS cycle on level k for L(P, H0) = f, load(P) = g (None: H0 fixed);
@@ -96,8 +119,8 @@ class FAS:
                                          max_iter=self.opts.coarse_newton, chord=True)
             return P, H0
         lv, c, o = self.levels[k], self.levels[k - 1], self.opts
-        ro = self.relax
-        for _ in range(o.pre):
+        ro, (pre, post) = self.relax, self.sweeps
+        for _ in range(pre):
             sweep(lv, P, H0, f, ro)
         r, _, _, _ = lv.residual(P, H0, f)
         r = lv.complementarity(P, r)
@@ -106,13 +129,13 @@ class FAS:
         fc = c.operator(Pc, Hc, *c.coefficients(Pc, Hc)) + restrict_full_weighting(r)
         gc = None if g is None else c.load_of(Pc) + (g - lv.load_of(P))
         Pn, H0n = Pc.copy(), H0
-        for _ in range(o.gamma if k > 1 else 1):
+        for _ in range(self.gamma if k > 1 else 1):
             Pn, H0n = self.cycle(k - 1, Pn, H0n, fc, gc)
         # the correction acts on the pressurised nodes only (Venner & Lubrecht 2000, 7.4)
         P += np.where(P > 0.0, prolong_bilinear(Pn - Pc), 0.0)
         np.maximum(P, 0.0, out=P)
         H0 = H0n
-        for _ in range(o.post):
+        for _ in range(post):
             sweep(lv, P, H0, f, ro)
         return P, H0
 
@@ -129,27 +152,45 @@ class FAS:
             raise ConvergenceError(self.case, "non-finite multigrid iterate", self.hist.as_dict())
         return H
 
-    def solve_level(self, k: int, P: np.ndarray, H0: float, films,
-                    final: bool = True) -> tuple[np.ndarray, float, int]:
+    def solve_level(self, k: int, P: np.ndarray, H0: float, films, final: bool = True,
+                    warm: tuple[float, float] | None = None) -> tuple[np.ndarray, float, int]:
         """Cycles on level k until the films (``films(k, P, H0)``) and H0 change by less
         than ``film_tol`` per cycle and the load error is below ``load_tol`` (not
-        ``final``: the coarse tolerances); raises when the residual stalls or grows."""
+        ``final``: the coarse tolerances); raises when the residual stalls or grows.
+
+        ``warm = (tol, load_tol)``: from a predicted state (a path, :mod:`fas_point`),
+        ``warm_sweeps`` cycles until the algebraic error of the films is bounded by
+        ``tol``: a cycle contracting the error by q leaves at most change * q / (1 - q)
+        (the a-posteriori bound of the contraction mapping theorem), the change counted
+        from the predicted state and q the cycle's residual ratio clipped to ``WARM_Q``."""
         lv, o = self.levels[k], self.opts
         ftol, ltol = (o.film_tol, o.load_tol) if final else (o.coarse_film_tol, o.coarse_load_tol)
         f = np.zeros((lv.ny - 2, lv.nx - 2))
-        prev = (*films(k, P, H0), H0)
-        for it in range(o.max_cycles):
-            with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-                P, H0 = self.cycle(k, P, H0, f, lv.load)
-            H = self.record(k, P, H0)
-            cur = (*films(k, P, H0, H), H0)
-            change = max(abs(a - b) / max(abs(b), 1e-3) for a, b in zip(cur, prev))
-            prev = cur
-            if change < ftol and self.hist.load_error[-1] < ltol:
-                return P, H0, it + 1
-            res = self.hist.residual[-it - 1:]
-            if (it >= 2 and res[-1] > 1e2 * min(res)) or (it >= 8 and res[-1] > 0.5 * res[-6]):
-                break  # diverging, or stalled (less than a factor 2 in 5 cycles)
+        if warm is None:
+            prev = (*films(k, P, H0), H0)
+        else:  # the predicted state's residual starts the contraction estimate
+            (ftol, ltol), self.sweeps = warm, o.warm_sweeps
+            prev = films(k, P, H0, self.record(k, P, H0))
+        n0 = len(self.hist.residual) - (warm is not None)
+        try:
+            for it in range(o.max_cycles):
+                with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+                    P, H0 = self.cycle(k, P, H0, f, lv.load)
+                H = self.record(k, P, H0)
+                cur = (*films(k, P, H0, H), H0)[:len(prev)]
+                change = max(abs(a - b) / max(abs(b), 1e-3) for a, b in zip(cur, prev))
+                prev, res = cur, self.hist.residual[n0:]
+                if warm is not None:
+                    q = min(max(res[-1] / max(res[-2], 1e-300), WARM_Q[0]), WARM_Q[1])
+                    change *= q / (1.0 - q)
+                if change < ftol and self.hist.load_error[-1] < ltol:
+                    return P, H0, it + 1
+                if warm is None and it >= 2 and res[-1] > res[-2]:
+                    self.gamma = 2  # V-cycles in a limit cycle: W-cycles (module docstring)
+                if (it >= 2 and res[-1] > 1e2 * min(res)) or (it >= 8 and res[-1] > 0.5 * res[-6]):
+                    break  # diverging, or stalled (less than a factor 2 in 5 cycles)
+        finally:
+            self.sweeps, self.gamma = (o.pre, o.post), o.gamma
         raise ConvergenceError(self.case, f"FAS: no convergence in {it + 1} cycles on "
                                f"{lv.nx}x{lv.ny}", self.hist.as_dict())
 

@@ -152,7 +152,7 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                 rigid: bool = False, ad_factor: float = 1.0, sd_factor: float = 1.0,
                 tol: float | None = None, newton_tol: float = 1e-5, max_level: int = MAX_LEVEL,
                 residual_tol: float = RESIDUAL_TOL, max_iter: int = 40, method: str = "auto",
-                start: EHLResult | None = None, surface=None) -> EHLResult:
+                start: EHLResult | None = None, surface=None, reuse: dict | None = None) -> EHLResult:
     """Isothermal point-contact EHL in Moes groups (M, L); returns :class:`EHLResult`.
 
     ``level`` is the finest grid (``16 * 2**level`` intervals along X), ``coarse_level``
@@ -172,7 +172,8 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
     truncates it is solved and flagged.
 
     ``method``: 'fas' full multigrid on the FD discretisation of
-    :mod:`femgear.ehl.fas_point` (``start=`` a neighbouring point solution warm-starts it);
+    :mod:`femgear.ehl.fas_point` (``start=`` a neighbouring point solution warm-starts it;
+    ``reuse=`` a dict kept across a sequence of solves adds the secant predictor);
     'newton' the Newton-Krylov FE solver described above (``coarse_level``, ``ad_factor``,
     ``sd_factor``, ``newton_tol``, ``residual_tol`` and ``max_iter`` are its settings: a
     non-default ``ad_factor``/``sd_factor`` selects it); 'auto' (default) multigrid inside
@@ -220,7 +221,7 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
         try:
             return solve_point_fas(M, L, level=level, ratio=ratio, dom=dom, rheology=rheology,
                                    rigid=rigid, tol=tol, case=case, t0=t0, start=start,
-                                   extra_flags=flags, fallback_start=solver.fas_start)
+                                   extra_flags=flags, fallback_start=solver.fas_start, reuse=reuse)
         except ConvergenceError as exc:
             fallback.append(f"fas: {exc}")
     PI, H0, per_level, fine = solver.solve_at(M)

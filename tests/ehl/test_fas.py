@@ -46,8 +46,8 @@ def test_fas_agrees_with_newton_129(fas129):
 def test_fas_load_balance_and_physics(fas129):
     r = fas129
     h = r.x[1] - r.x[0]
-    assert r.load_error < 1e-6
-    assert r.P.sum() * h * h == pytest.approx(2 * np.pi / 3, rel=1e-6)
+    assert r.load_error < 1e-5  # FasOptions.load_tol (measured 3e-7)
+    assert r.P.sum() * h * h == pytest.approx(2 * np.pi / 3, rel=1e-5)
     assert r.P.min() >= 0.0 and np.all(np.isfinite(r.H)) and 0.0 < r.Hmin < r.Hc
     # symmetric about Y = 0 up to the algebraic error of the cycles (zebra ordering is
     # symmetric, the in-line Gauss-Seidel order is not needed: one banded solve per colour)
@@ -62,7 +62,7 @@ def test_fas_load_balance_and_physics(fas129):
 def test_fas_history_per_cycle(fas129):
     h = fas129.history
     assert len(h["residual"]) == len(h["load_error"]) == fas129.iterations
-    assert h["load_error"][-1] < 1e-6
+    assert h["load_error"][-1] < 1e-5
     fine = [r for r, n in zip(h["residual"], h["level"]) if n == 129**2]
     assert fine[-1] < 0.02 * fine[0]  # the cycles on the finest grid reduce the residual
 
@@ -144,10 +144,31 @@ def test_fas_hertzian_units_match_params(fas129):
 
 @pytest.mark.slow
 def test_fas_257_converges_and_refines_the_estimate():
+    """257^2 at (20, 10) by the multigrid itself (no fallback), with at most as many
+    finest-grid cycles as 129^2 takes (5; measured 5, were 14 with omega_gs 0.8, whose
+    line sweeps diverge at the outlet constriction) and a residual that falls by 20 over
+    them (the cycles converge, not only the films)."""
     r = solve_point(20.0, 10.0, level=4, method="fas")
     hc = [lv["Hc"] for lv in r.levels]
-    assert r.load_error < 1e-6 and abs(hc[-1] / hc[-2] - 1) < 0.01
+    assert "fallback" not in r.history
+    assert r.load_error < 1e-5 and abs(hc[-1] / hc[-2] - 1) < 0.01
     assert r.error_estimate["Hc"] < 0.005
+    assert r.levels[-1]["iterations"] <= 6
+    fine = [x for x, n in zip(r.history["residual"], r.history["level"]) if n == 257**2]
+    assert fine[-1] < fine[0] / 20
+
+
+@pytest.mark.slow
+def test_fas_257_limit_cycle_continues_with_w_cycles():
+    """(10, 10) on 257^2: the V-cycles settle in a period-2 limit cycle at the pressure
+    spike (before: no convergence, fallback to Newton); the level continues with W-cycles
+    and converges (measured 8 cycles), Hc within 1 % of 129^2 and of NVM within 4 %."""
+    r = solve_point(10.0, 10.0, level=4, method="fas")
+    assert "fallback" not in r.history and r.levels[-1]["method"] == "fas"
+    assert r.levels[-1]["iterations"] <= 12 and r.load_error < 1e-5
+    hc = [lv["Hc"] for lv in r.levels]
+    assert abs(hc[-1] / hc[-2] - 1) < 0.01 and r.error_estimate["Hc"] < 0.005
+    assert r.Hc == pytest.approx(float(nvm_central(10.0, 10.0)), rel=0.04)
 
 
 def test_strongly_piezoviscous_case_on_a_33_coarsest_grid():
@@ -157,7 +178,7 @@ def test_strongly_piezoviscous_case_on_a_33_coarsest_grid():
     r = solve_point(50.0, 10.0, level=3, method="fas")
     assert "fallback" not in r.history and r.levels[-1]["method"] == "fas"
     assert r.Hc == pytest.approx(float(nvm_central(50.0, 10.0)), rel=0.04)
-    assert r.load_error < 1e-6 and 0.0 < r.Hmin < r.Hc
+    assert r.load_error < 1e-5 and 0.0 < r.Hmin < r.Hc
 
 
 @pytest.mark.slow
