@@ -11,7 +11,8 @@ artificial-diffusion factor the finest level needed, and the NVM central film
 formula has no minimum film) beside them. A solve that fails prints its error, whose
 message says why (:func:`femgear.ehl.newton._stall_reason`: the median damping of the
 last Newton steps and the node of the largest Newton component). One run per cell (the
-257^2 solves take minutes); the last line is JSON.
+257^2 solves take minutes), timed with tracemalloc on (it slows allocation-heavy code, so
+the seconds are an upper bound); the last line is JSON.
 """
 
 from __future__ import annotations
