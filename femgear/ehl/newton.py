@@ -47,13 +47,18 @@ REBUILD_KRYLOV, REBUILD_MIN, REBUILD_GROWTH = 30, 8, 2.0
 
 @dataclass
 class History:
-    """Per Newton iteration: scaled residual norm, relative load error, step, Krylov its."""
+    """Per Newton iteration: scaled residual norm, relative load error, step, Krylov its,
+    level size, and the largest pressure component |dP| of the Newton direction before
+    damping with the node where it occurs (``max_dp``, ``max_dp_at`` = [X, Y]): a solve
+    whose steps are cut by the |dP| cap says there where its linear model fails."""
 
     residual: list = field(default_factory=list)
     load_error: list = field(default_factory=list)
     step: list = field(default_factory=list)
     krylov: list = field(default_factory=list)
     level: list = field(default_factory=list)
+    max_dp: list = field(default_factory=list)
+    max_dp_at: list = field(default_factory=list)
 
     def as_dict(self) -> dict:
         return {k: list(v) for k, v in self.__dict__.items() if isinstance(v, list)}
@@ -71,8 +76,7 @@ def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case
     step: the min-NCP merit is not smooth where the cavitation set changes)."""
     merit0 = max([np.linalg.norm(scale * F)] + hist.residual[-5:])
     big = np.max(np.abs(dP)) if dP.size else 0.0
-    # cap |dP| so that the viscosity changes by at most e^MAX_LOG_ETA anywhere
-    cap = min(MAX_DP, MAX_LOG_ETA / max(level.reynolds.rheology.alpha_bar, 1e-12))
+    cap = _step_cap(level)
     alpha = min(1.0, cap / big) if big > 0 else 1.0
     best = None
     for _ in range(10):
@@ -89,7 +93,31 @@ def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case
     hist.watchdog = getattr(hist, "watchdog", 0) + 1
     if best is not None and hist.watchdog <= WATCHDOG:
         return best[1]
-    raise ConvergenceError(case, "line search failed (residual does not decrease)", hist.as_dict())
+    raise ConvergenceError(case, "line search failed (residual does not decrease)"
+                           + _stall_reason(hist, _step_cap(level)), hist.as_dict())
+
+
+def _step_cap(level: Level) -> float:
+    """The cap on |dP| of a step: the viscosity changes by at most e^MAX_LOG_ETA anywhere."""
+    return min(MAX_DP, MAX_LOG_ETA / max(level.reynolds.rheology.alpha_bar, 1e-12))
+
+
+STALL_STEP = 0.25  # median damping below which a failed solve is reported as step-limited
+
+
+def _stall_reason(hist: History, cap: float, last: int = 10) -> str:
+    """Why a failed Newton solve did not converge, from its last ``last`` iterations:
+    when the accepted steps were damped to a median below STALL_STEP, the largest Newton
+    component |dP| and its node (the linear model fails there, e.g. at the outlet pressure
+    spike of a strongly piezoviscous contact); '' otherwise."""
+    steps, big = hist.step[-last:], hist.max_dp[-last:]
+    if not steps or not big or float(np.median(steps)) >= STALL_STEP:
+        return ""
+    k = int(np.argmax(big))
+    x, y = hist.max_dp_at[-last:][k]
+    return (f"; steps damped to a median of {np.median(steps):.2g} over the last {len(steps)} "
+            f"iterations: the Newton direction's largest |dP| reached {big[k]:.3g} (cap {cap:.2g}) "
+            f"at (X, Y) = ({x:.3f}, {y:.3f})")
 
 
 def _converged(level: Level, PI, H0, dP, dH0, F, alpha, tol, merit: float,
@@ -113,6 +141,14 @@ def _record(hist: History, level: Level, F, scale, alpha, kry):
     hist.level.append(int(level.n))
 
 
+def _record_direction(hist: History, level: Level, dP: np.ndarray) -> None:
+    """The largest |dP| of the undamped Newton direction and its node [X, Y]."""
+    i = int(np.argmax(np.abs(dP))) if dP.size else 0
+    node = int(level.interior[i]) if dP.size else 0
+    hist.max_dp.append(float(abs(dP[i])) if dP.size else 0.0)
+    hist.max_dp_at.append([float(level.X[node]), float(level.Y[node])])
+
+
 def _newton(level: Level, PI, H0, direction: Callable, max_iter: int, tol: float,
             case: str, residual_tol: float = RESIDUAL_TOL) -> tuple[np.ndarray, float, History]:
     """Generic damped Newton loop; ``direction(PI, H0, F, lin, s, act)`` -> (dx, krylov its)."""
@@ -127,12 +163,14 @@ def _newton(level: Level, PI, H0, direction: Callable, max_iter: int, tol: float
         if not np.all(np.isfinite(dx)):
             raise ConvergenceError(case, "non-finite Newton direction", hist.as_dict())
         dP, dH0 = dx[:-1], float(dx[-1])
+        _record_direction(hist, level, dP)
         PI, H0, F, lin, H, act, alpha = _line_search(level, PI, H0, F, dP, dH0, s, scale, hist, case)
         _record(hist, level, F, scale, alpha, its)
         if _converged(level, PI, H0, alpha * dP, alpha * dH0, F, alpha, tol, hist.residual[-1],
                       residual_tol):
             return PI, H0, hist
-    raise ConvergenceError(case, f"no convergence in {max_iter} Newton iterations", hist.as_dict())
+    raise ConvergenceError(case, f"no convergence in {max_iter} Newton iterations"
+                           + _stall_reason(hist, _step_cap(level)), hist.as_dict())
 
 
 def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,

@@ -272,6 +272,7 @@ class _NestedPoint:
         self.t0, self.rheology, self.newton, self.case = t0, rheology, newton, newton["case"]
         self.fac = pr.point_h_moes_factor(M)
         self.hist = History()
+        self.last_failure = ""  # reason of the last failed Newton attempt (for the error)
         self.factorised: dict = {}  # Level -> factorised preconditioner level, kept across levels
         self.levels = _LazyLevels(lambda k: self.make(M, 1.0, k), coarse_level, level)
 
@@ -302,6 +303,7 @@ class _NestedPoint:
                                           **_krylov_cap(self.ratio))
         except ConvergenceError as exc:
             self.hist.extend(History(**exc.history))
+            self.last_failure = str(exc).split(": ", 1)[-1].split(" (last: ")[0]
             return None
         self.hist.extend(h)
         return PI, H0
@@ -371,12 +373,13 @@ class _NestedPoint:
             P0 = (prolongation(prev.grid, fine.grid) @ prev.full(PI))[fine.interior]
             n0 = len(self.hist.residual)
             got, used = self.attempt(lvs[: k + 1], P0, H0), stab
+            failure = self.last_failure
             if not got and stab == 1.0:
                 got, used = self.stabilised(lvs, M_, k)
             if not got:
                 raise ConvergenceError(self.case, f"no convergence on level {k + self.coarse_level} "
-                                       f"(M={M_:g}, also with stabilisation continuation)",
-                                       self.hist.as_dict())
+                                       f"(M={M_:g}, also with stabilisation continuation; first "
+                                       f"attempt: {failure})", self.hist.as_dict())
             PI, H0 = got
             per_level.append(self.summary(fine, PI, H0, len(self.hist.residual) - n0, used))
         return PI, H0, lvs[k]
