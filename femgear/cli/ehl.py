@@ -18,6 +18,9 @@ def register(sub) -> None:
     _common(pt)
     pt.add_argument("--level", type=int, default=3, help="finest grid: 16*2^level intervals (3)")
     pt.add_argument("--ellipticity", type=float, default=1.0, help="lambda = Rx/Ry (1)")
+    pt.add_argument("--method", choices=("auto", "fas", "newton"), default="auto",
+                    help="solver: full multigrid (FD), Newton (FE), or auto = multigrid inside its "
+                         "validated range (output: method, fallback)")
     pt.set_defaults(func=_point)
     ln = ehl_sub.add_parser("line", help="line contact (1D FE, dense Newton)")
     _common(ln)
@@ -67,7 +70,7 @@ def _point(args) -> int:
     from femgear.ehl.point import solve_point
 
     return _run(args, lambda: solve_point(args.M, args.L, level=args.level, tol=args.tol,
-                                          ratio=args.ellipticity, **_options(args)))
+                                          ratio=args.ellipticity, method=args.method, **_options(args)))
 
 
 def _line(args) -> int:
@@ -103,6 +106,6 @@ def _run(args, solve) -> int:
         emit_json(out)
     else:
         for k in ("Hc", "Hmin", "Pmax", "Pmax_at", "outlet_x", "load_error", "iterations",
-                  "nodes", "seconds", "error_estimate", "warning"):
+                  "nodes", "seconds", "error_estimate", "warning", "method"):
             print(f"{k:>11}: {out[k]}")
     return 0

@@ -219,15 +219,18 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                          "with surface=")
     if method == "fas" and ad_factor == 1.0 and sd_factor == 1.0:
         try:
-            return solve_point_fas(M, L, level=level, ratio=ratio, dom=dom, rheology=rheology,
-                                   rigid=rigid, tol=tol, case=case, t0=t0, start=start,
-                                   extra_flags=flags, fallback_start=solver.fas_start, reuse=reuse)
+            res = solve_point_fas(M, L, level=level, ratio=ratio, dom=dom, rheology=rheology,
+                                  rigid=rigid, tol=tol, case=case, t0=t0, start=start,
+                                  extra_flags=flags, fallback_start=solver.fas_start, reuse=reuse)
+            res.history["method"] = "fas"
+            return res
         except ConvergenceError as exc:
             fallback.append(f"fas: {exc}")
     PI, H0, per_level, fine = solver.solve_at(M)
     res = _result("point", M, L, fine, PI, H0, solver.fac, solver.hist, per_level,
                   time.perf_counter() - t0, tol=acc.DEFAULT_TOL if tol is None else tol,
                   extra_flags=flags)
+    res.history["method"] = "newton"
     if fallback:
         res.history["fallback"] = fallback
     return res

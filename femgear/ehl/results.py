@@ -63,6 +63,7 @@ class EHLResult:
             "iterations": self.iterations, "nodes": self.nodes, "seconds": self.seconds,
             "levels": list(self.levels), "error_estimate": dict(self.error_estimate),
             "tol": self.tol, "flags": list(self.flags), "warning": self.warning,
+            "method": self.history.get("method", "newton"), "fallback": list(self.history.get("fallback", [])),
             "residual_history": list(self.history.get("residual", [])),
             "load_error_history": list(self.history.get("load_error", [])),
         }

@@ -78,6 +78,7 @@ INPUT_ERRORS = [
     (["ehl", "point", "--M", "10", "--L", "nan"], "--L"),
     (["ehl", "point", "--M", "inf", "--L", "10"], "--M"),
     (["ehl", "point", "--M", "10", "--L", "10", "--ellipticity", "0"], "--ellipticity"),
+    (["ehl", "point", "--M", "10", "--L", "10", "--method", "multigrid"], "--method"),
     (["ehl", "point", "--M", "10", "--L", "10", "--level", "0"], "--level"),
     (["ehl", "point", "--M", "ten", "--L", "10"], "--M"),
     (["ehl", "line", "--M", "10", "--L", "10", "--level", "1000"], "--level"),

@@ -35,3 +35,16 @@ def test_cli_nonconvergence_is_reported(capsys):
         assert d["converged"] is False and d["Hc"] is None and "error" in d
     else:
         assert d["converged"] is True and d["Hc"] > 0
+
+
+def test_cli_point_method_picks_the_solver_and_reports_it(capsys):
+    """--method fas and --method newton solve (20, 10) on 129² within 1 % of each other (two independent
+    discretisations, FD multigrid and FE Newton); the JSON says which solver ran; auto takes the multigrid there."""
+    got = {}
+    for method in ("fas", "newton", "auto"):
+        assert main(["ehl", "point", "--M", "20", "--L", "10", "--level", "3", "--method", method, "--json"]) == 0
+        got[method] = _last_json(capsys)
+    assert got["fas"]["method"] == "fas" and got["newton"]["method"] == "newton" and got["auto"]["method"] == "fas"
+    assert abs(got["fas"]["Hc"] / got["newton"]["Hc"] - 1) < 0.01
+    assert abs(got["fas"]["Hmin"] / got["newton"]["Hmin"] - 1) < 0.01
+    assert got["fas"]["fallback"] == []
