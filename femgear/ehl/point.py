@@ -146,9 +146,11 @@ def _inlet_problem(dom: Domain, expected: float, ratio: float) -> str | None:
 
 
 # the rigid film of a slender contact spreads along the contact line to |Y| ~ sqrt(2 H / lambda);
-# beyond this fraction of the domain's half-width the default domain truncates it and Hc comes
-# out low (studies/ehl_elliptic_regimes.py: (20, 0) at lambda 0.1 (ratio 0.34) +13 %, (20, 10)
-# at lambda 0.05 / 0.02 (0.52 / 0.81) +11 / +38 % on enlarged domains; (100, 10) (<= 0.28) unaffected)
+# beyond this fraction of the domain's half-width the default domain truncates it and Hc is off
+# (studies/ehl_elliptic_regimes.py, studies/ehl_elliptic_domain.py: (20, 0) at lambda 0.1
+# (ratio 0.34) 13 % low, (20, 10) at lambda 0.05 / 0.02 (0.52 / 0.81) 11 / 38 % low, but at
+# lambda 0.12-0.1 (0.43) 13-17 % HIGH (the enlarged inlet and sides take load off the centre);
+# (100, 10) (<= 0.28) unaffected)
 SIDE_EXTENT_MAX = 0.33
 
 
@@ -156,14 +158,18 @@ def _side_problem(dom: Domain, expected: float, ratio: float) -> str | None:
     """A slender contact whose rigid-film side extent sqrt(2 H / lambda) (H the expected
     central film, Hertzian units) exceeds SIDE_EXTENT_MAX of the domain's Y half-width:
     the solution may be truncated along the contact line (flagged, not refused: the
-    criterion is calibrated on a few cases and also flags some that are not truncated)."""
+    criterion is calibrated on a few cases and also flags some that are not truncated).
+    The error has either sign: truncation starves the near-rigid film (Hc low, isoviscous
+    and very slender cases) or keeps load on the centre that the unbounded domain spreads
+    into the inlet and the sides (Hc high at (20, 10), lambda 0.1-0.15; docs/elliptic_regimes.md)."""
     if ratio >= 1.0:
         return None
     r = math.sqrt(2.0 * expected / ratio) / min(-dom.y0, dom.y1)
     if r <= SIDE_EXTENT_MAX:
         return None
     return (f"rigid-film side extent sqrt(2H/lambda) is {r:.2f} of the domain half-width "
-            f"(> {SIDE_EXTENT_MAX}): the film may be truncated along the contact line and Hc low")
+            f"(> {SIDE_EXTENT_MAX}): the film may be truncated along the contact line and Hc off "
+            "by 10-40 % either way (check with default_domain(..., enlarge=))")
 
 
 def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: int = 1,

@@ -42,7 +42,7 @@ def test_no_enlargement_is_the_default_domain():
 @pytest.mark.slow
 def test_fe_newton_and_fd_multigrid_agree_on_an_enlarged_slender_domain():
     """(20, 10), lambda = 0.1, inlet and sides x2, 129 nodes along X: the two solvers within
-    1 % (measured 0.3 %), so the lower Hc of the enlarged domain is not a bug of one scheme."""
+    1 % (measured 0.6 %), so the lower Hc of the enlarged domain is not a bug of one scheme."""
     dom = _dom(20.0, 10.0, 0.1, (2.0, 2.0))
     fe = solve_point(20.0, 10.0, ratio=0.1, level=3, method="newton", domain=dom)
     fd = solve_point(20.0, 10.0, ratio=0.1, level=3, method="fas", domain=dom)
