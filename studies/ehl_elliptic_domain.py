@@ -94,7 +94,8 @@ def main() -> None:
                           f"{row['inlet_share']:6.3f} {row['side_share']:6.3f} "
                           f"{row['seconds']:6.1f}{' fallback' if row['fallback'] else ''}", flush=True)
             inf, nvm, hd = extrapolate(rows), float(nvm_central(M, L, lam)), hd_moes(M, L, lam)
-            ext = "-" if inf is None else f"{inf:.3f} ({100 * (inf / nvm - 1):+.1f} % NVM, {100 * (inf / hd - 1):+.1f} % HD)"
+            hd_pc = f", {100 * (inf / hd - 1):+.1f} % HD" if inf is not None and hd > 0 else ""  # HD: 0 at L = 0
+            ext = "-" if inf is None else f"{inf:.3f} ({100 * (inf / nvm - 1):+.1f} % NVM{hd_pc})"
             print(f"  -> ({M:g}, {L:g}) lambda {lam:g}: Hc(k -> inf) {ext}; NVM {nvm:.3f}, HD {hd:.3f}", flush=True)
             out.append({"M": M, "L": L, "ratio": lam, "rows": rows, "Hc_inf": inf, "NVM": nvm, "HD": hd})
     os.makedirs("out", exist_ok=True)
