@@ -11,13 +11,11 @@ import pytest
 
 from femgear.contact.film import nvm_central, rigid_isoviscous_point
 from femgear.ehl import params as pr
-from femgear.ehl.grid import Domain
 from femgear.ehl.point import default_domain, solve_point
 
 
 def _enlarged(M, lam, fx, fy):
-    d0 = default_domain(lam, float(nvm_central(M, 10.0, lam)) / pr.point_h_moes_factor(M))
-    return Domain(d0.x0 * fx, d0.x1, d0.y0 * fy, d0.y1 * fy, aspect=d0.aspect * fy / fx)
+    return default_domain(lam, float(nvm_central(M, 10.0, lam)) / pr.point_h_moes_factor(M), enlarge=(fx, fy))
 
 
 @pytest.mark.slow
