@@ -91,7 +91,7 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path):
            "--no-progress", "--json"]
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
     cases = out / "t" / "cases"
-    deadline = time.time() + 120
+    deadline = time.time() + 600      # ends as soon as two cases are done; a loaded machine may need minutes
     while time.time() < deadline and len(list(cases.glob("*/case.json")) if cases.exists() else []) < 2:
         time.sleep(0.05)
     os.killpg(proc.pid, signal.SIGKILL)
@@ -116,7 +116,7 @@ def _start_slow_sweep(tmp_path, n: int = 6):
     cmd = [sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(out), "--workers", "1", "--json"]
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     cases = out / "t" / "cases"
-    deadline = time.time() + 120
+    deadline = time.time() + 600      # ends as soon as one case is done; a loaded machine may need minutes
     while time.time() < deadline and len(list(cases.glob("*/case.json")) if cases.exists() else []) < 1:
         time.sleep(0.05)
     return proc, out / "t"
