@@ -1,4 +1,4 @@
-"""Enlarged domains for slender elliptic contacts (issue 15, notes/h15d-readme.md).
+"""Enlarged domains for slender elliptic contacts (issue 15, docs/elliptic_regimes.md §4).
 
 ``default_domain(..., enlarge=(fx, fy))`` must keep X = 0 and Y = 0 on the nodes of every
 level (Hc is read there: a centre off the nodes read Hc 1.7 % low at (20, 10), lambda = 0.1,

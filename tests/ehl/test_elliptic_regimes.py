@@ -1,4 +1,4 @@
-"""Slender elliptic contacts at low M (issue 15, notes/h15c-readme.md).
+"""Slender elliptic contacts at low M (issue 15, docs/elliptic_regimes.md).
 
 In the near-rigid regime (film >> Hertzian indentation) the pressure of a slender contact
 spreads far beyond the Hertz ellipse; the default domain (|Y| <= 3b, Hamrock-Dowson inlet)
@@ -20,7 +20,7 @@ def _enlarged(M, lam, fx, fy):
 
 @pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason="default domain truncates the near-rigid film of slender "
-                   "contacts at low M (issue 15; notes/h15c-readme.md)")
+                   "contacts at low M (issue 15; docs/elliptic_regimes.md)")
 def test_default_domain_holds_the_low_M_slender_film():
     """(20, 0), lambda = 0.05: the default domain within 5 % of inlet x2, Y x2 (measured 3.53
     against 4.37 on 129 nodes)."""

@@ -44,7 +44,7 @@ def test_strong_piezoviscosity_failure_points_at_the_outlet_spike():
     artificial diffusion: the Newton steps are damped to a few per cent by the |dP| cap
     and the largest Newton component sits at the outlet pressure spike (X ~ 0.3-0.8
     downstream of the centre, near the axis), which is why the nested solver needs its
-    stabilisation continuation there (and fails on 257^2; notes/h16b-readme.md)."""
+    stabilisation continuation there (and fails on 257^2; docs/ehl_multigrid.md)."""
     lvs = _levels(20.0, 20.0, 3)
     coarse = solve_point(20.0, 20.0, level=2, method="newton")
     P0 = (prolongation(lvs[1].grid, lvs[2].grid) @ coarse.P.ravel())[lvs[2].interior]
