@@ -199,7 +199,7 @@ def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
     def direction(PI, H0, F, lin, s, act):
         lu = None if reuse is None else reuse.get(("dense", level.n))
         if lu is not None:
-            dx, its = _reused_lu_direction(level, lin, s, act, Kd, lu, F, residual_tol)
+            dx, its = _reused_lu_direction(level, lin, s, act, Kd, lu, F)
             if dx is not None:
                 return dx, its
         return sla.lu_solve(factor(lin, s, act), -F, check_finite=False), 0
@@ -210,19 +210,16 @@ def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
 DENSE_REUSE_KRYLOV = 12
 
 
-def _dense_forcing(F: np.ndarray, residual_tol: float = 0.0) -> float:
+def _dense_forcing(F: np.ndarray) -> float:
     """GMRES relative tolerance of a reused-LU Newton step: eta = min(1e-3, 0.1 |F|), at
-    least 1e-10 and at least 0.1 ``residual_tol`` / |F|. A forcing term O(|F|) keeps Newton's quadratic rate (Dembo, Eisenstat &
+    least 1e-10. A forcing term O(|F|) keeps Newton's quadratic rate (Dembo, Eisenstat &
     Steihaug 1982, Inexact Newton methods, SIAM J. Numer. Anal. 19, thm 3.3) and the
     converged answer is set by the residual test alone; loose steps far from the
-    solution let the stale factors serve longer.  Near the solution the linear residual
-    left, eta |F|, need not fall below a tenth of the Newton test's ``residual_tol`` (the
-    oversolving that Eisenstat & Walker 1996, SIAM J. Sci. Comput. 17, 16, warn against)."""
-    norm = float(np.linalg.norm(F))
-    return float(min(1e-3, max(1e-10, 0.1 * norm, 0.1 * residual_tol / max(norm, 1e-300))))
+    solution let the stale factors serve longer."""
+    return float(min(1e-3, max(1e-10, 0.1 * np.linalg.norm(F))))
 
 
-def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F, residual_tol: float = 0.0):
+def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F):
     """Right-preconditioned GMRES (:func:`femgear.ehl.krylov.gmres_right`) on the exact
     (row-scaled) dense-level Jacobian with ``lu`` as preconditioner; (dx, iterations) or
     (None, iterations) when it needs more than DENSE_REUSE_KRYLOV. The Jacobian is applied
@@ -248,7 +245,7 @@ def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F, residual_tol: flo
     def psolve(r):
         return getrs(lu[0], lu[1], r)[0]
 
-    dx, its, ok = gmres_right(matvec, psolve, -F, _dense_forcing(F, residual_tol), DENSE_REUSE_KRYLOV)
+    dx, its, ok = gmres_right(matvec, psolve, -F, _dense_forcing(F), DENSE_REUSE_KRYLOV)
     if not ok:
         return None, its
     dx[:-1][act] = -F[:-1][act]
