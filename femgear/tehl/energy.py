@@ -38,6 +38,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
@@ -164,8 +165,10 @@ def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int) -> np.ndarray:
     film temperatures, then the wall fluxes of body 1 and body 2.
 
     The matrix is split A = N + F: N, the film with the Jaeger operators cut to ``JAEGER_BAND`` cells
-    about the diagonal, is factorised (sparse LU, minimum degree on N + N^T: a tenth of the
-    fill of A, 27k against 207k entries at 192 x 8 cells; 1.4 ms against 24 ms); F, the far
+    about the diagonal, is factorised (with the unknowns cell by cell, :func:`_cell_order`, N
+    is banded, half-widths 2 nz + 4 and nz + 2: LAPACK's banded LU, 0.5 ms at 192 x 8 cells,
+    against 0.9-1.2 ms for SuperLU with minimum degree on N + N^T and 24 ms for the sparse LU
+    of A with its 207k entries; measured on the line TEHL, issue 16); F, the far
     field of the Abel kernel 1/sqrt(x - xi) (smooth), is applied as two dense products.
     Preconditioned Richardson iteration x += N^-1 (rhs - A x) (iterative refinement with an
     approximate factorisation, Golub & Van Loan, *Matrix Computations*, 4th ed. §3.5.3)
@@ -175,13 +178,17 @@ def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int) -> np.ndarray:
     coarse stage of the nested line loop; ~650-960 unknowns) are solved this way: a direct
     sparse solve of A cost more there (line level 5, SRR 1: TEHL/isothermal 2.56 -> 2.23x;
     point TEHL level 2, SRR 0.3: 8.2-9.0 -> 7.0-7.8 s; answers equal to 1e-12 relative)."""
-    near = _energy_matrix(*args, band=JAEGER_BAND)
-    lu = spla.splu(near, permc_spec="MMD_AT_PLUS_A")
+    nt, nz = args[2].shape
+    perm = _cell_order(nt, nz)
+    pos = np.empty_like(perm)
+    pos[perm] = np.arange(perm.size)
+    near = _energy_matrix(*args, band=JAEGER_BAND, order=pos)  # unknowns cell by cell: banded
+    solve = _banded_lu(near)
     far = _jaeger_far(args[-2], args[-1], 2 * args[6] / args[4], n_theta)
-    x = lu.solve(rhs)
+    x = np.zeros_like(rhs) if solve is None else solve(rhs[perm])[pos]
     last = np.inf
-    for _ in range(SWEEPS):
-        d = lu.solve(rhs - near @ x - far(x))
+    for _ in range(SWEEPS if solve is not None else 0):
+        d = solve(rhs[perm] - near @ x[perm] - far(x)[perm])[pos]
         x += d
         dt, dq = float(np.max(np.abs(d[:n_theta]))), float(np.max(np.abs(d[n_theta:])))
         if not np.isfinite(dt + dq) or dt > 4 * last:
@@ -192,26 +199,58 @@ def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int) -> np.ndarray:
     return spla.splu(_energy_matrix(*args), permc_spec="MMD_AT_PLUS_A").solve(rhs)
 
 
+def _banded_lu(A: sp.spmatrix):
+    """r -> A^-1 r by LAPACK's banded LU with partial pivoting (dgbtrf/dgbtrs, Anderson et
+    al., *LAPACK Users' Guide*, 3rd ed., 1999, §2.4.2) of the sparse ``A``; None when singular."""
+    C = A.tocoo()
+    kl, ku = int(max(np.max(C.row - C.col), 0)), int(max(np.max(C.col - C.row), 0))
+    ab = np.zeros((2 * kl + ku + 1, A.shape[0]))
+    ab[kl + ku + C.row - C.col, C.col] = C.data
+    lub, piv, info = sla.lapack.dgbtrf(ab, kl, ku)
+    if info != 0:
+        return None
+    return lambda r: sla.lapack.dgbtrs(lub, kl, ku, r, piv)[0]
+
+
+def _cell_order(nt: int, nz: int) -> np.ndarray:
+    """The unknowns of :func:`_energy_matrix` cell by cell (the cell's nz film temperatures,
+    then its two wall fluxes): with the Jaeger operators cut to a band, the matrix is then
+    banded (half-widths ~2 nz + 4) and factorises without a fill-reducing ordering."""
+    cells = np.arange(nt)[:, None]
+    return np.concatenate([cells * nz + np.arange(nz)[None, :], nt * nz + cells, nt * (nz + 1) + cells],
+                          axis=1).ravel()
+
+
 def _jaeger_far(J1: np.ndarray, J2: np.ndarray, g: np.ndarray, n_theta: int):
     """x -> F x: the Jaeger entries more than ``JAEGER_BAND`` cells off the diagonal, rows
-    of the wall fluxes (g J q), as dense products."""
+    of the wall fluxes (g J q): the dense product J q less its band (no masked copy of J)."""
     nt = J1.shape[0]
-    i = np.arange(nt)
-    cut = np.abs(i[:, None] - i[None, :]) > JAEGER_BAND
-    F1, F2 = g[:, None] * np.where(cut, J1, 0.0), g[:, None] * np.where(cut, J2, 0.0)
+    bands = [[(k, np.diagonal(J, k)) for k in range(-JAEGER_BAND, JAEGER_BAND + 1) if abs(k) < nt]
+             for J in (J1, J2)]
+
+    def far(J, diags, q):
+        y = J @ q
+        for k, d in diags:
+            if k >= 0:
+                y[:nt - k] -= d * q[k:]
+            else:
+                y[-k:] -= d * q[:nt + k]
+        return g * y
 
     def apply(x):
         out = np.zeros_like(x)
-        out[n_theta:n_theta + nt] = F1 @ x[n_theta:n_theta + nt]
-        out[n_theta + nt:] = F2 @ x[n_theta + nt:]
+        out[n_theta:n_theta + nt] = far(J1, bands[0], x[n_theta:n_theta + nt])
+        out[n_theta + nt:] = far(J2, bands[1], x[n_theta + nt:])
         return out
     return apply
 
 
-def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2, band: int | None = None):
+def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2, band: int | None = None,
+                   order: np.ndarray | None = None):
     """Upwind finite-volume matrix (CSC) of the film energy equation with the two Jaeger
     walls: unknowns theta (nt, nz) cell by cell, then the wall fluxes q1 and q2 per cell;
-    ``band``: the Jaeger operators cut to that many cells about the diagonal (None: all)."""
+    ``band``: the Jaeger operators cut to that many cells about the diagonal (None: all);
+    ``order``: unknown i is row and column ``order[i]`` (default: as listed)."""
     nt, nz = a_comp.shape
     N = nt * (nz + 2)
     idx = np.arange(nt * nz).reshape(nt, nz)                     # theta unknowns
@@ -258,4 +297,7 @@ def _energy_matrix(m, G, a_comp, dx: float, dz, c: float, k_f: float, J1, J2, ba
         nz_ = v != 0.0
         add(iq[r[nz_]], iq[cc[nz_]], v[nz_])
         add(iq, edge, -g)
-    return sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(N, N))
+    rows, cols = np.concatenate(rows), np.concatenate(cols)
+    if order is not None:
+        rows, cols = order[rows], order[cols]
+    return sp.csc_matrix((np.concatenate(vals), (rows, cols)), shape=(N, N))

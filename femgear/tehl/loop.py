@@ -20,7 +20,9 @@ the residual exceeds ``max_step`` the iteration is damped Picard without history
 (Anderson's secant model is local, Walker & Ni §1; from the cold start at 1 GPa,
 10 m/s, SRR 1 the extrapolated steps drove the residual from 1495 K up to 2208 K);
 a Newton stall (cavitation active-set cycling) is retried with half the step;
-``max_rise`` guards against thermal runaway.
+``max_rise`` guards against thermal runaway.  The residual "grows" when it exceeds
+``growth`` x the previous one (default 1: any growth).  An iteration whose energy solve saw
+a predicted EHL state (``solved`` = False) adds no secant pair: G there is another map.
 """
 
 from __future__ import annotations
@@ -45,7 +47,7 @@ def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> n
 
 def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol: float, relax: float,
                  max_step: float, max_rise: float, max_iter: int, case: str, depth: int = 5,
-                 solved: bool = True):
+                 solved: bool = True, growth: float = 1.0):
     """Returns (state, θ, thermal iterations, Newton iterations).  ``solved`` = False: the
     EHL state that ``energy`` sees is only a prediction (a prolonged coarse-grid solution),
     not yet re-solved at θ; the loop then does not stop before one ``resolve``."""
@@ -62,14 +64,14 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
             raise ConvergenceError(case, "non-finite temperatures", {"temperature_change": history})
         if change < tol and solved:
             return st, new, it, newton_its
-        if len(history) > 1 and change > history[-2]:
+        if len(history) > 1 and change > growth * history[-2]:
             beta = max(0.5 * beta, 0.05)
             d_theta.clear(), d_res.clear()
         elif previous is not None and depth > 0:
             d_theta.append(theta - previous[0]), d_res.append(res - previous[1])
             del d_theta[:-depth], d_res[:-depth]
-        if change > max_step:       # far from the fixed point: damped Picard, no secant history
-            d_theta.clear(), d_res.clear()
+        if change > max_step or not solved:  # far from the fixed point, or G evaluated on a predicted
+            d_theta.clear(), d_res.clear()    # (not re-solved) EHL state: damped Picard, no secant history
             previous = None
         else:
             previous = (theta, res)
