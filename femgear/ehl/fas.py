@@ -35,8 +35,11 @@ cycle), 257^2 in 4 / 4 / 3 / 5 (``relax_fine``: the Gauss-Seidel factor 0.6; wit
 the line sweeps diverge at the outlet constriction and the cycles took 14). Warm starts
 along a path (``warm=`` of :meth:`FAS.solve_level`): one or two V-cycles per grid from the
 secant prediction of :mod:`fas_point`. From alpha_bar ~13
-((50, 10), (20, 20), (200, 10)) the cycles stall on the coarse grids, which is why
-``solve_point(method='auto')`` keeps the Newton solver there.
+((50, 10), (20, 20), (200, 10)) the standard cycles stall on the coarse grids, which is why
+``solve_point(method='auto')`` keeps the Newton solver there; beyond alpha_bar 17 the
+options HIGH_ALPHA of :mod:`fas_point` (a larger per-sweep cap, sweeps after each FMG
+interpolation, the correction kept off the outlet spike on 257^2) converge (20, 20) on
+129^2 and (100, 20) on 257^2.
 """
 
 from __future__ import annotations
