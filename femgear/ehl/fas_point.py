@@ -40,6 +40,7 @@ from femgear.ehl.fd import FDLevel, inject, prolong_cubic
 from femgear.ehl.fdnewton import CoarseNewton
 from femgear.ehl.grid import Domain, Grid
 from femgear.ehl.results import EHLResult
+from femgear.ehl.relax import RelaxOptions
 from femgear.ehl.rheology import Rheology
 
 ALPHA_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
@@ -56,6 +57,22 @@ WARM_LOAD_TOL = 1e-4
 # the grid below only feeds the two-level estimate: an algebraic error e of its films moves
 # the estimate by e/3, so it is cycled to WARM_COARSE x the tolerance of the finest grid
 WARM_COARSE = 5.0
+# strongly piezoviscous contacts (alpha_bar > HIGH_ALPHA_FROM, beyond every case validated
+# with the standard options, FAS_ALPHA_MAX_SLENDER of point.py): the cycle options of
+# HIGH_ALPHA. Measured at (20, 20) (alpha_bar 19.8) and (100, 20) (33.8), where the standard
+# cycles stall on 65^2: the line sweeps there diverge with omega_gs 0.8 and, with 0.5, are
+# held back by the per-sweep cap 4/alpha_bar (residual erratic between 0.3 and 2.6 over
+# 30 sweeps on 129^2; with the cap 20/alpha_bar 0.64 -> 0.006 monotonically); 40 sweeps
+# after each interpolation (FasOptions.fmg_sweeps); 10 coarse Newton steps per cycle (3 left
+# the load error at 1e-2); on 257^2 the coarse-grid correction kept off the outlet spike
+# (spike_guard, fas._steep), omega 0.3 there, no W-cycles, no stall test (the residual
+# falls unevenly). Result: (100, 20) converges on 257^2 in ~50 cycles; (20, 20) passes 65^2
+# and 129^2 but its 257^2 cycles stay at a residual of ~0.4 (it falls back to Newton).
+HIGH_ALPHA_FROM = 17.0
+_RELAX_HIGH = RelaxOptions(omega_dist=0.5, omega_gs=0.5, max_log_eta=20.0)
+HIGH_ALPHA = FasOptions(relax=_RELAX_HIGH, relax_fine=_RELAX_HIGH, coarse_newton=10, fmg_sweeps=40,
+                        spike_guard=5, max_cycles=60, w_switch=False, stall_after=99,
+                        relax_top=RelaxOptions(omega_dist=0.3, omega_gs=0.3, max_log_eta=20.0))
 
 
 class FasPoint:
@@ -70,7 +87,9 @@ class FasPoint:
         self.coarsest = (1 if alpha > COARSE_33_ALPHA else 0) if coarsest is None else coarsest
         self.rheo = Rheology(pr.point_alpha_bar(M, L), **rheology)
         self.lam, self.fac, self.case = pr.point_lam_bar(M), pr.point_h_moes_factor(M), case
-        self.fas = FAS(self.level, opts or FasOptions(), case)
+        if opts is None:
+            opts = HIGH_ALPHA if alpha > HIGH_ALPHA_FROM else FasOptions()
+        self.fas = FAS(self.level, opts, case)
 
     def level(self, k: int, wedge: str | None = None, alpha_frac: float = 1.0) -> FDLevel:
         wedge = wedge or ("first" if k < SECOND_ORDER_FROM else "second")

@@ -45,6 +45,9 @@ class RelaxOptions:
     omega_dist: float = 0.7
     bandwidth: int = 3
     xi_switch: float = XI_SWITCH
+    # the change of P per sweep is capped at max_log_eta / alpha_bar (a viscosity factor of
+    # e^max_log_eta; see ``HIGH_ALPHA`` for the strongly piezoviscous setting)
+    max_log_eta: float = MAX_LOG_ETA
 
 
 def sweep(lv: FDLevel, P: np.ndarray, H0: float, f: np.ndarray, opts: RelaxOptions) -> float:
@@ -141,7 +144,7 @@ def relax_colour(lv: FDLevel, P: np.ndarray, H0: float, f: np.ndarray, colour: i
     delta = _solve_lines(A, rl, active)
     delta *= np.where(dist, opts.omega_dist, opts.omega_gs)
     # at most a factor e^MAX_LOG_ETA of viscosity per sweep anywhere (as the Newton step cap)
-    cap = min(1.0, MAX_LOG_ETA / max(lv.rheology.alpha_bar, 1e-12))
+    cap = min(1.0, opts.max_log_eta / max(lv.rheology.alpha_bar, 1e-12))
     np.clip(delta, -cap, cap, out=delta)
     sd = np.where(dist, delta, 0.0) / 4.0
     dline = delta.copy()
