@@ -141,14 +141,12 @@ def with_deviated_tooth_contact(model: GearRotorModel, unworn: dict, deviated: d
     """
     if model.base_deviation is None:
         raise ValueError("with_deviated_tooth_contact: the model was not built on an ltca stiffness")
+    from femgear.ltca.analysis import unloaded_te
+
     k0, exc = unworn["excitation"], deviated["excitation"]
     n, H = model.base_deviation.drive.shape[1], unworn.get("resolved_orders")
-    rows = []
-    for h in ("left", "right"):
-        k = k0[f"k_secant_{h}"]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            e = np.where(k > 0, exc[f"lte_{h}"] - exc[f"force_{h}"] / np.where(k > 0, k, 1.0), exc[f"lte_{h}"])
-        rows.append(band_limited(e, n, H))
+    rows = [band_limited(unloaded_te(exc[f"lte_{h}"], exc[f"force_{h}"], k0[f"k_secant_{h}"]), n, H)
+            for h in ("left", "right")]
     return replace(model, base_deviation=MeshDeviation(drive=np.array(rows), coast=model.base_deviation.coast))
 
 

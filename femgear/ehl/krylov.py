@@ -11,7 +11,11 @@ at a residual the outer test rejects; with one restart allowed that reads as a f
 forces a refactorisation that was not needed.)  Orthogonalisation: classical Gram-Schmidt
 applied twice (CGS2, Giraud, Langou & Rozloznik 2005, Comput. Math. Appl. 50, 1069: as
 stable as modified Gram-Schmidt, in two matrix-vector products); the small least-squares
-problem by Givens rotations.
+problem by Givens rotations.  (Running scipy's ``gmres`` without ``M`` on the operator A M^-1
+would give the same stopping test, but its per-call set-up costs more than the few
+iterations these warm steps take: measured in the same runs, the 41-position line path
+7.3-7.5x against 5.9-6.0x one cold solve, the TEHL line at SRR 1 2.10-2.17x against
+1.89-1.90x the isothermal solve.)
 """
 
 from __future__ import annotations

@@ -121,12 +121,17 @@ class LTCAResult:
         for h in ("left", "right"):
             k = getattr(self, f"k_secant_{h}")
             F = getattr(self, f"force_{h}")
-            with np.errstate(divide="ignore", invalid="ignore"):
-                e = np.where(k > 0, self.lte - F / np.where(k > 0, k, 1.0), self.lte)
+            e = unloaded_te(self.lte, F, k)
             out.update({f"k_secant_{h}": k, f"k_tangent_{h}": getattr(self, f"k_tangent_{h}"), f"lte_{h}": self.lte,
                         f"nlte_{h}": getattr(self, f"nlte_{h}"), f"e_{h}": e, f"force_{h}": F,
                         f"p_max_{h}": getattr(self, f"p_max_{h}")})
         return out
+
+
+def unloaded_te(lte: np.ndarray, force: np.ndarray, k_secant: np.ndarray) -> np.ndarray:
+    """e_s = LTE − F_s/k_s: the kinematic error with which the secant mesh law
+    N_s = k_s (δ − e_s) reproduces the LTCA's loads; LTE where the helix carries no load."""
+    return lte - force / np.where(k_secant > 0, k_secant, np.inf)
 
 
 def normal_force(pair: GearPair, torque: float, driver: str = "pinion") -> float:

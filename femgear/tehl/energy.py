@@ -185,10 +185,11 @@ def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int) -> np.ndarray:
     near = _energy_matrix(*args, band=JAEGER_BAND, order=pos)  # unknowns cell by cell: banded
     solve = _banded_lu(near)
     far = _jaeger_far(args[-2], args[-1], 2 * args[6] / args[4], n_theta)
-    x = np.zeros_like(rhs) if solve is None else solve(rhs[perm])[pos]
+    rhs_c = rhs[perm]
+    x = np.zeros_like(rhs) if solve is None else solve(rhs_c)[pos]
     last = np.inf
     for _ in range(SWEEPS if solve is not None else 0):
-        d = solve(rhs[perm] - near @ x[perm] - far(x)[perm])[pos]
+        d = solve(rhs_c - near @ x[perm] - far(x)[perm])[pos]
         x += d
         dt, dq = float(np.max(np.abs(d[:n_theta]))), float(np.max(np.abs(d[n_theta:])))
         if not np.isfinite(dt + dq) or dt > 4 * last:
