@@ -71,7 +71,8 @@ WARM_COARSE = 5.0
 HIGH_ALPHA_FROM = 17.0
 _RELAX_HIGH = RelaxOptions(omega_dist=0.5, omega_gs=0.5, max_log_eta=20.0)
 HIGH_ALPHA = FasOptions(relax=_RELAX_HIGH, relax_fine=_RELAX_HIGH, coarse_newton=10, fmg_sweeps=40,
-                        spike_guard=5, max_cycles=60, w_switch=False, stall_after=99,
+                        spike_guard=4, eliminate=6, freeze_guard=True, top_damping=0.7,
+                        max_cycles=60, w_switch=False, stall_after=99,
                         relax_top=RelaxOptions(omega_dist=0.3, omega_gs=0.3, max_log_eta=20.0))
 
 
