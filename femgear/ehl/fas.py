@@ -38,8 +38,9 @@ secant prediction of :mod:`fas_point`. From alpha_bar ~13
 ((50, 10), (20, 20), (200, 10)) the standard cycles stall on the coarse grids, which is why
 ``solve_point(method='auto')`` keeps the Newton solver there; beyond alpha_bar 17 the
 options HIGH_ALPHA of :mod:`fas_point` (a larger per-sweep cap, sweeps after each FMG
-interpolation, the correction kept off the outlet spike on 257^2) converge (20, 20) on
-129^2 and (100, 20) on 257^2.
+interpolation; on 257^2 the correction kept off the outlet spike, the spike nodes
+eliminated by exact local solves, :mod:`eliminate`) converge (20, 20) and (100, 20) on
+129^2 and 257^2.
 """
 
 from __future__ import annotations
