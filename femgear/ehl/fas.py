@@ -212,7 +212,7 @@ class FAS:
         damp = o.top_damping if top else 1.0
         P += damp * corr
         np.maximum(P, 0.0, out=P)
-        H0 += damp * (H0n - H0)
+        H0 = H0n if damp == 1.0 else H0 + damp * (H0n - H0)  # undamped: bit-identical
         for _ in range(post):
             _sweep(lv, P, H0, f, ro, frozen)
         if o.eliminate and top:  # the spike nodes solved exactly (module eliminate)
