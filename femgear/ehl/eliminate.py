@@ -50,7 +50,8 @@ class SpikeElimination:
         self.jj, self.ii = np.nonzero(mask)
         self.rows = self.jj * (lv.nx - 2) + self.ii  # interior flat index
         self.full = (self.jj + 1) * lv.nx + self.ii + 1  # full-grid flat index
-        self._nb, self._K = None, None
+        self.mask = mask
+        self._nb, self._K, self._c, self._chord = None, None, None, None
 
     def jacobian(self, P: np.ndarray, H: np.ndarray) -> np.ndarray:
         """dL_S / dP_S at (P, H), the elastic part through the dense kernel block."""
@@ -74,21 +75,25 @@ class SpikeElimination:
         best iterate is kept: inside a cycle the elimination is one part of the
         iteration, whose own convergence test decides). Chord steps: the factors of the
         last Jacobian are kept while the active set stays and each step reduces |F_S| by
-        CHORD_RATE or more (a dense factorisation of the ~1000-3000 free nodes costs 0.3-0.8 s, a
-        chord step a few ms)."""
+        CHORD_RATE or more (a dense factorisation of the ~1000-3000 free nodes costs
+        0.3-0.8 s, a chord step a few ms); a later ``solve`` on the same set (the next
+        cycle's) starts from them, with the row scaling of the first."""
         if self.rows.size == 0:
             return [0.0]
-        H = self.lv.film(P, H0)
-        c = 1.0 / np.maximum(np.abs(np.diag(self.jacobian(P, H))), 1e-12)
+        H, J0 = self.lv.film(P, H0), None
+        if self._c is None:
+            J0 = self.jacobian(P, H)
+            self._c = 1.0 / np.maximum(np.abs(np.diag(J0)), 1e-12)
+        c, chord = self._c, self._chord
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             F, H, act = self.merit(P, H0, f, c)
-            hist, chord = [float(np.linalg.norm(F))], None
+            hist = [float(np.linalg.norm(F))]
             for _ in range(self.max_iter):
                 if hist[-1] < self.tol:
                     break
                 try:
                     if chord is None or not np.array_equal(chord[0], act):
-                        chord = (act, *self._factor(P, H, c, act))
+                        chord, J0 = (act, *self._factor(P, H, c, act, J0)), None
                     d = self._direction(F, *chord)
                 except (sla.LinAlgError, ValueError):
                     break
@@ -101,12 +106,14 @@ class SpikeElimination:
                 P[...], (F, H, act) = trial[0], trial[1:]
                 hist.append(float(np.linalg.norm(F)))
                 chord = chord[:-1] + (True,) if hist[-1] <= CHORD_RATE * hist[-2] else None
+        self._chord = None if chord is None else chord[:-1] + (True,)
         return hist
 
-    def _factor(self, P, H, c, act):
+    def _factor(self, P, H, c, act, J=None):
         """(LU of J_II, J_IA, False) at (P, H): the rows of the free (pressurised) nodes
-        of the scaled local Jacobian -c dL/dP, split by the active set."""
-        J = -c[:, None] * self.jacobian(P, H)
+        of the scaled local Jacobian -c dL/dP (``J``: dL/dP at (P, H) when known), split
+        by the active set."""
+        J = -c[:, None] * (self.jacobian(P, H) if J is None else J)
         free = ~act
         lu = sla.lu_factor(J[np.ix_(free, free)], check_finite=False) if free.any() else None
         return lu, J[np.ix_(free, act)], False

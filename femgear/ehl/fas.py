@@ -177,6 +177,7 @@ class FAS:
         self.hist = History()
         self.relax = self.opts.relax
         self.sweeps, self.gamma = (self.opts.pre, self.opts.post), self.opts.gamma
+        self._elim: SpikeElimination | None = None  # the last spike elimination (cycle)
 
     def cycle(self, k: int, P: np.ndarray, H0: float, f: np.ndarray, g: float,
               frozen: np.ndarray | None = None):
@@ -217,7 +218,10 @@ class FAS:
             _sweep(lv, P, H0, f, ro, frozen)
         if o.eliminate and top:  # the spike nodes solved exactly (module eliminate)
             mask = _steep(lv.coefficients(P, lv.film(P, H0))[0], o.eliminate)[1:-1, 1:-1]
-            self.hist.eliminated.append(SpikeElimination(lv, mask).solve(P, H0, f)[-1])
+            el = self._elim
+            if el is None or el.lv is not lv or not np.array_equal(el.mask, mask):
+                el = self._elim = SpikeElimination(lv, mask)  # else: the last one's factors
+            self.hist.eliminated.append(el.solve(P, H0, f)[-1])
         return P, H0
 
     def record(self, k: int, P, H0) -> np.ndarray:
