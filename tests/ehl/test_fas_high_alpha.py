@@ -81,7 +81,7 @@ def _order(a: float, b: float, c: float) -> float:
 
 @pytest.mark.slow
 def test_fas_20_20_converges_on_257():
-    """(20, 20), alpha_bar 19.8, on 257^2 (~45 s; before: the cycles hovered at a residual
+    """(20, 20), alpha_bar 19.8, on 257^2 (~30 s; before: the cycles hovered at a residual
     of 0.3-0.5 and the solve fell back to Newton, which failed). Validation: Hc within the
     combined error estimates of the FE Newton 129^2 answer (measured 7.2814 / 7.2786,
     +0.04 %, estimates 0.17 % + 0.11 %); Hmin 4.6671 / 4.6547 (+0.27 %, just above the
