@@ -65,13 +65,17 @@ WARM_COARSE = 5.0
 # 30 sweeps on 129^2; with the cap 20/alpha_bar 0.64 -> 0.006 monotonically); 40 sweeps
 # after each interpolation (FasOptions.fmg_sweeps); 10 coarse Newton steps per cycle (3 left
 # the load error at 1e-2); on 257^2 the coarse-grid correction kept off the outlet spike
-# (spike_guard, fas._steep), omega 0.3 there, no W-cycles, no stall test (the residual
-# falls unevenly). Result: (100, 20) converges on 257^2 in ~50 cycles; (20, 20) passes 65^2
-# and 129^2 but its 257^2 cycles stay at a residual of ~0.4 (it falls back to Newton).
+# (spike_guard 4, fas._steep) and the spike eliminated by an exact local Newton solve within
+# 6 nodes of it after each cycle (eliminate; Cai & Li 2011, femgear.ehl.eliminate), the
+# 129^2 level of those cycles keeping the guarded nodes fixed (freeze_guard), the
+# correction damped by 0.7 (top_damping), omega 0.3 there, no W-cycles, no stall test (the
+# residual falls unevenly). Result on 257^2: (20, 20) in 13 cycles (with the guard alone
+# its cycles stayed at a residual of ~0.4), (100, 20) in 6 (with the guard alone 50).
 HIGH_ALPHA_FROM = 17.0
 _RELAX_HIGH = RelaxOptions(omega_dist=0.5, omega_gs=0.5, max_log_eta=20.0)
 HIGH_ALPHA = FasOptions(relax=_RELAX_HIGH, relax_fine=_RELAX_HIGH, coarse_newton=10, fmg_sweeps=40,
-                        spike_guard=5, max_cycles=60, w_switch=False, stall_after=99,
+                        spike_guard=4, eliminate=6, freeze_guard=True, top_damping=0.7,
+                        max_cycles=60, w_switch=False, stall_after=99,
                         relax_top=RelaxOptions(omega_dist=0.3, omega_gs=0.3, max_log_eta=20.0))
 
 

@@ -280,8 +280,8 @@ def fas_suits(M: float, L: float, level: int, rigid: bool, viscosity: str, compr
     (20, 10), (20, 5) (alpha_bar 4.9-9.9); at (50, 10), (100, 10) (alpha_bar 13-17) it
     converges on a 33^2 coarsest grid but its 129^2 answer is less accurate than Newton's
     ((100, 10): estimate 4.3 %); beyond alpha_bar 17 ``method='fas'`` takes the HIGH_ALPHA
-    cycles of fas_point ((20, 20) and (100, 20) converge on 129^2, (100, 20) also on 257^2,
-    (20, 20) not there), so 'auto' keeps Newton there. Slender ellipses on their stretched
+    cycles of fas_point ((20, 20) and (100, 20) converge on 129^2 and 257^2, where the FE
+    Newton solver fails; only these two were measured), 'auto' keeps Newton there. Slender ellipses on their stretched
     grids (lambda <= SLENDER) take the multigrid up to FAS_ALPHA_MAX_SLENDER."""
     alpha_max = FAS_ALPHA_MAX_SLENDER if ratio <= SLENDER else FAS_ALPHA_MAX
     return (viscosity == "barus" and not compressible and not rigid and level >= 3
