@@ -12,14 +12,18 @@ One iteration:
    the coast flanks keep the contact-line mean of −ζ_T;
 2. dynamics with the mesh stiffness, μ(u) and those deviations → the dynamic mesh
    force of each helix over one mesh period (phase average of the steady state);
-3. load sharing along the contact lines → passage-mean load intensity w̄'(u);
+3. load sharing along the contact lines → passage-mean load intensity w̄'(u): a Winkler
+   layer c_l(u) on the flank deviations, or with ``ltca`` the load distribution of the
+   pass's (deviated) LTCA cycle scaled to the dynamic force (:func:`ltca_reference`);
 4. lubrication at every path position (load, radius, entrainment, slide-to-roll,
    bulk temperature) → μ(u) and the contact temperature rise ΔT(u);
 5. thermal expansion of both flanks for the bulk (body) temperature rise
    (:func:`bulk_temperature_rise`: the scene's ``thermal.flank_temperature_rise``, or,
    when that is 0, ``thermal.bulk_fraction`` × the mean contact temperature rise along
    the path, the ISO/TS 6336-21 integral-temperature estimate) → ζ_T1, ζ_T2;
-6. Archard wear after ``wear.cycles`` under the dynamic load → h1, h2;
+6. Archard wear after ``wear.cycles`` under the dynamic load → h1, h2 (with ``ltca``: the
+   load shared like the pass's LTCA cycle, moved by the wear grown since by the Winkler
+   layer, :func:`femgear.wear.load_sharing.reference_loads`);
 7. relaxation of the inputs of the next iteration (μ, ζ_T, h) by ``relax``.
 
 Build once, apply many: the dynamic model, its modes, the thermal unit responses and
@@ -35,7 +39,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -50,7 +54,7 @@ from femgear.dynamics.run import DynamicsRun, run_dynamics
 from femgear.errors import ConvergenceError
 from femgear.lubrication.levels import Lubrication, lubrication_solver
 from femgear.stiffness.tvms import MeshStiffness
-from femgear.wear.load_sharing import load_map
+from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map
 
 
 @dataclass(frozen=True)
@@ -172,6 +176,8 @@ class CouplingState:
     dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)   #: the pass's run
     lte_peak_to_peak: float = math.nan    #: loaded TE p-p of the deviated flanks (``ltca`` only) [m]
     seconds: float = 0.0
+    #: wall time of the pass's parts [s]: ``ltca`` (the deviated cycle), ``dynamics`` (with it), ``wear``, ``contact``
+    timings: Mapping[str, float] = field(default_factory=dict, compare=False)
 
     @property
     def removed(self) -> np.ndarray:
@@ -183,12 +189,34 @@ class CouplingState:
         return {} if self.dynamics is None else self.dynamics.amplitudes
 
 
-def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray):
+def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray) -> ReferenceLoad:
+    """The load map of the ``ltca`` cycle ``info`` (:func:`femgear.ltca.level.ltca_cycle` or
+    :func:`~femgear.ltca.level.deviated_cycle`) at the path positions ``u``, computed under the flank
+    deviation ``deviation`` (h1 + h2, or h1 + h2 − ζ_T1 − ζ_T2: what its user passes as deviation)."""
+    res = info["ltca"]
+    return ReferenceLoad(phases=res.phase, load=res.path_load(pair, u), deviation=np.asarray(deviation, dtype=float),
+                         offsets=(0.0, float(info["options"]["stagger"])))
+
+
+def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray):
+    """(wear, contact) reference load maps of the LTCA cycle ``info`` run on the deviation wear − ζ_T
+    (None, None without ``ltca``): the wear integration moves h1 + h2, the contact response h1 + h2 − ζ_T."""
+    if info is None:
+        return None, None
+    ref = ltca_reference(setup.pair, setup.kin.u, info, wear.sum(axis=0))
+    return ref, replace(ref, deviation=wear.sum(axis=0) - zeta.sum(axis=0))
+
+
+def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray,
+                      reference: ReferenceLoad | None = None):
     """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication."""
     pair, kin = setup.pair, setup.kin
-    maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
-            for s, off in enumerate((0.0, setup.case.stagger)[:pair.n_helices])]
-    w = np.mean([m.mean_load for m in maps], axis=0)
+    if reference is None:
+        maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
+                for s, off in enumerate((0.0, setup.case.stagger)[:pair.n_helices])]
+        w = np.mean([m.mean_load for m in maps], axis=0)
+    else:
+        w = reference_load_map(pair, kin.u, force, removed, setup.c_l, reference).mean_load
     w = np.maximum(w, 1e-3 * setup.static_force / pair.mean_contact_length)   # never-loaded ends
     T0 = setup.case.operating.ambient_temperature
     mu, dT = setup.lubrication(w=w, R=kin.R, ue=kin.ue, srr=np.abs(kin.srr), T=np.full(w.shape, T0))
@@ -202,46 +230,48 @@ def _thermal(setup: CouplingSetup, dT: np.ndarray) -> tuple[float, np.ndarray]:
     return rise, setup.thermal.deviation(rise, setup.case.thermal.shaft_temperature_rise)
 
 
-def _wear(setup: CouplingSetup, force: np.ndarray) -> np.ndarray:
+def _wear(setup: CouplingSetup, force: np.ndarray, reference: ReferenceLoad | None = None) -> np.ndarray:
     case = setup.case
     n = setup.kin.u.size
     if case.levels.wear == "none" or case.wear.cycles == 0:
         return np.zeros((2, n))
     from femgear.wear import WearSetup, run_wear
 
-    ws = WearSetup(pair=setup.pair, kin=setup.kin, force=force[:setup.pair.n_helices].mean(axis=0), c_l=setup.c_l,
-                   coefficient=case.wear.coefficient, hardness=case.material.hardness, n_phase=setup.n_phase)
+    helices = force[:setup.pair.n_helices]
+    ws = WearSetup(pair=setup.pair, kin=setup.kin, force=helices.mean(axis=0) if reference is None else helices,
+                   c_l=setup.c_l, coefficient=case.wear.coefficient, hardness=case.material.hardness,
+                   n_phase=setup.n_phase, reference=reference)
     state = run_wear(ws, case.wear.cycles)
     return np.array([state.h1, state.h2])
 
 
-def _deviated_model(setup: CouplingSetup, state: CouplingState) -> tuple[GearRotorModel, MeshDeviation | None, float]:
-    """The model, the deviation tables it still needs, and the LTE p-p of an ``ltca`` re-run (nan without)."""
+def _deviated_model(setup: CouplingSetup, state: CouplingState):
+    """The model, the deviation tables it still needs, and the ``ltca`` cycle of the deviated flanks (None without)."""
     u, wear, zeta = setup.kin.u, state.wear, state.thermal_deviation
     deviation = mesh_deviation(setup.pair, u, wear.sum(axis=0), zeta.sum(axis=0), setup.case.stagger, setup.n_phase)
     if setup.ltca is None:
-        return setup.model, deviation, math.nan
+        return setup.model, deviation, None
     if deviation is None:
-        return setup.model, None, setup.ltca["lte_peak_to_peak"]
+        return setup.model, None, setup.ltca
     from femgear.ltca.level import deviated_cycle
     from femgear.ltca.separation import path_deviation
 
     worn = deviated_cycle(setup.ltca, path_deviation(setup.pair, u, wear - zeta))
     coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)
-    return with_deviated_tooth_contact(setup.model, setup.ltca, worn), coast_only, worn["lte_peak_to_peak"]
+    return with_deviated_tooth_contact(setup.model, setup.ltca, worn), coast_only, worn
 
 
-def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, float]:
-    """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the LTCA's LTE p-p)."""
+def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, dict | None]:
+    """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the pass's LTCA cycle)."""
     u_tab, mu_tab = setup.kin.u, state.mu
     mu = (lambda u: np.interp(u, u_tab, mu_tab)) if np.any(mu_tab > 0) else 0.0
-    base, deviation, lte = _deviated_model(setup, state)
+    base, deviation, info = _deviated_model(setup, state)
     model = with_deviation(with_friction(base, mu), deviation)
     num = setup.case.numerics
     run = run_dynamics(model, method=setup.method or num.dynamics_method, cycles=num.dynamics_cycles,
                        transient_cycles=num.transient_cycles, steps_per_period=num.steps_per_mesh_period,
                        modal=setup.modal)
-    return phase_average(run.response, setup.n_phase), run, lte
+    return phase_average(run.response, setup.n_phase), run, info
 
 
 def phase_average(res, n_phase: int) -> np.ndarray:
@@ -273,22 +303,30 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
         raise ValueError(f"relax must be in (0, 1] (got {relax!r})")
     t0 = time.perf_counter()
     force = np.full((2, setup.n_phase), setup.static_force)
-    wear = _wear(setup, force)
-    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0))
+    zero = np.zeros((2, setup.kin.u.size))
+    ref_wear, ref_contact = _references(setup, setup.ltca, zero, zero)
+    wear = _wear(setup, force, ref_wear)
+    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact)
     rise, zeta = _thermal(setup, dT)
     state = CouplingState(0, force, w, mu, dT, rise, zeta, wear, seconds=time.perf_counter() - t0)
     yield state
     while True:
         t0 = time.perf_counter()
-        force, run, lte = _dynamics(setup, state)
-        wear_new = _wear(setup, force)
-        w, mu_new, dT = _contact_response(setup, force, state.removed)
+        force, run, info = _dynamics(setup, state)
+        t1 = time.perf_counter()
+        ref_wear, ref_contact = _references(setup, info, state.wear, state.thermal_deviation)
+        wear_new = _wear(setup, force, ref_wear)
+        t2 = time.perf_counter()
+        w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact)
         rise, zeta_new = _thermal(setup, dT)
         mix = lambda old, new: old + relax * (new - old)  # noqa: E731
+        lte = math.nan if info is None else info["lte_peak_to_peak"]
+        rerun = 0.0 if info is None or info is setup.ltca else info["ltca"].seconds
+        timings = {"ltca": rerun, "dynamics": t1 - t0, "wear": t2 - t1, "contact": time.perf_counter() - t2}
         state = CouplingState(state.iteration + 1, force, w, mix(state.mu, mu_new), dT, rise,
                               mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new),
                               float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
-                              float(np.max(np.abs(mu_new - state.mu))), run, lte, time.perf_counter() - t0)
+                              float(np.max(np.abs(mu_new - state.mu))), run, lte, time.perf_counter() - t0, timings)
         for name, value in (("mesh_force", force), ("mu", state.mu), ("wear", state.wear)):
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError("coupling", f"non-finite {name} in iteration {state.iteration}")

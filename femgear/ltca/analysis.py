@@ -115,6 +115,35 @@ class LTCAResult:
                 out[(name, int(j))] = float(np.sum(arr[m, 4] * self.line_length[i][m]))
         return out
 
+    def path_load(self, pair: GearPair, u: np.ndarray) -> np.ndarray:
+        """Load per unit contact-line length w' at the path positions ``u`` [N/m]: (helix, phase, position).
+
+        For each phase and helix, every grid position u on a contact line takes the linear
+        interpolant of the line's point loads in u (constant beyond the first and last segment
+        centre up to the line's ends, which lie half a segment further); 0 off the lines.  The
+        points of a helical line have distinct u (u = u₀ + ζ tan β_b), so a line is a function
+        of u.  Where lines of one helix overlap in u (overlap ratio ε_β > 1) the loads of the
+        covering lines are averaged (the face-uniform reading of :mod:`femgear.wear.load_sharing`).
+        """
+        if not self.line_load:
+            raise ValueError("no line loads kept: run mesh_cycle(..., keep_lines=True)")
+        u = np.asarray(u, float)
+        half = 0.5 * math.cos(pair.beta_b) * math.tan(pair.beta_b)   # Δu of half a segment per unit Δℓ
+        out = np.zeros((2, self.phase.size, u.size))
+        for i, arr in enumerate(self.line_load):
+            dl = self.line_length[i]
+            for h in range(2):
+                hits = np.zeros(u.size)
+                for j in np.unique(arr[arr[:, 0] == h, 1]):
+                    m = (arr[:, 0] == h) & (arr[:, 1] == j)
+                    order = np.argsort(arr[m, 2])
+                    uj, wj, lj = arr[m, 2][order], arr[m, 4][order], dl[m][order]
+                    on = (u >= uj[0] - half * lj[0]) & (u <= uj[-1] + half * lj[-1])
+                    out[h, i, on] += np.interp(u[on], uj, wj)
+                    hits[on] += 1
+                out[h, i] /= np.maximum(hits, 1)
+        return out
+
     def excitation(self) -> dict[str, np.ndarray]:
         """Per helix: secant/tangent stiffness, loaded and unloaded TE, e_s = LTE − F_s/k_s (SI)."""
         out = {"phase": self.phase}

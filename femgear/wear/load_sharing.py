@@ -51,16 +51,18 @@ def distribute(force: np.ndarray, cover: np.ndarray, du: np.ndarray, deviation: 
     """Load per unit length w'(φ, u) [N/m] for per-phase forces ``force`` [N].
 
     ``du`` are the quadrature weights of the positions (trapezoid), ``deviation`` the
-    flank deviation h(u) [m] (positive = material removed), ``c_l`` the stiffness per
-    unit line length [N/m²], a number or one value per position.
+    flank deviation h(u) [m] (positive = material removed), or one row per phase (the
+    effective deviation of :func:`reference_load_map`); ``c_l`` the stiffness per unit
+    line length [N/m²], a number or one value per position.
     """
-    c_all = np.broadcast_to(np.asarray(c_l, dtype=float), deviation.shape)
+    c_all = np.broadcast_to(np.asarray(c_l, dtype=float), du.shape)
     w = np.zeros(cover.shape)
     for i in range(cover.shape[0]):
         on = cover[i]
         if not on.any() or force[i] <= 0:
             continue
-        h, cw = deviation[on], c_all[on] * du[on] / sin_beta_b
+        h = (deviation[i] if deviation.ndim == 2 else deviation)[on]
+        cw = c_all[on] * du[on] / sin_beta_b
 
         def excess(delta: float) -> float:
             return float(np.sum(np.maximum(delta - h, 0.0) * cw)) - force[i]
@@ -101,6 +103,93 @@ def load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.nda
     count = loaded.sum(axis=0)
     mean = np.where(count > 0, w.sum(axis=0) / np.maximum(count, 1), 0.0)
     return LoadMap(u=u, mean_load=mean, loaded_fraction=count / n_phase)
+
+
+LOADED = 1e-9   #: w' above this fraction of the largest counts as loaded (the approach is solved to ~1e-13)
+
+
+@dataclass(frozen=True)
+class ReferenceLoad:
+    """A contact analysis's load along the contact lines, to share the load by instead of a Winkler layer.
+
+    ``load[s, i, k]``: load per unit line length [N/m] of helix s at mesh phase
+    ``phases[i]`` and path position u_k (0 off its contact lines), e.g. an LTCA cycle
+    (:meth:`femgear.ltca.analysis.LTCAResult.path_load`); ``deviation``: the flank
+    deviation h_ref(u) (the same quantity as the ``deviation`` later passed to
+    :func:`reference_load_map`) under which it was computed; ``offsets``: phase offset of
+    each helix's contact lines (0 and the stagger).
+    """
+
+    phases: np.ndarray
+    load: np.ndarray
+    deviation: np.ndarray
+    offsets: tuple[float, ...] = (0.0, 0.0)
+
+
+def _phase_forces(force, phases: np.ndarray, n_helices: int) -> np.ndarray:
+    """(n_helices, phases) helix forces from a scalar, one value per phase i/k, or one row per helix."""
+    f = np.asarray(force, dtype=float)
+    if f.ndim == 0 or f.size == 1:
+        return np.full((n_helices, phases.size), float(f.ravel()[0]))
+    rows = np.broadcast_to(f, (n_helices, f.shape[-1])) if f.ndim == 1 else f[:n_helices]
+    grid = np.arange(rows.shape[1]) / rows.shape[1]
+    return np.array([np.interp(phases, grid, r, period=1.0) for r in rows])
+
+
+def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray, c_l: float | np.ndarray,
+                    ref: ReferenceLoad) -> np.ndarray:
+    """Load per unit length w'(s, φ, u) [N/m] shared like ``ref`` and moved by the deviation change h − h_ref.
+
+    At each phase the reference shape is scaled to the helix's force F_s(φ) (a scalar, one
+    value per phase i/k shared by the helices, or one row per helix; interpolated
+    periodically onto ``ref.phases``): ŵ = w_ref F_s / ∫ w_ref dl, dl = du / sin β_b
+    (trapezoid on ``u``).  A deviation h(u) other than the reference's changes it locally
+    by a Winkler layer ``c_l``, with the approach change Δδ(φ) set by equilibrium:
+
+        w'(u, φ) = max(ŵ(u, φ) + c_l(u) (Δδ(φ) − (h(u) − h_ref(u))), 0),  Σ∫ w' dl = F_s(φ),
+
+    i.e. :func:`distribute` with the effective deviation h − h_ref − ŵ/c_l.  At h = h_ref
+    it is the reference itself (Δδ = 0); with a zero reference it is the Winkler sharing.
+    The local update is the linearisation that keeps the wear integration cheap between
+    two contact analyses (Flodin & Andersson, Wear 207 (1997) 16 use the Winkler layer
+    throughout); the reference carries what the Winkler layer misses (the elastic
+    coupling along the lines, flank modifications, line-end effects).
+    """
+    if math.sin(pair.beta_b) == 0.0:
+        raise ValueError("reference_loads: a reference load map needs helical contact lines (beta_b > 0)")
+    n_h = pair.n_helices
+    if ref.load.shape[1:] != (ref.phases.size, u.size) or ref.load.shape[0] < n_h:
+        raise ValueError(f"reference load shape {ref.load.shape} does not match ({n_h}, {ref.phases.size}, {u.size})")
+    forces = _phase_forces(force, ref.phases, n_h)
+    du, sb = trapezoid_weights(u), math.sin(pair.beta_b)
+    c = np.broadcast_to(np.asarray(c_l, dtype=float), u.shape)
+    dh = np.asarray(deviation, dtype=float) - ref.deviation
+    out = np.zeros((n_h, ref.phases.size, u.size))
+    for s in range(n_h):
+        cover = phase_coverage(pair, u, ref.phases, ref.offsets[s])
+        base = np.where(cover, ref.load[s], 0.0)
+        carried = base @ du / sb
+        scale = np.divide(forces[s], carried, out=np.zeros_like(carried), where=carried > 0)
+        out[s] = distribute(forces[s], cover, du, dh[None, :] - base * scale[:, None] / c, c, sb)
+    return out
+
+
+def reference_load_map(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray, c_l: float | np.ndarray,
+                       ref: ReferenceLoad) -> LoadMap:
+    """:class:`LoadMap` of :func:`reference_loads`: per helix the mean over the phases that load u, then
+    the mean of the helices (both helices carry the same face-uniform deviation).
+
+    A flank point at u passes the contact once per engagement, at a face position that moves
+    linearly with the phase, so this phase mean is the mean over the face of the passage load
+    (the face-uniform wear reading); positions whose reference load is 0 (e.g. a tip relief's
+    open gap) count as unloaded unless the deviation change closes them
+    (w' > :data:`LOADED` × the largest).
+    """
+    w = reference_loads(pair, u, force, deviation, c_l, ref)
+    loaded = w > LOADED * w.max()
+    count = loaded.sum(axis=1)
+    mean = np.where(count > 0, w.sum(axis=1) / np.maximum(count, 1), 0.0)
+    return LoadMap(u=u, mean_load=mean.mean(axis=0), loaded_fraction=(count / ref.phases.size).mean(axis=0))
 
 
 def _spur_load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.ndarray,
