@@ -22,8 +22,9 @@ One iteration:
    when that is 0, ``thermal.bulk_fraction`` × the mean contact temperature rise along
    the path, the ISO/TS 6336-21 integral-temperature estimate) → ζ_T1, ζ_T2;
 6. Archard wear after ``wear.cycles`` under the dynamic load → h1, h2 (with ``ltca``: the
-   load shared like the pass's LTCA cycle, moved by the wear grown since by the Winkler
-   layer, :func:`femgear.wear.load_sharing.reference_loads`);
+   load shared like the unworn LTCA cycle, modifications included, moved by the wear grown
+   by the Winkler layer, :func:`femgear.wear.load_sharing.reference_loads`; or blended
+   towards the pass's cycle, ``CouplingSetup.wear_anchor``);
 7. relaxation of the inputs of the next iteration (μ, ζ_T, h) by ``relax``.
 
 Build once, apply many: the dynamic model, its modes, the thermal unit responses and
@@ -133,6 +134,18 @@ class CouplingSetup:
     n_phase: int = 128
     method: str | None = None      #: integrator; None: the dynamics' default for the model
     ltca: dict | None = None       #: the unworn LTCA cycle of an ``ltca`` stiffness (re-run on deviated flanks)
+    #: ``ltca``: the LTCA cycles the wear integration of a pass shares the load like: ``"unworn"`` (the
+    #: unworn cycle, moved by the wear grown through the Winkler layer c_l) or ``"pass"`` (blended from
+    #: the unworn cycle to the pass's deviated one).  ``"pass"`` reproduces the deviated LTCA at the
+    #: pass's wear, but the LTCA unloads worn ends faster than the Winkler layer restores them, so the
+    #: wear then depends on the previous pass's wear with a gain below −1: the loop oscillates with
+    #: ``relax = 1`` (measured, baseline wear 1e6: wear at the path end 7.2 ↔ 7.4 µm, Δμ 0.03, 30
+    #: passes) and needs under-relaxation; ``"unworn"`` converges like the other levels (4 passes).
+    wear_anchor: str = "unworn"
+
+    def __post_init__(self):
+        if self.wear_anchor not in ("unworn", "pass"):
+            raise ValueError(f"wear_anchor must be 'unworn' or 'pass' (got {self.wear_anchor!r})")
 
     @property
     def pair(self):
@@ -148,7 +161,8 @@ class CouplingSetup:
 
     @classmethod
     def from_case(cls, case: Case, n_phase: int = 128, lubrication: Lubrication | None = None,
-                  method: str | None = None, stiffness: MeshStiffness | None = None) -> CouplingSetup:
+                  method: str | None = None, stiffness: MeshStiffness | None = None,
+                  wear_anchor: str = "unworn") -> CouplingSetup:
         source = stiffness_source(case, stiffness)
         model = build_model(case, stiffness=source, friction=0.0)
         c_l = line_stiffness(case, float(np.mean(model.stiffness.k_left)), stiffness)
@@ -156,7 +170,7 @@ class CouplingSetup:
         return cls(case=case, model=model, modal=modal_analysis(model),
                    lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
                    c_l=c_l, static_force=case.operating.normal_force / case.pair.n_helices, n_phase=n_phase, method=method,
-                   ltca=info if "model" in info and "excitation" in info else None)
+                   ltca=info if "model" in info and "excitation" in info else None, wear_anchor=wear_anchor)
 
 
 @dataclass(frozen=True)
@@ -199,12 +213,25 @@ def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray) -> Re
 
 
 def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray):
-    """(wear, contact) reference load maps of the LTCA cycle ``info`` run on the deviation wear − ζ_T
-    (None, None without ``ltca``): the wear integration moves h1 + h2, the contact response h1 + h2 − ζ_T."""
+    """(wear, contact) reference load maps for the pass whose LTCA cycle ``info`` ran on the deviation
+    wear − ζ_T (None, None without ``ltca``).
+
+    The contact response sees h1 + h2 − ζ_T = that deviation: the cycle's own loads.  The wear
+    integration runs h = h1 + h2 from 0 to the pass's wear, from the unworn cycle (run without wear
+    and thermal growth, i.e. at h = Σζ_T in h), which the Winkler layer moves by the wear grown
+    (``wear_anchor = "unworn"``); with ``"pass"`` the reference ends at the pass's cycle (at h =
+    Σ wear), blended along the way by the wear's progress towards Σ wear (see :class:`CouplingSetup`).
+    """
     if info is None:
         return None, None
-    ref = ltca_reference(setup.pair, setup.kin.u, info, wear.sum(axis=0))
-    return ref, replace(ref, deviation=wear.sum(axis=0) - zeta.sum(axis=0))
+    h, z = wear.sum(axis=0), zeta.sum(axis=0)
+    ref = ltca_reference(setup.pair, setup.kin.u, info, h)
+    if info is setup.ltca:
+        return ref, replace(ref, deviation=h - z)
+    unworn = ltca_reference(setup.pair, setup.kin.u, setup.ltca, z)
+    if setup.wear_anchor == "unworn":
+        return unworn, replace(ref, deviation=h - z)
+    return replace(unworn, end=ref, start=np.zeros_like(h)), replace(ref, deviation=h - z)
 
 
 def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray,

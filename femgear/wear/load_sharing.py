@@ -118,12 +118,28 @@ class ReferenceLoad:
     deviation h_ref(u) (the same quantity as the ``deviation`` later passed to
     :func:`reference_load_map`) under which it was computed; ``offsets``: phase offset of
     each helix's contact lines (0 and the stagger).
+
+    ``end``: optionally a second analysis (same phases) on the flanks a deviation path
+    reaches, which begins at ``start`` (default: ``deviation``): along the path the reference
+    is blended linearly between the two (:func:`reference_loads`), so that both analyses are
+    reproduced where they were computed.
     """
 
     phases: np.ndarray
     load: np.ndarray
     deviation: np.ndarray
     offsets: tuple[float, ...] = (0.0, 0.0)
+    end: ReferenceLoad | None = None
+    start: np.ndarray | None = None
+
+    def progress(self, deviation: np.ndarray) -> float:
+        """s ∈ [0, 1]: projection of deviation − start on end.deviation − start (1 where they coincide)."""
+        if self.end is None:
+            return 0.0
+        start = self.deviation if self.start is None else self.start
+        d = self.end.deviation - start
+        dd = float(d @ d)
+        return 1.0 if dd == 0.0 else min(max(float((deviation - start) @ d) / dd, 0.0), 1.0)
 
 
 def _phase_forces(force, phases: np.ndarray, n_helices: int) -> np.ndarray:
@@ -154,23 +170,34 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
     two contact analyses (Flodin & Andersson, Wear 207 (1997) 16 use the Winkler layer
     throughout); the reference carries what the Winkler layer misses (the elastic
     coupling along the lines, flank modifications, line-end effects).
+
+    With ``ref.end`` the reference is ŵ = (1 − s) ŵ_ref + s ŵ_end and h_ref = (1 − s) h_ref +
+    s h_end, s = ``ref.progress(h)``: the secant of the contact analysis between its two
+    solutions instead of the Winkler layer's response (which differs from it, and made the
+    coupling loop's wear oscillate when it bridged the whole wear from the end alone).
     """
     if math.sin(pair.beta_b) == 0.0:
         raise ValueError("reference_loads: a reference load map needs helical contact lines (beta_b > 0)")
     n_h = pair.n_helices
-    if ref.load.shape[1:] != (ref.phases.size, u.size) or ref.load.shape[0] < n_h:
-        raise ValueError(f"reference load shape {ref.load.shape} does not match ({n_h}, {ref.phases.size}, {u.size})")
+    for a in (ref, ref.end or ref):
+        if a.load.shape[1:] != (ref.phases.size, u.size) or a.load.shape[0] < n_h:
+            raise ValueError(f"reference load shape {a.load.shape} does not match ({n_h}, {ref.phases.size}, {u.size})")
     forces = _phase_forces(force, ref.phases, n_h)
     du, sb = trapezoid_weights(u), math.sin(pair.beta_b)
     c = np.broadcast_to(np.asarray(c_l, dtype=float), u.shape)
-    dh = np.asarray(deviation, dtype=float) - ref.deviation
+    deviation = np.asarray(deviation, dtype=float)
+    t = ref.progress(deviation)
+    anchors = [(wt, a) for wt, a in ((1.0 - t, ref), (t, ref.end)) if wt > 0]
+    dh = deviation - sum(wt * a.deviation for wt, a in anchors)
     out = np.zeros((n_h, ref.phases.size, u.size))
     for s in range(n_h):
         cover = phase_coverage(pair, u, ref.phases, ref.offsets[s])
-        base = np.where(cover, ref.load[s], 0.0)
-        carried = base @ du / sb
-        scale = np.divide(forces[s], carried, out=np.zeros_like(carried), where=carried > 0)
-        out[s] = distribute(forces[s], cover, du, dh[None, :] - base * scale[:, None] / c, c, sb)
+        base = np.zeros(cover.shape)
+        for wt, a in anchors:
+            shape = np.where(cover, a.load[s], 0.0)
+            carried = shape @ du / sb
+            base += wt * shape * np.divide(forces[s], carried, out=np.zeros_like(carried), where=carried > 0)[:, None]
+        out[s] = distribute(forces[s], cover, du, dh[None, :] - base / c, c, sb)
     return out
 
 
