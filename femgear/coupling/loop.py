@@ -203,13 +203,16 @@ class CouplingState:
         return {} if self.dynamics is None else self.dynamics.amplitudes
 
 
-def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray) -> ReferenceLoad:
+def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra=None) -> ReferenceLoad:
     """The load map of the ``ltca`` cycle ``info`` (:func:`femgear.ltca.level.ltca_cycle` or
-    :func:`~femgear.ltca.level.deviated_cycle`) at the path positions ``u``, computed under the flank
-    deviation ``deviation`` (h1 + h2, or h1 + h2 − ζ_T1 − ζ_T2: what its user passes as deviation)."""
+    :func:`~femgear.ltca.level.deviated_cycle`, run with the extra deviation ``extra``) at the path
+    positions ``u``, computed under the flank deviation ``deviation`` (h1 + h2, or h1 + h2 − ζ_T1 −
+    ζ_T2: what its user passes as deviation), with its elastic approach δ − ε (the secant stiffness
+    by which a deviation change moves its loads, :meth:`ReferenceLoad.stiffness`)."""
     res = info["ltca"]
     return ReferenceLoad(phases=res.phase, load=res.path_load(pair, u), deviation=np.asarray(deviation, dtype=float),
-                         offsets=(0.0, float(info["options"]["stagger"])))
+                         offsets=(0.0, float(info["options"]["stagger"])),
+                         approach=res.path_approach(pair, u, info.get("modifications"), extra))
 
 
 def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray):
@@ -225,7 +228,12 @@ def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta:
     if info is None:
         return None, None
     h, z = wear.sum(axis=0), zeta.sum(axis=0)
-    ref = ltca_reference(setup.pair, setup.kin.u, info, h)
+    extra = None
+    if info is not setup.ltca:
+        from femgear.ltca.separation import path_deviation
+
+        extra = path_deviation(setup.pair, setup.kin.u, wear - zeta)
+    ref = ltca_reference(setup.pair, setup.kin.u, info, h, extra)
     if info is setup.ltca:
         return ref, replace(ref, deviation=h - z)
     unworn = ltca_reference(setup.pair, setup.kin.u, setup.ltca, z)

@@ -53,15 +53,16 @@ def distribute(force: np.ndarray, cover: np.ndarray, du: np.ndarray, deviation: 
     ``du`` are the quadrature weights of the positions (trapezoid), ``deviation`` the
     flank deviation h(u) [m] (positive = material removed), or one row per phase (the
     effective deviation of :func:`reference_load_map`); ``c_l`` the stiffness per unit
-    line length [N/m²], a number or one value per position.
+    line length [N/m²], a number, one value per position or one row per phase.
     """
-    c_all = np.broadcast_to(np.asarray(c_l, dtype=float), du.shape)
+    c_l = np.asarray(c_l, dtype=float)
     w = np.zeros(cover.shape)
     for i in range(cover.shape[0]):
         on = cover[i]
         if not on.any() or force[i] <= 0:
             continue
         h = (deviation[i] if deviation.ndim == 2 else deviation)[on]
+        c_all = np.broadcast_to(c_l[i] if c_l.ndim == 2 else c_l, du.shape)
         cw = c_all[on] * du[on] / sin_beta_b
 
         def excess(delta: float) -> float:
@@ -69,8 +70,8 @@ def distribute(force: np.ndarray, cover: np.ndarray, du: np.ndarray, deviation: 
 
         lo = float(h.min())
         hi = lo + force[i] / cw.sum() + float(np.ptp(h)) + 1e-30
-        while excess(hi) < 0:  # pragma: no cover - the bracket above already suffices
-            hi *= 2
+        while excess(hi) < 0:   # only by round-off: the bracket above suffices in exact arithmetic
+            hi += hi - lo           # (a doubling of hi itself ran away when hi < 0: effective deviations)
         delta = brentq(excess, lo, hi, xtol=1e-16, rtol=1e-13)
         w[i, on] = c_all[on] * np.maximum(delta - h, 0.0)
     return w
@@ -106,6 +107,7 @@ def load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.nda
 
 
 LOADED = 1e-9   #: w' above this fraction of the largest counts as loaded (the approach is solved to ~1e-13)
+SECANT_FLOOR = 0.05   #: approaches below this fraction of the median use c_l (w'/(δ − ε) is ill-defined there)
 
 
 @dataclass(frozen=True)
@@ -131,6 +133,24 @@ class ReferenceLoad:
     offsets: tuple[float, ...] = (0.0, 0.0)
     end: ReferenceLoad | None = None
     start: np.ndarray | None = None
+    #: elastic approach δ − ε of the analysis at the same points [m] (NaN off the lines); where given,
+    #: the deviation change moves each loaded point with its secant stiffness w'/(δ − ε), not c_l
+    approach: np.ndarray | None = None
+
+    def stiffness(self, c_l: np.ndarray) -> np.ndarray:
+        """Per helix, phase and position the stiffness the deviation change acts through [N/m²]:
+        the secant w'/(δ − ε) at loaded points whose approach exceeds :data:`SECANT_FLOOR` × the
+        median approach of the loaded points, else ``c_l`` (open gaps, the contact boundary)."""
+        c = np.broadcast_to(c_l, self.load.shape).copy()
+        if self.approach is None:
+            return c
+        loaded = (self.load > 0) & np.isfinite(self.approach)
+        if not loaded.any():
+            return c
+        floor = SECANT_FLOOR * float(np.median(self.approach[loaded]))
+        ok = loaded & (np.nan_to_num(self.approach, nan=-1.0) > floor)
+        c[ok] = self.load[ok] / self.approach[ok]
+        return c
 
     def progress(self, deviation: np.ndarray) -> float:
         """s ∈ [0, 1]: projection of deviation − start on end.deviation − start (1 where they coincide)."""
@@ -164,7 +184,12 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
 
         w'(u, φ) = max(ŵ(u, φ) + c_l(u) (Δδ(φ) − (h(u) − h_ref(u))), 0),  Σ∫ w' dl = F_s(φ),
 
-    i.e. :func:`distribute` with the effective deviation h − h_ref − ŵ/c_l.  At h = h_ref
+    i.e. :func:`distribute` with the effective deviation h − h_ref − ŵ/c_l.  With
+    ``ref.approach`` c_l is, at each loaded point, the analysis's own secant stiffness
+    w_ref/(δ − ε) (:meth:`ReferenceLoad.stiffness`): a point then unloads once the deviation
+    change reaches its elastic approach, as in the analysis — the uniform c_l would keep a
+    load peak (the LTCA's tip-edge contact of unmodified flanks: up to 30× the mean w' at the
+    path end) loaded until the wear reached that peak over c_l (150 µm).  At h = h_ref
     it is the reference itself (Δδ = 0); with a zero reference it is the Winkler sharing.
     The local update is the linearisation that keeps the wear integration cheap between
     two contact analyses (Flodin & Andersson, Wear 207 (1997) 16 use the Winkler layer
@@ -184,11 +209,12 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
             raise ValueError(f"reference load shape {a.load.shape} does not match ({n_h}, {ref.phases.size}, {u.size})")
     forces = _phase_forces(force, ref.phases, n_h)
     du, sb = trapezoid_weights(u), math.sin(pair.beta_b)
-    c = np.broadcast_to(np.asarray(c_l, dtype=float), u.shape)
+    c_l = np.broadcast_to(np.asarray(c_l, dtype=float), u.shape)
     deviation = np.asarray(deviation, dtype=float)
     t = ref.progress(deviation)
     anchors = [(wt, a) for wt, a in ((1.0 - t, ref), (t, ref.end)) if wt > 0]
     dh = deviation - sum(wt * a.deviation for wt, a in anchors)
+    stiff = sum(wt * a.stiffness(c_l) for wt, a in anchors)
     out = np.zeros((n_h, ref.phases.size, u.size))
     for s in range(n_h):
         cover = phase_coverage(pair, u, ref.phases, ref.offsets[s])
@@ -197,7 +223,7 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
             shape = np.where(cover, a.load[s], 0.0)
             carried = shape @ du / sb
             base += wt * shape * np.divide(forces[s], carried, out=np.zeros_like(carried), where=carried > 0)[:, None]
-        out[s] = distribute(forces[s], cover, du, dh[None, :] - base / c, c, sb)
+        out[s] = distribute(forces[s], cover, du, dh[None, :] - base / stiff[s], stiff[s], sb)
     return out
 
 

@@ -8,12 +8,13 @@ that reproduces each analysis at its own deviation.
 """
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
 from femgear.geometry import kinematics, path_positions
-from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map, reference_loads, trapezoid_weights
+from femgear.wear.load_sharing import load_map, reference_load_map, reference_loads, trapezoid_weights
 
 C_L = 1.5e10        #: a Winkler line stiffness of the order of the baseline's [N/m²]
 
@@ -29,9 +30,12 @@ def _cycle(model, force, mods=None, extra=None):
     return mesh_cycle(model, force, mods, n_phases=16, stagger=0.0, n_line=8, extra=extra)
 
 
-def _reference(pair, u, res, deviation=None):
+def _reference(pair, u, res, deviation=None, mods=None, extra=None):
+    """The coupling's reference of an LTCA cycle: its loads and secant stiffness w'/(δ − ε) on the grid."""
+    from femgear.coupling.loop import ltca_reference
+
     dev = np.zeros(u.size) if deviation is None else deviation
-    return ReferenceLoad(phases=res.phase, load=res.path_load(pair, u), deviation=dev, offsets=(0.0, 0.0))
+    return ltca_reference(pair, u, {"ltca": res, "options": {"stagger": 0.0}, "modifications": mods}, dev, extra)
 
 
 @pytest.fixture(scope="module")
@@ -90,13 +94,10 @@ def test_a_pinion_tip_relief_lowers_the_wear_rate_at_the_pinion_tip(coarse_model
     relieved = _cycle(coarse_model, baseline_force, mods)
     kin = kinematics(p, u, 500 * 2 * math.pi / 60)
     base = WearSetup.from_scene(baseline_scene, kin, p)
-    rates = {}
-    for name, res in (("plain", plain), ("relief", relieved)):
-        setup = WearSetup(pair=p, kin=kin, force=base.force, c_l=base.c_l, coefficient=base.coefficient,
-                          hardness=base.hardness, reference=_reference(p, u, res))
-        rates[name] = wear_rates(setup, WearState.zero(u.size))
+    zero = WearState.zero(u.size)
+    r1_plain = wear_rates(replace(base, reference=_reference(p, u, plain)), zero)[0]
+    r1_relief = wear_rates(replace(base, reference=_reference(p, u, relieved, mods=mods)), zero)[0]
     tip = u > u[-1] - 1.5e-3                 # the outer half of the relief
-    r1_plain, r1_relief = rates["plain"][0], rates["relief"][0]
     assert np.all(r1_relief[tip] < 0.5 * r1_plain[tip])
     start = u < u[0] + 1.5e-3
     assert np.allclose(r1_relief[start], r1_plain[start], rtol=0.3)
@@ -111,9 +112,8 @@ def test_the_blended_reference_reproduces_each_analysis_at_its_deviation(coarse_
     p, u = baseline_pair, grid
     wear = 3e-6 * ((u - p.u_pitch) / np.ptp(u)) ** 2 * 4
     worn = _cycle(coarse_model, baseline_force, extra=path_deviation(p, u, np.array([wear, 0 * wear])))
-    end = _reference(p, u, worn, wear)
-    ref = ReferenceLoad(plain.phase, plain.path_load(p, u), np.zeros(u.size), (0.0, 0.0), end=end,
-                        start=np.zeros(u.size))
+    end = _reference(p, u, worn, wear, extra=path_deviation(p, u, np.array([wear, 0 * wear])))
+    ref = replace(_reference(p, u, plain), end=end, start=np.zeros(u.size))
     F = np.array([worn.force_left, worn.force_right])
     at_end = reference_loads(p, u, F, wear, C_L, ref)
     assert np.allclose(at_end, reference_loads(p, u, F, wear, C_L, end), rtol=1e-9, atol=1e-9)
@@ -159,3 +159,20 @@ def test_a_coupling_pass_shares_the_wear_and_the_contact_load_like_its_ltca_cycl
     assert _references(setup, None, wear, zeta) == (None, None)
     same, _ = _references(setup, unworn_info, 0 * wear, 0 * zeta)
     assert same.end is None and np.array_equal(same.load, ref_wear.load)
+
+
+def test_a_loaded_point_unloads_once_the_deviation_change_reaches_its_elastic_approach(plain, baseline_pair, grid):
+    """The secant update: removing the point's approach δ − ε (× 1.1) at the stiffest loaded point (the
+    highest load over its approach, at the path ends) unloads it at that phase; the uniform c_l would
+    keep it loaded (a peak w' > c_l (δ − ε) survives a removal of δ − ε)."""
+    p, u = baseline_pair, grid
+    ref = _reference(p, u, plain)
+    c_l = np.full(u.size, C_L)
+    stiff = ref.stiffness(c_l)
+    s, i, k = np.unravel_index(np.argmax(np.where(ref.load > 0, stiff, 0.0)), stiff.shape)
+    assert stiff[s, i, k] > 1.2 * C_L
+    dev = np.zeros(u.size)
+    dev[k] = 1.1 * ref.approach[s, i, k]
+    F = np.array([plain.force_left, plain.force_right])
+    assert reference_loads(p, u, F, dev, c_l, ref)[s, i, k] == 0.0
+    assert reference_loads(p, u, F, dev, c_l, replace(ref, approach=None))[s, i, k] > 0.0
