@@ -203,16 +203,21 @@ class CouplingState:
         return {} if self.dynamics is None else self.dynamics.amplitudes
 
 
-def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra=None) -> ReferenceLoad:
+def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra=None,
+                   n_phase: int | None = None) -> ReferenceLoad:
     """The load map of the ``ltca`` cycle ``info`` (:func:`femgear.ltca.level.ltca_cycle` or
     :func:`~femgear.ltca.level.deviated_cycle`, run with the extra deviation ``extra``) at the path
     positions ``u``, computed under the flank deviation ``deviation`` (h1 + h2, or h1 + h2 − ζ_T1 −
     ζ_T2: what its user passes as deviation), with its elastic approach δ − ε (the secant stiffness
-    by which a deviation change moves its loads, :meth:`ReferenceLoad.stiffness`)."""
+    by which a deviation change moves its loads, :meth:`ReferenceLoad.stiffness`).
+
+    ``n_phase``: keep every k-th phase of the cycle, k = ⌈phases / n_phase⌉ (the wear integration
+    solves each kept phase of both helices at every step; None keeps all)."""
     res = info["ltca"]
-    return ReferenceLoad(phases=res.phase, load=res.path_load(pair, u), deviation=np.asarray(deviation, dtype=float),
-                         offsets=(0.0, float(info["options"]["stagger"])),
-                         approach=res.path_approach(pair, u, info.get("modifications"), extra))
+    k = 1 if n_phase is None else max(1, math.ceil(res.phase.size / n_phase))
+    return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u)[:, ::k],
+                         deviation=np.asarray(deviation, dtype=float), offsets=(0.0, float(info["options"]["stagger"])),
+                         approach=res.path_approach(pair, u, info.get("modifications"), extra)[:, ::k])
 
 
 def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray):
@@ -233,10 +238,10 @@ def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta:
         from femgear.ltca.separation import path_deviation
 
         extra = path_deviation(setup.pair, setup.kin.u, wear - zeta)
-    ref = ltca_reference(setup.pair, setup.kin.u, info, h, extra)
+    ref = ltca_reference(setup.pair, setup.kin.u, info, h, extra, setup.n_phase)
     if info is setup.ltca:
         return ref, replace(ref, deviation=h - z)
-    unworn = ltca_reference(setup.pair, setup.kin.u, setup.ltca, z)
+    unworn = ltca_reference(setup.pair, setup.kin.u, setup.ltca, z, n_phase=setup.n_phase)
     if setup.wear_anchor == "unworn":
         return unworn, replace(ref, deviation=h - z)
     return replace(unworn, end=ref, start=np.zeros_like(h)), replace(ref, deviation=h - z)

@@ -147,7 +147,7 @@ def test_a_coupling_pass_shares_the_wear_and_the_contact_load_like_its_ltca_cycl
     zeta = np.full((2, u.size), 0.3e-6)
     worn = _cycle(coarse_model, baseline_force, extra=path_deviation(p, u, wear - zeta))
     unworn_info, worn_info = ({"ltca": r, "options": {"stagger": 0.0}} for r in (plain, worn))
-    setup = SimpleNamespace(pair=p, kin=SimpleNamespace(u=u), ltca=unworn_info, wear_anchor="unworn")
+    setup = SimpleNamespace(pair=p, kin=SimpleNamespace(u=u), ltca=unworn_info, wear_anchor="unworn", n_phase=64)
     ref_wear, ref_contact = _references(setup, worn_info, wear, zeta)
     assert np.array_equal(ref_contact.load, worn.path_load(p, u))
     assert np.allclose(ref_contact.deviation, wear.sum(axis=0) - zeta.sum(axis=0), rtol=0, atol=1e-18)
@@ -159,6 +159,9 @@ def test_a_coupling_pass_shares_the_wear_and_the_contact_load_like_its_ltca_cycl
     assert _references(setup, None, wear, zeta) == (None, None)
     same, _ = _references(setup, unworn_info, 0 * wear, 0 * zeta)
     assert same.end is None and np.array_equal(same.load, ref_wear.load)
+    setup.n_phase = 6                        # every third of the 16 phases
+    fewer, _ = _references(setup, unworn_info, 0 * wear, 0 * zeta)
+    assert np.array_equal(fewer.phases, plain.phase[::3]) and np.array_equal(fewer.load, same.load[:, ::3])
 
 
 def test_a_loaded_point_unloads_once_the_deviation_change_reaches_its_elastic_approach(plain, baseline_pair, grid):
