@@ -137,10 +137,10 @@ class CouplingSetup:
     #: ``ltca``: the LTCA cycles the wear integration of a pass shares the load like: ``"unworn"`` (the
     #: unworn cycle, moved by the wear grown through the Winkler layer c_l) or ``"pass"`` (blended from
     #: the unworn cycle to the pass's deviated one).  ``"pass"`` reproduces the deviated LTCA at the
-    #: pass's wear, but the LTCA unloads worn ends faster than the Winkler layer restores them, so the
+    #: pass's wear, but the LTCA unloads worn ends faster than the local update restores them, so the
     #: wear then depends on the previous pass's wear with a gain below −1: the loop oscillates with
-    #: ``relax = 1`` (measured, baseline wear 1e6: wear at the path end 7.2 ↔ 7.4 µm, Δμ 0.03, 30
-    #: passes) and needs under-relaxation; ``"unworn"`` converges like the other levels (4 passes).
+    #: ``relax = 1`` (measured, baseline wear 1e6: largest wear 6.5 ↔ 7.1 µm, Δμ 0.02–0.03 over 12
+    #: passes) and needs under-relaxation; ``"unworn"`` converges like the other levels (5 passes).
     wear_anchor: str = "unworn"
 
     def __post_init__(self):
