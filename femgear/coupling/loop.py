@@ -55,7 +55,7 @@ from femgear.dynamics.run import DynamicsRun, run_dynamics
 from femgear.errors import ConvergenceError
 from femgear.lubrication.levels import Lubrication, lubrication_solver
 from femgear.stiffness.tvms import MeshStiffness
-from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map
+from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map, trapezoid_weights
 
 
 @dataclass(frozen=True)
@@ -215,7 +215,7 @@ def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra
     solves each kept phase of both helices at every step; None keeps all)."""
     res = info["ltca"]
     k = 1 if n_phase is None else max(1, math.ceil(res.phase.size / n_phase))
-    return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u)[:, ::k],
+    return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u, trapezoid_weights(u))[:, ::k],
                          deviation=np.asarray(deviation, dtype=float), offsets=(0.0, float(info["options"]["stagger"])),
                          approach=res.path_approach(pair, u, info.get("modifications"), extra)[:, ::k])
 

@@ -116,8 +116,9 @@ class LTCAResult:
         return out
 
     def _path_lines(self, pair: GearPair, u: np.ndarray):
-        """Per phase i and helix h, each contact line's grid positions: (i, h, on-mask, u_j, w_j, ζ(u)) with
-        the line's point positions u_j and loads w_j sorted in u and the face coordinate of u on it."""
+        """Per phase i and helix h, each contact line's grid positions: (i, h, on-mask, u_j, w_j, ζ(u), F) with
+        the line's point positions u_j and loads w_j sorted in u, the face coordinate of u on it and
+        the line's load F = Σ w_j Δℓ_j [N]."""
         if not self.line_load:
             raise ValueError("no line loads kept: run mesh_cycle(..., keep_lines=True)")
         tb = math.tan(pair.beta_b)
@@ -130,9 +131,9 @@ class LTCAResult:
                     order = np.argsort(arr[m, 2])
                     uj, wj, zj, lj = arr[m, 2][order], arr[m, 4][order], arr[m, 3][order], dl[m][order]
                     on = (u >= uj[0] - half * lj[0]) & (u <= uj[-1] + half * lj[-1])
-                    yield i, h, on, uj, wj, zj[0] + (u[on] - uj[0]) / tb
+                    yield i, h, on, uj, wj, zj[0] + (u[on] - uj[0]) / tb, float(wj @ lj)
 
-    def path_load(self, pair: GearPair, u: np.ndarray) -> np.ndarray:
+    def path_load(self, pair: GearPair, u: np.ndarray, weights: np.ndarray | None = None) -> np.ndarray:
         """Load per unit contact-line length w' at the path positions ``u`` [N/m]: (helix, phase, position).
 
         For each phase and helix, every grid position u on a contact line takes the linear
@@ -141,12 +142,21 @@ class LTCAResult:
         points of a helical line have distinct u (u = u₀ + ζ tan β_b), so a line is a function
         of u.  Where lines of one helix overlap in u (overlap ratio ε_β > 1) the loads of the
         covering lines are averaged (the face-uniform reading of :mod:`femgear.wear.load_sharing`).
+
+        ``weights``: the quadrature weights Δu of the positions; each line's grid loads are then
+        scaled to carry the line's LTCA load, Σ w' Δu / sin β_b = Σ w'_p Δℓ_p.  Without it a line
+        piece much shorter than the grid spacing (where a contact line meets a tip edge, its
+        one point can carry 30× the mean w') would count over a whole grid cell (up to 3× the
+        helix force at that phase on the level-1 model with 61 positions).
         """
         u = np.asarray(u, float)
         out = np.zeros((2, self.phase.size, u.size))
         hits = np.zeros(out.shape)
-        for i, h, on, uj, wj, _ in self._path_lines(pair, u):
-            out[h, i, on] += np.interp(u[on], uj, wj)
+        sb = math.sin(pair.beta_b)
+        for i, h, on, uj, wj, _, carried in self._path_lines(pair, u):
+            w = np.interp(u[on], uj, wj)
+            grid = float(w @ weights[on]) / sb if weights is not None else 0.0
+            out[h, i, on] += w * (carried / grid) if grid > 0 else w
             hits[h, i, on] += 1
         return out / np.maximum(hits, 1)
 
@@ -163,7 +173,7 @@ class LTCAResult:
         u = np.asarray(u, float)
         out = np.zeros((2, self.phase.size, u.size))
         hits = np.zeros(out.shape)
-        for i, h, on, _, _, zeta in self._path_lines(pair, u):
+        for i, h, on, _, _, zeta, _ in self._path_lines(pair, u):
             eps = separation(pair, modifications, ("left", "right")[h], u[on], zeta, extra)
             out[h, i, on] += self.lte[i] - eps
             hits[h, i, on] += 1
