@@ -188,8 +188,8 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
     ``ref.approach`` c_l is, at each loaded point, the analysis's own secant stiffness
     w_ref/(δ − ε) (:meth:`ReferenceLoad.stiffness`): a point then unloads once the deviation
     change reaches its elastic approach, as in the analysis — the uniform c_l would keep a
-    load peak (the LTCA's tip-edge contact of unmodified flanks: up to 30× the mean w' at the
-    path end) loaded until the wear reached that peak over c_l (150 µm).  At h = h_ref
+    load peak (the LTCA's path ends of unmodified flanks: up to 6× the mean w') loaded until
+    the wear reached that peak over c_l (34 µm).  At h = h_ref
     it is the reference itself (Δδ = 0); with a zero reference it is the Winkler sharing.
     The local update is the linearisation that keeps the wear integration cheap between
     two contact analyses (Flodin & Andersson, Wear 207 (1997) 16 use the Winkler layer
