@@ -28,7 +28,9 @@ import numpy as np
 
 from femgear.case import Case, build_case
 from femgear.contact.path import ContactPath, contact_along_path
-from femgear.coupling.loop import CouplingSetup, CouplingState, line_stiffness, run_coupled, thermal_units
+from femgear.coupling.loop import (
+    CouplingSetup, CouplingState, line_stiffness, ltca_reference, run_coupled, thermal_units,
+)
 from femgear.lubrication.levels import friction_along_path
 from femgear.results import RunResult, Tribology
 from femgear.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
@@ -61,7 +63,8 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
                      wear_checkpoint: Path | None = None) -> Tribology:
     """Friction, thermal deviation and wear once, at the static load: friction at the contact
     pass's shared line load w(u) (:mod:`femgear.contact.sharing`), wear with the load shared
-    along the contact lines by the local pair stiffness (:func:`line_stiffness`)."""
+    along the contact lines by the local pair stiffness (:func:`line_stiffness`), with ``ltca`` as the
+    LTCA cycle shares it (:func:`ltca_reference`)."""
     w = np.asarray(contact.line_load, dtype=float)      # load sharing between the pairs in contact
     mu = dT = zeta = wear = None
     if case.levels.lubrication != "none":
@@ -76,9 +79,11 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         pair = case.pair
         k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
             case.stiffness.mesh_stiffness_per_width * pair.b
+        info = {} if stiffness is None else stiffness.info
+        ref = ltca_reference(pair, case.path.u, info, np.zeros(case.path.u.size)) if "ltca" in info else None
         setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / pair.n_helices,
                           c_l=line_stiffness(case, k_mean, stiffness),
-                          coefficient=case.wear.coefficient, hardness=case.material.hardness)
+                          coefficient=case.wear.coefficient, hardness=case.material.hardness, reference=ref)
         state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)
         wear, cycles, steps = np.array([state.h1, state.h2]), state.cycles, state.steps
     return Tribology(load_per_length=w, friction_coefficient=mu, temperature_rise=dT,

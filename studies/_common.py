@@ -67,7 +67,9 @@ def coupled_case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = Fal
     if static:
         state, history, converged = next(coupling_iterations(setup)), {}, True
     else:
-        res = run_coupled(setup, one_way=coarse)
+        passes: list[dict] = []          # wall time of each pass's parts (CouplingState.timings)
+        res = run_coupled(setup, one_way=coarse,
+                          progress=lambda s: passes.append(dict(s.timings)) if s.iteration else None)
         state, history, converged = res.state, asdict(res.history), res.converged
     u = setup.kin.u
     dev = mesh_deviation(setup.pair, u, state.wear.sum(axis=0), state.thermal_deviation.sum(axis=0),
@@ -75,6 +77,7 @@ def coupled_case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = Fal
     zero = np.zeros((2, setup.n_phase))
     drive, coast = (zero, zero) if dev is None else (dev.drive, dev.coast)
     out = {"overrides": list(overrides), "coarse": coarse, "converged": converged, "history": history,
+           "pass_timings": [] if static else passes,
            "u": u, "u_pitch": setup.pair.u_pitch, "mu": state.mu, "temperature_rise": state.temperature_rise,
            "flank_temperature_rise": state.flank_temperature_rise, "wear": state.wear,
            "thermal_deviation": state.thermal_deviation, "removed": state.removed, "mesh_force_phase": state.mesh_force,

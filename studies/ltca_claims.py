@@ -12,13 +12,20 @@ deviation tables, :mod:`femgear.coupling.profile`); with ``ltca`` each coupling 
 re-runs the LTCA on the worn and expanded drive flanks (the compliance is reused;
 :func:`femgear.dynamics.build.with_deviated_tooth_contact`) and the coast flanks take the
 contact-line mean of the thermal expansion.  Amplitudes: half peak-to-peak of the member centres, steady state; Δ % against
-the new gear (wear cases) or against thermal off (45 K).  Prints a table and a JSON line;
+the new gear (wear cases) or against thermal off (45 K).  With ``ltca`` the wear and the
+lubrication load are shared along the contact lines like the LTCA cycles (the wear from the
+unworn cycle, the contact load of each pass from its deviated cycle:
+:func:`femgear.coupling.loop.ltca_reference`).  Then the cost of a coupling pass (median
+wall time of the LTCA re-run, the dynamics including it, the wear, the contact response),
+the passes to convergence and the largest wear depth.  Prints a table and a JSON line;
 writes ``out/ltca_claims/ltca_claims.json``.
 """
 
 from __future__ import annotations
 
 import sys
+
+import numpy as np
 
 try:
     from studies import _common as C
@@ -43,6 +50,10 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
             rows[name] = {f"{m}.{q}.{ax}": C.amplitude(c, m, q, ax) for m, q, ax in KEYS}
             rows[name]["converged"] = c["converged"]
             rows[name]["lte_um"] = 1e6 * c["lte_peak_to_peak"]     # loaded TE p-p of the deviated flanks (ltca)
+            rows[name]["passes"] = len(c["history"].get("iteration", [])) - 1
+            rows[name]["wear_max_um"] = 1e6 * float(np.max(c["wear"])) if np.any(c["wear"]) else 0.0
+            rows[name]["pass_seconds"] = {k: float(np.median([t[k] for t in c["pass_timings"]]))
+                                          for k in ("ltca", "dynamics", "wear", "contact")} if c["pass_timings"] else {}
         for name, r in rows.items():         # wear against the new gear, 45 K against thermal off
             base = rows["thermal off" if name == "45 K" else "new"]
             r["change_percent"] = {k: 100 * (r[k] / base[k] - 1) for k in (f"{m}.{q}.{ax}" for m, q, ax in KEYS)}
@@ -58,6 +69,11 @@ def table(res: dict) -> str:
         for name, r in rows.items():
             cells = [f"{r[f'{m}.{q}.{ax}']:10.4g} ({r['change_percent'][f'{m}.{q}.{ax}']:+6.1f})" for m, q, ax in KEYS]
             lines.append(f"{lv:9s} {name:>9s} | " + " | ".join(cells) + f" | {r['lte_um']:.3f}")
+    lines += ["", "cost per coupling pass (median over the passes) [s]; passes; largest wear depth [µm]"]
+    for lv, rows in res["levels"].items():
+        for name, r in rows.items():
+            t = "  ".join(f"{k} {v:.2f}" for k, v in r["pass_seconds"].items())
+            lines.append(f"{lv:9s} {name:>9s} | {t} | passes {r['passes']} | wear {r['wear_max_um']:.2f}")
     return "\n".join(lines)
 
 

@@ -12,14 +12,19 @@ One iteration:
    the coast flanks keep the contact-line mean of −ζ_T;
 2. dynamics with the mesh stiffness, μ(u) and those deviations → the dynamic mesh
    force of each helix over one mesh period (phase average of the steady state);
-3. load sharing along the contact lines → passage-mean load intensity w̄'(u);
+3. load sharing along the contact lines → passage-mean load intensity w̄'(u): a Winkler
+   layer c_l(u) on the flank deviations, or with ``ltca`` the load distribution of the
+   pass's (deviated) LTCA cycle scaled to the dynamic force (:func:`ltca_reference`);
 4. lubrication at every path position (load, radius, entrainment, slide-to-roll,
    bulk temperature) → μ(u) and the contact temperature rise ΔT(u);
 5. thermal expansion of both flanks for the bulk (body) temperature rise
    (:func:`bulk_temperature_rise`: the scene's ``thermal.flank_temperature_rise``, or,
    when that is 0, ``thermal.bulk_fraction`` × the mean contact temperature rise along
    the path, the ISO/TS 6336-21 integral-temperature estimate) → ζ_T1, ζ_T2;
-6. Archard wear after ``wear.cycles`` under the dynamic load → h1, h2;
+6. Archard wear after ``wear.cycles`` under the dynamic load → h1, h2 (with ``ltca``: the
+   load shared like the unworn LTCA cycle, modifications included, moved by the wear grown
+   by the Winkler layer, :func:`femgear.wear.load_sharing.reference_loads`; or blended
+   towards the pass's cycle, ``CouplingSetup.wear_anchor``);
 7. relaxation of the inputs of the next iteration (μ, ζ_T, h) by ``relax``.
 
 Build once, apply many: the dynamic model, its modes, the thermal unit responses and
@@ -35,7 +40,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -50,7 +55,7 @@ from femgear.dynamics.run import DynamicsRun, run_dynamics
 from femgear.errors import ConvergenceError
 from femgear.lubrication.levels import Lubrication, lubrication_solver
 from femgear.stiffness.tvms import MeshStiffness
-from femgear.wear.load_sharing import load_map
+from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map, trapezoid_weights
 
 
 @dataclass(frozen=True)
@@ -129,6 +134,18 @@ class CouplingSetup:
     n_phase: int = 128
     method: str | None = None      #: integrator; None: the dynamics' default for the model
     ltca: dict | None = None       #: the unworn LTCA cycle of an ``ltca`` stiffness (re-run on deviated flanks)
+    #: ``ltca``: the LTCA cycles the wear integration of a pass shares the load like: ``"unworn"`` (the
+    #: unworn cycle, moved by the wear grown through the Winkler layer c_l) or ``"pass"`` (blended from
+    #: the unworn cycle to the pass's deviated one).  ``"pass"`` reproduces the deviated LTCA at the
+    #: pass's wear, but the LTCA unloads worn ends faster than the local update restores them, so the
+    #: wear then depends on the previous pass's wear with a gain below −1: the loop oscillates with
+    #: ``relax = 1`` (measured, baseline wear 1e6: largest wear 6.5 ↔ 7.1 µm, Δμ 0.02–0.03 over 12
+    #: passes) and needs under-relaxation; ``"unworn"`` converges like the other levels (5 passes).
+    wear_anchor: str = "unworn"
+
+    def __post_init__(self):
+        if self.wear_anchor not in ("unworn", "pass"):
+            raise ValueError(f"wear_anchor must be 'unworn' or 'pass' (got {self.wear_anchor!r})")
 
     @property
     def pair(self):
@@ -144,7 +161,8 @@ class CouplingSetup:
 
     @classmethod
     def from_case(cls, case: Case, n_phase: int = 128, lubrication: Lubrication | None = None,
-                  method: str | None = None, stiffness: MeshStiffness | None = None) -> CouplingSetup:
+                  method: str | None = None, stiffness: MeshStiffness | None = None,
+                  wear_anchor: str = "unworn") -> CouplingSetup:
         source = stiffness_source(case, stiffness)
         model = build_model(case, stiffness=source, friction=0.0)
         c_l = line_stiffness(case, float(np.mean(model.stiffness.k_left)), stiffness)
@@ -152,7 +170,7 @@ class CouplingSetup:
         return cls(case=case, model=model, modal=modal_analysis(model),
                    lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
                    c_l=c_l, static_force=case.operating.normal_force / case.pair.n_helices, n_phase=n_phase, method=method,
-                   ltca=info if "model" in info and "excitation" in info else None)
+                   ltca=info if "model" in info and "excitation" in info else None, wear_anchor=wear_anchor)
 
 
 @dataclass(frozen=True)
@@ -172,6 +190,8 @@ class CouplingState:
     dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)   #: the pass's run
     lte_peak_to_peak: float = math.nan    #: loaded TE p-p of the deviated flanks (``ltca`` only) [m]
     seconds: float = 0.0
+    #: wall time of the pass's parts [s]: ``ltca`` (the deviated cycle), ``dynamics`` (with it), ``wear``, ``contact``
+    timings: Mapping[str, float] = field(default_factory=dict, compare=False)
 
     @property
     def removed(self) -> np.ndarray:
@@ -183,12 +203,60 @@ class CouplingState:
         return {} if self.dynamics is None else self.dynamics.amplitudes
 
 
-def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray):
+def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra=None,
+                   n_phase: int | None = None) -> ReferenceLoad:
+    """The load map of the ``ltca`` cycle ``info`` (:func:`femgear.ltca.level.ltca_cycle` or
+    :func:`~femgear.ltca.level.deviated_cycle`, run with the extra deviation ``extra``) at the path
+    positions ``u``, computed under the flank deviation ``deviation`` (h1 + h2, or h1 + h2 − ζ_T1 −
+    ζ_T2: what its user passes as deviation), with its elastic approach δ − ε (the secant stiffness
+    by which a deviation change moves its loads, :meth:`ReferenceLoad.stiffness`).
+
+    ``n_phase``: keep every k-th phase of the cycle, k = ⌈phases / n_phase⌉ (the wear integration
+    solves each kept phase of both helices at every step; None keeps all)."""
+    res = info["ltca"]
+    k = 1 if n_phase is None else max(1, math.ceil(res.phase.size / n_phase))
+    return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u, trapezoid_weights(u))[:, ::k],
+                         deviation=np.asarray(deviation, dtype=float), offsets=(0.0, float(info["options"]["stagger"])),
+                         approach=res.path_approach(pair, u, info.get("modifications"), extra)[:, ::k])
+
+
+def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray):
+    """(wear, contact) reference load maps for the pass whose LTCA cycle ``info`` ran on the deviation
+    wear − ζ_T (None, None without ``ltca``).
+
+    The contact response sees h1 + h2 − ζ_T = that deviation: the cycle's own loads.  The wear
+    integration runs h = h1 + h2 from 0 to the pass's wear, from the unworn cycle (run without wear
+    and thermal growth, i.e. at h = Σζ_T in h), which the Winkler layer moves by the wear grown
+    (``wear_anchor = "unworn"``); with ``"pass"`` the reference ends at the pass's cycle (at h =
+    Σ wear), blended along the way by the wear's progress towards Σ wear (see :class:`CouplingSetup`).
+    """
+    if info is None:
+        return None, None
+    h, z = wear.sum(axis=0), zeta.sum(axis=0)
+    extra = None
+    if info is not setup.ltca:
+        from femgear.ltca.separation import path_deviation
+
+        extra = path_deviation(setup.pair, setup.kin.u, wear - zeta)
+    ref = ltca_reference(setup.pair, setup.kin.u, info, h, extra, setup.n_phase)
+    if info is setup.ltca:
+        return ref, replace(ref, deviation=h - z)
+    unworn = ltca_reference(setup.pair, setup.kin.u, setup.ltca, z, n_phase=setup.n_phase)
+    if setup.wear_anchor == "unworn":
+        return unworn, replace(ref, deviation=h - z)
+    return replace(unworn, end=ref, start=np.zeros_like(h)), replace(ref, deviation=h - z)
+
+
+def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray,
+                      reference: ReferenceLoad | None = None):
     """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication."""
     pair, kin = setup.pair, setup.kin
-    maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
-            for s, off in enumerate((0.0, setup.case.stagger)[:pair.n_helices])]
-    w = np.mean([m.mean_load for m in maps], axis=0)
+    if reference is None:
+        maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
+                for s, off in enumerate((0.0, setup.case.stagger)[:pair.n_helices])]
+        w = np.mean([m.mean_load for m in maps], axis=0)
+    else:
+        w = reference_load_map(pair, kin.u, force, removed, setup.c_l, reference).mean_load
     w = np.maximum(w, 1e-3 * setup.static_force / pair.mean_contact_length)   # never-loaded ends
     T0 = setup.case.operating.ambient_temperature
     mu, dT = setup.lubrication(w=w, R=kin.R, ue=kin.ue, srr=np.abs(kin.srr), T=np.full(w.shape, T0))
@@ -202,46 +270,48 @@ def _thermal(setup: CouplingSetup, dT: np.ndarray) -> tuple[float, np.ndarray]:
     return rise, setup.thermal.deviation(rise, setup.case.thermal.shaft_temperature_rise)
 
 
-def _wear(setup: CouplingSetup, force: np.ndarray) -> np.ndarray:
+def _wear(setup: CouplingSetup, force: np.ndarray, reference: ReferenceLoad | None = None) -> np.ndarray:
     case = setup.case
     n = setup.kin.u.size
     if case.levels.wear == "none" or case.wear.cycles == 0:
         return np.zeros((2, n))
     from femgear.wear import WearSetup, run_wear
 
-    ws = WearSetup(pair=setup.pair, kin=setup.kin, force=force[:setup.pair.n_helices].mean(axis=0), c_l=setup.c_l,
-                   coefficient=case.wear.coefficient, hardness=case.material.hardness, n_phase=setup.n_phase)
+    helices = force[:setup.pair.n_helices]
+    ws = WearSetup(pair=setup.pair, kin=setup.kin, force=helices.mean(axis=0) if reference is None else helices,
+                   c_l=setup.c_l, coefficient=case.wear.coefficient, hardness=case.material.hardness,
+                   n_phase=setup.n_phase, reference=reference)
     state = run_wear(ws, case.wear.cycles)
     return np.array([state.h1, state.h2])
 
 
-def _deviated_model(setup: CouplingSetup, state: CouplingState) -> tuple[GearRotorModel, MeshDeviation | None, float]:
-    """The model, the deviation tables it still needs, and the LTE p-p of an ``ltca`` re-run (nan without)."""
+def _deviated_model(setup: CouplingSetup, state: CouplingState):
+    """The model, the deviation tables it still needs, and the ``ltca`` cycle of the deviated flanks (None without)."""
     u, wear, zeta = setup.kin.u, state.wear, state.thermal_deviation
     deviation = mesh_deviation(setup.pair, u, wear.sum(axis=0), zeta.sum(axis=0), setup.case.stagger, setup.n_phase)
     if setup.ltca is None:
-        return setup.model, deviation, math.nan
+        return setup.model, deviation, None
     if deviation is None:
-        return setup.model, None, setup.ltca["lte_peak_to_peak"]
+        return setup.model, None, setup.ltca
     from femgear.ltca.level import deviated_cycle
     from femgear.ltca.separation import path_deviation
 
     worn = deviated_cycle(setup.ltca, path_deviation(setup.pair, u, wear - zeta))
     coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)
-    return with_deviated_tooth_contact(setup.model, setup.ltca, worn), coast_only, worn["lte_peak_to_peak"]
+    return with_deviated_tooth_contact(setup.model, setup.ltca, worn), coast_only, worn
 
 
-def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, float]:
-    """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the LTCA's LTE p-p)."""
+def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, dict | None]:
+    """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the pass's LTCA cycle)."""
     u_tab, mu_tab = setup.kin.u, state.mu
     mu = (lambda u: np.interp(u, u_tab, mu_tab)) if np.any(mu_tab > 0) else 0.0
-    base, deviation, lte = _deviated_model(setup, state)
+    base, deviation, info = _deviated_model(setup, state)
     model = with_deviation(with_friction(base, mu), deviation)
     num = setup.case.numerics
     run = run_dynamics(model, method=setup.method or num.dynamics_method, cycles=num.dynamics_cycles,
                        transient_cycles=num.transient_cycles, steps_per_period=num.steps_per_mesh_period,
                        modal=setup.modal)
-    return phase_average(run.response, setup.n_phase), run, lte
+    return phase_average(run.response, setup.n_phase), run, info
 
 
 def phase_average(res, n_phase: int) -> np.ndarray:
@@ -273,22 +343,30 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
         raise ValueError(f"relax must be in (0, 1] (got {relax!r})")
     t0 = time.perf_counter()
     force = np.full((2, setup.n_phase), setup.static_force)
-    wear = _wear(setup, force)
-    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0))
+    zero = np.zeros((2, setup.kin.u.size))
+    ref_wear, ref_contact = _references(setup, setup.ltca, zero, zero)
+    wear = _wear(setup, force, ref_wear)
+    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact)
     rise, zeta = _thermal(setup, dT)
     state = CouplingState(0, force, w, mu, dT, rise, zeta, wear, seconds=time.perf_counter() - t0)
     yield state
     while True:
         t0 = time.perf_counter()
-        force, run, lte = _dynamics(setup, state)
-        wear_new = _wear(setup, force)
-        w, mu_new, dT = _contact_response(setup, force, state.removed)
+        force, run, info = _dynamics(setup, state)
+        t1 = time.perf_counter()
+        ref_wear, ref_contact = _references(setup, info, state.wear, state.thermal_deviation)
+        wear_new = _wear(setup, force, ref_wear)
+        t2 = time.perf_counter()
+        w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact)
         rise, zeta_new = _thermal(setup, dT)
         mix = lambda old, new: old + relax * (new - old)  # noqa: E731
+        lte = math.nan if info is None else info["lte_peak_to_peak"]
+        rerun = 0.0 if info is None or info is setup.ltca else info["ltca"].seconds
+        timings = {"ltca": rerun, "dynamics": t1 - t0, "wear": t2 - t1, "contact": time.perf_counter() - t2}
         state = CouplingState(state.iteration + 1, force, w, mix(state.mu, mu_new), dT, rise,
                               mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new),
                               float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
-                              float(np.max(np.abs(mu_new - state.mu))), run, lte, time.perf_counter() - t0)
+                              float(np.max(np.abs(mu_new - state.mu))), run, lte, time.perf_counter() - t0, timings)
         for name, value in (("mesh_force", force), ("mu", state.mu), ("wear", state.wear)):
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError("coupling", f"non-finite {name} in iteration {state.iteration}")

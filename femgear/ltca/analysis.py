@@ -115,6 +115,70 @@ class LTCAResult:
                 out[(name, int(j))] = float(np.sum(arr[m, 4] * self.line_length[i][m]))
         return out
 
+    def _path_lines(self, pair: GearPair, u: np.ndarray):
+        """Per phase i and helix h, each contact line's grid positions: (i, h, on-mask, u_j, w_j, ζ(u), F) with
+        the line's point positions u_j and loads w_j sorted in u, the face coordinate of u on it and
+        the line's load F = Σ w_j Δℓ_j [N]."""
+        if not self.line_load:
+            raise ValueError("no line loads kept: run mesh_cycle(..., keep_lines=True)")
+        tb = math.tan(pair.beta_b)
+        half = 0.5 * math.cos(pair.beta_b) * tb   # Δu of half a segment per unit Δℓ
+        for i, arr in enumerate(self.line_load):
+            dl = self.line_length[i]
+            for h in range(2):
+                for j in np.unique(arr[arr[:, 0] == h, 1]):
+                    m = (arr[:, 0] == h) & (arr[:, 1] == j)
+                    order = np.argsort(arr[m, 2])
+                    uj, wj, zj, lj = arr[m, 2][order], arr[m, 4][order], arr[m, 3][order], dl[m][order]
+                    on = (u >= uj[0] - half * lj[0]) & (u <= uj[-1] + half * lj[-1])
+                    yield i, h, on, uj, wj, zj[0] + (u[on] - uj[0]) / tb, float(wj @ lj)
+
+    def path_load(self, pair: GearPair, u: np.ndarray, weights: np.ndarray | None = None) -> np.ndarray:
+        """Load per unit contact-line length w' at the path positions ``u`` [N/m]: (helix, phase, position).
+
+        For each phase and helix, every grid position u on a contact line takes the linear
+        interpolant of the line's point loads in u (constant beyond the first and last segment
+        centre up to the line's ends, which lie half a segment further); 0 off the lines.  The
+        points of a helical line have distinct u (u = u₀ + ζ tan β_b), so a line is a function
+        of u.  Where lines of one helix overlap in u (overlap ratio ε_β > 1) the loads of the
+        covering lines are averaged (the face-uniform reading of :mod:`femgear.wear.load_sharing`).
+
+        ``weights``: the quadrature weights Δu of the positions; each line's grid loads are then
+        scaled to carry the line's LTCA load, Σ w' Δu / sin β_b = Σ w'_p Δℓ_p.  Without it a line
+        piece much shorter than the grid spacing (where a contact line meets a tip edge, its
+        one point can carry 30× the mean w') would count over a whole grid cell (up to 3× the
+        helix force at that phase on the level-1 model with 61 positions).
+        """
+        u = np.asarray(u, float)
+        out = np.zeros((2, self.phase.size, u.size))
+        hits = np.zeros(out.shape)
+        sb = math.sin(pair.beta_b)
+        for i, h, on, uj, wj, _, carried in self._path_lines(pair, u):
+            w = np.interp(u[on], uj, wj)
+            grid = float(w @ weights[on]) / sb if weights is not None else 0.0
+            out[h, i, on] += w * (carried / grid) if grid > 0 else w
+            hits[h, i, on] += 1
+        return out / np.maximum(hits, 1)
+
+    def path_approach(self, pair: GearPair, u: np.ndarray, modifications=None, extra: Deviation | None = None):
+        """Elastic approach δ − ε at the path positions ``u`` on the contact lines [m]: (helix, phase, position).
+
+        δ: the cycle's loaded TE (normal approach) at that phase; ε: the initial separation of
+        the flanks (:func:`femgear.ltca.separation.separation`) at the point of the line at u,
+        for the ``modifications`` and ``extra`` deviation the cycle was run with.  Positive where
+        the flanks are pressed together (the load there over it is the local secant stiffness),
+        negative at an open gap; NaN off the lines (the mean of overlapping lines, as
+        :meth:`path_load`).
+        """
+        u = np.asarray(u, float)
+        out = np.zeros((2, self.phase.size, u.size))
+        hits = np.zeros(out.shape)
+        for i, h, on, _, _, zeta, _ in self._path_lines(pair, u):
+            eps = separation(pair, modifications, ("left", "right")[h], u[on], zeta, extra)
+            out[h, i, on] += self.lte[i] - eps
+            hits[h, i, on] += 1
+        return np.where(hits > 0, out / np.maximum(hits, 1), np.nan)
+
     def excitation(self) -> dict[str, np.ndarray]:
         """Per helix: secant/tangent stiffness, loaded and unloaded TE, e_s = LTE − F_s/k_s (SI)."""
         out = {"phase": self.phase}

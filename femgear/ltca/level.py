@@ -53,12 +53,14 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
 def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: int = 64, stagger: float = 0.0,
                youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, level: int = 1, n_line: int = 16,
                extra=None):
-    """(LTCAResult, info) of one mesh cycle at the total normal force ``force`` [N]."""
+    """(LTCAResult, info) of one mesh cycle at the total normal force ``force`` [N].
+
+    The line loads are kept (:meth:`LTCAResult.path_load`: the wear and lubrication load map of
+    the ``ltca`` level, :func:`femgear.coupling.loop.ltca_reference`)."""
     from femgear.ltca.analysis import build_model, mesh_cycle
 
     model = build_model(pair, youngs_modulus, poisson_ratio, level=level)
-    res = mesh_cycle(model, force, modifications, n_phases=n_positions, stagger=stagger, n_line=n_line, extra=extra,
-                     keep_lines=False)
+    res = mesh_cycle(model, force, modifications, n_phases=n_positions, stagger=stagger, n_line=n_line, extra=extra)
     orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
     info = {"ltca": res, "excitation": res.excitation(), "model_seconds": model.seconds,
             "lte_peak_to_peak": res.lte_peak_to_peak(), "force": force, "resolved_orders": orders,
@@ -77,8 +79,7 @@ def deviated_cycle(info: dict, extra) -> dict:
     """
     from femgear.ltca.analysis import mesh_cycle
 
-    res = mesh_cycle(info["model"], info["force"], info["modifications"], extra=extra, keep_lines=False,
-                     **info["options"])
+    res = mesh_cycle(info["model"], info["force"], info["modifications"], extra=extra, **info["options"])
     return {**info, "ltca": res, "excitation": res.excitation(), "lte_peak_to_peak": res.lte_peak_to_peak()}
 
 

@@ -34,7 +34,7 @@ from pathlib import Path
 import numpy as np
 
 from femgear.geometry import GearPair, PathKinematics
-from femgear.wear.load_sharing import load_map
+from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map
 
 
 @dataclass(frozen=True)
@@ -43,11 +43,13 @@ class WearSetup:
 
     pair: GearPair
     kin: PathKinematics          #: kinematics at the profile positions ``kin.u``
-    force: float | np.ndarray    #: normal force of one helix [N], scalar or per mesh phase
+    force: float | np.ndarray    #: normal force of one helix [N], scalar or per mesh phase (``reference``: or per helix)
     c_l: float | np.ndarray      #: stiffness per unit contact-line length [N/m²], or one value per ``kin.u``
     coefficient: float           #: dimensionless Archard K [-]
     hardness: float              #: H [Pa]
     n_phase: int = 64
+    #: share the load like this contact analysis (the ``ltca`` level) instead of the Winkler layer c_l alone
+    reference: ReferenceLoad | None = None
 
     @classmethod
     def from_scene(cls, scene, kin: PathKinematics, pair: GearPair | None = None, n_phase: int = 64) -> WearSetup:
@@ -78,7 +80,10 @@ class WearState:
 def wear_rates(setup: WearSetup, state: WearState) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Depth per pinion revolution for pinion and gear [m], and the mean load w̄' [N/m]."""
     k = setup.kin
-    lm = load_map(setup.pair, k.u, setup.force, state.h1 + state.h2, setup.c_l, setup.n_phase)
+    if setup.reference is None:
+        lm = load_map(setup.pair, k.u, setup.force, state.h1 + state.h2, setup.c_l, setup.n_phase)
+    else:
+        lm = reference_load_map(setup.pair, k.u, setup.force, state.h1 + state.h2, setup.c_l, setup.reference)
     factor = setup.coefficient / setup.hardness * lm.mean_load * np.abs(k.vs)
     r1 = factor / k.v1
     r2 = factor / k.v2 * (setup.pair.z1 / setup.pair.z2)
