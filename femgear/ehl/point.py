@@ -40,7 +40,7 @@ from femgear.ehl.grid import Domain, Grid, prolongation
 from femgear.ehl.level import Level
 from femgear.ehl.newton import History, newton_dense, newton_krylov
 from femgear.ehl.assemble import assemble
-from femgear.ehl.fas_point import solve_point_fas
+from femgear.ehl.fas_point import HIGH_ALPHA_FROM, solve_point_fas
 from femgear.ehl.results import EHLResult
 from femgear.ehl.rheology import Rheology
 from femgear.ehl.surface import apply_surface, evaluate
@@ -267,6 +267,12 @@ FAS_ALPHA_MAX = 12.0
 # up to (100, 10), alpha_bar 16.9 (measured at lambda 0.2, 0.1, 0.05, 0.02 on 129^2: error
 # estimates 0.3-1.2 %, 25-60x faster than Newton)
 FAS_ALPHA_MAX_SLENDER, SLENDER = 17.0, 0.2
+# strongly piezoviscous contacts on 257^2 and finer: the HIGH_ALPHA cycles with the spike
+# elimination (fas_point) converge where the FE Newton solver fails or is slow (measured on
+# 257^2: (20, 20) 13 cycles and (100, 20) 6 cycles, Newton fails both; (200, 10) 8.8 s against
+# Newton's 54 s, Hc/Hmin 1.5/4.4 % apart, inside their flagged estimates; (500, 10) falls back
+# to Newton at no extra cost; docs/ehl_multigrid.md)
+HIGH_ALPHA_AUTO_LEVEL = 4
 
 
 def fas_suits(M: float, L: float, level: int, rigid: bool, viscosity: str, compressible: bool,
@@ -279,13 +285,17 @@ def fas_suits(M: float, L: float, level: int, rigid: bool, viscosity: str, compr
     (benchmark and tests): the multigrid converges in 4-8 cycles per level at (10, 10),
     (20, 10), (20, 5) (alpha_bar 4.9-9.9); at (50, 10), (100, 10) (alpha_bar 13-17) it
     converges on a 33^2 coarsest grid but its 129^2 answer is less accurate than Newton's
-    ((100, 10): estimate 4.3 %); beyond alpha_bar 17 ``method='fas'`` takes the HIGH_ALPHA
-    cycles of fas_point ((20, 20) and (100, 20) converge on 129^2 and 257^2, where the FE
-    Newton solver fails; only these two were measured), 'auto' keeps Newton there. Slender ellipses on their stretched
-    grids (lambda <= SLENDER) take the multigrid up to FAS_ALPHA_MAX_SLENDER."""
-    alpha_max = FAS_ALPHA_MAX_SLENDER if ratio <= SLENDER else FAS_ALPHA_MAX
+    ((100, 10): estimate 4.3 %), so Newton keeps that band. Beyond alpha_bar 17
+    (fas_point.HIGH_ALPHA_FROM) the multigrid takes its HIGH_ALPHA cycles: on 129^2 Newton
+    converges and stays the choice; on 257^2 and finer (HIGH_ALPHA_AUTO_LEVEL) the multigrid
+    with the spike elimination does, because Newton fails there ((20, 20), (100, 20)).
+    Slender ellipses on their stretched grids (lambda <= SLENDER) take the multigrid up to
+    FAS_ALPHA_MAX_SLENDER."""
+    alpha, circular = pr.point_alpha_bar(M, L), ratio > SLENDER
+    alpha_max = FAS_ALPHA_MAX if circular else FAS_ALPHA_MAX_SLENDER
+    strong = circular and level >= HIGH_ALPHA_AUTO_LEVEL and alpha > HIGH_ALPHA_FROM
     return (viscosity == "barus" and not compressible and not rigid and level >= 3
-            and ratio <= 1.0 and pr.point_alpha_bar(M, L) <= alpha_max)
+            and ratio <= 1.0 and (alpha <= alpha_max or strong))
 
 
 class _NestedPoint:

@@ -24,7 +24,9 @@ def test_fas_is_the_default_inside_its_range(fas129):
     assert r.levels[-1]["method"] == "fas" and "fallback" not in r.history
     assert r.Hc == fas129.Hc
     assert fas_suits(20.0, 10.0, 3, False, "barus", False)
-    assert not fas_suits(200.0, 10.0, 3, False, "barus", False)  # alpha_bar 21: Newton
+    assert not fas_suits(200.0, 10.0, 3, False, "barus", False)  # alpha_bar 21 on 129^2: Newton
+    assert fas_suits(20.0, 20.0, 4, False, "barus", False)  # alpha_bar 19.8 on 257^2: spike elimination
+    assert not fas_suits(100.0, 10.0, 4, False, "barus", False)  # alpha_bar 16.9: Newton on every grid
     assert not fas_suits(20.0, 10.0, 2, False, "barus", False)  # 65^2: Newton
     assert not fas_suits(20.0, 10.0, 3, False, "barus", False, ratio=2.0)  # slender: Newton
     assert not fas_suits(20.0, 10.0, 3, False, "roelands", False)

@@ -87,8 +87,9 @@ def test_fas_20_20_converges_on_257():
     +0.04 %, estimates 0.17 % + 0.11 %); Hmin 4.6671 / 4.6547 (+0.27 %, just above the
     combined estimates 0.16 % + 0.09 %: checked against twice them, a named band); the
     FD films 65^2 / 129^2 / 257^2 converge at second order (measured orders 1.98 for Hc,
-    2.11 for Hmin), and the 257^2 Hc lies within 6 % of NVM (measured +2.9 %)."""
-    r = solve_point(20.0, 20.0, level=4, method="fas")
+    2.11 for Hmin), and the 257^2 Hc lies within 6 % of NVM (measured +2.9 %). Called
+    with the default method: 'auto' takes the multigrid on 257^2 beyond alpha_bar 17."""
+    r = solve_point(20.0, 20.0, level=4)
     assert r.history["method"] == "fas" and "fallback" not in r.history
     assert r.levels[-1]["nodes"] == 257 * 257 and not r.flags
     assert r.load_error < 1e-4 and r.history["eliminated"][-1] < 1e-8  # the last local solve
