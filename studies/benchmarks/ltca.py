@@ -26,23 +26,25 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def run(level: int = 1, phases: int = 64, repeat: int = 3, order: int = 1) -> dict:
     from femgear.geometry.gear import GearPair
-    from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene import load_scene
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
     pair = GearPair.from_scene(scene)
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
-    out: dict = {"level": level, "order": order, "phases": phases}
+    body = body_options(scene)
+    out: dict = {"level": level, "order": order, "phases": phases, "body": body}
     with tempfile.TemporaryDirectory() as tmp:
         os.environ["FEMGEAR_CACHE"] = tmp
         t0 = time.perf_counter()
-        model = build_model(pair, E, nu, level=level, order=order)
+        model = build_model(pair, E, nu, level=level, order=order, **body)
         out["build_cold_s"] = time.perf_counter() - t0
         t0 = time.perf_counter()
-        build_model(pair, E, nu, level=level, order=order)
+        build_model(pair, E, nu, level=level, order=order, **body)
         out["build_cached_s"] = time.perf_counter() - t0
     for m, k in model.kernels.items():
-        for key in ("mesh_seconds", "assembly_seconds", "setup_seconds", "solve_seconds", "solves", "n_tets"):
+        for key in ("mesh_seconds", "assembly_seconds", "setup_seconds", "solve_seconds", "solves", "n_tets",
+                    "cg_iterations", "cross_ratio"):
             out[f"member{m}_{key}"] = k.info[key]
         out[f"member{m}_ndofs"] = int(k.ndofs)
     force = normal_force(pair, scene.operating.torque, scene.operating.driver)
