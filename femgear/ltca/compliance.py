@@ -57,7 +57,7 @@ from femgear.ltca.flank import flank_normals, flank_points, half_thickness, roll
 from femgear.ltca.halfspace import boussinesq_depth
 from femgear.mesh.segment import SegmentSpec
 
-CACHE_VERSION = 2     #: 2: both helices, the groove and the rim down to the bore in one body
+CACHE_VERSION = 3     #: 3: both helices, the groove and the rim down to the bore in one body (cross kernels)
 DEFAULT_DEPTH = 0.4    #: reading depth below the flank, in normal modules (clipped near the tip)
 SOLVE_TOL = 1e-8       #: relative residual of the SA-CG unit-load solves
 
@@ -78,6 +78,7 @@ class MemberCompliance:
     cross: np.ndarray | None = None       #: (n_offsets, n_grid, n_grid): right helix's tooth k read, left tooth 0 loaded
     bulk_right: np.ndarray | None = None  #: the right helix's own kernels; None: the left ones (mirror-symmetric body)
     groove: float = 0.0                   #: groove width g of the body [m]
+    fe_cross: np.ndarray | None = None    #: G^FE_d on the right helix's tooth 0, left tooth 0 loaded (diagnostics)
 
     def kernel(self, offset: int, helix: int = 0) -> np.ndarray:
         """Same-helix kernel at tooth ``offset`` of helix 0 (left) or 1 (right)."""
@@ -142,7 +143,8 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
         info["cached"] = True
         right = data["bulk_right"] if data["bulk_right"].size else None
         return MemberCompliance(member, data["rho"], data["z"], data["offsets"], data["bulk"], data["fe_self"],
-                                data["depth"], int(data["ndofs"]), info, data["cross"], right, float(data["groove"]))
+                                data["depth"], int(data["ndofs"]), info, data["cross"], right, float(data["groove"]),
+                                data["fe_cross"])
     result = _compute(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     if cache:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -150,7 +152,7 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
         right = np.zeros(0) if result.bulk_right is None else result.bulk_right
         np.savez(tmp, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,
                  depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info), cross=result.cross,
-                 bulk_right=right, groove=result.groove)
+                 bulk_right=right, groove=result.groove, fe_cross=result.fe_cross)
         os.replace(tmp, path)
     return result
 
@@ -293,7 +295,7 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
             "cross_ratio": float(np.abs(cross).max() / np.abs(bulk).max()),
             "asymmetry": float(np.linalg.norm(same - same.T) / np.linalg.norm(same))}   # load ≠ reading functional
     return MemberCompliance(member, grid_rho, grid_z, offsets, bulk, same, depth, st.ndofs, info, cross, right,
-                            spec.groove)
+                            spec.groove, G[(1, 0)][mid])
 
 
 def _transverse(n: np.ndarray) -> np.ndarray:

@@ -179,13 +179,30 @@ def member_body(pair: GearPair, member: int, spec: SegmentSpec):
     return skfem.MeshTet(mesh.p, mesh.t, _boundaries=boundaries)
 
 
+def _below_split(sec) -> np.ndarray:
+    """Triangles of the section on the bore's side of the embedded ``split`` edges (connected components of
+    the triangles joined across every other interior edge; a centroid test fails for flat triangles on
+    the arc's chords)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    f2t = sec.f2t
+    cut = np.zeros(sec.facets.shape[1], bool)
+    cut[sec.boundaries["split"]] = True
+    inner_edge = (f2t[1] >= 0) & ~cut
+    a, b = f2t[0, inner_edge], f2t[1, inner_edge]
+    n = sec.t.shape[1]
+    _, label = connected_components(coo_matrix((np.ones(a.size), (a, b)), shape=(n, n)), directed=False)
+    bore_tris = np.unique(f2t[0, sec.boundaries["bore"]])
+    return np.isin(label, label[bore_tris])
+
+
 def _sweep(sec, zs: np.ndarray, frame: HelixFrame, groove_layers: tuple[int, int], r_g: float):
     """Sweep the section mesh through the layers ``zs`` → (MeshTet, layer of each node, 2-D node of each node)."""
     import skfem
 
     n2, tri = sec.p.shape[1], sec.t
-    c = sec.p[:, tri].mean(axis=1)
-    inner = np.hypot(c[0], c[1]) < r_g
+    inner = _below_split(sec)
     th = frame.theta(zs)
     cos, sin = np.cos(th)[:, None], np.sin(th)[:, None]
     x = cos * sec.p[0] - sin * sec.p[1]
