@@ -81,7 +81,8 @@ def body_checks(scene, pair, level=1, phases=64):
     """The member bodies at ``level``: size of the cross-helix compliance, what it, the rim down to the bore
     and the far-field grading do to the mean stiffness and LTE p-p (unmodified flanks, scene torque).
 
-    Variants: ``no_cross`` (the same kernels with the cross-helix block dropped), ``clamp_rf_3mn`` (the
+    Variants: ``no_cross`` (the same kernels with the cross-helix block dropped, and with it the half-space
+    surface term between the helices: the helices coupled only through the common approach), ``clamp_rf_3mn`` (the
     body clamped at r_f − 3 m_n, the earlier segment's clamp), ``fine_far_field`` (grade 0.25, h_far
     6 h_tooth, all five teeth at ≤ h: the grading's cost in accuracy)."""
     from dataclasses import replace

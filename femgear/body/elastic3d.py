@@ -19,7 +19,7 @@ Two solvers (``solver``):
   82 s of SA-CG (2 cores under load, 23 Nov 2026).  The factor's fill grows fast with P2, where
   the AMG stays.  A solution whose relative residual exceeds 1e-8 raises ConvergenceError.
   (CHOLMOD is not in the environment.)  ``"auto"``: ``lu`` for P1 up to :data:`LU_MAX_DOFS`
-  free DOF (memory: ≈ 1 GB at 58 k), ``amg`` otherwise.
+  free DOF (memory: ≈ 1 GB at 58 k DOF, a few GB at 140 k), ``amg`` otherwise.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ import numpy as np
 
 from femgear.errors import ConvergenceError
 
-LU_MAX_DOFS = 90_000   #: ``solver="auto"``: the sparse LU up to this many free DOF (P1 only), SA-CG above
+LU_MAX_DOFS = 160_000  #: ``solver="auto"``: the sparse LU up to this many free DOF (P1 only), SA-CG above
 
 
 def _elasticity_form(lam: float, mu: float):

@@ -6,17 +6,28 @@ subtracting the half-space part it already holds):
 
     C = R (G^FE_d − G^HS_d) Rᵀ + H₀
 
-- Unit normal loads, one per node g of a (ρ, z) grid on the loaded flank of the middle
-  tooth, spread as bilinear hats φ_g (total force 1 N); one SA hierarchy
+- The member is one body holding both helices, the groove and the rim down to the bore
+  (:func:`femgear.mesh.segment.member_body`).  Unit normal loads, one per node g of a (ρ, ζ)
+  grid on the loaded flank of the left helix's middle tooth, spread as bilinear hats φ_g
+  (total force 1 N); one factorisation (P1: sparse LU) or SA hierarchy
   (:class:`femgear.body.elastic3d.Elastic3D`) serves all of them.
 - G^FE_d[k][g′, g]: approach (displacement along −n) at depth d(g′) below node g′ of
-  tooth k (k = −(n−1)/2 … (n−1)/2, cyclic offsets) for load g on tooth 0.
+  tooth k (k = −(n−1)/2 … (n−1)/2, cyclic offsets) for load g on tooth 0, read on the loaded
+  helix (``bulk``) and on the other helix at the same (ρ, ζ) (``cross``: the helices' coupling
+  through the groove and the rim, which a one-helix segment drops).
 - G^HS_d[g′, g]: the same reading for an elastic half-space under the same hat load
-  (Boussinesq at depth, summed over the FE's own flank quadrature points), tooth 0 only.
-- The difference ``bulk[k]`` is smooth (bending, shear, fillet, rim, neighbour teeth) and
-  is interpolated bilinearly (R) to contact points; H₀, the half-space surface response
+  (Boussinesq at depth, summed over the FE's own flank quadrature points), tooth 0 only,
+  subtracted from both readings (near the apex of a grooveless body the two helices' tooth 0
+  are one surface; :mod:`femgear.ltca.contact` adds the surface part H₀ back between them).
+- The differences are smooth (bending, shear, fillet, rim, neighbour teeth, the other helix)
+  and are interpolated bilinearly (R) to contact points; H₀, the half-space surface response
   between contact points of the same tooth (Hertz strips), is added by
   :mod:`femgear.ltca.contact`.
+- Right helix.  A body without stagger is the mirror image of itself (z → 2b + g − z): the
+  right helix's own kernels are the left ones, and mirror symmetry with Maxwell–Betti gives
+  X[k] = X[−k]ᵀ for the cross kernel (the mean of the two is kept, so symmetric helices share
+  the load exactly).  A staggered body is not symmetric: the right helix is loaded too (twice
+  the solves) and gets its own kernels (``bulk_right``).
 
 Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, unmodified;
 ``python studies/ltca_study.py``): P1 levels 1/2/3/4 (20 k … 76 k DOF per member) give a mean

@@ -123,12 +123,13 @@ def bulk_matrix(pair: GearPair, kernels, pts: ContactPoints) -> np.ndarray:
 
 
 def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float, nu: float,
-                 groove: float = 0.0) -> np.ndarray:
+                 groove: float = 0.0, across: bool = True) -> np.ndarray:
     """H₀ of both bodies: Hertz-strip self terms and surface Boussinesq terms between the points of one tooth [m/N].
 
-    Points of one tooth: the same line of a helix, and the two helices' lines of the same path tooth (the
-    bulk kernels dropped the half-space part of both readings).  Distances in the plane of action: path
-    position u and axial position z (ζ on the left helix, 2b + g − ζ on the right one, ``groove`` g).
+    Points of one tooth: the same line of a helix and, with ``across`` (kernels with a cross-helix block,
+    which dropped the half-space part of that reading too), the two helices' lines of the same path tooth.
+    Distances in the plane of action: path position u and axial position z (ζ on the left helix,
+    2b + g − ζ on the right one, ``groove`` g).
     """
     cb = math.cos(pair.beta_b)
     rho1 = pts.u
@@ -138,7 +139,7 @@ def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float,
     a = HERTZ_TO_UNIFORM * hertz_half_width(w, R, reduced_modulus(E, nu))
     tooth = pts.line if pts.tooth is None else pts.tooth
     same_helix = pts.helix[:, None] == pts.helix[None, :]
-    same = np.where(same_helix, pts.line[:, None] == pts.line[None, :], tooth[:, None] == tooth[None, :])
+    same = np.where(same_helix, pts.line[:, None] == pts.line[None, :], across & (tooth[:, None] == tooth[None, :]))
     z = np.where(pts.helix == 0, pts.zeta, 2 * pair.b + groove - pts.zeta)
     r = np.hypot(z[:, None] - z[None, :], pts.u[:, None] - pts.u[None, :])
     H = np.zeros((pts.size, pts.size))
@@ -207,7 +208,8 @@ def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, fo
     load = np.full(pts.size, force / pts.size)
     active = None
     for p in range(1, max_pass + 1):
-        C = Cb + local_matrix(pair, pts, load, E, nu, getattr(kernels[1], "groove", 0.0))
+        C = Cb + local_matrix(pair, pts, load, E, nu, getattr(kernels[1], "groove", 0.0),
+                              getattr(kernels[1], "cross", None) is not None)
         sol = solve_contact(C, eps, force, case, active)
         change = float(np.max(np.abs(sol.load - load)) / force)
         load, active = sol.load, sol.load > 0
