@@ -30,15 +30,15 @@ subtracting the half-space part it already holds):
   the solves) and gets its own kernels (``bulk_right``).
 
 Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, unmodified;
-``python studies/ltca_study.py``): P1 levels 1/2/3/4 (20 k … 76 k DOF per member) give a mean
-mesh stiffness of 8.60/8.45/8.32/8.26e8 N/m and LTE p-p 0.453/0.469/0.480/0.488 µm (the two
-finest differ by 0.7 % and 1.6 %); Richardson puts level 1 at +5 % in stiffness.  P1 is the
-default (``order=1``, level 1: mesh + compliance ≈ 40 s) for the 60 s budget; its bias is
-stiff, as expected of linear tetrahedra in bending.  P2 converges much faster per element
-but one P2 unit load costs 16–22 s with SA-AMG here (111 k DOF, 53 CG iterations), so 63 loads
-take ≈ 20 min a member.  On a 5 × 7 grid (``python studies/ltca_element_order.py --ltca``):
-P1 level 1 / P1 level 3 / P2 level 0 (112 k DOF, 620 s) give 8.58 / 8.33 / 8.16e8 N/m and LTE
-p-p 0.470 / 0.495 / 0.515 µm: the P1 default is 5.2 % stiff and 8.8 % low in LTE p-p against P2.
+``python studies/ltca_study.py``; member bodies down to the 20 mm shaft): P1 levels 1/2/3/4
+(34 k … 139 k DOF pinion) give a mean mesh stiffness of 7.131/7.026/6.955/6.914e8 N/m and LTE
+p-p 0.5226/0.5275/0.5414/0.5415 µm (the two finest differ by 0.60 % and 0.03 %); Richardson
+puts level 1 at +4.9 % in stiffness.  P1 is the default (``order=1``, level 1: mesh +
+compliance ≈ 23–36 s for both members with the sparse LU) for the 60 s budget; its bias is
+stiff, as expected of linear tetrahedra in bending.  On the earlier one-helix segments P2
+converged much faster per element but cost 16–22 s a unit load with SA-AMG (111 k DOF); there
+P1 level 1 / P1 level 3 / P2 level 0 gave 8.58 / 8.33 / 8.16e8 N/m and LTE p-p 0.470 / 0.495 /
+0.515 µm on a 5 × 7 grid (``python studies/ltca_element_order.py --ltca``, not re-run).
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
