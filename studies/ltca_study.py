@@ -7,7 +7,9 @@
    phases; the change between the two finest levels, the observed order p of the three
    finest (:func:`observed_order`), the Richardson extrapolation and each level's error
    against it (level 1 is the default: mesh + compliance ≤ 60 s; level 4 costs ~5 min a member).
-2. Mean mesh stiffness against ISO 6336 c_γα (both helices, normal direction) and PEM.
+2. Mean mesh stiffness against ISO 6336 c_γα (both helices, normal direction) and PEM; the member
+   bodies (:func:`body_checks`): the cross-helix compliance's size and effect, the rim down to the
+   bore against the earlier clamp at r_f − 3 m_n, the far-field grading against a finer one.
 3. Harris map: a linear "long" tip relief on both members designed for the scene load
    (:func:`relief_design`): the baseline (β = 30°) with the helical rule C_a = w/c_γ (the mean
    mesh deflection), the near-spur pair (β = 1°, segment level 0, the case of the classic map)
@@ -44,14 +46,14 @@ def setup(scene_path=ROOT / "studies" / "paper_baseline.toml"):
 
 
 def convergence(scene, pair, levels, phases=64):
-    from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.mesh.segment import default_spec
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
     rows = []
     for lv in levels:
-        model = build_model(pair, E, nu, level=lv)
+        model = build_model(pair, E, nu, level=lv, **body_options(scene))
         r = mesh_cycle(model, F, None, n_phases=phases, keep_lines=False)
         rows.append({"level": lv, "h_tooth_mm": default_spec(pair, 1, lv).h_tooth * 1e3,
                      "ndofs": [int(model.kernels[m].ndofs) for m in (1, 2)],
@@ -72,6 +74,43 @@ def convergence(scene, pair, levels, phases=64):
                 extra = f[2] + (f[2] - f[1]) * h[2] ** p / (h[1] ** p - h[2] ** p)
                 out[f"extrapolated_{key}"] = extra
                 out[f"default_error_{key}"] = [(r[key] - extra) / extra for r in rows]
+    return out
+
+
+def body_checks(scene, pair, level=1, phases=64):
+    """The member bodies at ``level``: size of the cross-helix compliance, what it, the rim down to the bore
+    and the far-field grading do to the mean stiffness and LTE p-p (unmodified flanks, scene torque).
+
+    Variants: ``no_cross`` (the same kernels with the cross-helix block dropped, and with it the half-space
+    surface term between the helices: the helices coupled only through the common approach), ``clamp_rf_3mn`` (the
+    body clamped at r_f − 3 m_n, the earlier segment's clamp), ``fine_far_field`` (grade 0.25, h_far
+    6 h_tooth, all five teeth at ≤ h: the grading's cost in accuracy)."""
+    from dataclasses import replace
+
+    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.mesh.segment import default_spec
+
+    E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
+    F = normal_force(pair, scene.operating.torque, scene.operating.driver)
+    body = body_options(scene)
+    h_tooth = default_spec(pair, 1, level).h_tooth
+    models = {"default": build_model(pair, E, nu, level=level, **body)}
+    models["no_cross"] = replace(models["default"], kernels={m: replace(k, cross=None)
+                                                             for m, k in models["default"].kernels.items()})
+    models["clamp_rf_3mn"] = build_model(pair, E, nu, level=level, **{**body, "bore_radius": (0.0, 0.0)})
+    models["fine_far_field"] = build_model(pair, E, nu, level=level, **body,
+                                           spec_options={"grade": 0.25, "h_far": 6 * h_tooth, "fine_teeth": 5})
+    out = {}
+    for name, model in models.items():
+        r = mesh_cycle(model, F, None, n_phases=phases, keep_lines=False)
+        out[name] = {"k_mean": r.mean_stiffness(), "lte_pp_um": r.lte_peak_to_peak() * 1e6,
+                     "ndofs": [int(model.kernels[m].ndofs) for m in (1, 2)]}
+    for m in (1, 2):
+        k = models["default"].kernels[m]
+        mid = int(np.nonzero(k.offsets == 0)[0][0])
+        out[f"member{m}_cross"] = {"max_cross_over_max_self": float(np.abs(k.cross).max() / np.abs(k.bulk[mid]).max()),
+                                   "mean_abs_cross_over_mean_diag_self": float(np.abs(k.cross).mean()
+                                                                                / np.mean(np.diag(k.bulk[mid])))}
     return out
 
 
@@ -102,12 +141,12 @@ def observed_order(h, f) -> float:
 def discretisation(scene, pair, level):
     """Phases (64 vs 128) and contact points per line (16 vs 32) at one segment level, unmodified and
     with a 5 µm / 0.4 p_bt tip relief: LTE p-p, mean stiffness and LTE harmonics 1–5."""
-    from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
-    model = build_model(pair, E, nu, level=level)
+    model = build_model(pair, E, nu, level=level, **body_options(scene))
     out = {}
     for name, mods in (("unmodified", None), ("tip_relief", Modifications(tip_relief=5e-6, tip_relief_length=0.4 * pair.p_bt))):
         runs = {(n, m): mesh_cycle(model, F, mods, n_phases=n, n_line=m, keep_lines=False)
@@ -158,12 +197,12 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
     """LTE p-p against load for a linear tip relief designed by ``rule`` (:func:`relief_design`) for the scene
     load, for the relief amount minimising LTE p-p at that load (Tavakoli & Houser, ASME JMTAD 108:86, 1986),
     and unmodified."""
-    from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     Fd = normal_force(pair, scene.operating.torque, scene.operating.driver)
-    model = build_model(pair, E, nu, level=level)
+    model = build_model(pair, E, nu, level=level, **body_options(scene))
     ref = mesh_cycle(model, Fd, None, n_phases=phases, keep_lines=False)
     Ca, length = relief_design(pair, ref, rule)
     mods = Modifications(tip_relief=Ca, tip_relief_length=length)
@@ -197,6 +236,7 @@ def run(coarse: bool = False) -> dict:
     scene, pair = setup()
     levels = (0, 1) if coarse else (1, 2, 3, 4)
     conv = convergence(scene, pair, levels)
+    body = body_checks(scene, pair, 0 if coarse else 1)
     factors = np.round(np.linspace(0.1, 2.0, 8 if coarse else 14), 3)
     h, design, model = harris(scene, pair, 0 if coarse else 1, factors, rule="helical")
     h_spur = None if coarse else harris(scene, near_spur_pair(pair), 0, factors, rule="spur")[0]
@@ -204,7 +244,7 @@ def run(coarse: bool = False) -> dict:
     disc = discretisation(scene, pair, 0 if coarse else 1)
     iso = mesh_stiffness(pair, "iso6336", n_positions=16)
     pem = mesh_stiffness(pair, "pem", n_positions=64)
-    out = {"convergence": conv, "discretisation": disc, "harris": h, "harris_near_spur": h_spur,
+    out = {"convergence": conv, "body": body, "discretisation": disc, "harris": h, "harris_near_spur": h_spur,
            "harris_near_spur_helical_rule": h_spur_helical, "k_iso6336": iso.mean, "k_pem": pem.mean,
            "k_ltca": conv["rows"][-1]["k_mean"], "k_ltca_default": conv["rows"][0]["k_mean"],
            "level_default": conv["rows"][0]["level"], "level_finest": conv["rows"][-1]["level"], "design_p_max_GPa": float(design.p_max_left.max() / 1e9)}
@@ -276,6 +316,15 @@ def main(argv) -> None:
         if f"extrapolated_{key}" in c:
             print(f"  {name}: Richardson-extrapolated {c[f'extrapolated_{key}']:.5g}; error per level "
                   + " ".join(f"L{r['level']} {e:+.2%}" for r, e in zip(c["rows"], c[f"default_error_{key}"])))
+    b = out["body"]
+    for name in ("no_cross", "clamp_rf_3mn", "fine_far_field"):
+        print(f"body variant {name}: k mean {b[name]['k_mean']:.4e} ({b[name]['k_mean'] / b['default']['k_mean'] - 1:+.2%} "
+              f"vs the default body), LTE p-p {b[name]['lte_pp_um']:.4f} µm "
+              f"({b[name]['lte_pp_um'] / b['default']['lte_pp_um'] - 1:+.2%}), DOF {b[name]['ndofs']}")
+    for m in (1, 2):
+        c = b[f"member{m}_cross"]
+        print(f"member {m} cross-helix kernel: max |cross| / max |same-helix| {c['max_cross_over_max_self']:.3f}, "
+              f"mean |cross| / mean diagonal same-helix {c['mean_abs_cross_over_mean_diag_self']:.3f}")
     for name, d in out["discretisation"].items():
         print(f"{name}: LTE p-p {d['lte_pp_um']:.4f} µm, harmonics 1-5 [µm] " + " ".join(f"{x:.4f}" for x in d["harmonics_um"])
               + "; 128 vs 64 phases: harmonic change / largest " + " ".join(f"{x:.1e}" for x in d["phases_128_harmonics_change"])

@@ -6,11 +6,20 @@ hierarchy with the six rigid-body modes as near-null space and a ``splu`` coarse
 solver (notes/stack.md: the default ``pinv`` coarse solver is 30× slower with rigid
 modes).  Every load case is then one preconditioned CG solve.
 
-Why AMG and not a factorisation: scipy's SuperLU on a 65 k-DOF P1 tet matrix had not
-finished after 5 min here (3-D fill-in), and CHOLMOD is not in the environment; the
-SA-CG solve costs about one second per load case at 50–100 k DOF (measured by
-``studies/benchmarks/ltca.py``).  Non-convergence raises
-:class:`femgear.errors.ConvergenceError` with the residual history.
+Two solvers (``solver``):
+
+- ``"amg"``: the SA-CG solve costs one to two seconds per load case at 50–100 k DOF here
+  (measured by ``studies/benchmarks/ltca.py``).  Non-convergence raises
+  :class:`femgear.errors.ConvergenceError` with the residual history.
+- ``"lu"``: one sparse factorisation (scipy's SuperLU) with the minimum-degree ordering of
+  Kᵀ + K and symmetric mode (no pivoting off the diagonal: K is SPD), then every block of
+  load cases is two triangular solves.  With the default COLAMD column ordering SuperLU had not
+  finished a 65 k-DOF P1 tet matrix after 5 min; with MMD on Kᵀ + K a 58 k-DOF P1 member body
+  factors in 26 s (83 M entries in L + U, ≈ 1 GB) and 63 load cases take 5 s together, against
+  82 s of SA-CG (2 cores under load, 23 Nov 2026).  The factor's fill grows fast with P2, where
+  the AMG stays.  A solution whose relative residual exceeds 1e-8 raises ConvergenceError.
+  (CHOLMOD is not in the environment.)  ``"auto"``: ``lu`` for P1 up to :data:`LU_MAX_DOFS`
+  free DOF (memory: ≈ 1 GB at 58 k DOF, a few GB at 140 k), ``amg`` otherwise.
 """
 
 from __future__ import annotations
@@ -21,6 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.errors import ConvergenceError
+
+LU_MAX_DOFS = 160_000  #: ``solver="auto"``: the sparse LU up to this many free DOF (P1 only), SA-CG above
 
 
 def _elasticity_form(lam: float, mu: float):
@@ -63,11 +74,13 @@ class Elastic3D:
     """K u = f on a ``MeshTet`` with P``order`` vector elements, ``clamped`` region fixed."""
 
     def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, order: int = 2,
-                 clamped: str = "bore", tol: float = 1e-8, maxiter: int = 500):
+                 clamped: str = "bore", tol: float = 1e-8, maxiter: int = 500, solver: str = "amg"):
         from skfem import Basis, ElementTetP1, ElementTetP2, ElementVector
 
         if order not in (1, 2):
             raise ValueError(f"order must be 1 or 2, got {order!r}")
+        if solver not in ("amg", "lu", "auto"):
+            raise ValueError(f"solver must be 'amg', 'lu' or 'auto', got {solver!r}")
         if clamped not in mesh.boundaries:
             raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
         t0 = time.perf_counter()
@@ -82,6 +95,7 @@ class Elastic3D:
         self.free = np.setdiff1d(np.arange(self.basis.N), fixed)
         self.K = K[self.free][:, self.free].tocsr()
         self.assembly_seconds = time.perf_counter() - t0
+        self.solver = solver if solver != "auto" else ("lu" if order == 1 and self.free.size <= LU_MAX_DOFS else "amg")
         self._ml = None
         self.setup_seconds = 0.0
         self.solve_seconds = 0.0
@@ -96,8 +110,38 @@ class Elastic3D:
         self._ml = pyamg.smoothed_aggregation_solver(self.K, B=B, coarse_solver="splu", max_coarse=500)
         self.setup_seconds = time.perf_counter() - t0
 
+    def _factor(self):
+        import scipy.sparse.linalg as sla
+
+        t0 = time.perf_counter()
+        self._ml = sla.splu(self.K.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                            options={"SymmetricMode": True})
+        self.setup_seconds = time.perf_counter() - t0
+
+    def solve_many(self, F: np.ndarray, case: str = "3-D elasticity") -> np.ndarray:
+        """Displacements (basis.N, m) for the load vectors F (basis.N, m) [N]: one block solve with ``lu``."""
+        F = np.asarray(F, float)
+        if self.solver == "amg":
+            return np.column_stack([self.solve(F[:, j], case=f"{case}, load {j}") for j in range(F.shape[1])])
+        if self._ml is None:
+            self._factor()
+        t0 = time.perf_counter()
+        rhs = F[self.free]
+        x = self._ml.solve(rhs)
+        res = np.linalg.norm(self.K @ x - rhs, axis=0) / np.maximum(np.linalg.norm(rhs, axis=0), 1e-300)
+        if not np.all(np.isfinite(x)) or res.max() > 1e-8:
+            raise ConvergenceError(case, f"sparse LU solution has relative residual {res.max():.3g}",
+                                   {"residual": res.tolist()})
+        U = np.zeros((self.basis.N, F.shape[1]))
+        U[self.free] = x
+        self.solve_seconds += time.perf_counter() - t0
+        self.solves += F.shape[1]
+        return U
+
     def solve(self, f: np.ndarray, case: str = "3-D elasticity") -> np.ndarray:
         """Displacement DOF vector (length ``basis.N``) for the load vector ``f`` [N]."""
+        if self.solver == "lu":
+            return self.solve_many(np.asarray(f, float)[:, None], case)[:, 0]
         if self._ml is None:
             self._hierarchy()
         t0 = time.perf_counter()

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -45,18 +45,37 @@ class LTCAModel:
     kernels: dict          #: {1: MemberCompliance, 2: MemberCompliance}
     level: int
     seconds: float
+    stagger: float = 0.0   #: the stagger the member bodies were built with [base pitches]
 
 
 def build_model(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int = 1, order: int = 1,
-                n_rho: int = 7, n_z: int = 9, n_teeth: int = 5, cache: bool = True) -> LTCAModel:
-    """Flank kernels of pinion and gear at segment resolution ``level`` (see :func:`default_spec`)."""
+                n_rho: int = 7, n_z: int = 9, n_teeth: int = 5, cache: bool = True,
+                bore_radius: tuple[float, float] = (0.0, 0.0), groove_width: float = 0.0,
+                stagger: float = 0.0, spec_options: dict | None = None) -> LTCAModel:
+    """Flank kernels of pinion and gear at body resolution ``level`` (see :func:`default_spec`).
+
+    Each member is one body holding both helices, the groove of ``groove_width`` and the rim down to
+    ``bore_radius`` (per member; 0: r_f − 3 m_n), the right helix staggered by ``stagger`` base pitches
+    (:mod:`femgear.mesh.segment`); :func:`body_options` reads these from a scene.  ``spec_options``:
+    other :class:`femgear.mesh.segment.SegmentSpec` fields (the far-field grading of a study).
+    """
     t0 = time.perf_counter()
     kernels: dict[int, MemberCompliance] = {}
     for member in (1, 2):
-        spec = default_spec(pair, member, level, n_teeth=n_teeth)
+        spec = default_spec(pair, member, level, n_teeth=n_teeth, r_bore=bore_radius[member - 1],
+                            groove=groove_width, stagger=stagger)
+        if spec_options:
+            spec = replace(spec, **spec_options)
         kernels[member] = member_compliance(pair, member, spec, youngs_modulus, poisson_ratio, order=order,
                                             n_rho=n_rho, n_z=n_z, cache=cache)
-    return LTCAModel(pair, youngs_modulus, poisson_ratio, kernels, level, time.perf_counter() - t0)
+    return LTCAModel(pair, youngs_modulus, poisson_ratio, kernels, level, time.perf_counter() - t0, stagger)
+
+
+def body_options(scene) -> dict:
+    """``bore_radius`` (the scene's bore radius if > 0, else the shaft radius), ``groove_width`` and
+    ``stagger`` of a scene for :func:`build_model`."""
+    bores = tuple(m.bore_radius if m.bore_radius > 0 else 0.5 * m.shaft_diameter for m in (scene.pinion, scene.gear))
+    return {"bore_radius": bores, "groove_width": scene.pair.groove_width, "stagger": scene.pair.stagger}
 
 
 @dataclass(frozen=True)
@@ -225,6 +244,9 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
     pair, E, nu = model.pair, model.youngs_modulus, model.poisson_ratio
     if n_phases < 2:
         raise ValueError(f"n_phases must be ≥ 2, got {n_phases}")
+    if abs(stagger - model.stagger) > 1e-12:
+        raise ValueError(f"stagger={stagger} differs from the stagger {model.stagger} the member bodies were built "
+                         "with (build_model(..., stagger=...))")
     if modifications is not None:
         for member in (1, 2):
             check_modification(pair, member, modifications.member(member))

@@ -6,28 +6,39 @@ subtracting the half-space part it already holds):
 
     C = R (G^FE_d − G^HS_d) Rᵀ + H₀
 
-- Unit normal loads, one per node g of a (ρ, z) grid on the loaded flank of the middle
-  tooth, spread as bilinear hats φ_g (total force 1 N); one SA hierarchy
+- The member is one body holding both helices, the groove and the rim down to the bore
+  (:func:`femgear.mesh.segment.member_body`).  Unit normal loads, one per node g of a (ρ, ζ)
+  grid on the loaded flank of the left helix's middle tooth, spread as bilinear hats φ_g
+  (total force 1 N); one factorisation (P1: sparse LU) or SA hierarchy
   (:class:`femgear.body.elastic3d.Elastic3D`) serves all of them.
 - G^FE_d[k][g′, g]: approach (displacement along −n) at depth d(g′) below node g′ of
-  tooth k (k = −(n−1)/2 … (n−1)/2, cyclic offsets) for load g on tooth 0.
+  tooth k (k = −(n−1)/2 … (n−1)/2, cyclic offsets) for load g on tooth 0, read on the loaded
+  helix (``bulk``) and on the other helix at the same (ρ, ζ) (``cross``: the helices' coupling
+  through the groove and the rim, which a one-helix segment drops).
 - G^HS_d[g′, g]: the same reading for an elastic half-space under the same hat load
-  (Boussinesq at depth, summed over the FE's own flank quadrature points), tooth 0 only.
-- The difference ``bulk[k]`` is smooth (bending, shear, fillet, rim, neighbour teeth) and
-  is interpolated bilinearly (R) to contact points; H₀, the half-space surface response
+  (Boussinesq at depth, summed over the FE's own flank quadrature points), tooth 0 only,
+  subtracted from both readings (near the apex of a grooveless body the two helices' tooth 0
+  are one surface; :mod:`femgear.ltca.contact` adds the surface part H₀ back between them).
+- The differences are smooth (bending, shear, fillet, rim, neighbour teeth, the other helix)
+  and are interpolated bilinearly (R) to contact points; H₀, the half-space surface response
   between contact points of the same tooth (Hertz strips), is added by
   :mod:`femgear.ltca.contact`.
+- Right helix.  A body without stagger is the mirror image of itself (z → 2b + g − z): the
+  right helix's own kernels are the left ones, and mirror symmetry with Maxwell–Betti gives
+  X[k] = X[−k]ᵀ for the cross kernel (the mean of the two is kept, so symmetric helices share
+  the load exactly).  A staggered body is not symmetric: the right helix is loaded too (twice
+  the solves) and gets its own kernels (``bulk_right``).
 
 Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, unmodified;
-``python studies/ltca_study.py``): P1 levels 1/2/3/4 (20 k … 76 k DOF per member) give a mean
-mesh stiffness of 8.60/8.45/8.32/8.26e8 N/m and LTE p-p 0.453/0.469/0.480/0.488 µm (the two
-finest differ by 0.7 % and 1.6 %); Richardson puts level 1 at +5 % in stiffness.  P1 is the
-default (``order=1``, level 1: mesh + compliance ≈ 40 s) for the 60 s budget; its bias is
-stiff, as expected of linear tetrahedra in bending.  P2 converges much faster per element
-but one P2 unit load costs 16–22 s with SA-AMG here (111 k DOF, 53 CG iterations), so 63 loads
-take ≈ 20 min a member.  On a 5 × 7 grid (``python studies/ltca_element_order.py --ltca``):
-P1 level 1 / P1 level 3 / P2 level 0 (112 k DOF, 620 s) give 8.58 / 8.33 / 8.16e8 N/m and LTE
-p-p 0.470 / 0.495 / 0.515 µm: the P1 default is 5.2 % stiff and 8.8 % low in LTE p-p against P2.
+``python studies/ltca_study.py``; member bodies down to the 20 mm shaft): P1 levels 1/2/3/4
+(34 k … 139 k DOF pinion) give a mean mesh stiffness of 7.131/7.026/6.955/6.914e8 N/m and LTE
+p-p 0.5226/0.5275/0.5414/0.5415 µm (the two finest differ by 0.60 % and 0.03 %); Richardson
+puts level 1 at +4.9 % in stiffness.  P1 is the default (``order=1``, level 1: mesh +
+compliance ≈ 23–36 s for both members with the sparse LU) for the 60 s budget; its bias is
+stiff, as expected of linear tetrahedra in bending.  On the earlier one-helix segments P2
+converged much faster per element but cost 16–22 s a unit load with SA-AMG (111 k DOF); there
+P1 level 1 / P1 level 3 / P2 level 0 gave 8.58 / 8.33 / 8.16e8 N/m and LTE p-p 0.470 / 0.495 /
+0.515 µm on a 5 × 7 grid (``python studies/ltca_element_order.py --ltca``, not re-run).
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
@@ -57,29 +68,43 @@ from femgear.ltca.flank import flank_normals, flank_points, half_thickness, roll
 from femgear.ltca.halfspace import boussinesq_depth
 from femgear.mesh.segment import SegmentSpec
 
-CACHE_VERSION = 1
+CACHE_VERSION = 3     #: 3: both helices, the groove and the rim down to the bore in one body (cross kernels)
 DEFAULT_DEPTH = 0.4    #: reading depth below the flank, in normal modules (clipped near the tip)
+SOLVE_TOL = 1e-8       #: relative residual of the SA-CG unit-load solves
 
 
 @dataclass(frozen=True)
 class MemberCompliance:
-    """Bulk influence kernels of one member's loaded flank [m/N]."""
+    """Bulk influence kernels of one member's loaded flanks [m/N] (grid index i_rho*n_z + i_z)."""
 
     member: int
     rho: np.ndarray          #: grid roll distances [m]
-    z: np.ndarray            #: grid face coordinates of the meshed helix [m]
+    z: np.ndarray            #: grid face coordinates ζ of a helix [m]
     offsets: np.ndarray      #: tooth offsets k of the kernels
-    bulk: np.ndarray         #: (n_offsets, n_grid, n_grid): response on tooth k, load on tooth 0; grid index i_rho*n_z + i_z
-    fe_self: np.ndarray      #: G^FE_d on tooth 0 (diagnostics)
+    bulk: np.ndarray         #: (n_offsets, n_grid, n_grid): left helix, response on tooth k, load on tooth 0
+    fe_self: np.ndarray      #: G^FE_d on tooth 0 of the left helix (diagnostics)
     depth: np.ndarray        #: reading depth per grid node [m]
     ndofs: int
     info: dict = field(default_factory=dict)
+    cross: np.ndarray | None = None       #: (n_offsets, n_grid, n_grid): right helix's tooth k read, left tooth 0 loaded
+    bulk_right: np.ndarray | None = None  #: the right helix's own kernels; None: the left ones (mirror-symmetric body)
+    groove: float = 0.0                   #: groove width g of the body [m]
+    fe_cross: np.ndarray | None = None    #: G^FE_d on the right helix's tooth 0, left tooth 0 loaded (diagnostics)
 
-    def kernel(self, offset: int) -> np.ndarray:
+    def kernel(self, offset: int, helix: int = 0) -> np.ndarray:
+        """Same-helix kernel at tooth ``offset`` of helix 0 (left) or 1 (right)."""
         hit = np.nonzero(self.offsets == offset)[0]
         if hit.size == 0:
             return np.zeros(self.bulk.shape[1:])
-        return self.bulk[hit[0]]
+        kern = self.bulk_right if helix == 1 and self.bulk_right is not None else self.bulk
+        return kern[hit[0]]
+
+    def cross_kernel(self, offset: int) -> np.ndarray:
+        """Cross-helix kernel: reading on the right helix's tooth ``offset``, unit loads on the left tooth 0."""
+        hit = np.nonzero(self.offsets == offset)[0]
+        if self.cross is None or hit.size == 0:
+            return np.zeros(self.bulk.shape[1:])
+        return self.cross[hit[0]]
 
     def weights(self, rho: np.ndarray, z: np.ndarray) -> np.ndarray:
         """Bilinear interpolation matrix R (n_points, n_grid) at (ρ, z), clamped to the grid."""
@@ -127,33 +152,41 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
         data = np.load(path, allow_pickle=False)
         info = json.loads(str(data["info"]))
         info["cached"] = True
+        right = data["bulk_right"] if data["bulk_right"].size else None
         return MemberCompliance(member, data["rho"], data["z"], data["offsets"], data["bulk"], data["fe_self"],
-                                data["depth"], int(data["ndofs"]), info)
+                                data["depth"], int(data["ndofs"]), info, data["cross"], right, float(data["groove"]),
+                                data["fe_cross"])
     result = _compute(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     if cache:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(".tmp.npz")
+        right = np.zeros(0) if result.bulk_right is None else result.bulk_right
         np.savez(tmp, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,
-                 depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info))
+                 depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info), cross=result.cross,
+                 bulk_right=right, groove=result.groove, fe_cross=result.fe_cross)
         os.replace(tmp, path)
     return result
 
 
-def flank_unit_loads(pair: GearPair, member: int, model, grid_rho: np.ndarray, grid_z: np.ndarray):
-    """Load vectors of unit normal hat loads (1 N each) at the (ρ, z) grid nodes of the loaded flank.
+def flank_unit_loads(pair: GearPair, member: int, model, grid_rho: np.ndarray, grid_z: np.ndarray, helix: int = 0,
+                     frame=None):
+    """Load vectors of unit normal hat loads (1 N each) at the (ρ, ζ) grid nodes of a helix's loaded flank.
 
-    Returns (loads, xq, weights): ``loads[g]`` the FE load vector of node g (grid index
-    i_ρ·n_z + i_z), ``xq`` (3, n_q) the flank quadrature points and ``weights[g]`` (n_q,) the
-    share of node g's 1 N carried by each quadrature point.
+    ``helix`` 0 (left, region ``loaded_flank``) or 1 (right, ``loaded_flank_right``, ζ = 2b + g − z from
+    ``frame``, a :class:`femgear.mesh.segment.HelixFrame`).  Returns (loads, xq, weights): ``loads[g]`` the
+    FE load vector of node g (grid index i_ρ·n_z + i_z), ``xq`` (3, n_q) the flank quadrature points and
+    ``weights[g]`` (n_q,) the share of node g's 1 N carried by each quadrature point.
     """
     from skfem import FacetBasis, LinearForm
 
     mesh = model.mesh
     rb = pair.rb1 if member == 1 else pair.rb2
-    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries["loaded_flank"])
+    region = "loaded_flank" if helix == 0 else "loaded_flank_right"
+    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries[region])
     xq = np.asarray(fb.global_coordinates())                      # (3, n_facets, n_qp)
     rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
-    hats = _bilinear(grid_rho, grid_z, rq.ravel(), xq[2].ravel()).T.reshape(grid_rho.size * grid_z.size, *rq.shape)
+    zeta = xq[2] if helix == 0 else frame.z_of(xq[2], 1)
+    hats = _bilinear(grid_rho, grid_z, rq.ravel(), zeta.ravel()).T.reshape(grid_rho.size * grid_z.size, *rq.shape)
     dA = fb.dx                                                # (n_facets, n_qp) quadrature weights × area
 
     @LinearForm
@@ -164,7 +197,7 @@ def flank_unit_loads(pair: GearPair, member: int, model, grid_rho: np.ndarray, g
     for g in range(hats.shape[0]):
         area = float(np.sum(hats[g] * dA))
         if area <= 0:
-            raise ValueError(f"flank grid node {g} carries no flank area: the loaded_flank region misses the active flank")
+            raise ValueError(f"flank grid node {g} carries no flank area: the {region} region misses the active flank")
         loads.append(pressure.assemble(fb, p=hats[g] / area))
         weights.append((hats[g] * dA).ravel() / area)
     return loads, xq.reshape(3, -1), weights
@@ -181,56 +214,99 @@ def halfspace_reading(x: np.ndarray, normals: np.ndarray, xq: np.ndarray, weight
     return boussinesq_depth(r, dn, E, nu) @ weight[s]
 
 
-def reading_points(pair: GearPair, member: int, rho: np.ndarray, z: np.ndarray, depth: np.ndarray, tooth: int = 0):
-    """(points (3, n) at ``depth`` below the flank of ``tooth``, outward normals (3, n))."""
+def reading_points(pair: GearPair, member: int, rho: np.ndarray, z: np.ndarray, depth: np.ndarray, tooth: int = 0,
+                   frame=None, helix: int = 0):
+    """(points (3, n) at ``depth`` below the flank of ``tooth``, outward normals (3, n)).
+
+    ``helix`` 1: the right helix of the body ``frame`` (:class:`femgear.mesh.segment.HelixFrame`): the left
+    helix's points at the same (ρ, ζ) turned by the stagger angle Δ and mirrored to z = 2b + g − ζ.
+    """
     p = flank_points(pair, member, rho, z, tooth)
     n = flank_normals(pair, member, rho, z, tooth)
     x = p - depth * _transverse(n)
     x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
+    if helix == 0:
+        return x, n
+    c, s = math.cos(frame.stagger_angle), math.sin(frame.stagger_angle)
+    rot = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, -1.0]])
+    x, n = rot @ x, rot @ n
+    x[2] += frame.width
     return x, n
+
+
+def _readings(model, probes, u):
+    """Approach (−u·n) at every probe set [(matrices, normals), …] → (n_sets, n_points)."""
+    out = []
+    for mats, n in probes:
+        disp = np.vstack([M @ u for M in mats])
+        out.append(-np.sum(disp * n, axis=0))
+    return np.array(out)
+
+
+def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices, E, nu):
+    """Kernels of the loaded helices: {(read helix, loaded helix): G (n_off, n_grid, n_grid)}, and the
+    half-space parts [HS_self, HS_cross] of the readings on tooth 0 of the left and the right helix for
+    loads on the left tooth 0, one column per grid node."""
+    grid_rho, grid_z, rho_g, z_g = grid
+    probes = {h: [(model.probe_matrices(x), n) for x, n in
+                  (reading_points(pair, member, rho_g, z_g, depth, int(k), frame, h) for k in offsets)]
+              for h in (0, 1)}
+    G = {}
+    HS = None
+    for hl in loaded_helices:
+        loads, xq, weights = flank_unit_loads(pair, member, model, grid_rho, grid_z, hl, frame)
+        for h in (0, 1):
+            G[(h, hl)] = np.zeros((offsets.size, rho_g.size, rho_g.size))
+        U = model.solve_many(np.column_stack(loads), case=f"flank compliance member {member}, helix {hl}")
+        for g in range(rho_g.size):
+            for h in (0, 1):
+                G[(h, hl)][:, :, g] = _readings(model, probes[h], U[:, g])
+        if hl == 0:
+            HS = [np.column_stack([halfspace_reading(x0, n0, xq, weights[g], E, nu) for g in range(rho_g.size)])
+                  for x0, n0 in (reading_points(pair, member, rho_g, z_g, depth, 0, frame, h) for h in (0, 1))]
+    return G, HS
 
 
 def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberCompliance:
     from femgear.body.elastic3d import Elastic3D
-    from femgear.mesh.segment import helix_segment
+    from femgear.mesh.segment import helix_frame, member_body
 
     t0 = time.perf_counter()
-    mesh = helix_segment(pair, member, spec)
+    mesh = member_body(pair, member, spec)
     t_mesh = time.perf_counter() - t0
-    model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=1e-8)
+    frame = helix_frame(pair, member, spec)
+    model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=SOLVE_TOL, solver="auto")
     r0, r1 = roll_range(pair, member)
     grid_rho = np.linspace(r0, r1, n_rho)
     grid_z = np.linspace(0.0, pair.b, n_z)
-    loads, xq, weights = flank_unit_loads(pair, member, model, grid_rho, grid_z)
     RR, ZZ = np.meshgrid(grid_rho, grid_z, indexing="ij")
     rho_g, z_g = RR.ravel(), ZZ.ravel()
     depth = np.minimum(d0, 0.5 * half_thickness(pair, member, rho_g))
     half = (spec.n_teeth - 1) // 2
     offsets = np.arange(-half, half + 1)
-    probes = []
-    for k in offsets:
-        x, n = reading_points(pair, member, rho_g, z_g, depth, int(k))
-        probes.append((model.probe_matrices(x), n))
-    ng = rho_g.size
-    G = np.zeros((offsets.size, ng, ng))
-    for g in range(ng):
-        u = model.solve(loads[g], case=f"flank compliance member {member}, grid node {g}")
-        for i, (mats, n) in enumerate(probes):
-            disp = np.vstack([M @ u for M in mats])
-            G[i, :, g] = -np.sum(disp * n, axis=0)
-    # half-space part of the same reading, tooth 0
-    x0, n0 = reading_points(pair, member, rho_g, z_g, depth, 0)
-    HS = np.column_stack([halfspace_reading(x0, n0, xq, weights[g], E, nu) for g in range(ng)])
-    bulk = G.copy()
+    symmetric = spec.stagger == 0          # mirror-symmetric body: the right helix's kernels are the left ones
+    G, HS = _influence(pair, member, model, frame, (grid_rho, grid_z, rho_g, z_g), depth, offsets,
+                       (0,) if symmetric else (0, 1), E, nu)
     mid = int(np.nonzero(offsets == 0)[0][0])
-    bulk[mid] -= HS
+    bulk, cross = G[(0, 0)].copy(), G[(1, 0)].copy()
+    bulk[mid] -= HS[0]
+    cross[mid] -= HS[1]                    # across the apex / groove: H₀ adds the surface part back (contact.py)
+    right = None
+    if symmetric:   # mirror + reciprocity: X[k] = X[−k]ᵀ exactly; the mean of the two keeps the helices' swap symmetry
+        cross = 0.5 * (cross + np.transpose(cross[::-1], (0, 2, 1)))
+    else:
+        right = G[(1, 1)].copy()
+        right[mid] -= HS[0]                # the mirrored flank and reading: the same half-space part
     st = model.stats()
+    same = G[(0, 0)][mid]
     info = {"mesh_seconds": t_mesh, "assembly_seconds": st.assembly_seconds, "setup_seconds": st.setup_seconds,
             "solve_seconds": st.solve_seconds, "solves": st.solves, "cg_iterations": st.iterations,
             "seconds": time.perf_counter() - t0, "n_tets": int(mesh.t.shape[1]), "order": order,
             "h_tooth": spec.h_tooth, "cached": False,
-            "asymmetry": float(np.linalg.norm(G[mid] - G[mid].T) / np.linalg.norm(G[mid]))}   # load ≠ reading functional
-    return MemberCompliance(member, grid_rho, grid_z, offsets, bulk, G[mid], depth, st.ndofs, info)
+            "cross_ratio": float(np.abs(cross).max() / np.abs(bulk).max()),
+            "asymmetry": float(np.linalg.norm(same - same.T) / np.linalg.norm(same))}   # load ≠ reading functional
+    return MemberCompliance(member, grid_rho, grid_z, offsets, bulk, same, depth, st.ndofs, info, cross, right,
+                            spec.groove, G[(1, 0)][mid])
 
 
 def _transverse(n: np.ndarray) -> np.ndarray:

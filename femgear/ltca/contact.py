@@ -11,9 +11,14 @@ varies continuously with the phase, so does the total contact length.
 
 Compliance between points a, b (both members m, kernel offsets s_m (j_a − j_b) with
 s₁ = −1, s₂ = +1: tooth j of the path is tooth −j of the pinion's and +j of the gear's
-counter-clockwise numbering, :mod:`femgear.ltca.flank`):
+counter-clockwise numbering, :mod:`femgear.ltca.flank`; j is the point's path tooth, its
+line index less one where the stagger shift wrapped past a base pitch):
 
-    C_ab = Σ_m R_m,a · bulk_m[s_m(j_a − j_b)] · R_m,bᵀ + [j_a = j_b] H₀,ab
+    C_ab = Σ_m R_m,a · K_m[s_m(j_a − j_b)] · R_m,bᵀ + [j_a = j_b, same helix] H₀,ab
+
+with K the member's same-helix bulk kernel for points of one helix and its cross-helix kernel
+(one helix loaded, the other read through the body, :mod:`femgear.ltca.compliance`) for points
+on different helices.
 
 H₀ (both bodies): Love's uniform strip 2a × Δℓ as the self term (a = 0.824 b_H
 from the current load, :mod:`femgear.ltca.halfspace`), (1−ν²)/(πE r) between points of
@@ -46,6 +51,7 @@ class ContactPoints:
     u: np.ndarray         #: path position [m] (pinion roll distance ρ₁)
     zeta: np.ndarray      #: face coordinate of the helix [m]
     length: np.ndarray    #: segment length along the line Δℓ [m]
+    tooth: np.ndarray | None = None   #: path tooth index of the point's line (default: ``line``)
 
     @property
     def size(self) -> int:
@@ -58,9 +64,10 @@ def phase_points(pair: GearPair, phase: float, stagger: float, n_line: int) -> C
     cb = math.cos(pair.beta_b)
     span = pair.b * tb
     k_max = int(math.ceil((pair.g_alpha + span) / pair.p_bt)) + 1
-    cols = {k: [] for k in ("helix", "line", "u", "zeta", "length")}
+    cols = {k: [] for k in ("helix", "line", "u", "zeta", "length", "tooth")}
     for h, offset in enumerate((0.0, stagger)):
         shift = ((phase + offset) % 1.0) * pair.p_bt
+        wrap = math.floor(phase + offset)             # line j of a wrapped shift sits on the tooth of line j − 1
         for j in range(-1, k_max + 1):
             u0 = pair.u_start - span + shift + j * pair.p_bt
             z_lo = max(0.0, (pair.u_start - u0) / tb)
@@ -73,43 +80,68 @@ def phase_points(pair: GearPair, phase: float, stagger: float, n_line: int) -> C
             w = np.full(n, dz)
             cols["helix"].append(np.full(n, h))
             cols["line"].append(np.full(n, j))
+            cols["tooth"].append(np.full(n, j - wrap))
             cols["u"].append(u0 + zeta * tb)
             cols["zeta"].append(zeta)
             cols["length"].append(w / cb)
     arr = {k: np.concatenate(v) for k, v in cols.items()}
-    return ContactPoints(arr["helix"].astype(int), arr["line"].astype(int), arr["u"], arr["zeta"], arr["length"])
+    return ContactPoints(arr["helix"].astype(int), arr["line"].astype(int), arr["u"], arr["zeta"], arr["length"],
+                         arr["tooth"].astype(int))
 
 
 def bulk_matrix(pair: GearPair, kernels, pts: ContactPoints) -> np.ndarray:
-    """Σ over members of the interpolated bulk kernels between all points (same helix only) [m/N]."""
+    """Σ over members of the interpolated bulk kernels between all points, both helices [m/N].
+
+    Same helix: the member's self kernels (``kernel(offset, helix)``); across the helices (through the
+    groove and the rim): the cross kernel X (reading on the right helix, load on the left one) for
+    right-left pairs and, by Maxwell–Betti reciprocity, its transpose for left-right pairs.
+    """
     n = pts.size
     C = np.zeros((n, n))
-    same_helix = pts.helix[:, None] == pts.helix[None, :]
-    dj = pts.line[:, None] - pts.line[None, :]
+    X = np.zeros((n, n))
+    tooth = pts.line if pts.tooth is None else pts.tooth
+    dj = tooth[:, None] - tooth[None, :]
+    right_left = (pts.helix[:, None] == 1) & (pts.helix[None, :] == 0)
     for member, sign in ((1, -1), (2, 1)):
         kern = kernels[member]
         rho = pts.u if member == 1 else pair.line_of_action - pts.u
         R = kern.weights(rho, pts.zeta)
-        for d in np.unique(dj[same_helix]):
-            mask = same_helix & (dj == d)
-            K = kern.kernel(int(sign * d))
-            C[mask] += (R @ K @ R.T)[mask]
+        for h in (0, 1):
+            same = (pts.helix[:, None] == h) & (pts.helix[None, :] == h)
+            for d in np.unique(dj[same]):
+                mask = same & (dj == d)
+                C[mask] += (R @ kern.kernel(int(sign * d), helix=h) @ R.T)[mask]
+        if getattr(kern, "cross", None) is not None:
+            for d in np.unique(dj[right_left]):
+                mask = right_left & (dj == d)
+                X[mask] += (R @ kern.cross_kernel(int(sign * d)) @ R.T)[mask]
+    C += X + X.T
     # The kernel pairs a hat *load* with a point *reading* at depth: these functionals differ, so G is not
     # symmetric (≈ 22 % on a 3 × 3 grid, for P1 and P2 alike: not a discretisation error).  The contact
     # operator of the Galerkin (energy) form is symmetric; its symmetric part is used (Maxwell–Betti).
     return 0.5 * (C + C.T)
 
 
-def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float, nu: float) -> np.ndarray:
-    """H₀ of both bodies: Hertz-strip self terms and surface Boussinesq terms along each line [m/N]."""
+def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float, nu: float,
+                 groove: float = 0.0, across: bool = True) -> np.ndarray:
+    """H₀ of both bodies: Hertz-strip self terms and surface Boussinesq terms between the points of one tooth [m/N].
+
+    Points of one tooth: the same line of a helix and, with ``across`` (kernels with a cross-helix block,
+    which dropped the half-space part of that reading too), the two helices' lines of the same path tooth.
+    Distances in the plane of action: path position u and axial position z (ζ on the left helix,
+    2b + g − ζ on the right one, ``groove`` g).
+    """
     cb = math.cos(pair.beta_b)
     rho1 = pts.u
     rho2 = pair.line_of_action - pts.u
     R = (rho1 * rho2) / (rho1 + rho2) / cb
     w = np.maximum(load, 1e-12) / pts.length
     a = HERTZ_TO_UNIFORM * hertz_half_width(w, R, reduced_modulus(E, nu))
-    same = (pts.helix[:, None] == pts.helix[None, :]) & (pts.line[:, None] == pts.line[None, :])
-    r = np.abs(pts.zeta[:, None] - pts.zeta[None, :]) / cb
+    tooth = pts.line if pts.tooth is None else pts.tooth
+    same_helix = pts.helix[:, None] == pts.helix[None, :]
+    same = np.where(same_helix, pts.line[:, None] == pts.line[None, :], across & (tooth[:, None] == tooth[None, :]))
+    z = np.where(pts.helix == 0, pts.zeta, 2 * pair.b + groove - pts.zeta)
+    r = np.hypot(z[:, None] - z[None, :], pts.u[:, None] - pts.u[None, :])
     H = np.zeros((pts.size, pts.size))
     off = same & (r > 0)
     H[off] = 2 * surface_green(r[off], E, nu)
@@ -176,7 +208,8 @@ def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, fo
     load = np.full(pts.size, force / pts.size)
     active = None
     for p in range(1, max_pass + 1):
-        C = Cb + local_matrix(pair, pts, load, E, nu)
+        C = Cb + local_matrix(pair, pts, load, E, nu, getattr(kernels[1], "groove", 0.0),
+                              getattr(kernels[1], "cross", None) is not None)
         sol = solve_contact(C, eps, force, case, active)
         change = float(np.max(np.abs(sol.load - load)) / force)
         load, active = sol.load, sol.load > 0

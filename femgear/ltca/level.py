@@ -52,14 +52,17 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
 
 def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: int = 64, stagger: float = 0.0,
                youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, level: int = 1, n_line: int = 16,
-               extra=None):
+               extra=None, body: dict | None = None):
     """(LTCAResult, info) of one mesh cycle at the total normal force ``force`` [N].
 
     The line loads are kept (:meth:`LTCAResult.path_load`: the wear and lubrication load map of
-    the ``ltca`` level, :func:`femgear.coupling.loop.ltca_reference`)."""
+    the ``ltca`` level, :func:`femgear.coupling.loop.ltca_reference`).  ``body``: ``bore_radius``
+    and ``groove_width`` of the member bodies (:func:`femgear.ltca.analysis.body_options`).
+    """
     from femgear.ltca.analysis import build_model, mesh_cycle
 
-    model = build_model(pair, youngs_modulus, poisson_ratio, level=level)
+    model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger,
+                        **{k: v for k, v in (body or {}).items() if k != "stagger"})
     res = mesh_cycle(model, force, modifications, n_phases=n_positions, stagger=stagger, n_line=n_line, extra=extra)
     orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
     info = {"ltca": res, "excitation": res.excitation(), "model_seconds": model.seconds,
@@ -84,9 +87,10 @@ def deviated_cycle(info: dict, extra) -> dict:
 
 
 def ltca_options_from_scene(scene) -> dict:
-    """Force and modifications of a scene for :func:`ltca_cycle`."""
-    from femgear.ltca.analysis import normal_force
+    """Force, modifications and the member bodies (bore, groove) of a scene for :func:`ltca_cycle`."""
+    from femgear.ltca.analysis import body_options, normal_force
 
     pair = GearPair.from_scene(scene)
+    body = {k: v for k, v in body_options(scene).items() if k != "stagger"}   # tvms passes the stagger itself
     return {"force": normal_force(pair, scene.operating.torque, scene.operating.driver),
-            "modifications": scene.modifications}
+            "modifications": scene.modifications, "body": body}

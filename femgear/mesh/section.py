@@ -67,7 +67,14 @@ def _to_skfem(gmsh, groups: dict[str, int]):
     return skfem.MeshTri(mesh.p, mesh.t, _boundaries=boundaries)
 
 
-def _size_field(gmsh, h: float, refine_at, refine_ratio: float, refine_radius: float | None = None):
+def _size_field(gmsh, h: float, refine_at, refine_ratio: float, refine_radius: float | None = None,
+                grade: tuple[float, float, float] | None = None):
+    """Background size: ``h``, refined to ``h·refine_ratio`` within ``refine_radius`` of ``refine_at``.
+
+    ``grade`` = (r0, rate, h_max, reach): below the radius r0 the size may grow with the depth and beyond
+    ``reach`` from ``refine_at`` with the distance, max(refined size, h·refine_ratio + rate·(r0 − r),
+    h + rate·(distance − reach)), capped at h_max (a far field coarse towards the bore and round the ring).
+    """
     if refine_at is None:
         gmsh.option.setNumber("Mesh.MeshSizeMin", h)
         gmsh.option.setNumber("Mesh.MeshSizeMax", h)
@@ -85,6 +92,17 @@ def _size_field(gmsh, h: float, refine_at, refine_ratio: float, refine_radius: f
     rr = 0.5 * h if refine_radius is None else refine_radius
     f.setNumber(th, "DistMin", rr)
     f.setNumber(th, "DistMax", rr + 3 * h)
+    if grade is not None:
+        r0, rate, h_max, reach = grade
+        radial, cap, far = f.add("MathEval"), f.add("MathEval"), f.add("MathEval")
+        f.setString(radial, "F", f"{h * refine_ratio:.9f} + {rate:.9f} * ({r0:.9f} - Sqrt(x*x + y*y))")
+        f.setString(cap, "F", f"{h_max:.9f}")
+        x0, y0 = refine_at
+        f.setString(far, "F", f"{h:.9f} + {rate:.9f} * (Sqrt((x - {x0:.9f})^2 + (y - {y0:.9f})^2) - {reach:.9f})")
+        hi = f.add("Max")
+        f.setNumbers(hi, "FieldsList", [th, radial, far])
+        th = f.add("Min")
+        f.setNumbers(th, "FieldsList", [hi, cap])
     f.setAsBackgroundMesh(th)
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
@@ -144,14 +162,70 @@ def _check_tip_resolution(prof, h: float) -> None:
         )
 
 
+def _teeth_outline(geo, c, prof, offsets, full: bool, h: float):
+    """gmsh curves of the teeth outline (root space centre to root space centre, fillets, flanks, tips).
+
+    Returns (outline curves in loop order, {"flank", "fillet", "tip"} curve lists, first space point,
+    last space point).  Each tooth is built from its right space centre (−π/z) to its left (+π/z).
+    """
+    z, rf = prof.z, prof.rf
+    pitch = 2 * math.pi / z
+    fil = prof.part <= 1
+    inv_ = (prof.part == 2)
+    xf, yf = prof.x[fil], prof.y[fil]
+    xi = np.concatenate([[prof.x[fil][-1]], prof.x[inv_]])
+    yi = np.concatenate([[prof.y[fil][-1]], prof.y[inv_]])
+
+    def pts(xs, ys, a):                              # tooth frame (centre line along +x) → rotated to +y and by a
+        return [geo.addPoint(*_rot(x, y, a + math.pi / 2), 0, h) for x, y in zip(xs, ys)]
+
+    def space(a, side):
+        return geo.addPoint(*_rot(rf * math.cos(side * pitch / 2), rf * math.sin(side * pitch / 2), a + math.pi / 2), 0, h)
+
+    flanks, fillets, tips, outline = [], [], [], []
+    first_space = prev_end = None
+    for a in offsets:
+        # right half has y ≥ 0 in the tooth frame → rotated, it lies at larger angle; mirror y → −y first
+        right_space = space(a, -1) if prev_end is None else prev_end
+        first_space = right_space if first_space is None else first_space
+        pf_r = pts(xf, -yf, a)                         # fillet, mirrored half (angle −)
+        pi_r = pts(xi[1:], -yi[1:], a)
+        pi_l = pts(xi[1:][::-1], yi[1:][::-1], a)
+        pf_l = pts(xf[::-1], yf[::-1], a)
+        prev_end = first_space if full and a == offsets[-1] else space(a, 1)
+        tooth = [geo.addCircleArc(right_space, c, pf_r[0]), geo.addSpline(pf_r), geo.addSpline([pf_r[-1]] + pi_r),
+                 geo.addCircleArc(pi_r[-1], c, pi_l[0]), geo.addSpline(pi_l + [pf_l[0]]), geo.addSpline(pf_l),
+                 geo.addCircleArc(pf_l[-1], c, prev_end)]
+        outline += tooth
+        fillets += [tooth[0], tooth[1], tooth[5], tooth[6]]
+        flanks += [tooth[2], tooth[4]]
+        tips.append(tooth[3])
+    return outline, {"flank": flanks, "fillet": fillets, "tip": tips}, first_space, prev_end
+
+
+def _teeth_reach(prof, n_teeth: int, refine_at) -> float:
+    """Distance from ``refine_at`` that covers every tooth of an ``n_teeth`` sector centred on +y [m]."""
+    half = (n_teeth / 2) * 2 * math.pi / prof.z
+    tip = np.array([prof.ra * math.sin(half), prof.ra * math.cos(half)])
+    return float(np.hypot(*(tip - np.asarray(refine_at))))
+
+
 def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3, bore_radius: float | None = None,
                  refine_at: tuple[float, float] | None = None, refine_ratio: float = 0.2,
-                 refine_radius: float | None = None, _extrude: tuple | None = None):
+                 refine_radius: float | None = None, _extrude: tuple | None = None,
+                 split_radius: float | None = None, grade: tuple | None = None, ring: bool = False):
     """Transverse section of ``member`` (1 pinion, 2 gear): ``n_teeth`` teeth down to the bore.
 
     Tooth 0 is centred on the +y axis; ``n_teeth=None`` meshes the whole gear.  A
     sector is cut along radial lines through the middle of the tooth spaces (boundary
     ``sides``).  ``bore_radius`` defaults to half the root radius (a gear on a shaft).
+    ``split_radius``: a circle (arc) of that radius embedded in the mesh, its edges named
+    ``split`` (interior; the groove floor of :mod:`femgear.mesh.segment`).  ``grade`` =
+    (rate, h_max[, fine_teeth]): below ``split_radius`` (or the root circle) the size grows with the
+    depth at ``rate`` [m/m] up to ``h_max`` (needs ``refine_at``), and so it does with the distance
+    beyond the middle ``fine_teeth`` teeth (default all ``n_teeth``).
+    ``ring``: the ``n_teeth`` teeth sit on a whole ring (root circle outside them, named ``rim``) on a
+    whole bore circle, instead of a sector cut along radial lines.
     Raises ValueError (naming ``h``) if ``h`` does not give at least two elements
     across the tooth tip, or ``bore_radius`` leaves no rim.
     """
@@ -161,88 +235,76 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
     r_bore = 0.5 * rf if bore_radius is None or bore_radius <= 0 else bore_radius
     if not 0 < r_bore < rf - 2 * pair.m_n:
         raise ValueError(f"bore_radius={r_bore:.4g} m leaves a rim thinner than 2 m_n below the root circle")
+    if split_radius is not None and not r_bore < split_radius < rf:
+        raise ValueError(f"split_radius={split_radius:.4g} m must lie between the bore and the root circle")
     _check_tip_resolution(prof, h)
     full = n_teeth is None or n_teeth >= z
     nt = z if full else int(n_teeth)
     if nt < 1:
         raise ValueError(f"n_teeth must be ≥ 1, got {n_teeth}")
     pitch = 2 * math.pi / z
-    fil = prof.part <= 1
-    inv_ = (prof.part == 2)
-    xf, yf = prof.x[fil], prof.y[fil]
-    xi = np.concatenate([[prof.x[fil][-1]], prof.x[inv_]])
-    yi = np.concatenate([[prof.y[fil][-1]], prof.y[inv_]])
-    # tooth frame: centre line along +x; rotate to +y and by k·pitch
+    offsets = [(k - (nt - 1) / 2) * pitch for k in range(nt)] if not full else [k * pitch for k in range(nt)]
     with _gmsh_session("gear_section") as gmsh:
         geo = gmsh.model.geo
         c = geo.addPoint(0, 0, 0, h)
-
-        def pts(xs, ys, a):
-            out = []
-            for x, y in zip(xs, ys):
-                X, Y = _rot(x, y, a + math.pi / 2)
-                out.append(geo.addPoint(X, Y, 0, h))
-            return out
-
-        curves, flanks, fillets, tips = [], [], [], []
-        offsets = [(k - (nt - 1) / 2) * pitch for k in range(nt)] if not full else [k * pitch for k in range(nt)]
-        # walk clockwise in angle? build each tooth from its right space centre (−π/z) to its left (+π/z)
-        first_space = last_space = None
-        prev_end = None
-        for a in offsets:
-            # right half has y ≥ 0 in the tooth frame → rotated, it lies at larger angle; mirror y → −y first
-            right_space = geo.addPoint(*_rot(rf * math.cos(-pitch / 2), rf * math.sin(-pitch / 2), a + math.pi / 2), 0, h) \
-                if prev_end is None else prev_end
-            if first_space is None:
-                first_space = right_space
-            pf_r = pts(xf, -yf, a)                         # fillet, mirrored half (angle −)
-            pi_r = pts(xi[1:], -yi[1:], a)
-            fillets.append(geo.addCircleArc(right_space, c, pf_r[0]))
-            fillets.append(geo.addSpline(pf_r))
-            flanks.append(geo.addSpline([pf_r[-1]] + pi_r))
-            pi_l = pts(xi[1:][::-1], yi[1:][::-1], a)
-            pf_l = pts(xf[::-1], yf[::-1], a)
-            tips.append(geo.addCircleArc(pi_r[-1], c, pi_l[0]))
-            flanks.append(geo.addSpline(pi_l + [pf_l[0]]))
-            fillets.append(geo.addSpline(pf_l))
-            if full and a == offsets[-1]:
-                left_space = first_space
-            else:
-                left_space = geo.addPoint(*_rot(rf * math.cos(pitch / 2), rf * math.sin(pitch / 2), a + math.pi / 2), 0, h)
-            fillets.append(geo.addCircleArc(pf_l[-1], c, left_space))
-            prev_end = left_space
-            last_space = left_space
-        outline = []
-        for k in range(nt):
-            outline += [fillets[4 * k], fillets[4 * k + 1], flanks[2 * k], tips[k], flanks[2 * k + 1],
-                        fillets[4 * k + 2], fillets[4 * k + 3]]
-        groups_curves = {"flank": flanks, "fillet": fillets, "tip": tips}
-        if full:
-            bore = _circle(geo, c, r_bore, h)
-            loops = [geo.addCurveLoop(outline), geo.addCurveLoop(bore)]
-            sides = []
-        else:
-            a_last = offsets[-1] + pitch / 2 + math.pi / 2
-            a_first = offsets[0] - pitch / 2 + math.pi / 2
-            bl = geo.addPoint(r_bore * math.cos(a_last), r_bore * math.sin(a_last), 0, h)
-            bf = geo.addPoint(r_bore * math.cos(a_first), r_bore * math.sin(a_first), 0, h)
-            s1 = geo.addLine(last_space, bl)
-            arc = geo.addCircleArc(bl, c, bf)
-            s2 = geo.addLine(bf, first_space)
-            bore, sides = [arc], [s1, s2]
-            loops = [geo.addCurveLoop(outline + [s1, arc, s2])]
-        surf = geo.addPlaneSurface(loops)
-        groups_curves["bore"] = bore
+        outline, groups_curves, first_space, last_space = _teeth_outline(geo, c, prof, offsets, full, h)
+        a_last = offsets[-1] + pitch / 2 + math.pi / 2
+        a_first = offsets[0] - pitch / 2 + math.pi / 2
+        surf, groups_curves["bore"], sides, split = _close_section(geo, c, outline, full, r_bore, split_radius,
+                                                                   (first_space, last_space, a_first, a_last), h,
+                                                                   ring and not full, rf)
         if sides:
-            groups_curves["sides"] = sides
+            groups_curves["rim" if ring else "sides"] = sides
         if _extrude is not None:
             return _twist(gmsh, surf, groups_curves, h, *_extrude, refine=(refine_at, refine_ratio, refine_radius))
         geo.synchronize()
+        if split:
+            gmsh.model.mesh.embed(1, split, 2, surf)
+            groups_curves["split"] = split
         groups = {name: gmsh.model.addPhysicalGroup(1, cs) for name, cs in groups_curves.items()}
         gmsh.model.addPhysicalGroup(2, [surf])
-        _size_field(gmsh, h, refine_at, refine_ratio, refine_radius)
+        _size_field(gmsh, h, refine_at, refine_ratio, refine_radius,
+                    None if grade is None else (split_radius or rf, grade[0], grade[1],
+                                                _teeth_reach(prof, grade[2] if len(grade) > 2 else nt, refine_at)))
         gmsh.model.mesh.generate(2)
         return _to_skfem(gmsh, groups)
+
+
+def _close_section(geo, c, outline, full, r_bore, split_radius, ends, h, ring=False, rf=0.0):
+    """The section's plane surface: the teeth ``outline`` closed by the bore (and the sector's sides).
+
+    Returns (surface, bore curves, side curves — the toothless root circle with ``ring`` —, split
+    curves to embed).  ``ends`` = (first space point, last space point, polar angle of the first side,
+    of the last side).  ``ring``: the teeth sit on a whole ring: the outline goes on round the root
+    circle (radius ``rf``) and the bore is a whole circle.
+    """
+    first_space, last_space, a_first, a_last = ends
+    if full or ring:
+        if ring:                                  # the root circle on round from the last tooth space to the first
+            span = 2 * math.pi - (a_last - a_first)
+            mids = [geo.addPoint(rf * math.cos(a_last + span * i / 3), rf * math.sin(a_last + span * i / 3), 0, h)
+                    for i in (1, 2)]
+            rim = [geo.addCircleArc(p0, c, p1) for p0, p1 in zip([last_space] + mids, mids + [first_space])]
+            outline = outline + rim
+        bore = _circle(geo, c, r_bore, h)
+        surf = geo.addPlaneSurface([geo.addCurveLoop(outline), geo.addCurveLoop(bore)])
+        return surf, bore, (rim if ring else []), (_circle(geo, c, split_radius, h) if split_radius else [])
+
+    def at(r, a):
+        return geo.addPoint(r * math.cos(a), r * math.sin(a), 0, h)
+
+    bl, bf = at(r_bore, a_last), at(r_bore, a_first)
+    arc = geo.addCircleArc(bl, c, bf)
+    if split_radius:
+        sl, sf = at(split_radius, a_last), at(split_radius, a_first)
+        sides = [geo.addLine(last_space, sl), geo.addLine(sl, bl), geo.addLine(bf, sf), geo.addLine(sf, first_space)]
+        loop = outline + sides[:2] + [arc] + sides[2:]
+        split = [geo.addCircleArc(sl, c, sf)]
+    else:
+        sides = [geo.addLine(last_space, bl), geo.addLine(bf, first_space)]
+        loop = outline + [sides[0], arc, sides[1]]
+        split = []
+    return geo.addPlaneSurface([geo.addCurveLoop(loop)]), [arc], sides, split
 
 
 def _twist(gmsh, surf, groups_curves, h, width, angle, layers, refine=(None, 1.0, None)):

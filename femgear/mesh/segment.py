@@ -1,13 +1,32 @@
-"""3-D tetrahedral segment of one helix of a gear member, graded towards its middle tooth.
+"""3-D tetrahedral body of a double-helical gear member: both helices, the groove, the rim down to the bore.
 
 The transverse section of :func:`femgear.mesh.section.gear_section` (rack-generated
-involute + trochoid fillet, ``n_teeth`` teeth, rim down to ``r_bore``) is meshed with a
-size field that is fine (``h_tooth``) on the middle tooth and coarse (``h``) elsewhere,
-then twist-extruded along the helix (``layers`` structured layers over the face width b).
-The other helix of a double-helical member is the mirror image z → b − z of this one
-(opposite hand), so one helix mesh serves both; the groove, which joins the helices
-through the body, is not meshed (the cross-compliance of the helices through the rim is
-dropped: notes ltca_methods §5).
+involute + trochoid fillet, ``n_teeth`` teeth on a whole ring — the root circle goes on round
+outside them —, the rim down to the clamped bore circle) is meshed with a size field that is
+fine (``h_tooth``) on the middle tooth, ``h`` on the next ones (``fine_teeth``) and grows with
+the depth below the groove floor and with the distance beyond those teeth (rate ``grade``,
+capped at ``h_far``: the far field is coarse), with the groove-floor circle embedded.  A sector
+cut along radial lines with free sides would turn about the bore as a cantilever wedge (a
+3-tooth sector clamped at r = 20 mm gave 1/9 of the mesh stiffness); the ring keeps the
+hoop support of the rest of the body, whose teeth are left out (they carry no load and add
+little to the rim's stiffness).  That 2-D mesh is swept
+along z through three parts (structured layers, every prism cut into three tetrahedra by
+the global vertex order, which makes neighbouring prisms conform):
+
+- the left helix, z ∈ [0, b], section turned by θ(z) = hand · z tan β / r_ref;
+- the groove, z ∈ [b, b + g] (``groove``; none when g = 0): only the section below the groove
+  floor r_g = r_f − ``groove_depth`` (the body under the groove stays continuous); across it
+  the section turns on by the stagger angle Δ (below);
+- the right helix, z ∈ [b + g, 2b + g], the opposite hand: θ(z) = Δ + hand · (2b + g − z) tan β / r_ref,
+  i.e. its face coordinate is ζ = 2b + g − z (the groove at ζ = b for both helices, as in
+  :mod:`femgear.ltca.contact`).
+
+Stagger.  The scene's ``stagger`` s puts the right helix's contact lines s·p_bt further along
+the path at the same phase (:func:`femgear.geometry.kinematics.double_helical_contact`).  A
+tooth turned counter-clockwise by one pitch meets the plane of action p_bt earlier
+(:mod:`femgear.ltca.flank`), and the pinion's roll distance is the path coordinate while the
+gear's runs the other way, so the right helix's teeth are turned by Δ = −s·2π/z₁ on the pinion
+and +s·2π/z₂ on the gear.  A staggered body needs a groove (the turn is taken across it).
 
 Hand.  The loaded flank is the +X flank of the middle tooth (tooth 0 centred on +y at
 z = 0).  On that flank the transverse section turns by ``hand · z tan β / r``, so the
@@ -17,8 +36,10 @@ with hand +1 (meshing helical gears have opposite hands); then both flank kernel
 the contact lines of :func:`femgear.geometry.contact_lines` with z = ζ on the left helix.
 
 Named regions (boundary facet sets, integer tags never leave :mod:`femgear.mesh`):
-``flank``, ``fillet``, ``tip``, ``bore``, ``sides``, ``end0``, ``end1`` from gmsh
-physical groups, plus ``loaded_flank`` (the +X flank of the middle tooth).
+``flank``, ``fillet``, ``tip``, ``bore``, ``rim`` (the toothless root circle), ``end0``, ``end1`` (the outer end faces),
+``groove_wall`` (the teeth's end faces at the groove, or the apex plane's free part: none when
+g = 0), ``groove_floor``, plus ``loaded_flank`` / ``loaded_flank_right`` (the +X flank of the
+middle tooth of each helix).
 """
 
 from __future__ import annotations
@@ -30,28 +51,37 @@ import numpy as np
 
 from femgear.geometry.gear import GearPair
 
-HAND = {1: -1, 2: 1}   #: helix hand of the meshed (left) helix per member
+HAND = {1: -1, 2: 1}   #: helix hand of the left helix per member
+GROOVE_DEPTH = 0.5     #: groove floor below the root circle, in normal modules (hob run-out; a choice, not a standard)
 
 
 @dataclass(frozen=True)
 class SegmentSpec:
-    """Resolution and extent of a member segment (all lengths in m)."""
+    """Resolution and extent of a member body (all lengths in m)."""
 
     h_tooth: float       #: element size on the middle tooth
-    h: float             #: element size away from it
-    layers: int          #: structured layers over the face width
+    h: float             #: element size on the other teeth
+    layers: int          #: structured layers over the face width of one helix
     n_teeth: int = 5     #: teeth in the segment (odd: the middle one is loaded)
-    r_bore: float = 0.0  #: clamped inner radius; 0: r_f − 3 m_n (rim backup ratio ≈ 1.3)
+    r_bore: float = 0.0  #: clamped bore radius; 0: r_f − 3 m_n (no shaft known)
+    groove: float = 0.0  #: groove width g between the helices
+    stagger: float = 0.0  #: right helix against the left one [transverse base pitches]
+    grade: float = 0.35  #: growth of the element size with the depth below the groove floor / the distance [m/m]
+    h_far: float = 0.0   #: largest element size in the rim; 0: 12 h_tooth (4 m_n at level 1; refines with the level)
+    fine_teeth: int = 3  #: middle teeth kept at ≤ h (the outer ones only carry kernel readings: coarser)
 
     def key(self) -> tuple:
-        return (round(self.h_tooth, 12), round(self.h, 12), self.layers, self.n_teeth, round(self.r_bore, 12))
+        return (round(self.h_tooth, 12), round(self.h, 12), self.layers, self.n_teeth, round(self.r_bore, 12),
+                round(self.groove, 12), round(self.stagger, 12), round(self.grade, 12), round(self.h_far, 12),
+                self.fine_teeth, "body-v2")
 
 
-def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, r_bore: float = 0.0) -> SegmentSpec:
-    """Segment resolution ``level`` (0 coarse, 1 default, 2 fine, 3 finer).
+def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, r_bore: float = 0.0,
+                 groove: float = 0.0, stagger: float = 0.0) -> SegmentSpec:
+    """Body resolution ``level`` (0 coarse, 1 default, 2 fine, 3 finer).
 
-    h_tooth = m_n / (2 + level) (at most half the tip width); the far field is capped by the two-elements-across-
-    the-tip rule of :func:`gear_section`; layers ≈ b / (1.6 h_tooth).
+    h_tooth = m_n / (2 + level) (at most half the tip width); the other teeth are capped by the
+    two-elements-across-the-tip rule of :func:`gear_section`; layers ≈ b / (1.6 h_tooth) per helix.
     """
     if level < 0:
         raise ValueError(f"level must be ≥ 0, got {level}")
@@ -59,7 +89,8 @@ def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, 
     h_tooth = min(pair.m_n / (2 + level), 0.49 * tip)
     h = max(min(0.49 * tip, 2.0 * h_tooth), h_tooth)
     layers = max(4, int(math.ceil(pair.b / (1.6 * h_tooth))))
-    return SegmentSpec(h_tooth=h_tooth, h=h, layers=layers, n_teeth=n_teeth, r_bore=r_bore)
+    return SegmentSpec(h_tooth=h_tooth, h=h, layers=layers, n_teeth=n_teeth, r_bore=r_bore, groove=groove,
+                       stagger=stagger)
 
 
 def bore_radius(pair: GearPair, member: int, spec: SegmentSpec) -> float:
@@ -67,8 +98,59 @@ def bore_radius(pair: GearPair, member: int, spec: SegmentSpec) -> float:
     return spec.r_bore if spec.r_bore > 0 else rf - 3.0 * pair.m_n
 
 
-def helix_segment(pair: GearPair, member: int, spec: SegmentSpec):
-    """The tetrahedral segment (skfem ``MeshTet``) of ``member``'s meshed helix, named regions attached."""
+def groove_radius(pair: GearPair, member: int) -> float:
+    """Radius of the groove floor r_g = r_f − GROOVE_DEPTH · m_n [m]."""
+    return (pair.rf1 if member == 1 else pair.rf2) - GROOVE_DEPTH * pair.m_n
+
+
+@dataclass(frozen=True)
+class HelixFrame:
+    """Where the helices of a member body lie: z ranges and the section's turn θ(z)."""
+
+    b: float
+    groove: float
+    twist: float          #: tan β / r_ref · hand [rad/m]
+    stagger_angle: float  #: Δ [rad]
+
+    @property
+    def width(self) -> float:
+        return 2 * self.b + self.groove
+
+    def theta(self, z: np.ndarray) -> np.ndarray:
+        """Turn of the section at axial position z [rad]."""
+        z = np.asarray(z, float)
+        left = self.twist * z
+        g = max(self.groove, 1e-300)
+        groove = self.twist * self.b + self.stagger_angle * np.clip((z - self.b) / g, 0.0, 1.0)
+        right = self.stagger_angle + self.twist * (self.width - z)
+        return np.where(z <= self.b, left, np.where(z < self.b + self.groove, groove, right))
+
+    def z_of(self, zeta: np.ndarray, helix: int) -> np.ndarray:
+        """Axial position of face coordinate ζ on helix 0 (left) or 1 (right)."""
+        return np.asarray(zeta, float) if helix == 0 else self.width - np.asarray(zeta, float)
+
+
+def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
+    z = pair.z1 if member == 1 else pair.z2
+    r_ref = z * pair.m_t / 2
+    delta = (-1 if member == 1 else 1) * spec.stagger * 2 * math.pi / z
+    return HelixFrame(pair.b, spec.groove, HAND[member] * math.tan(pair.beta) / r_ref, delta)
+
+
+def _layers(pair: GearPair, spec: SegmentSpec) -> tuple[np.ndarray, int, int]:
+    """(z of every layer, index of the layer at z = b, at z = b + g)."""
+    left = np.linspace(0.0, pair.b, spec.layers + 1)
+    if spec.groove > 0:
+        ng = max(1, int(math.ceil(spec.groove / (pair.b / spec.layers))))
+        mid = np.linspace(pair.b, pair.b + spec.groove, ng + 1)[1:]
+    else:
+        ng, mid = 0, np.zeros(0)
+    right = pair.b + spec.groove + left[1:]
+    return np.concatenate([left, mid, right]), spec.layers, spec.layers + ng
+
+
+def member_body(pair: GearPair, member: int, spec: SegmentSpec):
+    """The tetrahedral body (skfem ``MeshTet``) of ``member``, both helices, named regions attached."""
     import skfem
 
     from femgear.mesh.section import gear_section
@@ -77,26 +159,100 @@ def helix_segment(pair: GearPair, member: int, spec: SegmentSpec):
         raise ValueError(f"n_teeth must be odd and ≥ 1 (the middle tooth is loaded), got {spec.n_teeth}")
     if not 0 < spec.h_tooth <= spec.h:
         raise ValueError(f"need 0 < h_tooth ≤ h, got h_tooth={spec.h_tooth}, h={spec.h}")
-    z = pair.z1 if member == 1 else pair.z2
+    if spec.stagger != 0 and spec.groove <= 0:
+        raise ValueError(f"stagger={spec.stagger}: a staggered double-helical body needs groove_width > 0 "
+                         "(the right helix's teeth are turned across the groove)")
     rf = pair.rf1 if member == 1 else pair.rf2
     ra = pair.ra1 if member == 1 else pair.ra2
-    r_ref = z * pair.m_t / 2
-    angle = HAND[member] * pair.b * math.tan(pair.beta) / r_ref
-    mesh = gear_section(pair, member, spec.h, n_teeth=spec.n_teeth, bore_radius=bore_radius(pair, member, spec),
-                        refine_at=(0.0, 0.5 * (rf + ra)), refine_ratio=spec.h_tooth / spec.h,
-                        refine_radius=0.75 * (ra - rf), _extrude=(pair.b, angle, spec.layers))
-    boundaries = dict(mesh.boundaries)
-    boundaries["loaded_flank"] = _loaded_flank(mesh, pair, member)
+    r_g = groove_radius(pair, member)
+    h_far = spec.h_far if spec.h_far > 0 else 12.0 * spec.h_tooth
+    sec = gear_section(pair, member, spec.h, n_teeth=spec.n_teeth, bore_radius=bore_radius(pair, member, spec),
+                       refine_at=(0.0, 0.5 * (rf + ra)), refine_ratio=spec.h_tooth / spec.h,
+                       refine_radius=0.75 * (ra - rf), split_radius=r_g,
+                       grade=(spec.grade, h_far, min(spec.fine_teeth, spec.n_teeth)), ring=True)
+    zs, k_b, k_g = _layers(pair, spec)
+    frame = helix_frame(pair, member, spec)
+    mesh, layer_of, node2d = _sweep(sec, zs, frame, (k_b, k_g), r_g)
+    boundaries = _name_facets(mesh, sec, layer_of, node2d, (0, k_b, k_g, zs.size - 1))
+    boundaries["loaded_flank"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 0)
+    boundaries["loaded_flank_right"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 1)
     return skfem.MeshTet(mesh.p, mesh.t, _boundaries=boundaries)
 
 
-def _loaded_flank(mesh, pair: GearPair, member: int) -> np.ndarray:
-    """Facets of ``flank`` on the +X side of the middle tooth (untwisted to z = 0)."""
+def _below_split(sec) -> np.ndarray:
+    """Triangles of the section on the bore's side of the embedded ``split`` edges (connected components of
+    the triangles joined across every other interior edge; a centroid test fails for flat triangles on
+    the arc's chords)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    f2t = sec.f2t
+    cut = np.zeros(sec.facets.shape[1], bool)
+    cut[sec.boundaries["split"]] = True
+    inner_edge = (f2t[1] >= 0) & ~cut
+    a, b = f2t[0, inner_edge], f2t[1, inner_edge]
+    n = sec.t.shape[1]
+    _, label = connected_components(coo_matrix((np.ones(a.size), (a, b)), shape=(n, n)), directed=False)
+    bore_tris = np.unique(f2t[0, sec.boundaries["bore"]])
+    return np.isin(label, label[bore_tris])
+
+
+def _sweep(sec, zs: np.ndarray, frame: HelixFrame, groove_layers: tuple[int, int], r_g: float):
+    """Sweep the section mesh through the layers ``zs`` → (MeshTet, layer of each node, 2-D node of each node)."""
+    import skfem
+
+    n2, tri = sec.p.shape[1], sec.t
+    inner = _below_split(sec)
+    th = frame.theta(zs)
+    cos, sin = np.cos(th)[:, None], np.sin(th)[:, None]
+    x = cos * sec.p[0] - sin * sec.p[1]
+    y = sin * sec.p[0] + cos * sec.p[1]
+    p = np.vstack([x.ravel(), y.ravel(), np.repeat(zs, n2)])
+    tri_sorted = np.sort(tri, axis=0)                    # a < b < c: the prism split below conforms
+    a, b, cc = tri_sorted
+    tets = []
+    for k in range(zs.size - 1):
+        sel = inner if groove_layers[0] <= k < groove_layers[1] else slice(None)
+        lo, hi = k * n2, (k + 1) * n2
+        A, B, C = a[sel], b[sel], cc[sel]
+        tets += [np.vstack([A + lo, B + lo, C + lo, C + hi]), np.vstack([A + lo, B + lo, B + hi, C + hi]),
+                 np.vstack([A + lo, A + hi, B + hi, C + hi])]
+    t = np.hstack(tets)
+    used = np.unique(t)
+    remap = np.full(p.shape[1], -1, dtype=np.int64)
+    remap[used] = np.arange(used.size)
+    mesh = skfem.MeshTet(p[:, used].copy(), remap[t])
+    return mesh, used // n2, used % n2
+
+
+def _name_facets(mesh, sec, layer_of: np.ndarray, node2d: np.ndarray, ends: tuple[int, int, int, int]) -> dict:
+    """Boundary facets of the swept body by name: lateral ones from the section's named edges, flat ones by layer."""
+    first, k_b, k_g, last = ends
+    edge_name = {}
+    names = [n for n in sec.boundaries if n != "split"] + ["split"]
+    for i, name in enumerate(names):
+        for f in sec.boundaries[name]:
+            edge_name[tuple(sorted(sec.facets[:, f]))] = i
+    bf = mesh.boundary_facets()
+    nodes = mesh.facets[:, bf]
+    lay = layer_of[nodes]
+    out: dict[str, list] = {n: [] for n in names + ["end0", "end1", "groove_wall"]}
+    flat = (lay == lay[0]).all(axis=0)
+    for j in np.nonzero(flat)[0]:
+        k = lay[0, j]
+        out["end0" if k == first else "end1" if k == last else "groove_wall"].append(bf[j])
+    for j in np.nonzero(~flat)[0]:
+        pair2d = tuple(sorted(set(node2d[nodes[:, j]].tolist())))
+        out[names[edge_name[pair2d]]].append(bf[j])
+    out["groove_floor"] = out.pop("split")
+    return {n: np.array(sorted(v), dtype=np.int64) for n, v in out.items() if v or n in ("end0", "end1")}
+
+
+def _loaded_flank(mesh, flank: np.ndarray, pair: GearPair, member: int, frame: HelixFrame, helix: int) -> np.ndarray:
+    """Facets of ``flank`` on the +X side of the middle tooth of ``helix`` (0 left, 1 right), untwisted."""
     z = pair.z1 if member == 1 else pair.z2
-    r_ref = z * pair.m_t / 2
-    f = mesh.boundaries["flank"]
-    c = mesh.p[:, mesh.facets[:, f]].mean(axis=1)
-    twist = HAND[member] * c[2] * math.tan(pair.beta) / r_ref
-    polar = np.arctan2(c[1], c[0]) - twist - math.pi / 2      # from the middle tooth's centre line
+    c = mesh.p[:, mesh.facets[:, flank]].mean(axis=1)
+    on = c[2] < pair.b if helix == 0 else c[2] > pair.b + frame.groove
+    polar = np.arctan2(c[1], c[0]) - frame.theta(c[2]) - math.pi / 2      # from the middle tooth's centre line
     polar = (polar + math.pi) % (2 * math.pi) - math.pi
-    return f[(polar < 0) & (polar > -math.pi / z)]
+    return flank[on & (polar < 0) & (polar > -math.pi / z)]
