@@ -5,24 +5,6 @@ import math
 import numpy as np
 import pytest
 
-from femgear.geometry.gear import GearPair
-
-
-@pytest.fixture(scope="module")
-def pair():
-    return GearPair.from_parameters(z1=24, z2=30, m_n=4e-3, alpha_n=math.radians(20), beta=math.radians(25),
-                                    b=12e-3, x1=0.0, x2=0.0)
-
-
-def _volume(mesh):
-    from skfem import Basis, ElementTetP1, ElementTriP1, Functional
-
-    @Functional
-    def one(w):
-        return 1.0 + 0 * w.x[0]
-
-    el = ElementTetP1() if mesh.p.shape[0] == 3 else ElementTriP1()
-    return one.assemble(Basis(mesh, el))
 
 
 def _spec(pair, **kw):
@@ -41,7 +23,7 @@ def _section(pair, spec, member=1):
                         split_radius=groove_radius(pair, member), grade=(spec.grade, 12 * spec.h_tooth, 3), ring=True)
 
 
-def test_body_volume_regions_and_opposite_hands(pair):
+def test_body_volume_regions_and_opposite_hands(pair, volume):
     """Volume = section area × 2b + the area under the groove floor × g; the named regions partition the
     boundary; the helices turn opposite ways; the loaded flanks of the two helices are mirror images."""
     from femgear.mesh.segment import groove_radius, helix_frame, member_body
@@ -52,7 +34,7 @@ def test_body_volume_regions_and_opposite_hands(pair):
     sec = _section(pair, spec)
     r_g = groove_radius(pair, 1)
     inner = math.pi * (r_g**2 - 0.02**2)
-    assert _volume(body) == pytest.approx(_volume(sec) * 2 * pair.b + inner * g, rel=2e-3)
+    assert volume(body) == pytest.approx(volume(sec) * 2 * pair.b + inner * g, rel=2e-3)
     names = {"flank", "fillet", "tip", "bore", "rim", "end0", "end1", "groove_wall", "groove_floor"}
     assert names <= set(body.boundaries)
     allb = np.concatenate([body.boundaries[n] for n in names])

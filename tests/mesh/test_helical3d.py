@@ -5,25 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from femgear.geometry.gear import GearPair
 from femgear.mesh.section import double_helical_member, gear_section, helical_segment
-
-
-@pytest.fixture(scope="module")
-def pair():
-    return GearPair.from_parameters(z1=24, z2=30, m_n=4e-3, alpha_n=math.radians(20), beta=math.radians(25),
-                                    b=12e-3, x1=0.0, x2=0.0)
-
-
-def _volume(mesh):
-    from skfem import Basis, ElementTetP1, ElementTriP1, Functional
-
-    @Functional
-    def one(w):
-        return 1.0 + 0 * w.x[0]
-
-    el = ElementTetP1() if mesh.p.shape[0] == 3 else ElementTriP1()
-    return one.assemble(Basis(mesh, el))
 
 
 def _tip_angle(mesh, zsel):
@@ -33,11 +15,11 @@ def _tip_angle(mesh, zsel):
     return float(np.mean(np.arctan2(c[1, keep], c[0, keep])))
 
 
-def test_segment_volume_boundaries_and_twist(pair):
+def test_segment_volume_boundaries_and_twist(pair, volume):
     h = 1.6e-3
     m3 = helical_segment(pair, 1, h, n_teeth=1, layers=8)
     m2 = gear_section(pair, 1, h, n_teeth=1)
-    assert _volume(m3) == pytest.approx(_volume(m2) * pair.b, rel=1e-2)
+    assert volume(m3) == pytest.approx(volume(m2) * pair.b, rel=1e-2)
     assert set(m3.boundaries) == {"flank", "fillet", "tip", "bore", "sides", "end0", "end1"}
     allb = np.concatenate(list(m3.boundaries.values()))
     assert np.unique(allb).size == allb.size == m3.boundary_facets().size
