@@ -75,3 +75,23 @@ def test_observed_order_recovers_the_order_of_a_power_law():
     for p in (0.8, 2.0, 3.1):
         assert observed_order(h, [5.0 + 0.3 * x**p for x in h]) == pytest.approx(p, rel=1e-6)
     assert math.isnan(observed_order(h, [1.0, 1.2, 1.1]))       # oscillating: no asymptotic range
+
+
+def test_too_few_resolved_orders_refine_the_contact_lines(coarse_model, baseline_pair, baseline_force, monkeypatch):
+    """Fewer than MIN_RESOLVED_ORDERS resolved orders double the points per contact line (the rig's test gear at
+    150 N m resolved 1 order with 16 points and 18 with 32); the cycle and its resolution check use the finer lines."""
+    import femgear.ltca.analysis as analysis
+    import femgear.ltca.level as level
+    from femgear.scene.schema import Modifications
+
+    mods = Modifications(tip_relief=3e-6, tip_relief_length=2.5e-3, crowning=5e-6)
+    monkeypatch.setattr(analysis, "build_model", lambda *a, **k: coarse_model)
+    h4, _ = level.resolved_orders(coarse_model, baseline_force, mods, n_line=4)
+    h8, _ = level.resolved_orders(coarse_model, baseline_force, mods, n_line=8)
+    monkeypatch.setattr(level, "MIN_RESOLVED_ORDERS", h4 + 1)
+    res, info = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
+    assert info["options"]["n_line"] >= 8 and info["resolved_orders"] >= min(h8, h4 + 1)
+    assert res.k_secant.size == 64
+    monkeypatch.setattr(level, "MIN_RESOLVED_ORDERS", 1)
+    _, info = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
+    assert info["options"]["n_line"] == 4 and info["resolved_orders"] == h4
