@@ -57,7 +57,7 @@ def stiffness(scene, quick: bool, repeats: int) -> list[dict]:
     fe = [2.5, 3.0] if quick else [2.5, 3.0, 4.0]
     cases = [(lv, lambda lv=lv: mesh_stiffness_from_scene(scene, level=lv)) for lv in ("constant", "iso6336")]
     cases += [(f"pem, {n} slices", lambda n=n: mesh_stiffness_from_scene(scene, level="pem", n_slices=n)) for n in (20, 100)]
-    cases += [("ltca (3-D FE teeth + contact; cached kernels; a model, not a resolution)",
+    cases += [("ltca (3-D FE member bodies + contact; cached kernels; a model, not a resolution)",
                lambda: mesh_stiffness_from_scene(scene, level="ltca"))]
     cases += [(f"fe h=m/{d:g}", lambda d=d: mesh_stiffness_from_scene(scene, level="fe", fe_options={"h": mn / d}))
               for d in fe]
