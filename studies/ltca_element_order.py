@@ -87,7 +87,7 @@ def run_split() -> list[dict]:
     from femgear.geometry.gear import GearPair
     from femgear.ltca.compliance import flank_unit_loads, halfspace_reading, reading_points
     from femgear.ltca.flank import half_thickness, roll_range
-    from femgear.mesh.segment import default_spec, helix_segment
+    from femgear.mesh.segment import default_spec, member_body
     from femgear.scene import load_scene
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
@@ -99,7 +99,7 @@ def run_split() -> list[dict]:
     rows = []
     for order, level in [(1, lv) for lv in range(6)] + [(2, 0), (2, 1)]:
         t0 = time.perf_counter()
-        model = Elastic3D(helix_segment(pair, 1, default_spec(pair, 1, level)), E, nu, order=order)
+        model = Elastic3D(member_body(pair, 1, default_spec(pair, 1, level)), E, nu, order=order)
         loads, xq, weights = flank_unit_loads(pair, 1, model, gr, gz)
         u = model.solve(loads[3 * 9 + 4])
         row = {"order": order, "level": level, "ndofs": int(model.basis.N), "fe": [], "hs": [], "bulk": []}
