@@ -148,12 +148,12 @@ def errors(model: np.ndarray, test: np.ndarray) -> dict:
 
 
 def run(coarse: bool = False, workers: int = 2, wear: float = 0.0, profile_error: float = 0.0,
-        ltca: bool = False) -> dict:
+        ltca: bool = False, loop: bool = False) -> dict:
     t0 = time.perf_counter()
     conditions = [(n, T) for n in SPEEDS for T in TORQUES]
     variants = {"free": 0.0} if coarse else {"free": 0.0, "loop": LOOP_STIFFNESS}
     if ltca:
-        variants = {"ltca": 0.0}
+        variants = {"ltca": 0.0, "ltca_loop": LOOP_STIFFNESS} if loop else {"ltca": 0.0}
     extra = TEST_GEAR_MODIFICATIONS if ltca else []
     jobs = [(setup(n, T, k, wear, profile_error, rig_sampling=not coarse) + extra, coarse)
             for k in variants.values() for n, T in conditions]
@@ -233,7 +233,7 @@ def plot(res: dict, name: str = "rig_conditions"):
 def main(argv: list[str]) -> int:
     opts = C.parse_args(argv)
     res = run(opts["coarse"], opts["workers"], float(opts.get("wear", 0.0)), float(opts.get("profile-error", 0.0)),
-              ltca=bool(opts.get("ltca", False)))
+              ltca=bool(opts.get("ltca", False)), loop=bool(opts.get("loop", False)))
     print(f"rig conditions study ({'coarse' if res['coarse'] else 'full'}), {res['seconds']:.1f} s")
     print(table(res))
     print(f"paper's own theory vs test: max error {res['paper_errors']['max_error_percent']:.1f} %")
