@@ -55,7 +55,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import math
 import os
 import time
 from dataclasses import asdict, dataclass, field
@@ -227,11 +226,7 @@ def reading_points(pair: GearPair, member: int, rho: np.ndarray, z: np.ndarray, 
     x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
     if helix == 0:
         return x, n
-    c, s = math.cos(frame.stagger_angle), math.sin(frame.stagger_angle)
-    rot = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, -1.0]])
-    x, n = rot @ x, rot @ n
-    x[2] += frame.width
-    return x, n
+    return frame.to_right(x), frame.to_right(n, direction=True)
 
 
 def _readings(model, probes, u):

@@ -130,12 +130,26 @@ class HelixFrame:
         """Axial position of face coordinate ζ on helix 0 (left) or 1 (right)."""
         return np.asarray(zeta, float) if helix == 0 else self.width - np.asarray(zeta, float)
 
+    def to_right(self, x: np.ndarray, direction: bool = False) -> np.ndarray:
+        """Points (3, n) of the left helix at face coordinate ζ = z → the right helix's at the same (ρ, ζ): mirrored
+        to z = 2b + g − ζ and turned by the stagger angle Δ (``direction``: vectors, no shift along z)."""
+        c, s = math.cos(self.stagger_angle), math.sin(self.stagger_angle)
+        out = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, -1.0]]) @ np.asarray(x, float)
+        if not direction:
+            out[2] += self.width
+        return out
 
-def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
+
+def frame_of(pair: GearPair, member: int, groove: float = 0.0, stagger: float = 0.0) -> HelixFrame:
+    """The :class:`HelixFrame` of ``member`` with groove width ``groove`` [m] and ``stagger`` [base pitches]."""
     z = pair.z1 if member == 1 else pair.z2
     r_ref = z * pair.m_t / 2
-    delta = (-1 if member == 1 else 1) * spec.stagger * 2 * math.pi / z
-    return HelixFrame(pair.b, spec.groove, HAND[member] * math.tan(pair.beta) / r_ref, delta)
+    delta = (-1 if member == 1 else 1) * stagger * 2 * math.pi / z
+    return HelixFrame(pair.b, groove, HAND[member] * math.tan(pair.beta) / r_ref, delta)
+
+
+def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
+    return frame_of(pair, member, spec.groove, spec.stagger)
 
 
 def _layers(pair: GearPair, spec: SegmentSpec) -> tuple[np.ndarray, int, int]:
