@@ -1,14 +1,17 @@
 """P1 or P2 tetrahedra for the LTCA flank kernels: one measurement, both orders, several meshes.
 
-    python studies/ltca_element_order.py [--quick | --ltca | --split]
+    python studies/ltca_element_order.py [--quick | --ltca | --split [--max-p1-level N] [--max-p2-level N]]
 
+All on the member bodies of the baseline scene (:func:`femgear.mesh.segment.member_body`: both
+helices, the groove, the rim down to the scene's bore, :func:`femgear.ltca.analysis.body_options`).
 For the baseline pinion, a 3 × 3 flank grid (hat loads of 1 N): the FE approach at the
 reading depth under the mid-flank, mid-face load (``fe_self``) and its half-space-free bulk
 part, with DOFs and wall time, for P1 at segment levels 0–3 and P2 at levels 0–1
 (``--quick``: P1 0–1, P2 0).  Prints a table and a JSON line (out/ltca_element_order.json).
 ``--ltca``: the LTCA outputs themselves for P1 (levels 1, 3) and P2 (level 0), see :func:`run_ltca`.
 ``--split``: one mid-flank unit load, read at several depths d: the FE approach, its half-space
-part and the bulk (their difference), P1 levels 0–5 and P2 levels 0–1 (:func:`run_split`, ~5 min).
+part and the bulk (their difference), P1 levels 0–5 and P2 levels 0–1 (:func:`run_split`, ~15 min on the
+bodies; ``--max-p1-level`` / ``--max-p2-level`` cut the lists).
 """
 
 from __future__ import annotations
@@ -24,23 +27,38 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def run(quick: bool = False) -> list[dict]:
+def _baseline():
     from femgear.geometry.gear import GearPair
-    from femgear.ltca.compliance import member_compliance
-    from femgear.mesh.segment import default_spec
     from femgear.scene import load_scene
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    pair = GearPair.from_scene(scene)
+    return scene, GearPair.from_scene(scene)
+
+
+def _pinion_spec(scene, pair, level: int):
+    """The pinion body of the scene at ``level`` (bore, groove and stagger as the LTCA builds it)."""
+    from femgear.ltca.analysis import body_options
+    from femgear.mesh.segment import default_spec
+
+    body = body_options(scene)
+    return default_spec(pair, 1, level, r_bore=body["bore_radius"][0], groove=body["groove_width"],
+                        stagger=body["stagger"])
+
+
+def run(quick: bool = False) -> list[dict]:
+    from femgear.ltca.compliance import member_compliance
+
+    scene, pair = _baseline()
     cases = [(1, 0), (1, 1)] + ([] if quick else [(1, 2), (1, 3)]) + [(2, 0)] + ([] if quick else [(2, 1)])
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         os.environ["FEMGEAR_CACHE"] = tmp
         for order, level in cases:
             t0 = time.perf_counter()
-            c = member_compliance(pair, 1, default_spec(pair, 1, level), scene.material.youngs_modulus,
+            spec = _pinion_spec(scene, pair, level)
+            c = member_compliance(pair, 1, spec, scene.material.youngs_modulus,
                                   scene.material.poisson_ratio, order=order, n_rho=3, n_z=3, cache=False)
-            rows.append({"order": order, "level": level, "h_tooth_mm": default_spec(pair, 1, level).h_tooth * 1e3,
+            rows.append({"order": order, "level": level, "h_tooth_mm": spec.h_tooth * 1e3,
                          "ndofs": int(c.ndofs), "fe_self_mid": float(c.fe_self[4, 4]),
                          "bulk_mid": float(c.bulk[list(c.offsets).index(0)][4, 4]),
                          "asymmetry": c.info["asymmetry"], "seconds": time.perf_counter() - t0,
@@ -51,20 +69,15 @@ def run(quick: bool = False) -> list[dict]:
 def run_ltca() -> list[dict]:
     """The LTCA outputs (mean stiffness, LTE p-p and mean; 5 × 7 grid, 64 phases, 200 N m) for P1 at levels 1
     and 3 and P2 at level 0 (the P2 build takes ~12 min on 2 shared cores)."""
-    import time
+    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
 
-    from femgear.geometry.gear import GearPair
-    from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
-    from femgear.scene import load_scene
-
-    scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    pair = GearPair.from_scene(scene)
+    scene, pair = _baseline()
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
     rows = []
     for order, level in ((1, 1), (1, 3), (2, 0)):
         t0 = time.perf_counter()
         m = build_model(pair, scene.material.youngs_modulus, scene.material.poisson_ratio, level=level, order=order,
-                        n_rho=5, n_z=7)
+                        n_rho=5, n_z=7, **body_options(scene))
         r = mesh_cycle(m, F, None, n_phases=64, keep_lines=False)
         rows.append({"order": order, "level": level, "build_s": time.perf_counter() - t0,
                      "ndofs": [int(m.kernels[k].ndofs) for k in (1, 2)], "lte_pp_um": r.lte_peak_to_peak() * 1e6,
@@ -75,7 +88,7 @@ def run_ltca() -> list[dict]:
 SPLIT_DEPTHS_MM = (0.5, 0.7, 0.9, 1.2)
 
 
-def run_split() -> list[dict]:
+def run_split(max_p1: int = 5, max_p2: int = 1) -> list[dict]:
     """FE − half-space split for the mid node of a 7 × 9 flank grid of the baseline pinion, one solve per mesh.
 
     With a converged FE the bulk (FE minus half-space at the same depth) should not depend on the
@@ -84,22 +97,19 @@ def run_split() -> list[dict]:
     import numpy as np
 
     from femgear.body.elastic3d import Elastic3D
-    from femgear.geometry.gear import GearPair
     from femgear.ltca.compliance import flank_unit_loads, halfspace_reading, reading_points
     from femgear.ltca.flank import half_thickness, roll_range
-    from femgear.mesh.segment import default_spec, member_body
-    from femgear.scene import load_scene
+    from femgear.mesh.segment import member_body
 
-    scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    pair = GearPair.from_scene(scene)
+    scene, pair = _baseline()
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     r0, r1 = roll_range(pair, 1)
     gr, gz = np.linspace(r0, r1, 7), np.linspace(0.0, pair.b, 9)
     rho, z = np.array([gr[3]]), np.array([gz[4]])
     rows = []
-    for order, level in [(1, lv) for lv in range(6)] + [(2, 0), (2, 1)]:
+    for order, level in [(1, lv) for lv in range(max_p1 + 1)] + [(2, lv) for lv in range(max_p2 + 1)]:
         t0 = time.perf_counter()
-        model = Elastic3D(member_body(pair, 1, default_spec(pair, 1, level)), E, nu, order=order)
+        model = Elastic3D(member_body(pair, 1, _pinion_spec(scene, pair, level)), E, nu, order=order)
         loads, xq, weights = flank_unit_loads(pair, 1, model, gr, gz)
         u = model.solve(loads[3 * 9 + 4])
         row = {"order": order, "level": level, "ndofs": int(model.basis.N), "fe": [], "hs": [], "bulk": []}
@@ -115,7 +125,9 @@ def run_split() -> list[dict]:
 
 def main(argv) -> None:
     if "--split" in argv:
-        rows = run_split()
+        def _opt(name, default):
+            return int(argv[argv.index(name) + 1]) if name in argv else default
+        rows = run_split(_opt("--max-p1-level", 5), _opt("--max-p2-level", 1))
         print("order level   DOF    bulk = FE − half-space at d = " + " / ".join(f"{d} mm" for d in SPLIT_DEPTHS_MM)
               + " [1e-10 m/N]   (FE at the last depth)")
         for r in rows:

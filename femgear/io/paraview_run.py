@@ -119,9 +119,19 @@ def body_frames(result: RunResult) -> list[Frame]:
 
 
 def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path]:
-    """Write ``flanks.pvd``, with dynamics ``dynamics.pvd``, with ``thermal = "fe"`` ``body.pvd``."""
+    """Write ``flanks.pvd``, with dynamics ``dynamics.pvd``, with ``thermal = "fe"`` ``body.pvd``, and with
+    ``stiffness = "ltca"`` the LTCA's pressure map on the 3-D pinion flanks of both helices, ``ltca_pressure.vtu``
+    (:func:`femgear.ltca.vtk.write_flank_pressure`; the LTCA cycle of the stiffness level: new flanks with the
+    scene's modifications)."""
     out_dir = Path(out_dir)
     files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
+    ltca = result.stiffness.info.get("ltca") if result.stiffness is not None else None
+    if ltca is not None and ltca.line_load:
+        from femgear.ltca.vtk import write_flank_pressure
+
+        m = result.case.material
+        files["ltca_pressure_vtu"] = write_flank_pressure(out_dir / "ltca_pressure.vtu", ltca, result.case.pair,
+                                                          m.youngs_modulus, m.poisson_ratio)
     if result.case.levels.thermal == "fe":
         files["body_pvd"] = write_collection(out_dir, "body", body_frames(result))
     if result.coupled is not None and result.coupled.state.dynamics is not None:

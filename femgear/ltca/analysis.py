@@ -282,4 +282,5 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
             lengths.append(pts.length)
     return LTCAResult(phases, force, cols["lte"], cols["nl"], cols["nr"], cols["fl"], cols["fr"], cols["ksl"],
                       cols["ksr"], cols["ktl"], cols["ktr"], cols["pl"], cols["pr"], cols["err"], tuple(lines),
-                      tuple(lengths), time.perf_counter() - t0, {"n_line": n_line, "stagger": stagger})
+                      tuple(lengths), time.perf_counter() - t0, {"n_line": n_line, "stagger": stagger,
+                                                        "groove": float(model.kernels[1].groove)})

@@ -35,18 +35,19 @@ Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, un
 p-p 0.5226/0.5275/0.5414/0.5415 µm (the two finest differ by 0.60 % and 0.03 %); Richardson
 puts level 1 at +4.9 % in stiffness.  P1 is the default (``order=1``, level 1: mesh +
 compliance ≈ 23–36 s for both members with the sparse LU) for the 60 s budget; its bias is
-stiff, as expected of linear tetrahedra in bending.  On the earlier one-helix segments P2
-converged much faster per element but cost 16–22 s a unit load with SA-AMG (111 k DOF); there
-P1 level 1 / P1 level 3 / P2 level 0 gave 8.58 / 8.33 / 8.16e8 N/m and LTE p-p 0.470 / 0.495 /
-0.515 µm on a 5 × 7 grid (``python studies/ltca_element_order.py --ltca``, not re-run).
+stiff, as expected of linear tetrahedra in bending.  P2 converges much faster per element but
+costs ≈ 21 s a unit load with SA-AMG on the bodies (176 k DOF at level 0): on a 5 × 7 grid P1
+level 1 / P1 level 3 / P2 level 0 give 7.119 / 6.954 / 6.742e8 N/m and LTE p-p 0.536 / 0.556 /
+0.564 µm (P1 level 1: +5.6 % / −4.9 % against P2; build 25 s / 183 s / 1503 s;
+``python studies/ltca_element_order.py --ltca``).
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
 size: a depth that shrinks with the mesh moves the target of a refinement study (the
 reading then converges to a different split at every level).  The split is insensitive
-to the depth where the FE is converged: one mid-flank unit load on the baseline pinion,
-P2 level 1 (144 k DOF), gives bulk = 9.48/9.47/9.55e-10 m/N at d = 0.7/0.9/1.2 mm, while P1
-at level 5 (114 k DOF) is still 11 % below at 1.2 mm (P1 tetrahedra are stiff in bending)
+to the depth where the FE is converged: one mid-flank unit load on the baseline pinion's body,
+P2 level 1 (252 k DOF), gives bulk = 10.93/10.91/11.04e-10 m/N at d = 0.7/0.9/1.2 mm, while P1
+at level 5 (206 k DOF) is still 9 % below at 1.2 mm (P1 tetrahedra are stiff in bending)
 (``python studies/ltca_element_order.py --split``).  Results are cached on disk (``out/cache/ltca`` or
 ``$FEMGEAR_CACHE``) under a hash of geometry, material, mesh and grid.
 """
@@ -55,7 +56,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import math
 import os
 import time
 from dataclasses import asdict, dataclass, field
@@ -227,11 +227,7 @@ def reading_points(pair: GearPair, member: int, rho: np.ndarray, z: np.ndarray, 
     x[2] = np.clip(x[2], 1e-6 * pair.b, (1 - 1e-6) * pair.b)   # end-face nodes: just inside
     if helix == 0:
         return x, n
-    c, s = math.cos(frame.stagger_angle), math.sin(frame.stagger_angle)
-    rot = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, -1.0]])
-    x, n = rot @ x, rot @ n
-    x[2] += frame.width
-    return x, n
+    return frame.to_right(x), frame.to_right(n, direction=True)
 
 
 def _readings(model, probes, u):

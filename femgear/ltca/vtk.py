@@ -1,22 +1,62 @@
-"""The pressure map of an LTCA cycle on the 3-D pinion flank, as a VTK file for ParaView (meshio, lazily).
+"""The pressure map of an LTCA cycle on the 3-D pinion flanks of both helices, as a VTK file for ParaView.
 
-The flank of the pinion's tooth 0 (left helix, :func:`femgear.ltca.flank.flank_points`) is
-tessellated on a (ρ, ζ) grid; each node carries the largest Hertz pressure over the cycle
-(``p_max``) and the cycle-mean load per length (``w_mean``) of the contact points that
-passed within half a grid cell, so the map shows where the flank is loaded and how hard.
+The loaded flank of the pinion's tooth 0 of each helix is tessellated on a (ρ, ζ) grid (ρ the
+roll distance over the active flank, ζ the helix's own face coordinate, the groove at ζ = b).
+The grid's 3-D points are those of the member body the LTCA solves
+(:func:`femgear.mesh.segment.member_body`): on the left helix the helicoid of
+:func:`femgear.ltca.flank.flank_points`, on the right helix the same (ρ, ζ) mirrored to
+z = 2b + g − ζ and turned by the stagger angle (:meth:`femgear.mesh.segment.HelixFrame.to_right`).
+
+Every contact line of every phase (``LTCAResult.line_load``: helix, line, u, ζ, w) is
+interpolated along ζ onto the grid columns it crosses (u = ρ₁ on the line, u(ζ) linear with
+slope tan β_b, w linear between the line's points) and dropped on the nearest ρ node.  Each
+node then carries ``p_max``, the largest Hertz pressure √(w E′/(2πR)) over the cycle
+(:func:`femgear.ltca.halfspace.hertz_pressure`, R the normal relative radius of curvature at u),
+and ``w_mean``, the cycle mean of the load per length there [N/m]; Σ w_mean Δζ / cos β_b over a
+helix's grid is its cycle-mean load (:meth:`FlankMap.helix_force`), a check that the map holds the
+LTCA's loads.
 """
 
 from __future__ import annotations
 
 import math
+import os
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 
+@dataclass(frozen=True)
+class FlankMap:
+    """Pressure and load maps on the pinion's loaded flanks, index [helix (0 left, 1 right), i_ρ, i_ζ]."""
+
+    rho: np.ndarray      #: roll distance grid [m]
+    zeta: np.ndarray     #: face coordinate grid of a helix [m]
+    p_max: np.ndarray    #: largest Hertz pressure over the cycle [Pa]
+    w_mean: np.ndarray   #: cycle mean of the load per length [N/m]
+    beta_b: float        #: base helix angle [rad]
+
+    def helix_force(self) -> np.ndarray:
+        """Cycle-mean normal load of each helix from the map, Σ w_mean Δζ / cos β_b (trapezoid in ζ) [N]."""
+        dz = np.full(self.zeta.size, self.zeta[1] - self.zeta[0])
+        dz[[0, -1]] *= 0.5
+        return np.einsum("hij,j->h", self.w_mean, dz) / math.cos(self.beta_b)
+
+
+def _line_samples(pair, u: np.ndarray, zeta: np.ndarray, w: np.ndarray, dl: np.ndarray, grid_z: np.ndarray):
+    """(u, ζ, w) of one contact line at the grid's ζ nodes it covers (its points are segment centres of length Δℓ)."""
+    order = np.argsort(zeta)
+    u, zeta, w, dl = u[order], zeta[order], w[order], dl[order]
+    half = 0.5 * math.cos(pair.beta_b)
+    lo, hi = zeta[0] - half * dl[0], zeta[-1] + half * dl[-1]
+    z = grid_z[(grid_z >= lo - 1e-12) & (grid_z <= hi + 1e-12)]
+    return u[0] + (z - zeta[0]) * math.tan(pair.beta_b), z, np.interp(z, zeta, w)
+
+
 def flank_pressure_map(result, pair, youngs_modulus: float, poisson_ratio: float, n_rho: int = 40,
-                       n_z: int = 60) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(ρ grid, ζ grid, p_max[n_rho, n_z]) of the left helix from ``result.line_load`` [m, m, Pa]."""
+                       n_z: int = 60) -> FlankMap:
+    """The :class:`FlankMap` of both helices of the pinion from ``result.line_load`` (keep_lines=True)."""
     from femgear.ltca.flank import roll_range
     from femgear.ltca.halfspace import hertz_pressure, reduced_modulus
 
@@ -25,33 +65,48 @@ def flank_pressure_map(result, pair, youngs_modulus: float, poisson_ratio: float
     r0, r1 = roll_range(pair, 1)
     rho = np.linspace(r0, r1, n_rho)
     zeta = np.linspace(0.0, pair.b, n_z)
-    pmax = np.zeros((n_rho, n_z))
+    pmax = np.zeros((2, n_rho, n_z))
+    wsum = np.zeros((2, n_rho, n_z))
     cb = math.cos(pair.beta_b)
     Ep = reduced_modulus(youngs_modulus, poisson_ratio)
-    for arr in result.line_load:
-        s = arr[:, 0] == 0
-        u, z, w = arr[s, 2], arr[s, 3], arr[s, 4]
-        R = u * (pair.line_of_action - u) / pair.line_of_action / cb
-        p = hertz_pressure(w, R, Ep)
-        i = np.clip(np.rint((u - r0) / (r1 - r0) * (n_rho - 1)).astype(int), 0, n_rho - 1)
-        j = np.clip(np.rint(z / pair.b * (n_z - 1)).astype(int), 0, n_z - 1)
-        np.maximum.at(pmax, (i, j), p)
-    return rho, zeta, pmax
+    for arr, dl in zip(result.line_load, result.line_length):
+        for h in (0, 1):
+            for j in np.unique(arr[arr[:, 0] == h, 1]):
+                m = (arr[:, 0] == h) & (arr[:, 1] == j)
+                u, z, w = _line_samples(pair, arr[m, 2], arr[m, 3], arr[m, 4], dl[m], zeta)
+                R = u * (pair.line_of_action - u) / pair.line_of_action / cb
+                i = np.clip(np.rint((u - r0) / (r1 - r0) * (n_rho - 1)).astype(int), 0, n_rho - 1)
+                k = np.clip(np.rint(z / pair.b * (n_z - 1)).astype(int), 0, n_z - 1)
+                np.maximum.at(pmax[h], (i, k), hertz_pressure(w, R, Ep))
+                np.add.at(wsum[h], (i, k), w)
+    return FlankMap(rho, zeta, pmax, wsum / len(result.line_load), pair.beta_b)
 
 
 def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, poisson_ratio: float) -> Path:
-    """Write the pressure map on the 3-D pinion flank as VTK unstructured quads (``.vtu``)."""
+    """Write the pressure map on the 3-D pinion flanks of both helices as VTK unstructured quads (``.vtu``).
+
+    The body's groove width and stagger come from ``result.info`` (:func:`femgear.ltca.analysis.mesh_cycle`).
+    Point data: ``p_max`` [Pa], ``w_mean`` [N/m], ``rho``, ``zeta`` [m], ``helix`` (0 left, 1 right).
+    """
     import meshio
 
     from femgear.ltca.flank import flank_points
+    from femgear.mesh.segment import frame_of
 
-    rho, zeta, pmax = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
-    R, Z = np.meshgrid(rho, zeta, indexing="ij")
-    pts = flank_points(pair, 1, R.ravel(), Z.ravel()).T
+    fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
+    frame = frame_of(pair, 1, result.info.get("groove", 0.0), result.info.get("stagger", 0.0))
+    R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
+    left = flank_points(pair, 1, R.ravel(), Z.ravel())
+    pts = np.hstack([left, frame.to_right(left)]).T
     nr, nz = R.shape
     idx = np.arange(nr * nz).reshape(nr, nz)
     quads = np.column_stack([idx[:-1, :-1].ravel(), idx[1:, :-1].ravel(), idx[1:, 1:].ravel(), idx[:-1, 1:].ravel()])
+    quads = np.vstack([quads, quads + nr * nz])
+    data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), 2),
+            "zeta": np.tile(Z.ravel(), 2), "helix": np.repeat([0, 1], nr * nz).astype(np.int32)}
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, meshio.Mesh(pts, [("quad", quads)], point_data={"p_max": pmax.ravel(), "rho": R.ravel()}))
+    tmp = path.with_name(f".{path.stem}.tmp-{os.getpid()}{path.suffix}")     # complete or absent
+    meshio.write(tmp, meshio.Mesh(pts, [("quad", quads)], point_data=data))
+    os.replace(tmp, path)
     return path

@@ -212,7 +212,7 @@ def _teeth_reach(prof, n_teeth: int, refine_at) -> float:
 
 def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3, bore_radius: float | None = None,
                  refine_at: tuple[float, float] | None = None, refine_ratio: float = 0.2,
-                 refine_radius: float | None = None, _extrude: tuple | None = None,
+                 refine_radius: float | None = None,
                  split_radius: float | None = None, grade: tuple | None = None, ring: bool = False):
     """Transverse section of ``member`` (1 pinion, 2 gear): ``n_teeth`` teeth down to the bore.
 
@@ -255,8 +255,6 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
                                                                    ring and not full, rf)
         if sides:
             groups_curves["rim" if ring else "sides"] = sides
-        if _extrude is not None:
-            return _twist(gmsh, surf, groups_curves, h, *_extrude, refine=(refine_at, refine_ratio, refine_radius))
         geo.synchronize()
         if split:
             gmsh.model.mesh.embed(1, split, 2, surf)
@@ -305,99 +303,3 @@ def _close_section(geo, c, outline, full, r_bore, split_radius, ends, h, ring=Fa
         loop = outline + [sides[0], arc, sides[1]]
         split = []
     return geo.addPlaneSurface([geo.addCurveLoop(loop)]), [arc], sides, split
-
-
-def _twist(gmsh, surf, groups_curves, h, width, angle, layers, refine=(None, 1.0, None)):
-    """Twist-extrude the section along z (helix), tetrahedra, boundaries from the curve groups.
-
-    ``refine`` = (refine_at, refine_ratio, refine_radius): a graded section (size field of
-    :func:`_size_field`, used by :mod:`femgear.mesh.segment`); uniform size ``h`` without it.
-    """
-    import skfem
-
-    graded = refine[0] is not None
-    if graded:
-        _size_field(gmsh, h, *refine)
-    geo = gmsh.model.geo
-    out = geo.twist([(2, surf)], 0, 0, 0, 0, 0, width, 0, 0, 1, angle, [layers])
-    geo.synchronize()
-    # out: [top surface, volume, one lateral surface per boundary curve (in loop order)]
-    top, vol = out[0][1], out[1][1]
-    curve_of = {}
-    loops = gmsh.model.getBoundary([(2, surf)], oriented=False)
-    for (dim, ctag), lat in zip(loops, out[2:]):
-        curve_of[abs(ctag)] = lat[1]
-    groups = {name: [curve_of[abs(c)] for c in cs] for name, cs in groups_curves.items()}
-    groups["end0"], groups["end1"] = [surf], [top]
-    tags = {name: gmsh.model.addPhysicalGroup(2, ss) for name, ss in groups.items()}
-    gmsh.model.addPhysicalGroup(3, [vol])
-    if not graded:
-        gmsh.option.setNumber("Mesh.MeshSizeMin", h)
-        gmsh.option.setNumber("Mesh.MeshSizeMax", h)
-    gmsh.model.mesh.generate(3)
-    ntags, coords, _ = gmsh.model.mesh.getNodes()
-    xyz = coords.reshape(-1, 3)
-    index = np.full(int(ntags.max()) + 1, -1, dtype=np.int64)
-    index[ntags.astype(np.int64)] = np.arange(ntags.size)
-    ets, _, ens = gmsh.model.mesh.getElements(3)
-    tets = [index[n.astype(np.int64)].reshape(-1, 4) for et, n in zip(ets, ens) if et == 4]
-    if not tets:
-        raise RuntimeError("gmsh produced no tetrahedra for the helical segment")
-    t = np.vstack(tets)
-    used = np.unique(t)
-    remap = np.full(xyz.shape[0], -1, dtype=np.int64)
-    remap[used] = np.arange(used.size)
-    mesh = skfem.MeshTet(xyz[used].T.copy(), remap[t].T.copy())
-    key = {tuple(sorted(f)): i for i, f in enumerate(mesh.facets.T)}
-    boundaries = {}
-    for name, tag in tags.items():
-        ids = []
-        for ent in gmsh.model.getEntitiesForPhysicalGroup(2, tag):
-            e2, _, n2 = gmsh.model.mesh.getElements(2, ent)
-            for et, en in zip(e2, n2):
-                if et == 2:
-                    for tri in remap[index[en.astype(np.int64)]].reshape(-1, 3):
-                        ids.append(key[tuple(sorted(tri))])
-        boundaries[name] = np.unique(np.array(ids, dtype=np.int64))
-    return skfem.MeshTet(mesh.p, mesh.t, _boundaries=boundaries)
-
-
-def helical_segment(pair: GearPair, member: int, h: float, n_teeth: int = 1, bore_radius: float | None = None,
-                    hand: int = 1, width: float | None = None, layers: int | None = None, z0: float = 0.0):
-    """3-D helical segment of ``n_teeth`` teeth (tetrahedra): the transverse section twisted along z.
-
-    The section turns by ``hand · width · tan β / r`` (r: reference radius) over the
-    ``width`` (default: the helix face width b); ``hand`` = ±1 gives the two helices of
-    a double-helical member.  Boundaries: flank, fillet, tip, bore, sides, end0, end1.
-    ``layers`` (default ≈ width/h) sets the axial divisions.
-    """
-    if hand not in (1, -1):
-        raise ValueError(f"hand must be +1 or -1, got {hand!r}")
-    z = pair.z1 if member == 1 else pair.z2
-    b = pair.b if width is None else width
-    if b <= 0:
-        raise ValueError(f"width must be positive, got {b}")
-    r = z * pair.m_t / 2
-    angle = hand * b * math.tan(pair.beta) / r
-    nl = layers or max(2, int(math.ceil(b / h)))
-    mesh = gear_section(pair, member, h, n_teeth=n_teeth, bore_radius=bore_radius, _extrude=(b, angle, nl))
-    if z0:
-        import skfem
-
-        p = mesh.p.copy()
-        p[2] += z0
-        mesh = skfem.MeshTet(p, mesh.t, _boundaries=dict(mesh.boundaries))
-    return mesh
-
-
-def double_helical_member(pair: GearPair, member: int, h: float, groove: float = 0.0, n_teeth: int = 1,
-                          bore_radius: float | None = None, layers: int | None = None):
-    """Both helices of a double-helical member: (left, right) tetrahedral meshes.
-
-    The left helix occupies z ∈ [0, b] (hand +1), the right z ∈ [b + groove, 2b + groove]
-    (hand −1, mirrored so the apex lies in the groove).  The groove itself (a toothless
-    ring between the helices) is not meshed: the halves are separate bodies here.
-    """
-    left = helical_segment(pair, member, h, n_teeth, bore_radius, hand=1, layers=layers)
-    right = helical_segment(pair, member, h, n_teeth, bore_radius, hand=-1, layers=layers, z0=pair.b + groove)
-    return left, right

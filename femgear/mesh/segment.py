@@ -39,7 +39,8 @@ Named regions (boundary facet sets, integer tags never leave :mod:`femgear.mesh`
 ``flank``, ``fillet``, ``tip``, ``bore``, ``rim`` (the toothless root circle), ``end0``, ``end1`` (the outer end faces),
 ``groove_wall`` (the teeth's end faces at the groove, or the apex plane's free part: none when
 g = 0), ``groove_floor``, plus ``loaded_flank`` / ``loaded_flank_right`` (the +X flank of the
-middle tooth of each helix).
+middle tooth of each helix); :func:`flank_regions` splits ``flank`` per helix, tooth and side
+(``meshes/export.py`` writes them for ParaView).
 """
 
 from __future__ import annotations
@@ -129,12 +130,26 @@ class HelixFrame:
         """Axial position of face coordinate ζ on helix 0 (left) or 1 (right)."""
         return np.asarray(zeta, float) if helix == 0 else self.width - np.asarray(zeta, float)
 
+    def to_right(self, x: np.ndarray, direction: bool = False) -> np.ndarray:
+        """Points (3, n) of the left helix at face coordinate ζ = z → the right helix's at the same (ρ, ζ): mirrored
+        to z = 2b + g − ζ and turned by the stagger angle Δ (``direction``: vectors, no shift along z)."""
+        c, s = math.cos(self.stagger_angle), math.sin(self.stagger_angle)
+        out = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, -1.0]]) @ np.asarray(x, float)
+        if not direction:
+            out[2] += self.width
+        return out
 
-def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
+
+def frame_of(pair: GearPair, member: int, groove: float = 0.0, stagger: float = 0.0) -> HelixFrame:
+    """The :class:`HelixFrame` of ``member`` with groove width ``groove`` [m] and ``stagger`` [base pitches]."""
     z = pair.z1 if member == 1 else pair.z2
     r_ref = z * pair.m_t / 2
-    delta = (-1 if member == 1 else 1) * spec.stagger * 2 * math.pi / z
-    return HelixFrame(pair.b, spec.groove, HAND[member] * math.tan(pair.beta) / r_ref, delta)
+    delta = (-1 if member == 1 else 1) * stagger * 2 * math.pi / z
+    return HelixFrame(pair.b, groove, HAND[member] * math.tan(pair.beta) / r_ref, delta)
+
+
+def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
+    return frame_of(pair, member, spec.groove, spec.stagger)
 
 
 def _layers(pair: GearPair, spec: SegmentSpec) -> tuple[np.ndarray, int, int]:
@@ -248,11 +263,37 @@ def _name_facets(mesh, sec, layer_of: np.ndarray, node2d: np.ndarray, ends: tupl
     return {n: np.array(sorted(v), dtype=np.int64) for n, v in out.items() if v or n in ("end0", "end1")}
 
 
-def _loaded_flank(mesh, flank: np.ndarray, pair: GearPair, member: int, frame: HelixFrame, helix: int) -> np.ndarray:
-    """Facets of ``flank`` on the +X side of the middle tooth of ``helix`` (0 left, 1 right), untwisted."""
+def flank_position(mesh, flank: np.ndarray, pair: GearPair, member: int, frame: HelixFrame) -> np.ndarray:
+    """(helix, tooth, side) of each facet of ``flank`` (3, n): helix 0 left (z < b), 1 right (z > b + g), −1 in
+    between; tooth k = −(n−1)/2 … (n−1)/2 (tooth 0 the middle one, k > 0 counter-clockwise); side 0 the +X flank
+    of the untwisted tooth (the one the LTCA loads on tooth 0), 1 the other."""
     z = pair.z1 if member == 1 else pair.z2
+    pitch = 2 * math.pi / z
     c = mesh.p[:, mesh.facets[:, flank]].mean(axis=1)
-    on = c[2] < pair.b if helix == 0 else c[2] > pair.b + frame.groove
+    helix = np.where(c[2] < pair.b, 0, np.where(c[2] > pair.b + frame.groove, 1, -1))
     polar = np.arctan2(c[1], c[0]) - frame.theta(c[2]) - math.pi / 2      # from the middle tooth's centre line
     polar = (polar + math.pi) % (2 * math.pi) - math.pi
-    return flank[on & (polar < 0) & (polar > -math.pi / z)]
+    tooth = np.rint(polar / pitch).astype(np.int64)
+    side = np.where(polar - tooth * pitch < 0, 0, 1)
+    return np.vstack([helix, tooth, side])
+
+
+def flank_regions(mesh, pair: GearPair, member: int, spec: SegmentSpec) -> dict[str, np.ndarray]:
+    """The ``flank`` facets of a :func:`member_body` by helix, tooth and side: ``flank_<left|right>_t<k>_<drive|coast>``
+    (``drive`` the +X side, the LTCA's loaded flank on tooth 0: ``loaded_flank`` = ``flank_left_t+0_drive``)."""
+    flank = mesh.boundaries["flank"]
+    pos = flank_position(mesh, flank, pair, member, helix_frame(pair, member, spec))
+    out = {}
+    for h, hname in ((0, "left"), (1, "right")):
+        for k in range(-(spec.n_teeth // 2), spec.n_teeth // 2 + 1):
+            for s, sname in ((0, "drive"), (1, "coast")):
+                sel = flank[(pos[0] == h) & (pos[1] == k) & (pos[2] == s)]
+                if sel.size:
+                    out[f"flank_{hname}_t{k:+d}_{sname}"] = sel
+    return out
+
+
+def _loaded_flank(mesh, flank: np.ndarray, pair: GearPair, member: int, frame: HelixFrame, helix: int) -> np.ndarray:
+    """Facets of ``flank`` on the +X side of the middle tooth of ``helix`` (0 left, 1 right), untwisted."""
+    pos = flank_position(mesh, flank, pair, member, frame)
+    return flank[(pos[0] == helix) & (pos[1] == 0) & (pos[2] == 0)]

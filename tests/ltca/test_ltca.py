@@ -136,18 +136,6 @@ def test_excitation_reproduces_the_helix_loads(coarse_model, baseline_force):
         assert np.allclose(ex[f"e_{h}"], ex[f"nlte_{h}"], atol=1e-15)
 
 
-def test_pressure_map_vtk(coarse_model, baseline_force, baseline_pair, tmp_path):
-    import meshio
-
-    from femgear.ltca.analysis import mesh_cycle
-    from femgear.ltca.vtk import write_flank_pressure
-
-    r = mesh_cycle(coarse_model, baseline_force, None, n_phases=8)
-    path = write_flank_pressure(tmp_path / "p.vtu", r, baseline_pair, 210e9, 0.3)
-    m = meshio.read(path)
-    assert m.points.shape[1] == 3 and m.point_data["p_max"].max() > 1e8
-
-
 def test_line_loads_sum_to_the_helix_loads(coarse_model, baseline_force):
     from femgear.ltca.analysis import mesh_cycle
 

@@ -78,3 +78,26 @@ def test_section_ring_is_graded_coarse_far_from_the_loaded_tooth(pair):
     bottom = mid[1] < -0.5 * pair.rf1
     assert np.median(length[near]) < 1.3 * spec.h_tooth
     assert np.median(length[bottom]) > 4 * spec.h_tooth
+
+
+def test_tips_turn_by_the_helix_angle_opposite_ways_on_the_two_helices(pair):
+    """The tip of the middle tooth turns by hand · b tan β / r_ref across a helix (r_ref = z m_t / 2), back across
+    the other one (replaces the test of the former gmsh twist-extruded helix halves)."""
+    from femgear.mesh.segment import HAND, member_body
+
+    g = 4e-3
+    for member in (1, 2):
+        body = member_body(pair, member, _spec(pair, groove=g))
+        tip = body.p[:, np.unique(body.facets[:, body.boundaries["tip"]])]
+        angle = np.arctan2(tip[1], tip[0])
+        z = pair.z1 if member == 1 else pair.z2
+        twist = HAND[member] * math.tan(pair.beta) / (z * pair.m_t / 2)
+
+        def at(z0):       # tooth 0's tip nodes: within half a pitch of where the helix puts its centre line
+            turn = twist * min(z0, 2 * pair.b + g - z0)
+            sel = (np.abs(angle - math.pi / 2 - turn) < math.pi / z) & np.isclose(tip[2], z0, atol=1e-9)
+            assert sel.sum() >= 2
+            return float(np.mean(angle[sel]))
+
+        assert at(pair.b) - at(0.0) == pytest.approx(twist * pair.b, rel=1e-9)
+        assert at(2 * pair.b + g) - at(pair.b + g) == pytest.approx(-twist * pair.b, rel=1e-9)
