@@ -118,7 +118,7 @@ def test_edge_contacts_are_flagged_not_shown_as_hertz_pressures(coarse_model, ba
     """Unmodified flanks: the contact lines end on the tip edge and the face ends, whose short last pieces carry
     many times the mean load per length (64 phases meet such a piece: 7.6 GPa at the tip/face-end corner
     against a 0.50 GPa median on this mesh).  The map's largest pressure lies on a flagged edge node; inside the
-    flank the pressure is within a factor 1.6 of the cycle's mean Hertz level (the 2 × 2 mesh's
+    flank the pressure stays within a factor 2 of its median (1.57 here: the
     single-/double-contact variation), and the .vtu carries the flag."""
     import meshio
 
@@ -131,6 +131,6 @@ def test_edge_contacts_are_flagged_not_shown_as_hertz_pressures(coarse_model, ba
     assert fmap.edge[np.unravel_index(np.argmax(p), p.shape)]
     inner = p[~fmap.edge & (p > 0)]
     assert p.max() > 2.0 * inner.max()                 # the edge value is not a Hertz pressure of the line
-    assert inner.max() < 1.6 * np.median(inner)
+    assert inner.max() < 2.0 * np.median(inner)
     m = meshio.read(write_flank_pressure(tmp_path / "e.vtu", r, baseline_pair, 210e9, 0.3))
     assert set(np.unique(m.point_data["edge"])) == {0, 1}
