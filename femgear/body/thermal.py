@@ -111,10 +111,17 @@ class ThermoElasticResult:
 
 
 def solve_temperature(mesh, conductivity: float, dirichlet: dict[str, float], order: int = 2):
-    """Steady conduction ∇·(k∇T) = 0 with T prescribed on the named boundaries; others insulated."""
-    from skfem import Basis, ElementTriP1, ElementTriP2, condense, solve
+    """Steady conduction ∇·(k∇T) = 0 with T prescribed on the named boundaries; others insulated.
 
-    basis = Basis(mesh, ElementTriP2() if order == 2 else ElementTriP1())
+    Triangles (the 2-D section) or tetrahedra (the 3-D member body, :mod:`femgear.body.thermal3d`).
+    """
+    from skfem import Basis, ElementTetP1, ElementTetP2, ElementTriP1, ElementTriP2, MeshTet, condense, solve
+
+    if isinstance(mesh, MeshTet):
+        elem = ElementTetP2() if order == 2 else ElementTetP1()
+    else:
+        elem = ElementTriP2() if order == 2 else ElementTriP1()
+    basis = Basis(mesh, elem)
     A = conduction(conductivity).assemble(basis)
     T = np.zeros(basis.N)
     D = []
