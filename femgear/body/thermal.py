@@ -36,8 +36,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.body.conduction import solve_temperature
 from femgear.body.elastic import ElasticProblem
-from femgear.body.forms import conduction, thermal_load, thermal_modulus
+from femgear.body.forms import thermal_load, thermal_modulus
 from femgear.geometry.gear import GearPair
 
 
@@ -111,30 +112,6 @@ class ThermoElasticResult:
         sxy = 2 * mu * e[0, 1]
         vm = np.sqrt(sxx**2 - sxx * syy + syy**2 + 3 * sxy**2)
         return np.sum(vm * self.basis_u.dx, axis=1) / np.sum(self.basis_u.dx, axis=1)
-
-
-def solve_temperature(mesh, conductivity: float, dirichlet: dict[str, float], order: int = 2):
-    """Steady conduction ∇·(k∇T) = 0 with T prescribed on the named boundaries; others insulated.
-
-    Triangles (the 2-D section) or tetrahedra (the 3-D member body, :mod:`femgear.body.thermal3d`).
-    """
-    from skfem import Basis, ElementTetP1, ElementTetP2, ElementTriP1, ElementTriP2, MeshTet, condense, solve
-
-    if isinstance(mesh, MeshTet):
-        elem = ElementTetP2() if order == 2 else ElementTetP1()
-    else:
-        elem = ElementTriP2() if order == 2 else ElementTriP1()
-    basis = Basis(mesh, elem)
-    A = conduction(conductivity).assemble(basis)
-    T = np.zeros(basis.N)
-    D = []
-    for name, value in dirichlet.items():
-        dofs = basis.get_dofs(mesh.boundaries[name]).flatten()
-        T[dofs] = value
-        D.append(dofs)
-    D = np.unique(np.concatenate(D))
-    T = solve(*condense(A, np.zeros(basis.N), x=T, D=D))
-    return basis, T
 
 
 def determinate_support(problem: ElasticProblem, radius: float) -> None:

@@ -4,7 +4,7 @@ The body is the LTCA's :func:`femgear.mesh.segment.member_body` (both helices, t
 a whole ring with ``n_teeth`` teeth, the rim down to the bore; P1 tetrahedra), with the bore
 of the thermal levels (the scene's, else half the root radius, as ``analytic`` and ``fe``).
 
-Conduction (:func:`femgear.body.thermal.solve_temperature`, P1).  Tooth surfaces (``flank``,
+Conduction (:func:`femgear.body.conduction.solve_temperature`, P1).  Tooth surfaces (``flank``,
 ``fillet``, ``tip``) and the toothless root circle of the ring (``rim``, which stands for the
 roots of the teeth the body leaves out) at ΔT_f, the bore at ΔT_s; the end faces and the groove
 are insulated — the assumption of the 2-D ``fe`` model (its cut sides and, in plane stress, its
@@ -169,7 +169,7 @@ def _compute(pair, member, spec, expansion, E, nu, n_rho, n_z) -> Thermal3DUnits
 
     from femgear.body.elastic3d import Elastic3D
     from femgear.body.forms import thermal_load, thermal_modulus
-    from femgear.body.thermal import solve_temperature
+    from femgear.body.conduction import solve_temperature
     from femgear.ltca.flank import roll_range
     from femgear.mesh.segment import helix_frame, member_body
 
