@@ -85,7 +85,8 @@ def readings(units, rho, b):
 
 def print_member(name, d2, r3, units, level):
     print(f"\n== {name}, body level {level}: {units.info['ndofs']} DOF, {units.info['seconds']:.1f} s cold "
-          f"(factor {units.info['factor_seconds']:.1f} s), peak RSS {units.info['peak_rss_mb']:.0f} MB")
+          f"(factor {units.info['factor_seconds']:.1f} s, L+U {units.info['factor_mb']:.0f} MB), "
+          f"process peak RSS {units.info['peak_rss_mb']:.0f} MB")
     for unit, _, _ in UNITS:
         print(f"  unit {unit} rise, ζ_n [nm/K]:")
         print("   ρ[mm] analytic  2D-fe  2D-strain  3D-mid  3D-end(ζ=0)  3D-apex(ζ=b)  3D-right-mid  3D-face  "
@@ -180,6 +181,7 @@ def main(argv=None) -> int:
         units, r3 = m["3d"][levels[-1]]
         summary[name] = {"seconds": {str(lv): m["3d"][lv][0].info["seconds"] for lv in levels},
                          "ndofs": {str(lv): m["3d"][lv][0].info["ndofs"] for lv in levels},
+                         "factor_mb": {str(lv): m["3d"][lv][0].info["factor_mb"] for lv in levels},
                          "peak_rss_mb": units.info["peak_rss_mb"]}
         for unit, _, _ in UNITS:
             fe = m["2d"][f"fe_{unit}"]

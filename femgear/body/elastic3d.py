@@ -68,6 +68,7 @@ class SolveStats:
     solve_seconds: float
     solves: int
     iterations: int        #: CG iterations of all solves together
+    factor_nnz: int = 0    #: entries of L + U (``lu``; 0 for ``amg``): ≈ 12 bytes each in memory
 
 
 class Elastic3D:
@@ -183,5 +184,6 @@ class Elastic3D:
         return np.vstack([b.probes(points) @ c for c, b in comps])
 
     def stats(self) -> SolveStats:
+        nnz = int(self._ml.L.nnz + self._ml.U.nnz) if self.solver == "lu" and self._ml is not None else 0
         return SolveStats(self.basis.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
-                          self.solves, self.iterations)
+                          self.solves, self.iterations, nnz)

@@ -199,6 +199,7 @@ def _compute(pair, member, spec, expansion, E, nu, n_rho, n_z) -> Thermal3DUnits
     st = model.stats()
     info = {"seconds": time.perf_counter() - t0, "mesh_seconds": t_mesh, "conduction_seconds": t_cond,
             "factor_seconds": st.setup_seconds, "solve_seconds": st.solve_seconds, "ndofs": int(st.ndofs),
+            "factor_mb": 12e-6 * st.factor_nnz,
             "n_tets": int(mesh.t.shape[1]), "h_tooth": spec.h_tooth, "r_bore": spec.r_bore, "cached": False,
             "T_min": float(min(T.min() for _, T in temps)), "T_max": float(max(T.max() for _, T in temps))}
     return Thermal3DUnits(member, rho, zeta, vals[0], vals[1], info)
