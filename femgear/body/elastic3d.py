@@ -68,20 +68,26 @@ class SolveStats:
     solve_seconds: float
     solves: int
     iterations: int        #: CG iterations of all solves together
+    factor_nnz: int = 0    #: entries of L + U (``lu``; 0 for ``amg``): ≈ 12 bytes each in memory
 
 
 class Elastic3D:
-    """K u = f on a ``MeshTet`` with P``order`` vector elements, ``clamped`` region fixed."""
+    """K u = f on a ``MeshTet`` with P``order`` vector elements, ``clamped`` region fixed.
+
+    ``clamped`` None: no region is clamped; ``fixed`` (DOF indices) are held at zero besides it
+    (e.g. a statically determinate support of a free body, :mod:`femgear.body.thermal3d`).
+    """
 
     def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, order: int = 2,
-                 clamped: str = "bore", tol: float = 1e-8, maxiter: int = 500, solver: str = "amg"):
+                 clamped: str | None = "bore", tol: float = 1e-8, maxiter: int = 500, solver: str = "amg",
+                 fixed=None):
         from skfem import Basis, ElementTetP1, ElementTetP2, ElementVector
 
         if order not in (1, 2):
             raise ValueError(f"order must be 1 or 2, got {order!r}")
         if solver not in ("amg", "lu", "auto"):
             raise ValueError(f"solver must be 'amg', 'lu' or 'auto', got {solver!r}")
-        if clamped not in mesh.boundaries:
+        if clamped is not None and clamped not in mesh.boundaries:
             raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
         t0 = time.perf_counter()
         self.mesh, self.order, self.tol, self.maxiter = mesh, order, tol, maxiter
@@ -91,8 +97,10 @@ class Elastic3D:
         lam = youngs_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio))
         mu = youngs_modulus / (2 * (1 + poisson_ratio))
         K = _elasticity_form(lam, mu).assemble(self.basis).tocsr()
-        fixed = self.basis.get_dofs(mesh.boundaries[clamped]).flatten()
-        self.free = np.setdiff1d(np.arange(self.basis.N), fixed)
+        held = [np.asarray(fixed if fixed is not None else [], dtype=np.int64)]
+        if clamped is not None:
+            held.append(self.basis.get_dofs(mesh.boundaries[clamped]).flatten())
+        self.free = np.setdiff1d(np.arange(self.basis.N), np.concatenate(held))
         self.K = K[self.free][:, self.free].tocsr()
         self.assembly_seconds = time.perf_counter() - t0
         self.solver = solver if solver != "auto" else ("lu" if order == 1 and self.free.size <= LU_MAX_DOFS else "amg")
@@ -176,5 +184,6 @@ class Elastic3D:
         return np.vstack([b.probes(points) @ c for c, b in comps])
 
     def stats(self) -> SolveStats:
+        nnz = int(self._ml.L.nnz + self._ml.U.nnz) if self.solver == "lu" and self._ml is not None else 0
         return SolveStats(self.basis.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
-                          self.solves, self.iterations)
+                          self.solves, self.iterations, nnz)

@@ -19,6 +19,9 @@ Levels of the flank deviation (``physics.thermal``):
 - ``fe``: steady conduction (flank/fillet/tip at ΔT_f, bore at ΔT_s, cut sides
   insulated) on a gmsh section of 3 teeth, then plane-stress thermo-elasticity with
   rollers on the cut sides (cyclic symmetry of identical teeth), P2 elements, pyamg.
+- ``fe3d``: the same conduction and thermo-elasticity in 3-D on the LTCA's member body (both
+  helices, groove, ring, bore free), :mod:`femgear.body.thermal3d`; along the path, the
+  deviation averaged over the face of both helices.
 
 ζ is positive when material is added along the flank's outward normal (less
 backlash).  :func:`flank_deviation` returns it along the *normal* line of action
@@ -33,8 +36,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.body.conduction import solve_temperature
 from femgear.body.elastic import ElasticProblem
-from femgear.body.forms import conduction, thermal_load, thermal_modulus
+from femgear.body.forms import thermal_load, thermal_modulus
 from femgear.geometry.gear import GearPair
 
 
@@ -110,23 +114,6 @@ class ThermoElasticResult:
         return np.sum(vm * self.basis_u.dx, axis=1) / np.sum(self.basis_u.dx, axis=1)
 
 
-def solve_temperature(mesh, conductivity: float, dirichlet: dict[str, float], order: int = 2):
-    """Steady conduction ∇·(k∇T) = 0 with T prescribed on the named boundaries; others insulated."""
-    from skfem import Basis, ElementTriP1, ElementTriP2, condense, solve
-
-    basis = Basis(mesh, ElementTriP2() if order == 2 else ElementTriP1())
-    A = conduction(conductivity).assemble(basis)
-    T = np.zeros(basis.N)
-    D = []
-    for name, value in dirichlet.items():
-        dofs = basis.get_dofs(mesh.boundaries[name]).flatten()
-        T[dofs] = value
-        D.append(dofs)
-    D = np.unique(np.concatenate(D))
-    T = solve(*condense(A, np.zeros(basis.N), x=T, D=D))
-    return basis, T
-
-
 def determinate_support(problem: ElasticProblem, radius: float) -> None:
     """Fix 3 DOFs at bore nodes (r,0), (−r,0), (0,r): u_y, u_y, u_x = 0 (no reactions)."""
     problem.fix([problem.nearest_dof((radius, 0.0), "y"), problem.nearest_dof((-radius, 0.0), "y"),
@@ -200,10 +187,12 @@ def flank_displacement(result: ThermoElasticResult, pair: GearPair, member: int,
 
 def flank_deviation(pair: GearPair, member: int, u, level: str, dT_flank: float, dT_shaft: float,
                     expansion: float, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
-                    conductivity: float = 46.0, bore_radius: float = 0.0, h: float | None = None):
+                    conductivity: float = 46.0, bore_radius: float = 0.0, h: float | None = None,
+                    groove: float = 0.0, stagger: float = 0.0):
     """Thermal flank deviation ζ_T along the normal line of action at path positions ``u`` [m].
 
-    ``level``: ``none`` (zeros), ``analytic`` or ``fe`` (see module docstring).
+    ``level``: ``none`` (zeros), ``analytic``, ``fe`` or ``fe3d`` (see module docstring; ``h`` is the
+    2-D mesh size, ``groove`` and ``stagger`` shape the 3-D body).
     """
     r, alpha, rho = _flank_radius(pair, member, u)
     cb = math.cos(pair.beta_b)
@@ -216,7 +205,12 @@ def flank_deviation(pair: GearPair, member: int, u, level: str, dT_flank: float,
         res = gear_thermo_elastic(pair, member, dT_flank, dT_shaft, expansion, youngs_modulus, poisson_ratio,
                                   conductivity, bore_radius, h)
         return flank_displacement(res, pair, member, r) * cb
-    raise ValueError(f"level must be 'none', 'analytic' or 'fe', got {level!r}")
+    if level == "fe3d":
+        from femgear.body.thermal3d import thermal_units_3d
+
+        units = thermal_units_3d(pair, member, expansion, youngs_modulus, poisson_ratio, bore_radius, groove, stagger)
+        return units.face_mean(rho, dT_flank, dT_shaft)
+    raise ValueError(f"level must be 'none', 'analytic', 'fe' or 'fe3d', got {level!r}")
 
 
 def gear_thermo_elastic(pair: GearPair, member: int, dT_flank: float, dT_shaft: float, expansion: float,
@@ -247,4 +241,5 @@ def flank_deviation_from_scene(scene, member: int, u, level: str | None = None, 
     bore = scene.pinion.bore_radius if member == 1 else scene.gear.bore_radius
     return flank_deviation(pair, member, u, level or scene.physics.thermal, scene.thermal.flank_temperature_rise,
                            scene.thermal.shaft_temperature_rise, mat.thermal_expansion, mat.youngs_modulus,
-                           mat.poisson_ratio, mat.conductivity, bore, h if h is not None else scene.thermal.mesh_size)
+                           mat.poisson_ratio, mat.conductivity, bore, h if h is not None else scene.thermal.mesh_size,
+                           scene.pair.groove_width, scene.pair.stagger)

@@ -83,7 +83,8 @@ def thermal_units(case: Case) -> ThermalUnits | None:
 
     def unit(member: int, bore: float, flank: float, shaft: float) -> np.ndarray:
         return flank_deviation(case.pair, member, case.path.u, case.levels.thermal, flank, shaft, m.thermal_expansion,
-                               m.youngs_modulus, m.poisson_ratio, m.conductivity, bore, case.thermal.mesh_size)
+                               m.youngs_modulus, m.poisson_ratio, m.conductivity, bore, case.thermal.mesh_size,
+                               case.groove_width, case.stagger)
 
     members = ((1, case.bore_radii[0]), (2, case.bore_radii[1]))
     return ThermalUnits(flank=np.array([unit(j, b, 1.0, 0.0) for j, b in members]),

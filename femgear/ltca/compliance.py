@@ -134,11 +134,23 @@ def cache_dir() -> Path:
     return Path(os.environ.get("FEMGEAR_CACHE", "out/cache/ltca"))
 
 
+def cache_key(payload: dict) -> str:
+    """Short hash of a JSON-able ``payload`` (geometry, material, mesh, …) naming a cache file."""
+    return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()[:20]
+
+
+def save_cache(path: Path, **arrays) -> None:
+    """Write ``arrays`` to the ``.npz`` cache file ``path`` atomically (a temporary file, then a rename)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(".tmp.npz")
+    np.savez(tmp, **arrays)
+    os.replace(tmp, path)
+
+
 def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, order: int,
          n_rho: int, n_z: int, depth: float) -> str:
-    payload = json.dumps({"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
-                          "E": E, "nu": nu, "order": order, "grid": [n_rho, n_z], "depth": depth}, sort_keys=True)
-    return hashlib.sha256(payload.encode()).hexdigest()[:20]
+    return cache_key({"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
+                      "E": E, "nu": nu, "order": order, "grid": [n_rho, n_z], "depth": depth})
 
 
 def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: float,
@@ -158,13 +170,10 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
                                 data["fe_cross"])
     result = _compute(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     if cache:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(".tmp.npz")
         right = np.zeros(0) if result.bulk_right is None else result.bulk_right
-        np.savez(tmp, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,
-                 depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info), cross=result.cross,
-                 bulk_right=right, groove=result.groove, fe_cross=result.fe_cross)
-        os.replace(tmp, path)
+        save_cache(path, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,
+                   depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info), cross=result.cross,
+                   bulk_right=right, groove=result.groove, fe_cross=result.fe_cross)
     return result
 
 
@@ -318,4 +327,4 @@ def mean_self_compliance(c: MemberCompliance) -> float:
     return float(np.mean(np.diag(c.bulk[mid])))
 
 
-__all__ = ["MemberCompliance", "member_compliance", "cache_dir", "mean_self_compliance"]
+__all__ = ["MemberCompliance", "member_compliance", "cache_dir", "cache_key", "save_cache", "mean_self_compliance"]

@@ -11,7 +11,7 @@ from __future__ import annotations
 LEVELS: dict[str, tuple[str, ...]] = {
     "stiffness": ("constant", "iso6336", "pem", "fe", "ltca"),
     "lubrication": ("none", "constant", "formula", "ehl-line", "ehl-point", "tehl", "tehl-point"),
-    "thermal": ("none", "analytic", "fe"),
+    "thermal": ("none", "analytic", "fe", "fe3d"),
     "wear": ("none", "archard"),
     "dynamics": ("none", "lumped", "timoshenko"),
     "coupling": ("one-way", "bidirectional"),
@@ -20,7 +20,7 @@ LEVELS: dict[str, tuple[str, ...]] = {
 AVAILABLE: dict[str, frozenset[str]] = {
     "stiffness": frozenset({"constant", "iso6336", "pem", "fe", "ltca"}),
     "lubrication": frozenset({"none", "constant", "formula", "ehl-line", "tehl", "tehl-point"}),
-    "thermal": frozenset({"none", "analytic", "fe"}),
+    "thermal": frozenset({"none", "analytic", "fe", "fe3d"}),
     "wear": frozenset({"none", "archard"}),
     "dynamics": frozenset({"none", "lumped", "timoshenko"}),
     "coupling": frozenset({"one-way", "bidirectional"}),
