@@ -247,7 +247,7 @@ class Thermal(_Frozen):
         description="bulk temperature rise over the oil as a fraction C_1 of the mean contact temperature rise "
                     "along the path (ISO/TS 6336-21 integral-temperature method: 0.7), used when "
                     "flank_temperature_rise = 0 [-]")
-    mesh_size: Pos | None = Field(None, description="FE gear-section mesh size (fe level) [m]; default m_n/5")
+    mesh_size: Pos | None = Field(None, description="FE gear-section mesh size (fe level; fe3d uses the LTCA body level 1) [m]; default m_n/5")
 
 
 class Numerics(_Frozen):
