@@ -220,6 +220,17 @@ def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra
                          approach=res.path_approach(pair, u, info.get("modifications"), extra)[:, ::k])
 
 
+def ltca_face_reference(pair, u: np.ndarray, info: dict, deviation, extra=None, n_phase: int | None = None,
+                        n_zeta: int = 21):
+    """:func:`ltca_reference` with the face coordinate of each sample and a uniform face grid of ``n_zeta``
+    points: the input of the face-resolved wear (:class:`femgear.wear.face.FaceReference`)."""
+    from femgear.wear.face import FaceReference
+
+    ref = ltca_reference(pair, u, info, deviation, extra, n_phase)
+    k = 1 if n_phase is None else max(1, math.ceil(info["ltca"].phase.size / n_phase))
+    return FaceReference(ref=ref, zeta=info["ltca"].path_zeta(pair, u)[:, ::k], grid=np.linspace(0.0, pair.b, n_zeta))
+
+
 def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray):
     """(wear, contact) reference load maps for the pass whose LTCA cycle ``info`` ran on the deviation
     wear − ζ_T (None, None without ``ltca``).
