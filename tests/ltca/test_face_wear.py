@@ -187,3 +187,45 @@ def test_the_face_field_is_read_back_along_the_lines_and_fed_to_the_ltca(plain, 
         face_deviation(p, grid, z, removed[0])
     with pytest.raises(ValueError, match="grid"):
         FaceReference(ref=face.ref, zeta=face.zeta, grid=np.array([0.0, 1e-3, 3e-3]))
+
+
+def test_a_coupling_pass_reruns_the_ltca_on_the_face_field(plain, coarse_model, baseline_force, baseline_pair, grid):
+    """The coupling's drive-flank deviation with ``wear.field = "face"``: 2 µm worn off the pinion's left helix
+    only (its face mean over both helices is 1 µm) unloads the left helix in the re-run LTCA (to 0.55–0.60 of the
+    right helix's load); the face-uniform
+    deviation of the same mean leaves both helices alike.  The thermal growth enters uniform over the face."""
+    from types import SimpleNamespace
+
+    from femgear.coupling.loop import _removed_deviation
+    from femgear.ltca.analysis import mesh_cycle
+
+    _, face = plain
+    p, z = baseline_pair, face.grid
+    wear_face = np.zeros((2, 2, grid.size, z.size))
+    wear_face[0, 0] = 2e-6
+    zeta = np.full((2, grid.size), 0.1e-6)
+    setup = SimpleNamespace(pair=p, kin=SimpleNamespace(u=grid), face=face)
+    wear = np.array([face_mean(wear_face[j], z).mean(axis=0) for j in (0, 1)])
+    runs = {}
+    for name, field in (("face", wear_face), ("path", None)):
+        dev = _removed_deviation(setup, wear, zeta, field)
+        runs[name] = mesh_cycle(coarse_model, baseline_force, None, n_phases=8, stagger=0.0, n_line=8, extra=dev,
+                                keep_lines=False)
+        if name == "face":
+            assert dev("left", 1, grid[:3], z[:3]) == pytest.approx(1.9e-6) and dev("right", 1, grid[:3], z[:3]) \
+                == pytest.approx(-0.1e-6)
+    assert np.allclose(runs["path"].force_left, runs["path"].force_right, rtol=1e-9)
+    assert np.all(runs["face"].force_left < 0.7 * runs["face"].force_right)     # measured 0.55–0.60
+
+
+def test_face_wear_needs_the_ltca_stiffness(baseline_scene):
+    """``wear.field = "face"`` is refused on load, naming the key, without the ltca stiffness."""
+    from femgear.errors import SceneError
+    from femgear.scene import load_scene
+    from tests.conftest import BASELINE
+
+    with pytest.raises(SceneError, match=r"wear\.field.*ltca"):
+        load_scene(BASELINE, ['wear.field="face"'])
+    with pytest.raises(SceneError, match=r"wear\.field"):
+        load_scene(BASELINE, ['wear.field="surface"'])
+    assert load_scene(BASELINE, ['wear.field="face"', 'physics.stiffness="ltca"']).wear.field == "face"
