@@ -10,7 +10,10 @@ the same on both helices: the LTCA's loads averaged over the face) and ``"face"`
 and helix from the LTCA's contact-line loads, :mod:`femgear.wear.face`; each coupling pass re-runs
 the LTCA on that topography).  Prints per case the largest depth and where it is (member, helix,
 path position from the pitch point, face position), the face-mean depth, the mid-face / face-end
-ratio, the gear's y amplitude and v_y, the loaded TE p-p of the worn flanks and the passes; then the
+ratio, the gear's y amplitude and v_y, the loaded TE p-p of the worn flanks, the passes, the wear time
+per pass and the mesh orders the LTCA resolves on the converged worn flanks (the face runs band-limit
+their excitation to these, :func:`femgear.coupling.loop._worn_orders`; the path runs keep the unworn
+cycle's); then the
 cost of one wear step (load sharing over the LTCA phases + Archard rates, medians of 5) and of a
 pass's wear integration.  Writes ``out/ltca_face_wear/ltca_face_wear.{json,png}`` (depth maps of the
 pinion's flanks, both helices, face-resolved beside face-uniform).
@@ -59,21 +62,39 @@ def _depth_summary(case: dict) -> dict:
             "mid_to_end": float(col[mid] / max(0.5 * (col[0] + col[-1]), 1e-300))}
 
 
-def step_cost(coarse: bool) -> dict:
+def _setup(coarse: bool):
+    from femgear.case import build_case
+    from femgear.coupling import CouplingSetup
+    from femgear.scene import load_scene
+
+    over = TEST_GEAR_MODIFICATIONS + ["wear.cycles=1e6", 'wear.field="face"',
+                                      f"numerics.path_points={31 if coarse else 61}"]
+    return CouplingSetup.from_case(build_case(load_scene(C.BASELINE, over)), n_phase=64 if coarse else 128)
+
+
+def worn_orders(setup, case: dict) -> int:
+    """Mesh orders the LTCA resolves on the case's converged worn flanks (the ltca level's criterion,
+    :func:`femgear.ltca.level.resolved_orders`); the face runs band-limit their excitation to these, the
+    path runs keep the unworn cycle's."""
+    from femgear.coupling.loop import _removed_deviation
+    from femgear.ltca.level import resolved_orders
+
+    wear, zeta = np.asarray(case["wear"]), np.asarray(case["thermal_deviation"])
+    face = None if case.get("wear_face") is None else np.asarray(case["wear_face"])
+    o, info = setup.ltca["options"], setup.ltca
+    return resolved_orders(info["model"], info["force"], info["modifications"], o["stagger"], o["n_line"],
+                           _removed_deviation(setup, wear, zeta, face))[0]
+
+
+def step_cost(setup) -> dict:
     """Seconds per wear step (rates at the unworn state, medians of 5) and of a 1e6-cycle integration, path
     against face, on the test gear's unworn LTCA cycle; the steps each takes."""
     from dataclasses import replace
 
-    from femgear.case import build_case
-    from femgear.coupling import CouplingSetup
     from femgear.coupling.loop import _references
-    from femgear.scene import load_scene
     from femgear.wear import WearSetup, WearState, run_wear, wear_rates
     from femgear.wear.face import FaceWearState, face_rates, run_face_wear
 
-    over = TEST_GEAR_MODIFICATIONS + ["wear.cycles=1e6", 'wear.field="face"',
-                                      f"numerics.path_points={31 if coarse else 61}"]
-    setup = CouplingSetup.from_case(build_case(load_scene(C.BASELINE, over)), n_phase=64 if coarse else 128)
     zero = np.zeros((2, setup.kin.u.size))
     ref, _ = _references(setup, setup.ltca, zero, zero)
     case = setup.case
@@ -110,9 +131,12 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
                       "wear_seconds": float(np.median([t["wear"] for t in c["pass_timings"]])) if c["pass_timings"]
                       else 0.0, **_depth_summary(c)}
     new = rows["new"]
-    for r in rows.values():
+    setup = _setup(coarse)
+    for (name, r), c in zip(rows.items(), cases):
         r["change_percent"] = {k: 100 * (r[k] / new[k] - 1) for k in ("gear_y_um", "gear_vy")}
-    out = {"coarse": coarse, "rows": rows, "cost": step_cost(coarse)}
+        r["worn_orders"] = worn_orders(setup, c)
+        r["unworn_orders"] = int(setup.ltca["resolved_orders"])
+    out = {"coarse": coarse, "rows": rows, "cost": step_cost(setup)}
     out["png"] = str(_plot(dict(zip(names, cases))))
     return out
 
@@ -127,25 +151,25 @@ def _plot(cases: dict):
         maps = [np.asarray(face["wear_face"])[0, 0], np.asarray(face["wear_face"])[0, 1],
                 np.repeat(np.asarray(path["wear"])[0][:, None], z.size, axis=1)]
         top = 1e6 * max(m.max() for m in maps)
-        for ax, m, title in zip(axes[row], maps, ("face-resolved, left helix", "face-resolved, right helix",
-                                                  "face-uniform (path), both helices")):
+        for ax, m, title in zip(axes[row], maps, ("face, left helix", "face, right helix", "path, both helices")):
             im = ax.pcolormesh(z, u, 1e6 * m, vmin=0, vmax=top, shading="gouraud", cmap="viridis")
-            ax.set(title=f"pinion wear {n:.0e} cycles: {title}", xlabel="face position ζ [mm] (groove at b)",
-                   ylabel="path position from the pitch point [mm]")
+            ax.set(title=f"pinion, {n:.0e} cycles: {title}", xlabel="face position ζ [mm] (groove at b)",
+                   ylabel="u − u_C [mm]")
             fig.colorbar(im, ax=ax, label="depth [µm]")
     return C.save(fig, "ltca_face_wear", "ltca_face_wear.png")
 
 
 def table(res: dict) -> str:
     head = (f"{'case':>10s} | {'max [µm]':>8s} {'where (member, helix, u−u_C, ζ) [mm]':>38s} | {'face-mean max':>13s} | "
-            f"{'mid/end':>7s} | {'gear y [µm] (Δ%)':>18s} | {'gear v_y [m/s] (Δ%)':>20s} | LTE p-p [µm] | passes | wear/pass [s]")
+            f"{'mid/end':>7s} | {'gear y [µm] (Δ%)':>18s} | {'gear v_y [m/s] (Δ%)':>20s} | LTE p-p [µm] | passes | wear/pass [s] "
+            f"| orders resolved worn (unworn)")
     lines = [head, "-" * len(head)]
     for name, r in res["rows"].items():
         where = f"{r['member']}, {r['helix']}, {r['u_mm']:+.2f}, " + ("-" if r["zeta_mm"] is None else f"{r['zeta_mm']:.2f}")
         lines.append(f"{name:>10s} | {r['max_um']:8.3f} {where:>38s} | {r['face_mean_max_um']:13.3f} | "
                      f"{r['mid_to_end']:7.2f} | {r['gear_y_um']:9.4f} ({r['change_percent']['gear_y_um']:+6.1f}) | "
                      f"{r['gear_vy']:10.3e} ({r['change_percent']['gear_vy']:+6.1f}) | {r['lte_um']:12.3f} | "
-                     f"{r['passes']:6d} | {r['wear_seconds']:.2f}")
+                     f"{r['passes']:6d} | {r['wear_seconds']:13.2f} | {r['worn_orders']} ({r['unworn_orders']})")
     c = res["cost"]
     lines += ["", f"cost per wear step ({c['phases']} LTCA phases, {c['face_points']} face points, medians of 5): "
               f"path {1e3 * c['path_step_s']:.1f} ms, face {1e3 * c['face_step_s']:.1f} ms "
