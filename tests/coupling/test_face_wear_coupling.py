@@ -11,7 +11,7 @@ COARSE = ["numerics.path_points=31", "numerics.dynamics_cycles=20", "numerics.tr
 
 @pytest.mark.slow
 def test_the_coupling_loop_carries_a_face_resolved_wear_field():
-    """One dynamic pass (≈ 1 min): the path wear of the state is the face mean of its face field over both
+    """One dynamic pass each, path and face (≈ 2 min): the path wear of the state is the face mean of its face field over both
     helices; with 5 µm crowning the middle of the face wears more than its ends (the face-uniform model
     cannot); the LTCA re-run on the face field reaches the dynamics (loaded TE of the worn flanks differs
     from the face-uniform run's); ``wear_anchor = "pass"`` is refused with the face field."""
