@@ -350,9 +350,10 @@ def _deviated_model(setup: CouplingSetup, state: CouplingState):
         return setup.model, None, setup.ltca
     from femgear.ltca.level import deviated_cycle
 
-    extra = _removed_deviation(setup, wear, zeta, state.wear_face)
+    face = getattr(state, "wear_face", None)
+    extra = _removed_deviation(setup, wear, zeta, face)
     worn = deviated_cycle(setup.ltca, extra)
-    unworn = setup.ltca if state.wear_face is None else _worn_orders(setup.ltca, worn, extra)
+    unworn = setup.ltca if face is None else _worn_orders(setup.ltca, worn, extra)
     coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)
     return with_deviated_tooth_contact(setup.model, unworn, worn), coast_only, worn
 
