@@ -29,7 +29,7 @@ import numpy as np
 from femgear.case import Case, build_case
 from femgear.contact.path import ContactPath, contact_along_path
 from femgear.coupling.loop import (
-    CouplingSetup, CouplingState, line_stiffness, ltca_reference, run_coupled, thermal_units,
+    CouplingSetup, CouplingState, line_stiffness, ltca_face_reference, ltca_reference, run_coupled, thermal_units,
 )
 from femgear.lubrication.levels import friction_along_path
 from femgear.results import RunResult, Tribology
@@ -84,8 +84,16 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / pair.n_helices,
                           c_l=line_stiffness(case, k_mean, stiffness),
                           coefficient=case.wear.coefficient, hardness=case.material.hardness, reference=ref)
-        state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)
-        wear, cycles, steps = np.array([state.h1, state.h2]), state.cycles, state.steps
+        if case.wear.field == "face" and ref is not None:     # face-resolved (femgear.wear.face); no checkpoint
+            from femgear.wear.face import run_face_wear
+
+            face = ltca_face_reference(pair, case.path.u, info, np.zeros(case.path.u.size), n_zeta=case.wear.face_points)
+            state = run_face_wear(setup, face, case.wear.cycles)
+            wear = state.path_mean(face.grid)
+        else:
+            state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)
+            wear = np.array([state.h1, state.h2])
+        cycles, steps = state.cycles, state.steps
     return Tribology(load_per_length=w, friction_coefficient=mu, temperature_rise=dT,
                      flank_temperature_rise=case.thermal.flank_temperature_rise, thermal_deviation=zeta, wear=wear,
                      wear_cycles=cycles, wear_steps=steps)

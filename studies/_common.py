@@ -83,7 +83,8 @@ def coupled_case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = Fal
            "thermal_deviation": state.thermal_deviation, "removed": state.removed, "mesh_force_phase": state.mesh_force,
            "drive_deviation": drive, "coast_deviation": coast, "b0": scene.pair.backlash,
            "load_per_length": state.load_per_length,
-           "amplitudes": dict(state.amplitudes), "lte_peak_to_peak": state.lte_peak_to_peak}
+           "amplitudes": dict(state.amplitudes), "lte_peak_to_peak": state.lte_peak_to_peak,
+           "wear_face": state.wear_face, "face_grid": None if setup.face is None else setup.face.grid}
     if state.dynamics is not None:
         r = state.dynamics.response
         out["mesh_frequency"] = r.mesh_frequency

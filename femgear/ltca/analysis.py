@@ -171,13 +171,33 @@ class LTCAResult:
         u = np.asarray(u, float)
         out = np.zeros((2, self.phase.size, u.size))
         hits = np.zeros(out.shape)
-        sb = math.sin(pair.beta_b)
-        for i, h, on, uj, wj, _, carried in self._path_lines(pair, u):
-            w = np.interp(u[on], uj, wj)
-            grid = float(w @ weights[on]) / sb if weights is not None else 0.0
-            out[h, i, on] += w * (carried / grid) if grid > 0 else w
+        for i, h, on, w, _ in self._grid_lines(pair, u, weights):
+            out[h, i, on] += w
             hits[h, i, on] += 1
         return out / np.maximum(hits, 1)
+
+    def _grid_lines(self, pair: GearPair, u: np.ndarray, weights: np.ndarray | None):
+        """Per phase i, helix h and contact line: (i, h, on-mask, w' at u[on], ζ at u[on]), the line's loads
+        interpolated in u and, with ``weights``, scaled to carry its LTCA load (:meth:`path_load`)."""
+        sb = math.sin(pair.beta_b)
+        for i, h, on, uj, wj, zeta, carried in self._path_lines(pair, u):
+            w = np.interp(u[on], uj, wj)
+            grid = float(w @ weights[on]) / sb if weights is not None else 0.0
+            yield i, h, on, (w * (carried / grid) if grid > 0 else w), zeta
+
+    def path_zeta(self, pair: GearPair, u: np.ndarray) -> np.ndarray:
+        """Face coordinate ζ of the contact-line point at the path positions ``u`` [m]: (helix, phase, position),
+        NaN off the lines; the companion of :meth:`path_load` for the face-resolved wear
+        (:mod:`femgear.wear.face`).  Raises where lines of one helix overlap in u (ε_β > 1: two face
+        positions at one (phase, u), which the (phase, u) grid cannot hold)."""
+        u = np.asarray(u, float)
+        out = np.full((2, self.phase.size, u.size), np.nan)
+        for i, h, on, _, zeta in self._grid_lines(pair, u, None):
+            if np.any(np.isfinite(out[h, i, on])):
+                raise ValueError("path_zeta: contact lines of one helix overlap in u (overlap ratio > 1); "
+                                 "the face-resolved wear needs one line per helix at each path position")
+            out[h, i, on] = zeta
+        return out
 
     def path_approach(self, pair: GearPair, u: np.ndarray, modifications=None, extra: Deviation | None = None):
         """Elastic approach δ − ε at the path positions ``u`` on the contact lines [m]: (helix, phase, position).

@@ -79,6 +79,24 @@ def path_deviation(pair: GearPair, u: np.ndarray, removed: np.ndarray) -> Deviat
     return tabulated_deviation(tables)
 
 
+def face_deviation(pair: GearPair, u: np.ndarray, zeta: np.ndarray, removed: np.ndarray) -> Deviation:
+    """A face-resolved :data:`Deviation` of both members on both helices (:mod:`femgear.wear.face`).
+
+    ``removed`` (2, 2, n, m): normal depth removed from [member: pinion, gear][helix: left, right] at the
+    path positions ``u`` (n, ascending) and face coordinates ``zeta`` (m, ascending) [m]; the gear's
+    point at u has roll distance ρ₂ = T₁T₂ − u (as :func:`path_deviation`).
+    """
+    u, zeta, removed = np.asarray(u, float), np.asarray(zeta, float), np.asarray(removed, float)
+    if removed.shape != (2, 2, u.size, zeta.size) or u.size < 2 or zeta.size < 2 or np.any(np.diff(u) <= 0):
+        raise ValueError("face_deviation: removed must be (2 members, 2 helices, n, m) at n >= 2 ascending u "
+                         "and m >= 2 face positions zeta")
+    tables = {}
+    for s, helix in enumerate(("left", "right")):
+        tables[(helix, 1)] = (u, zeta, removed[0, s])
+        tables[(helix, 2)] = ((pair.line_of_action - u)[::-1], zeta, removed[1, s][::-1])
+    return tabulated_deviation(tables)
+
+
 def _relief(x: np.ndarray, amount: float, length: float, shape: str) -> np.ndarray:
     e = 1.0 if shape == "linear" else 2.0
     return amount * np.clip(x / length, 0.0, None) ** e if amount > 0 else np.zeros_like(x)

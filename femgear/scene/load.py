@@ -81,11 +81,25 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
         raise _first_error(exc) from None
     pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
     check_operating_limits(scene, pair)
+    check_wear_field(scene, pair)
     if warn:
         from femgear.contact.path import contact_along_path
 
         plausibility_warnings(scene, pair, float(contact_along_path(scene, pair=pair).hertz_pressure.max()))
     return scene
+
+
+def check_wear_field(scene: Scene, pair) -> None:
+    """Raise :class:`SceneError` for ``wear.field = "face"`` without what the face-resolved wear reads: the
+    ``ltca`` stiffness's contact-line loads, one contact line per helix at each path position (ε_β ≤ 1)."""
+    if scene.wear.field != "face":
+        return
+    if scene.physics.stiffness != "ltca":
+        raise SceneError("wear.field", f'"face" needs physics.stiffness = "ltca" (the face-resolved wear reads the '
+                                       f"LTCA's contact-line loads; got {scene.physics.stiffness!r})")
+    if pair.eps_beta > 1:
+        raise SceneError("wear.field", f'"face" needs an overlap ratio ε_β ≤ 1 (one contact line per helix at each '
+                                       f"path position); this pair has ε_β = {pair.eps_beta:.3f}")
 
 
 MAX_TOML_BYTES = 1 << 20  # a scene or sweep file is a few kB

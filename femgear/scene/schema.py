@@ -233,6 +233,11 @@ class Wear(_Frozen):
         1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H), the paper's 'wear rate' [-]"
     )
     cycles: NonNeg = Field(0.0, description="pinion revolutions of accumulated wear (load cycles of one pinion tooth) [-]")
+    field: Literal["path", "face"] = Field(
+        "path", description="wear depth field with physics.stiffness = \"ltca\": \"path\" (face-uniform h(u), the same "
+                            "on both helices) or \"face\" (h(ρ, ζ) per member and helix from the LTCA's contact-line "
+                            "loads, femgear.wear.face; needs the ltca stiffness and an overlap ratio ε_β ≤ 1)")
+    face_points: int = Field(21, ge=3, le=201, description="face positions ζ of the face-resolved wear grid [-]")
 
 
 class Thermal(_Frozen):

@@ -84,10 +84,28 @@ def wear_rates(setup: WearSetup, state: WearState) -> tuple[np.ndarray, np.ndarr
         lm = load_map(setup.pair, k.u, setup.force, state.h1 + state.h2, setup.c_l, setup.n_phase)
     else:
         lm = reference_load_map(setup.pair, k.u, setup.force, state.h1 + state.h2, setup.c_l, setup.reference)
-    factor = setup.coefficient / setup.hardness * lm.mean_load * np.abs(k.vs)
-    r1 = factor / k.v1
-    r2 = factor / k.v2 * (setup.pair.z1 / setup.pair.z2)
+    r1, r2 = archard_rates(setup, lm.mean_load)
     return r1, r2, lm.mean_load
+
+
+def archard_rates(setup: WearSetup, load: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Depth per pinion revolution of pinion and gear [m] for the passage load intensity ``load`` [N/m]
+    at the positions ``setup.kin.u`` (last axis; any leading axes, e.g. helix and face position):
+    Δh_j = (K/H) w' |v1 − v2| / v_j, the gear's × z1/z2 (module docstring)."""
+    k = setup.kin
+    factor = setup.coefficient / setup.hardness * load * np.abs(k.vs)
+    return factor / k.v1, factor / k.v2 * (setup.pair.z1 / setup.pair.z2)
+
+
+def stable_cycles(setup: WearSetup, rate: float, load: np.ndarray, remaining: float,
+                  max_relative_change: float) -> float:
+    """The cycles of one update step: ``remaining``, capped so that the largest depth increment (``rate``
+    [m per revolution], of h1 + h2) stays below ``max_relative_change`` × the mean elastic approach
+    w̄'/c_l of the loaded points of ``load`` (the stability rule of the module docstring)."""
+    if rate <= 0:
+        return remaining
+    approach = float(np.mean(load[load > 0])) / float(np.mean(setup.c_l))
+    return min(remaining, max_relative_change * approach / rate)
 
 
 def wear_steps(setup: WearSetup, cycles: float, state: WearState | None = None,
@@ -98,13 +116,7 @@ def wear_steps(setup: WearSetup, cycles: float, state: WearState | None = None,
     state = state or WearState.zero(setup.kin.u.size)
     while state.cycles < cycles * (1 - 1e-12):
         r1, r2, w = wear_rates(setup, state)
-        rate = float(np.max(r1 + r2))
-        remaining = cycles - state.cycles
-        if rate <= 0:
-            dN = remaining
-        else:
-            approach = float(np.mean(w[w > 0])) / float(np.mean(setup.c_l))
-            dN = min(remaining, max_relative_change * approach / rate)
+        dN = stable_cycles(setup, float(np.max(r1 + r2)), w, cycles - state.cycles, max_relative_change)
         state = WearState(cycles=state.cycles + dN, h1=state.h1 + r1 * dN, h2=state.h2 + r2 * dN,
                           steps=state.steps + 1)
         if not (np.all(np.isfinite(state.h1)) and np.all(np.isfinite(state.h2))):

@@ -157,9 +157,9 @@ class ReferenceLoad:
         if self.end is None:
             return 0.0
         start = self.deviation if self.start is None else self.start
-        d = self.end.deviation - start
-        dd = float(d @ d)
-        return 1.0 if dd == 0.0 else min(max(float((deviation - start) @ d) / dd, 0.0), 1.0)
+        d, x = np.broadcast_arrays(self.end.deviation - start, deviation - start)
+        dd = float(np.vdot(d, d))
+        return 1.0 if dd == 0.0 else min(max(float(np.vdot(x, d)) / dd, 0.0), 1.0)
 
 
 def _phase_forces(force, phases: np.ndarray, n_helices: int) -> np.ndarray:
@@ -196,6 +196,10 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
     throughout); the reference carries what the Winkler layer misses (the elastic
     coupling along the lines, flank modifications, line-end effects).
 
+    ``deviation`` (and ``ref.deviation``) may also be given per helix, phase and position,
+    (n_helices, phases, n): the deviation at the contact-line point at u of that phase, e.g. a
+    face-resolved wear field read along the lines (:mod:`femgear.wear.face`).
+
     With ``ref.end`` the reference is ŵ = (1 − s) ŵ_ref + s ŵ_end and h_ref = (1 − s) h_ref +
     s h_end, s = ``ref.progress(h)``: the secant of the contact analysis between its two
     solutions instead of the Winkler layer's response (which differs from it, and made the
@@ -223,7 +227,8 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
             shape = np.where(cover, a.load[s], 0.0)
             carried = shape @ du / sb
             base += wt * shape * np.divide(forces[s], carried, out=np.zeros_like(carried), where=carried > 0)[:, None]
-        out[s] = distribute(forces[s], cover, du, dh[None, :] - base / stiff[s], stiff[s], sb)
+        out[s] = distribute(forces[s], cover, du, (dh[s] if dh.ndim == 3 else dh[None, :]) - base / stiff[s],
+                            stiff[s], sb)
     return out
 
 
