@@ -108,20 +108,27 @@ def stable_cycles(setup: WearSetup, rate: float, load: np.ndarray, remaining: fl
     return min(remaining, max_relative_change * approach / rate)
 
 
-def wear_steps(setup: WearSetup, cycles: float, state: WearState | None = None,
-               max_relative_change: float = 0.05) -> Iterator[WearState]:
-    """Yield the state after each update step until ``cycles`` pinion revolutions."""
+def stepped(setup: WearSetup, rates, state, cycles: float, max_relative_change: float = 0.05) -> Iterator:
+    """Explicit Archard stepping of any wear ``state`` (``cycles``, ``h1``, ``h2``, ``steps`` fields) to
+    ``cycles`` pinion revolutions: ``rates(state)`` → (pinion rate, gear rate, load) per revolution, each
+    step as long as :func:`stable_cycles` allows.  Yields the state after each step."""
     if not 0 < max_relative_change <= 1:
         raise ValueError(f"max_relative_change must be in (0, 1] (got {max_relative_change!r})")
-    state = state or WearState.zero(setup.kin.u.size)
     while state.cycles < cycles * (1 - 1e-12):
-        r1, r2, w = wear_rates(setup, state)
+        r1, r2, w = rates(state)
         dN = stable_cycles(setup, float(np.max(r1 + r2)), w, cycles - state.cycles, max_relative_change)
-        state = WearState(cycles=state.cycles + dN, h1=state.h1 + r1 * dN, h2=state.h2 + r2 * dN,
-                          steps=state.steps + 1)
+        state = replace(state, cycles=state.cycles + dN, h1=state.h1 + r1 * dN, h2=state.h2 + r2 * dN,
+                        steps=state.steps + 1)
         if not (np.all(np.isfinite(state.h1)) and np.all(np.isfinite(state.h2))):
             raise FloatingPointError("wear depth became non-finite")
         yield state
+
+
+def wear_steps(setup: WearSetup, cycles: float, state: WearState | None = None,
+               max_relative_change: float = 0.05) -> Iterator[WearState]:
+    """Yield the state after each update step until ``cycles`` pinion revolutions."""
+    state = state or WearState.zero(setup.kin.u.size)
+    yield from stepped(setup, lambda s: wear_rates(setup, s), state, cycles, max_relative_change)
 
 
 def save_state(state: WearState, path: Path, u: np.ndarray) -> None:

@@ -44,7 +44,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from femgear.wear.archard import WearSetup, archard_rates, stable_cycles
+from femgear.wear.archard import WearSetup, archard_rates, stepped
 from femgear.wear.load_sharing import ReferenceLoad, reference_loads
 
 
@@ -178,17 +178,8 @@ def face_wear_steps(setup: WearSetup, face: FaceReference, cycles: float, state:
                     max_relative_change: float = 0.05) -> Iterator[FaceWearState]:
     """Yield the face-resolved state after each update step until ``cycles`` pinion revolutions
     (:func:`.archard.wear_steps` with the depth and the load resolved over the face)."""
-    if not 0 < max_relative_change <= 1:
-        raise ValueError(f"max_relative_change must be in (0, 1] (got {max_relative_change!r})")
     state = state or FaceWearState.zero(setup.kin.u.size, face.grid.size)
-    while state.cycles < cycles * (1 - 1e-12):
-        r1, r2, W = face_rates(setup, face, state)
-        dN = stable_cycles(setup, float(np.max(r1 + r2)), W, cycles - state.cycles, max_relative_change)
-        state = FaceWearState(cycles=state.cycles + dN, h1=state.h1 + r1 * dN, h2=state.h2 + r2 * dN,
-                              steps=state.steps + 1)
-        if not (np.all(np.isfinite(state.h1)) and np.all(np.isfinite(state.h2))):
-            raise FloatingPointError("face-resolved wear depth became non-finite")
-        yield state
+    yield from stepped(setup, lambda s: face_rates(setup, face, s), state, cycles, max_relative_change)
 
 
 def run_face_wear(setup: WearSetup, face: FaceReference, cycles: float,
