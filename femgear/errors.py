@@ -14,9 +14,28 @@ from typing import Any
 
 
 class FemgearError(Exception):
-    """Base class of the errors femgear reports to a user as one line."""
+    """Base class of the errors femgear reports to a user as one line.
+
+    Picklable with its attributes (a process pool sends a worker's error back to the parent; the
+    default pickling calls ``cls(*args)`` with the one formatted message, which the subclasses'
+    constructors do not take).
+    """
 
     exit_code: int = 2
+
+    def __reduce__(self):
+        return _rebuild, (type(self), self.args, dict(self.__dict__))
+
+
+def _rebuild(cls: type, args: tuple, state: dict) -> FemgearError:
+    """The unpickled error: ``args`` (the message) and the attributes, without calling ``cls.__init__``."""
+    try:
+        err = cls.__new__(cls)
+    except TypeError:          # MemoryError.__new__ refuses subclasses of two bases ("not safe")
+        err = Exception.__new__(cls)
+    Exception.__init__(err, *args)
+    err.__dict__.update(state)
+    return err
 
 
 class ArgumentError(FemgearError, ValueError):
