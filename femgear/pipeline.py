@@ -29,7 +29,8 @@ import numpy as np
 from femgear.case import Case, build_case
 from femgear.contact.path import ContactPath, contact_along_path
 from femgear.coupling.loop import (
-    CouplingSetup, CouplingState, line_stiffness, ltca_face_reference, ltca_reference, run_coupled, thermal_units,
+    CouplingSetup, CouplingState, ThermalUnits, line_stiffness, ltca_face_reference, ltca_reference, roll_distances,
+    run_coupled, thermal_units,
 )
 from femgear.lubrication.levels import friction_along_path
 from femgear.results import RunResult, Tribology
@@ -55,7 +56,9 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         temperature_rise=st.temperature_rise if levels.lubrication != "none" else None,
         flank_temperature_rise=st.flank_temperature_rise,
         thermal_deviation=st.thermal_deviation if levels.thermal != "none" else None,
-        wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles)
+        wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles,
+        **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
+                      st.wear_face if levels.wear != "none" else None, st.thermal_face))
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0)
 
 
@@ -72,7 +75,7 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
     units = thermal_units(case)
     if units is not None:
         zeta = units.deviation(case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)
-    cycles, steps = 0.0, 0
+    cycles, steps, faces = 0.0, 0, {}
     if case.levels.wear == "archard":
         from femgear.wear import WearSetup, run_wear
 
@@ -90,13 +93,29 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
             face = ltca_face_reference(pair, case.path.u, info, np.zeros(case.path.u.size), n_zeta=case.wear.face_points)
             state = run_face_wear(setup, face, case.wear.cycles)
             wear = state.path_mean(face.grid)
+            faces = {"grid": face.grid, "wear_face": np.array([state.h1, state.h2])}
         else:
             state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)
             wear = np.array([state.h1, state.h2])
         cycles, steps = state.cycles, state.steps
     return Tribology(load_per_length=w, friction_coefficient=mu, temperature_rise=dT,
                      flank_temperature_rise=case.thermal.flank_temperature_rise, thermal_deviation=zeta, wear=wear,
-                     wear_cycles=cycles, wear_steps=steps)
+                     wear_cycles=cycles, wear_steps=steps,
+                     **face_fields(case, units, case.thermal.flank_temperature_rise, **faces))
+
+
+def face_fields(case: Case, units: ThermalUnits | None, rise: float, grid: np.ndarray | None = None,
+                wear_face: np.ndarray | None = None, thermal_face: np.ndarray | None = None) -> dict:
+    """The :class:`Tribology` face fields: ``wear_face`` as given, ``thermal_face`` as given or, with 3-D thermal
+    units (``fe3d``), ζ_T at the bulk ``rise`` on ``grid`` (default: ``wear.face_points`` over the face); {} when
+    neither exists."""
+    if thermal_face is None and units is not None and units.bodies is not None:
+        grid = np.linspace(0.0, case.pair.b, case.wear.face_points) if grid is None else grid
+        thermal_face = units.face(roll_distances(case.pair, case.path.u), grid, rise,
+                                  case.thermal.shaft_temperature_rise)
+    if wear_face is None and thermal_face is None:
+        return {}
+    return {"face_grid": grid, "wear_face": wear_face, "thermal_face": thermal_face}
 
 
 @dataclass(frozen=True)

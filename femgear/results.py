@@ -30,6 +30,10 @@ class Tribology:
     wear: np.ndarray | None                     #: (2, n) wear depth pinion, gear [m]
     wear_cycles: float = 0.0                    #: pinion revolutions of accumulated wear
     wear_steps: int = 0                         #: update steps of the wear integration
+    #: face grid ζ (m,) of each helix [m] of the face-resolved fields (``wear.field = "face"`` or ``thermal = "fe3d"``)
+    face_grid: np.ndarray | None = None
+    wear_face: np.ndarray | None = None         #: (member, helix, n, m) wear depth, ``wear.field = "face"`` [m]
+    thermal_face: np.ndarray | None = None      #: (member, helix, n, m) ζ_T of ``thermal = "fe3d"`` [m]
 
 
 @dataclass(frozen=True)

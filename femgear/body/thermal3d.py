@@ -75,6 +75,12 @@ class Thermal3DUnits:
                                np.clip(zeta.ravel(), self.zeta[0], self.zeta[-1])])
         return f(pts).reshape(rho.shape)
 
+    def face_field(self, rho, zeta, flank_rise: float, shaft_rise: float) -> np.ndarray:
+        """ζ_n (2 helices, n, m) at the roll distances ``rho`` (n,) × face coordinates ``zeta`` (m,) [m]
+        (:meth:`at` on the outer product, bilinear in the unit grid)."""
+        R, Z = np.meshgrid(np.asarray(rho, float), np.asarray(zeta, float), indexing="ij")
+        return np.array([self.at(R, Z, h, flank_rise, shaft_rise) for h in (0, 1)])
+
     def face_mean(self, rho, flank_rise: float, shaft_rise: float) -> np.ndarray:
         """ζ_n at ``rho`` averaged over the face of both helices (trapezoid rule) [m]."""
         g = self.grid(flank_rise, shaft_rise)

@@ -69,9 +69,29 @@ class ThermalUnits:
 
     flank: np.ndarray   #: (2, n) pinion, gear
     shaft: np.ndarray   #: (2, n)
+    #: ``thermal = "fe3d"``: the 3-D unit solutions of pinion and gear
+    #: (:class:`femgear.body.thermal3d.Thermal3DUnits`), whose face means are ``flank`` and ``shaft``; None otherwise
+    bodies: tuple | None = None
 
     def deviation(self, flank_rise: float, shaft_rise: float) -> np.ndarray:
         return flank_rise * self.flank + shaft_rise * self.shaft
+
+    @classmethod
+    def from_bodies(cls, bodies: tuple, rho: np.ndarray) -> ThermalUnits:
+        """From the 3-D unit solutions of pinion and gear: their face means at the roll distances ``rho`` (2, n)."""
+        return cls(flank=np.array([body.face_mean(r, 1.0, 0.0) for body, r in zip(bodies, rho)]),
+                   shaft=np.array([body.face_mean(r, 0.0, 1.0) for body, r in zip(bodies, rho)]), bodies=tuple(bodies))
+
+    def face(self, rho: np.ndarray, grid: np.ndarray, flank_rise: float, shaft_rise: float) -> np.ndarray | None:
+        """Face-resolved ζ_T (member, helix, u, ζ) [m] at the members' roll distances ``rho`` (2, n) (pinion
+        ρ₁ = u, gear ρ₂ = T₁T₂ − u) and face coordinates ``grid`` (m,) of each helix, from the 3-D unit
+        solutions (:meth:`femgear.body.thermal3d.Thermal3DUnits.face_field`); None without them.
+
+        Its face mean over both helices (trapezoid on ``grid``) is :meth:`deviation` up to the bilinear
+        reading of the units' ζ grid on ``grid`` (the same ρ interpolation: both are linear in ρ)."""
+        if self.bodies is None:
+            return None
+        return np.array([body.face_field(r, grid, flank_rise, shaft_rise) for body, r in zip(self.bodies, rho)])
 
 
 def thermal_units(case: Case) -> ThermalUnits | None:
@@ -81,15 +101,34 @@ def thermal_units(case: Case) -> ThermalUnits | None:
     from femgear.body.thermal import flank_deviation
 
     m = case.material
+    members = ((1, case.bore_radii[0]), (2, case.bore_radii[1]))
+    if case.levels.thermal == "fe3d":
+        return _thermal_units_3d(case, members)
 
     def unit(member: int, bore: float, flank: float, shaft: float) -> np.ndarray:
         return flank_deviation(case.pair, member, case.path.u, case.levels.thermal, flank, shaft, m.thermal_expansion,
                                m.youngs_modulus, m.poisson_ratio, m.conductivity, bore, case.thermal.mesh_size,
                                case.groove_width, case.stagger)
 
-    members = ((1, case.bore_radii[0]), (2, case.bore_radii[1]))
     return ThermalUnits(flank=np.array([unit(j, b, 1.0, 0.0) for j, b in members]),
                         shaft=np.array([unit(j, b, 0.0, 1.0) for j, b in members]))
+
+
+def _thermal_units_3d(case: Case, members) -> ThermalUnits:
+    """``fe3d``: the members' 3-D unit solutions and their face means along the path (the values of
+    :func:`femgear.body.thermal.flank_deviation`, which reads the same cached solutions)."""
+    from femgear.body.thermal3d import thermal_units_3d
+
+    m = case.material
+    bodies = tuple(thermal_units_3d(case.pair, j, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, b,
+                                    case.groove_width, case.stagger) for j, b in members)
+    return ThermalUnits.from_bodies(bodies, roll_distances(case.pair, case.path.u))
+
+
+def roll_distances(pair, u: np.ndarray) -> np.ndarray:
+    """(2, n) roll distances of the flank points at the path positions ``u``: pinion ρ₁ = u, gear ρ₂ = T₁T₂ − u."""
+    u = np.asarray(u, float)
+    return np.array([u, pair.line_of_action - u])
 
 
 def line_stiffness(case: Case, mean_helix_stiffness: float, stiffness: MeshStiffness | None = None):
@@ -217,6 +256,9 @@ class CouplingState:
     #: ``wear.field = "face"``: (member, helix, u, ζ) wear depth on the setup's face grid [m]; ``wear`` is
     #: then its face mean over both helices
     wear_face: np.ndarray | None = field(default=None, repr=False, compare=False)
+    #: ``wear.field = "face"`` with ``thermal = "fe3d"``: (member, helix, u, ζ) ζ_T on the face grid [m]
+    #: (:meth:`ThermalUnits.face`); ``thermal_deviation`` is its face mean (to the grid's interpolation)
+    thermal_face: np.ndarray | None = field(default=None, repr=False, compare=False)
 
     @property
     def removed(self) -> np.ndarray:
@@ -257,19 +299,22 @@ def ltca_face_reference(pair, u: np.ndarray, info: dict, deviation, extra=None, 
                          window=pair.b / n_line if n_line else 0.0)
 
 
-def _removed_deviation(setup: CouplingSetup, wear: np.ndarray, zeta: np.ndarray, wear_face: np.ndarray | None = None):
+def _removed_deviation(setup: CouplingSetup, wear: np.ndarray, zeta: np.ndarray, wear_face: np.ndarray | None = None,
+                       thermal_face: np.ndarray | None = None):
     """The drive flanks' deviation the LTCA is re-run on: wear − ζ_T of each member, face-uniform
     (:func:`~femgear.ltca.separation.path_deviation`) or, with a face-resolved wear field, per helix and face
-    position (:func:`~femgear.ltca.separation.face_deviation`; the thermal growth uniform over the face)."""
+    position (:func:`~femgear.ltca.separation.face_deviation`; the thermal growth ``thermal_face`` (member,
+    helix, u, ζ) of ``fe3d``, else ζ_T uniform over the face)."""
     from femgear.ltca.separation import face_deviation, path_deviation
 
     if wear_face is None:
         return path_deviation(setup.pair, setup.kin.u, wear - zeta)
-    return face_deviation(setup.pair, setup.kin.u, setup.face.grid, wear_face - zeta[:, None, :, None])
+    thermal = zeta[:, None, :, None] if thermal_face is None else thermal_face
+    return face_deviation(setup.pair, setup.kin.u, setup.face.grid, wear_face - thermal)
 
 
 def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray,
-                wear_face: np.ndarray | None = None):
+                wear_face: np.ndarray | None = None, thermal_face: np.ndarray | None = None):
     """(wear, contact) reference load maps for the pass whose LTCA cycle ``info`` ran on the deviation
     wear − ζ_T (None, None without ``ltca``).
 
@@ -284,7 +329,7 @@ def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta:
     h, z = wear.sum(axis=0), zeta.sum(axis=0)
     extra = None
     if info is not setup.ltca:
-        extra = _removed_deviation(setup, wear, zeta, wear_face)
+        extra = _removed_deviation(setup, wear, zeta, wear_face, thermal_face)
     ref = ltca_reference(setup.pair, setup.kin.u, info, h, extra, setup.n_phase)
     if info is setup.ltca:
         return ref, replace(ref, deviation=h - z)
@@ -310,11 +355,15 @@ def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarr
     return w, np.asarray(mu, dtype=float), np.asarray(dT, dtype=float)
 
 
-def _thermal(setup: CouplingSetup, dT: np.ndarray) -> tuple[float, np.ndarray]:
+def _thermal(setup: CouplingSetup, dT: np.ndarray) -> tuple[float, np.ndarray, np.ndarray | None]:
+    """(bulk rise, ζ_T (2, n), face-resolved ζ_T (member, helix, u, ζ) or None): the face field only with a
+    face-resolved wear field (``setup.face``) and 3-D units (``fe3d``), on the wear's face grid."""
     if setup.thermal is None:
-        return 0.0, np.zeros((2, setup.kin.u.size))
-    rise = bulk_temperature_rise(setup.case, dT)
-    return rise, setup.thermal.deviation(rise, setup.case.thermal.shaft_temperature_rise)
+        return 0.0, np.zeros((2, setup.kin.u.size)), None
+    rise, shaft = bulk_temperature_rise(setup.case, dT), setup.case.thermal.shaft_temperature_rise
+    face = None if setup.face is None else \
+        setup.thermal.face(roll_distances(setup.pair, setup.kin.u), setup.face.grid, rise, shaft)
+    return rise, setup.thermal.deviation(rise, shaft), face
 
 
 def _wear(setup: CouplingSetup, force: np.ndarray,
@@ -352,7 +401,7 @@ def _deviated_model(setup: CouplingSetup, state: CouplingState):
     from femgear.ltca.level import deviated_cycle
 
     face = getattr(state, "wear_face", None)
-    extra = _removed_deviation(setup, wear, zeta, face)
+    extra = _removed_deviation(setup, wear, zeta, face, getattr(state, "thermal_face", None))
     worn = deviated_cycle(setup.ltca, extra)
     unworn = setup.ltca if face is None else _worn_orders(setup.ltca, worn, extra)
     coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)
@@ -436,18 +485,20 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
     ref_wear, ref_contact = _references(setup, setup.ltca, zero, zero)
     wear, face = _wear(setup, force, ref_wear)
     w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact)
-    rise, zeta = _thermal(setup, dT)
-    state = CouplingState(0, force, w, mu, dT, rise, zeta, wear, seconds=time.perf_counter() - t0, wear_face=face)
+    rise, zeta, zeta_face = _thermal(setup, dT)
+    state = CouplingState(0, force, w, mu, dT, rise, zeta, wear, seconds=time.perf_counter() - t0, wear_face=face,
+                          thermal_face=zeta_face)
     yield state
     while True:
         t0 = time.perf_counter()
         force, run, info = _dynamics(setup, state)
         t1 = time.perf_counter()
-        ref_wear, ref_contact = _references(setup, info, state.wear, state.thermal_deviation, state.wear_face)
+        ref_wear, ref_contact = _references(setup, info, state.wear, state.thermal_deviation, state.wear_face,
+                                            state.thermal_face)
         wear_new, face_new = _wear(setup, force, ref_wear)
         t2 = time.perf_counter()
         w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact)
-        rise, zeta_new = _thermal(setup, dT)
+        rise, zeta_new, zeta_face = _thermal(setup, dT)
         mix = lambda old, new: old + relax * (new - old)  # noqa: E731
         lte = math.nan if info is None else info["lte_peak_to_peak"]
         rerun = 0.0 if info is None or info is setup.ltca else info["ltca"].seconds
@@ -456,7 +507,8 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
                               mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new),
                               float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
                               float(np.max(np.abs(mu_new - state.mu))), run, lte, time.perf_counter() - t0, timings,
-                              None if face_new is None else mix(state.wear_face, face_new))
+                              None if face_new is None else mix(state.wear_face, face_new),
+                              None if zeta_face is None else mix(state.thermal_face, zeta_face))
         for name, value in (("mesh_force", force), ("mu", state.mu), ("wear", state.wear)):
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError("coupling", f"non-finite {name} in iteration {state.iteration}")

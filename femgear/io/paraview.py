@@ -16,6 +16,12 @@ file renamed into place), the ``.pvd`` last, so that a collection that exists is
 - ``body.pvd`` (with ``thermal = "fe"``): the FE gear sections of both members with
   ``temperature_rise`` [K], ``displacement`` [m] and ``von_mises`` [Pa]
   (:func:`femgear.io.paraview_run.body_frames`).
+- ``flank_face.vtu`` (with ``wear.field = "face"`` or ``thermal = "fe3d"``): the face-resolved
+  fields on the 3-D loaded flank of tooth 0 of both members, both helices, over (ρ, ζ):
+  ``wear_depth`` [m] (the run's final face wear field, whose face mean is ``flanks.pvd``'s
+  wear) and ``thermal_deviation`` [m] (ζ_T of the 3-D unit solutions at the run's bulk rise),
+  with ``member``, ``helix``, ``u``, ``rho``, ``zeta``; each member in its LTCA body frame, the
+  gear shifted by a_w along x (:func:`femgear.io.paraview_run.face_mesh`).
 - ``dynamics.pvd`` (with a dynamics level): the last simulated mesh cycle as a time
   series: the working pitch circles of the four helix halves, with the vector
   ``displacement`` = d + θ × r of each body's six DOFs [m] (it includes the static

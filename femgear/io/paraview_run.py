@@ -118,11 +118,51 @@ def body_frames(result: RunResult) -> list[Frame]:
     return frames
 
 
+def face_mesh(result: RunResult):
+    """The face-resolved fields (``wear.field = "face"``: ``wear_depth``; ``thermal = "fe3d"``:
+    ``thermal_deviation``, both [m]) on the 3-D loaded flanks of tooth 0 of both members, both helices,
+    as a meshio quad mesh (None without face fields).
+
+    Each member in its own body frame (:func:`femgear.ltca.vtk.helix_flank_quads`: the LTCA's member
+    bodies), the gear shifted by the centre distance along x; a flank point at path position u_k has
+    roll distance ρ₁ = u_k (pinion) or ρ₂ = T₁T₂ − u_k (gear), face coordinate ζ_m of the run's face grid.
+    Point data also ``member`` (1, 2), ``helix`` (0 left, 1 right), ``u``, ``rho``, ``zeta`` [m]."""
+    import meshio
+
+    from femgear.coupling.loop import roll_distances
+    from femgear.ltca.vtk import helix_flank_quads
+
+    t, case = result.tribology, result.case
+    if t.face_grid is None:
+        return None
+    pair, grid = case.pair, np.asarray(t.face_grid, float)
+    u = case.path.u
+    rho = roll_distances(pair, u)
+    fields = {k: v for k, v in (("wear_depth", t.wear_face), ("thermal_deviation", t.thermal_face)) if v is not None}
+    points, quads, data = [], [], {k: [] for k in (*fields, "member", "helix", "u", "rho", "zeta")}
+    U, Z = np.meshgrid(u, grid, indexing="ij")
+    for j in (0, 1):
+        pts, q = helix_flank_quads(pair, j + 1, rho[j], grid, case.groove_width, case.stagger)
+        pts[:, 0] += j * pair.a_w
+        quads.append(q + sum(len(p) for p in points))
+        points.append(pts)
+        for k, v in fields.items():
+            data[k].append(np.asarray(v[j], float).reshape(-1))
+        data["member"].append(np.full(len(pts), j + 1, np.int32))
+        data["helix"].append(np.repeat(np.array([0, 1], np.int32), U.size))
+        data["u"].append(np.tile(U.ravel(), 2))
+        data["rho"].append(np.tile(np.repeat(rho[j], grid.size), 2))
+        data["zeta"].append(np.tile(Z.ravel(), 2))
+    return meshio.Mesh(np.concatenate(points), [("quad", np.concatenate(quads))],
+                       point_data={k: np.concatenate(v) for k, v in data.items()})
+
+
 def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path]:
     """Write ``flanks.pvd``, with dynamics ``dynamics.pvd``, with ``thermal = "fe"`` ``body.pvd``, and with
     ``stiffness = "ltca"`` the LTCA's pressure map on the 3-D pinion flanks of both helices, ``ltca_pressure.vtu``
     (:func:`femgear.ltca.vtk.write_flank_pressure`; the LTCA cycle of the stiffness level: new flanks with the
-    scene's modifications)."""
+    scene's modifications), and with face-resolved fields (``wear.field = "face"``, ``thermal = "fe3d"``)
+    ``flank_face.vtu`` (:func:`face_mesh`)."""
     out_dir = Path(out_dir)
     files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
     ltca = result.stiffness.info.get("ltca") if result.stiffness is not None else None
@@ -132,6 +172,11 @@ def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path
         m = result.case.material
         files["ltca_pressure_vtu"] = write_flank_pressure(out_dir / "ltca_pressure.vtu", ltca, result.case.pair,
                                                           m.youngs_modulus, m.poisson_ratio)
+    face = face_mesh(result)
+    if face is not None:
+        from femgear.ltca.vtk import write_vtu
+
+        files["flank_face_vtu"] = write_vtu(out_dir / "flank_face.vtu", face)
     if result.case.levels.thermal == "fe":
         files["body_pvd"] = write_collection(out_dir, "body", body_frames(result))
     if result.coupled is not None and result.coupled.state.dynamics is not None:
@@ -139,4 +184,4 @@ def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path
     return files
 
 
-__all__ = ["body_frames", "dynamics_frames", "flank_frames", "write_run_paraview"]
+__all__ = ["body_frames", "dynamics_frames", "face_mesh", "flank_frames", "write_run_paraview"]

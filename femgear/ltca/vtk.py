@@ -107,24 +107,42 @@ def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, 
     """
     import meshio
 
+    fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
+    pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.info.get("groove", 0.0),
+                                   result.info.get("stagger", 0.0))
+    R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
+    data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), 2),
+            "zeta": np.tile(Z.ravel(), 2), "helix": np.repeat([0, 1], R.size).astype(np.int32),
+            "edge": np.tile(fmap.edge.ravel(), 2).astype(np.int32)}
+    return write_vtu(path, meshio.Mesh(pts, [("quad", quads)], point_data=data))
+
+
+def helix_flank_quads(pair, member: int, rho: np.ndarray, zeta: np.ndarray, groove: float = 0.0,
+                      stagger: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """Points (2 n m, 3) and quads of the loaded flank of ``member``'s tooth 0, both helices, on the grid
+    ``rho`` (n,) × ``zeta`` (m,) (index order [helix, i_ρ, i_ζ]): the left helix on the helicoid of
+    :func:`femgear.ltca.flank.flank_points`, the right one the same (ρ, ζ) through
+    :meth:`femgear.mesh.segment.HelixFrame.to_right` (body frame of the LTCA's member body)."""
     from femgear.ltca.flank import flank_points
     from femgear.mesh.segment import frame_of
 
-    fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
-    frame = frame_of(pair, 1, result.info.get("groove", 0.0), result.info.get("stagger", 0.0))
-    R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
-    left = flank_points(pair, 1, R.ravel(), Z.ravel())
+    frame = frame_of(pair, member, groove, stagger)
+    R, Z = np.meshgrid(np.asarray(rho, float), np.asarray(zeta, float), indexing="ij")
+    left = flank_points(pair, member, R.ravel(), Z.ravel())
     pts = np.hstack([left, frame.to_right(left)]).T
     nr, nz = R.shape
     idx = np.arange(nr * nz).reshape(nr, nz)
     quads = np.column_stack([idx[:-1, :-1].ravel(), idx[1:, :-1].ravel(), idx[1:, 1:].ravel(), idx[:-1, 1:].ravel()])
-    quads = np.vstack([quads, quads + nr * nz])
-    data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), 2),
-            "zeta": np.tile(Z.ravel(), 2), "helix": np.repeat([0, 1], nr * nz).astype(np.int32),
-            "edge": np.tile(fmap.edge.ravel(), 2).astype(np.int32)}
+    return pts, np.vstack([quads, quads + nr * nz])
+
+
+def write_vtu(path: str | Path, mesh) -> Path:
+    """Write a meshio ``mesh`` to ``path`` atomically (a temporary file, then a rename: complete or absent)."""
+    import meshio
+
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.stem}.tmp-{os.getpid()}{path.suffix}")     # complete or absent
-    meshio.write(tmp, meshio.Mesh(pts, [("quad", quads)], point_data=data))
+    tmp = path.with_name(f".{path.stem}.tmp-{os.getpid()}{path.suffix}")
+    meshio.write(tmp, mesh)
     os.replace(tmp, path)
     return path
