@@ -213,13 +213,14 @@ def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, fo
     Cb = bulk_matrix(pair, kernels, pts)
     load = np.full(pts.size, force / pts.size)
     active = None
+    changes = []
     for p in range(1, max_pass + 1):
         C = Cb + local_matrix(pair, pts, load, E, nu, getattr(kernels[1], "groove", 0.0),
                               getattr(kernels[1], "cross", None) is not None)
         sol = solve_contact(C, eps, force, case, active)
-        change = float(np.max(np.abs(sol.load - load)) / force)
+        changes.append(float(np.max(np.abs(sol.load - load)) / force))
         load, active = sol.load, sol.load > 0
-        if change < tol:
+        if changes[-1] < tol:
             return sol, C, p
     raise ConvergenceError(case, f"Hertz width fixed point did not settle in {max_pass} passes",
-                           {"load_change": [change]})
+                           {"load_change": changes})

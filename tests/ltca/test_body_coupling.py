@@ -74,3 +74,20 @@ def test_sparse_lu_and_sa_cg_give_the_same_displacements():
     assert Elastic3D(mesh, 210e9, 0.3, order=1, solver="auto").solver == "lu"
     with pytest.raises(ValueError, match="solver"):
         Elastic3D(mesh, 210e9, 0.3, solver="cholesky")
+
+
+def test_an_unsettled_hertz_width_fixed_point_raises_with_its_history(coarse_model, baseline_pair, baseline_force):
+    """Two passes cannot settle the load-dependent strip width from the uniform start: the solver raises
+    ConvergenceError carrying the load change of every pass (decreasing: a linear fixed point), and with
+    the default pass limit the same phase converges."""
+    from femgear.errors import ConvergenceError
+    from femgear.ltca.contact import phase_points, solve_phase
+
+    pts = phase_points(baseline_pair, 0.3, 0.0, 8)
+    eps = np.zeros(pts.size)
+    with pytest.raises(ConvergenceError) as info:
+        solve_phase(baseline_pair, coarse_model.kernels, pts, eps, baseline_force, 210e9, 0.3, max_pass=2)
+    changes = info.value.history["load_change"]
+    assert len(changes) == 2 and changes[1] < changes[0]
+    sol, _, passes = solve_phase(baseline_pair, coarse_model.kernels, pts, eps, baseline_force, 210e9, 0.3)
+    assert 2 < passes <= 80 and sol.load.sum() == pytest.approx(baseline_force, rel=1e-9)
