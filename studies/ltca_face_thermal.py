@@ -5,7 +5,7 @@
 The baseline (500 rpm, 200 N m) with the LTCA mesh, the 3-D thermal level and the face-resolved wear
 field, at a bulk flank rise ``thermal.flank_temperature_rise = 30`` K and no wear (``wear.cycles = 0``):
 the deviation the LTCA is re-run on is then −ζ_T alone.  Face-resolved: ζ_T(member, helix, u, ζ) of the
-3-D unit solutions (:meth:`femgear.coupling.loop.ThermalUnits.face`); face-uniform: its face mean ζ_T(u)
+3-D unit solutions (:meth:`femgear.coupling.thermal.ThermalUnits.face`); face-uniform: its face mean ζ_T(u)
 (what the loop used before).  Prints per variant the loaded TE p-p, the helix forces' cycle means, the
 load-weighted face centre ζ̄/b of each helix and the load share of the apex half (ζ > b/2), then one
 one-way coupled pass of each (the loop's own path: ``setup.thermal`` with and without its 3-D bodies)
@@ -105,7 +105,8 @@ def passes(setup) -> dict:
 
 def face_cost(setup) -> dict:
     """Seconds of the face field per pass (``ThermalUnits.face`` + the face deviation), medians of 20."""
-    from femgear.coupling.loop import _removed_deviation, roll_distances
+    from femgear.coupling.loop import _removed_deviation
+    from femgear.coupling.thermal import roll_distances
 
     n, g = setup.kin.u.size, setup.face.grid
     rho, zero, zf = roll_distances(setup.pair, setup.kin.u), np.zeros((2, n)), np.zeros((2, 2, n, g.size))

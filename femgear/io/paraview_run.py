@@ -129,7 +129,7 @@ def face_mesh(result: RunResult):
     Point data also ``member`` (1, 2), ``helix`` (0 left, 1 right), ``u``, ``rho``, ``zeta`` [m]."""
     import meshio
 
-    from femgear.coupling.loop import roll_distances
+    from femgear.coupling.thermal import roll_distances
     from femgear.ltca.vtk import helix_flank_quads
 
     t, case = result.tribology, result.case

@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 from femgear.body.thermal3d import Thermal3DUnits
-from femgear.coupling.loop import ThermalUnits, _removed_deviation, _thermal, roll_distances
+from femgear.coupling.loop import _removed_deviation, _thermal
+from femgear.coupling.thermal import ThermalUnits, roll_distances
 from femgear.geometry import path_positions
 from femgear.ltca.flank import roll_range
 from femgear.wear.face import face_mean
