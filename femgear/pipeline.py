@@ -29,9 +29,9 @@ import numpy as np
 from femgear.case import Case, build_case
 from femgear.contact.path import ContactPath, contact_along_path
 from femgear.coupling.loop import (
-    CouplingSetup, CouplingState, ThermalUnits, line_stiffness, ltca_face_reference, ltca_reference, roll_distances,
-    run_coupled, thermal_units,
+    CouplingSetup, CouplingState, line_stiffness, ltca_face_reference, ltca_reference, run_coupled,
 )
+from femgear.coupling.thermal import ThermalUnits, roll_distances, thermal_units
 from femgear.lubrication.levels import friction_along_path
 from femgear.results import RunResult, Tribology
 from femgear.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene

@@ -41,6 +41,9 @@ def write_regions(path: Path, mesh, regions: dict[str, np.ndarray], aliases: dic
     """
     import meshio
 
+    from femgear.io.atomic import write_text_atomic
+    from femgear.io.paraview import write_vtu
+
     dim = mesh.p.shape[0]
     cell_type, facet_type = ("tetra", "triangle") if dim == 3 else ("triangle", "line")
     names = sorted(regions)
@@ -51,11 +54,10 @@ def write_regions(path: Path, mesh, regions: dict[str, np.ndarray], aliases: dic
     points = mesh.p.T if dim == 3 else np.column_stack([mesh.p.T, np.zeros(mesh.p.shape[1])])
     out = meshio.Mesh(points, [(cell_type, mesh.t.T), (facet_type, mesh.facets[:, facets].T)],
                       cell_data={"region": [np.zeros(mesh.t.shape[1], np.int32), tags.astype(np.int32)]})
-    path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, out)
+    write_vtu(path, out)
     table = {n: {"tag": i + 1, "facets": int(regions[n].size)} for i, n in enumerate(names)}
     info = {"file": path.name, "region_tag": table, "volume_tag": 0, "aliases": aliases or {}}
-    path.with_name(path.stem + "_regions.json").write_text(json.dumps(info, indent=1))
+    write_text_atomic(path.with_name(path.stem + "_regions.json"), json.dumps(info, indent=1))
     return table
 
 

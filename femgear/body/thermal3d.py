@@ -84,9 +84,7 @@ class Thermal3DUnits:
     def face_mean(self, rho, flank_rise: float, shaft_rise: float) -> np.ndarray:
         """ζ_n at ``rho`` averaged over the face of both helices (trapezoid rule) [m]."""
         g = self.grid(flank_rise, shaft_rise)
-        w = np.gradient(self.zeta)
-        w[[0, -1]] = 0.5 * np.diff(self.zeta)[[0, -1]]
-        mean = (g * w).sum(axis=2).mean(axis=0) / w.sum()
+        mean = np.trapezoid(g, self.zeta, axis=2).mean(axis=0) / (self.zeta[-1] - self.zeta[0])
         return np.interp(np.asarray(rho, float), self.rho, mean)
 
     def tables(self, flank_rise: float, shaft_rise: float) -> dict:

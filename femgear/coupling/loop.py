@@ -196,10 +196,15 @@ def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra
     ``n_phase``: keep every k-th phase of the cycle, k = ⌈phases / n_phase⌉ (the wear integration
     solves each kept phase of both helices at every step; None keeps all)."""
     res = info["ltca"]
-    k = 1 if n_phase is None else max(1, math.ceil(res.phase.size / n_phase))
+    k = _phase_stride(res, n_phase)
     return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u, trapezoid_weights(u))[:, ::k],
                          deviation=np.asarray(deviation, dtype=float), offsets=(0.0, float(info["options"]["stagger"])),
                          approach=res.path_approach(pair, u, info.get("modifications"), extra)[:, ::k])
+
+
+def _phase_stride(res, n_phase: int | None) -> int:
+    """Every k-th phase of the LTCA cycle ``res`` is kept, k = ⌈phases / n_phase⌉ (1 for None)."""
+    return 1 if n_phase is None else max(1, math.ceil(res.phase.size / n_phase))
 
 
 def ltca_face_reference(pair, u: np.ndarray, info: dict, deviation, extra=None, n_phase: int | None = None,
@@ -208,7 +213,7 @@ def ltca_face_reference(pair, u: np.ndarray, info: dict, deviation, extra=None, 
     points: the input of the face-resolved wear (:class:`femgear.wear.face.FaceReference`), the load averaged
     over the cycle's point spacing b / n_line in ζ (its face resolution, :func:`femgear.wear.face.face_load`)."""
     ref = ltca_reference(pair, u, info, deviation, extra, n_phase)
-    k = 1 if n_phase is None else max(1, math.ceil(info["ltca"].phase.size / n_phase))
+    k = _phase_stride(info["ltca"], n_phase)
     n_line = info["ltca"].info.get("n_line") or info.get("options", {}).get("n_line")
     return FaceReference(ref=ref, zeta=info["ltca"].path_zeta(pair, u)[:, ::k], grid=np.linspace(0.0, pair.b, n_zeta),
                          window=pair.b / n_line if n_line else 0.0)
@@ -315,8 +320,8 @@ def _deviated_model(setup: CouplingSetup, state: CouplingState):
         return setup.model, None, setup.ltca
     from femgear.ltca.level import deviated_cycle
 
-    face = getattr(state, "wear_face", None)
-    extra = _removed_deviation(setup, wear, zeta, face, getattr(state, "thermal_face", None))
+    face = state.wear_face
+    extra = _removed_deviation(setup, wear, zeta, face, state.thermal_face)
     worn = deviated_cycle(setup.ltca, extra)
     unworn = setup.ltca if face is None else _worn_orders(setup.ltca, worn, extra)
     coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)

@@ -58,9 +58,12 @@ class Frame:
     mesh: object  # meshio.Mesh (meshio imported lazily)
 
 
-def _write_vtu(path: Path, mesh) -> None:
+def write_vtu(path: str | Path, mesh) -> Path:
+    """Write a meshio ``mesh`` to ``path`` atomically (a temporary file, then a rename: complete or absent)."""
     import meshio
 
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         meshio.write(tmp, mesh, file_format="vtu", binary=True, compression=None)
@@ -69,6 +72,7 @@ def _write_vtu(path: Path, mesh) -> None:
     except BaseException:
         tmp.unlink(missing_ok=True)
         raise
+    return path
 
 
 def write_collection(folder: str | Path, name: str, frames: Sequence[Frame]) -> Path:
@@ -81,7 +85,7 @@ def write_collection(folder: str | Path, name: str, frames: Sequence[Frame]) -> 
     for i, frame in enumerate(frames):
         _check_finite(frame)
         file = data_dir / f"{frame.name}_{i:04d}.vtu"
-        _write_vtu(file, frame.mesh)
+        write_vtu(file, frame.mesh)
         ET.SubElement(coll, "DataSet", timestep=repr(float(frame.time)), group="", part=str(frame.part),
                       file=f"{name}/{file.name}", name=frame.name)
     ET.indent(root)
@@ -122,4 +126,4 @@ def flank_surface(rb: float, r: np.ndarray, centre: tuple[float, float], angle0:
     return points, quads
 
 
-__all__ = ["Frame", "flank_surface", "involute_points", "write_collection"]
+__all__ = ["Frame", "flank_surface", "involute_points", "write_collection", "write_vtu"]

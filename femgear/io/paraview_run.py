@@ -174,7 +174,7 @@ def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path
                                                           m.youngs_modulus, m.poisson_ratio)
     face = face_mesh(result)
     if face is not None:
-        from femgear.ltca.vtk import write_vtu
+        from femgear.io.paraview import write_vtu
 
         files["flank_face_vtu"] = write_vtu(out_dir / "flank_face.vtu", face)
     if result.case.levels.thermal == "fe":

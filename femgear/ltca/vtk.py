@@ -28,7 +28,6 @@ such values are flagged, not silently shown as Hertz pressures.
 from __future__ import annotations
 
 import math
-import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -55,9 +54,7 @@ class FlankMap:
 
     def helix_force(self) -> np.ndarray:
         """Cycle-mean normal load of each helix from the map, Σ w_mean Δζ / cos β_b (trapezoid in ζ) [N]."""
-        dz = np.full(self.zeta.size, self.zeta[1] - self.zeta[0])
-        dz[[0, -1]] *= 0.5
-        return np.einsum("hij,j->h", self.w_mean, dz) / math.cos(self.beta_b)
+        return np.trapezoid(self.w_mean, self.zeta, axis=2).sum(axis=1) / math.cos(self.beta_b)
 
 
 def _line_samples(pair, u: np.ndarray, zeta: np.ndarray, w: np.ndarray, dl: np.ndarray, grid_z: np.ndarray):
@@ -107,6 +104,8 @@ def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, 
     """
     import meshio
 
+    from femgear.io.paraview import write_vtu
+
     fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
     pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.info.get("groove", 0.0),
                                    result.info.get("stagger", 0.0))
@@ -135,14 +134,3 @@ def helix_flank_quads(pair, member: int, rho: np.ndarray, zeta: np.ndarray, groo
     quads = np.column_stack([idx[:-1, :-1].ravel(), idx[1:, :-1].ravel(), idx[1:, 1:].ravel(), idx[:-1, 1:].ravel()])
     return pts, np.vstack([quads, quads + nr * nz])
 
-
-def write_vtu(path: str | Path, mesh) -> Path:
-    """Write a meshio ``mesh`` to ``path`` atomically (a temporary file, then a rename: complete or absent)."""
-    import meshio
-
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.stem}.tmp-{os.getpid()}{path.suffix}")
-    meshio.write(tmp, mesh)
-    os.replace(tmp, path)
-    return path

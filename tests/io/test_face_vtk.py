@@ -44,7 +44,7 @@ def test_face_mesh_carries_the_fields_on_both_helices_of_both_members(tmp_path, 
     import meshio
 
     from femgear.case import build_case
-    from femgear.ltca.vtk import write_vtu
+    from femgear.io.paraview import write_vtu
 
     case = build_case(baseline_scene)
     n, grid = case.path.u.size, np.linspace(0.0, case.pair.b, 7)

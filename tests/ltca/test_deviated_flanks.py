@@ -103,9 +103,11 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
                             n_phase=64, ltca=unworn, model=model)
     wear = np.array([np.full(u.size, 1e-6), np.zeros(u.size)])
     zeta = np.array([np.zeros(u.size), np.full(u.size, 0.4e-6)])
-    base, extra, worn = _deviated_model(setup, SimpleNamespace(wear=wear, thermal_deviation=zeta))
+    state = SimpleNamespace(wear=wear, thermal_deviation=zeta, wear_face=None, thermal_face=None)
+    base, extra, worn = _deviated_model(setup, state)
     assert np.allclose(base.base_deviation.drive - model.base_deviation.drive, 1e-6 - 0.4e-6, rtol=1e-6)
     assert np.all(extra.drive == 0) and np.allclose(extra.coast, -0.4e-6, rtol=1e-12)
     assert worn["lte_peak_to_peak"] == pytest.approx(unworn["lte_peak_to_peak"], rel=1e-6)
-    same, none, cycle = _deviated_model(setup, SimpleNamespace(wear=0 * wear, thermal_deviation=0 * zeta))
+    same, none, cycle = _deviated_model(setup, SimpleNamespace(wear=0 * wear, thermal_deviation=0 * zeta,
+                                                              wear_face=None, thermal_face=None))
     assert same is model and none is None and cycle is unworn
