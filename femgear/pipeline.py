@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -32,6 +32,7 @@ from femgear.coupling.loop import (
     CouplingSetup, CouplingState, line_stiffness, ltca_face_reference, ltca_reference, run_coupled,
 )
 from femgear.coupling.thermal import ThermalUnits, roll_distances, thermal_units
+from femgear.lubrication.films import level_film
 from femgear.lubrication.levels import friction_along_path
 from femgear.results import RunResult, Tribology
 from femgear.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
@@ -44,7 +45,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     stiffness = mesh_stiffness_from_scene(case.scene)
     contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness)
     if case.levels.dynamics == "none":
-        return RunResult(case, contact, stiffness, static_tribology(case, contact, stiffness, wear_checkpoint),
+        tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
+        return RunResult(case, contact, stiffness, replace(tribology, film=level_film(case, tribology.load_per_length)),
                          seconds=time.perf_counter() - t0)
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
@@ -58,7 +60,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         thermal_deviation=st.thermal_deviation if levels.thermal != "none" else None,
         wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles,
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
-                      st.wear_face if levels.wear != "none" else None, st.thermal_face))
+                      st.wear_face if levels.wear != "none" else None, st.thermal_face),
+        film=level_film(case, st.load_per_length))
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0)
 
 

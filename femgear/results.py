@@ -15,6 +15,7 @@ import numpy as np
 from femgear.case import Case
 from femgear.contact.path import ContactPath
 from femgear.coupling.loop import CoupledResult
+from femgear.lubrication.films import LevelFilm
 from femgear.stiffness.tvms import MeshStiffness
 
 
@@ -34,6 +35,8 @@ class Tribology:
     face_grid: np.ndarray | None = None
     wear_face: np.ndarray | None = None         #: (member, helix, n, m) wear depth, ``wear.field = "face"`` [m]
     thermal_face: np.ndarray | None = None      #: (member, helix, n, m) ζ_T of ``thermal = "fe3d"`` [m]
+    #: the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.lubrication.films`)
+    film: LevelFilm | None = None
 
 
 @dataclass(frozen=True)

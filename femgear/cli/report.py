@@ -41,8 +41,13 @@ def key_figures(summary: dict[str, Any], seconds: float | None = None) -> list[t
                  f"({_fmt(_get(summary, 'stiffness', 'ripple_total'), 100, '.2f')} %)", "kN/µm"))
     rows.append(("Hertz pressure at the pitch point", _fmt(_get(summary, "contact", "pitch", "hertz_pressure"), 1e-9),
                  "GPa"))
-    rows.append(("central film at the pitch point", _fmt(_get(summary, "contact", "pitch", "film_central"), 1e6),
-                 "µm"))
+    film = summary.get("film")
+    if film:
+        rows.append((f"central film at the pitch point ({film['level']})", _fmt(film.get("central_pitch"), 1e6), "µm"))
+        rows.append((f"minimum film along the path ({film['level']})", _fmt(film.get("minimum"), 1e6), "µm"))
+    else:
+        rows.append(("central film at the pitch point (formula)",
+                     _fmt(_get(summary, "contact", "pitch", "film_central"), 1e6), "µm"))
     if "friction" in summary:
         f = summary["friction"]
         rows.append(("μ max / mean", f"{_fmt(f.get('mu_max'), 1, '.4f')} / {_fmt(f.get('mu_mean'), 1, '.4f')}", ""))

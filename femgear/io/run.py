@@ -59,6 +59,11 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
         "hertz_pressure": c.hertz_pressure, "hertz_half_width": c.hertz_half_width,
         "film_central": c.film_central, "film_minimum": c.film_minimum, "load_per_length": t.load_per_length,
     }
+    if t.film is not None:      # the film of the level that ran replaces the formula film, which stays as *_formula
+        fields.update(film_central_formula=c.film_central, film_minimum_formula=c.film_minimum,
+                      film_central=t.film.central, film_minimum=t.film.minimum, film_pressure_max=t.film.pressure_max)
+        if t.film.temperature_rise is not None:
+            fields["film_temperature_rise"] = t.film.temperature_rise
     if t.friction_coefficient is not None:
         fields.update(friction_coefficient=t.friction_coefficient, temperature_rise=t.temperature_rise)
     if t.thermal_deviation is not None:
@@ -88,7 +93,17 @@ def run_summary(result: RunResult) -> dict[str, Any]:
                                "history": {"iteration": h.iteration, "mesh_force_change": h.mesh_force_change,
                                            "mu_change": h.mu_change, "seconds": h.seconds}}
     summary.update(tribology_summary(result.tribology, case.path.s, static))
+    if result.tribology.film is not None:
+        summary["film"] = film_summary(result.tribology.film, case.path.s, result.contact.pitch_index)
     return summary
+
+
+def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
+    """The film of the lubrication level that ran, labelled with it."""
+    i = int(np.argmin(film.minimum))
+    return {"level": film.level, "method": film.method, "central_pitch": float(film.central[pitch]),
+            "minimum": float(film.minimum[i]), "minimum_position": float(s[i]),
+            "pressure_max": float(np.max(film.pressure_max))}
 
 
 def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tuple[dict[str, Any], dict[str, Path]]:

@@ -82,6 +82,11 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
+    if scene.physics.lubrication == "tehl-point":
+        from femgear.contact.crowning import check_point_range
+        from femgear.geometry import kinematics, path_positions
+
+        check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
     if warn:
         from femgear.contact.path import contact_along_path
 
