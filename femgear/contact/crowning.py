@@ -73,8 +73,9 @@ def crowned_contact(scene, pair=None) -> CrownedContact:
     mods = scene.modifications
     c1, c2 = mods.member(1).crowning, mods.member(2).crowning
     if c1 + c2 <= 0.0:
-        raise SceneError("modifications.crowning", "a point-contact lubrication level needs a lead crowning "
-                         "(an uncrowned involute flank has no curvature along the contact line)")
+        raise SceneError("modifications.crowning", "physics.lubrication = \"tehl-point\" needs a lead crowning > 0 "
+                         "(an uncrowned involute flank has no curvature along the contact line: a line contact, "
+                         "use \"tehl\")")
     b = pair.b
     kappa = 8.0 * (c1 + c2) / b**2
     length = b / math.cos(pair.beta_b) * pair.eps_alpha / pair.eps_gamma
