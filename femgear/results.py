@@ -15,6 +15,7 @@ import numpy as np
 from femgear.case import Case
 from femgear.contact.path import ContactPath
 from femgear.coupling.loop import CoupledResult
+from femgear.ltca.te import TEAnalysis
 from femgear.stiffness.tvms import MeshStiffness
 
 
@@ -46,3 +47,6 @@ class RunResult:
     tribology: Tribology
     coupled: CoupledResult | None = None        #: with a dynamics level
     seconds: float = 0.0
+    #: ``stiffness = "ltca"``: loaded TE, its harmonics, stiffness, load share and peak pressure of the LTCA
+    #: cycle of the stiffness level (new flanks with the scene's modifications, operating torque)
+    transmission_error: TEAnalysis | None = None

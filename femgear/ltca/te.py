@@ -143,7 +143,7 @@ def analyse_cycle(result, pair: GearPair, youngs_modulus: float, poisson_ratio: 
     per contact line (its TE harmonics and p-p are kept as the discretisation check)."""
     n_max = result.phase.size // 2 - 1
     if not 1 <= n_harmonics <= n_max:
-        raise ArgumentError("--harmonics", f"must be 1…{n_max} for {result.phase.size} phases, got {n_harmonics}")
+        raise ValueError(f"n_harmonics must be 1…{n_max} for {result.phase.size} phases, got {n_harmonics}")
     if not result.line_load:
         raise ValueError("analyse_cycle needs the line loads: run mesh_cycle(..., keep_lines=True)")
     F = result.force

@@ -64,10 +64,11 @@ def _cycle(model, pair, E, nu, torque, driver, modifications, stagger, opts: LTC
 
 def run_ltca(pair: GearPair, youngs_modulus: float, poisson_ratio: float, modifications, torques,
              design_torque: float, driver: str = "pinion", body: dict | None = None,
-             harris_torques=None, options: LTCAOptions = LTCAOptions()) -> LTCAToolResult:
+             harris_torques=None, options: LTCAOptions = LTCAOptions(), model=None) -> LTCAToolResult:
     """LTCA of ``pair`` at ``torques`` [N m] on the ``driver`` (checked beforehand by the caller:
     :func:`femgear.ltca.te.check_torques`); ``body``: bore_radius, groove_width, stagger
-    (:func:`femgear.ltca.analysis.body_options`); ``harris_torques``: the Harris map's torques (None: none)."""
+    (:func:`femgear.ltca.analysis.body_options`); ``harris_torques``: the Harris map's torques (None: none);
+    ``model``: a prebuilt :class:`femgear.ltca.analysis.LTCAModel` of these bodies (a test's coarse model)."""
     from femgear.ltca.analysis import build_model
     from femgear.ltca.maps import load_maps
     from femgear.ltca.te import check_contact, harris_map
@@ -75,7 +76,8 @@ def run_ltca(pair: GearPair, youngs_modulus: float, poisson_ratio: float, modifi
     t0 = time.perf_counter()
     body = dict(body or {})
     stagger = float(body.pop("stagger", 0.0))
-    model = build_model(pair, youngs_modulus, poisson_ratio, level=options.level, stagger=stagger, **body)
+    if model is None:
+        model = build_model(pair, youngs_modulus, poisson_ratio, level=options.level, stagger=stagger, **body)
     groove = float(body.get("groove_width", 0.0))
     args = (model, pair, youngs_modulus, poisson_ratio)
     design, _ = _cycle(*args, design_torque, driver, modifications, stagger,

@@ -102,7 +102,7 @@ def plot_load_distribution(maps: LoadMaps, path: str | Path, title: str = "") ->
         if i.size:
             ax.legend(fontsize=7, loc="upper left")
     axes[0].set_ylabel("pinion roll distance ρ₁ [mm] (tip at top)")
-    fig.colorbar(pc, ax=axes, label="load per length [N/mm]")
+    fig.colorbar(pc, ax=axes[1], label="load per length [N/mm]")
     fig.suptitle(title or f"load over the flank at phase {maps.worst_phase:.3f} (largest pressure), "
                  f"{maps.torque:g} N m")
     return save_figure(fig, path)
