@@ -1,5 +1,6 @@
 """The LTCA tool's analysis (femgear.ltca.te, .maps, .tool) on the coarse baseline model (fast)."""
 
+import dataclasses
 import math
 
 import numpy as np
@@ -188,3 +189,28 @@ def test_maps_of_both_members_read_back_and_integrate_to_the_helix_loads(tool, b
             if member == 2:
                 r = np.hypot(mesh.points[:, 0] - pair.a_w, mesh.points[:, 1])
                 np.testing.assert_allclose(r, np.hypot(d["rho"], pair.rb2), rtol=1e-9)
+
+
+def test_main_job_summary_and_key_figures_carry_the_loaded_te(coarse_model, baseline_force, baseline_scene):
+    """A quasi-static run whose stiffness carries an LTCA cycle (the coarse one): ``results.json``'s summary holds
+    ``transmission_error`` with the cycle's loaded TE p-p and harmonics, units, and the key figures show it."""
+    from femgear.case import build_case
+    from femgear.cli.report import key_figures
+    from femgear.io.run import run_summary
+    from femgear.ltca.analysis import mesh_cycle
+    from femgear.pipeline import run_case, transmission_error
+
+    scene = baseline_scene.model_copy(update={"physics": baseline_scene.physics.model_copy(update={
+        "dynamics": "none", "coupling": "one-way", "lubrication": "constant", "thermal": "none", "wear": "none",
+        "stiffness": "iso6336"})})
+    case = build_case(scene)
+    result = run_case(case)
+    assert result.transmission_error is None and "transmission_error" not in run_summary(result)
+    r = mesh_cycle(coarse_model, baseline_force, None, n_phases=16, n_line=8)
+    ms = dataclasses.replace(result.stiffness, level="ltca", info={"ltca": r, "resolved_orders": 7})
+    result = dataclasses.replace(result, stiffness=ms, transmission_error=transmission_error(case, ms))
+    te = run_summary(result)["transmission_error"]
+    assert te["lte_peak_to_peak"] == r.lte_peak_to_peak() and np.allclose(te["lte_harmonics"], r.harmonics(5))
+    assert te["units"]["lte_peak_to_peak"] == "m" and te["resolved_orders"] == 7
+    rows = {q: v for q, v, _ in key_figures(run_summary(result))}
+    assert rows["loaded TE p-p (LTCA, normal); harmonics 1-3"].startswith(f"{r.lte_peak_to_peak() * 1e6:.4f}")
