@@ -35,7 +35,7 @@ UNITS = {
     "lte_harmonics_refined": "m", "lte_harmonics_change": "1 (of the largest refined amplitude)",
     "lte_peak_to_peak_refined": "m", "lte_mean": "m", "lte_transverse_peak_to_peak": "m",
     "nlte_peak_to_peak": "m", "nlte_max": "m", "stiffness_mean": "N/m", "stiffness_ripple": "1 (peak-to-peak / mean)",
-    "load_share_left": "1", "load_share_right": "1", "load_balance_error": "1", "max_pressure": "Pa",
+    "load_share_left": "1", "load_share_right": "1", "load_balance_error": "1", "interior_load_share_min": "1 (left, right)", "max_pressure": "Pa",
     "max_pressure_interior": "Pa", "max_pressure_phase": "base pitches", "max_pressure_u": "m",
     "max_pressure_zeta": "m", "lte_left_peak_to_peak": "m", "lte_right_peak_to_peak": "m",
     "phase": "base pitches", "lte": "m", "lte_left": "m", "lte_right": "m", "nlte": "m", "force_left": "N",
@@ -63,6 +63,8 @@ def te_summary(a: TEAnalysis, cos_beta_b: float) -> dict[str, Any]:
         "nlte_peak_to_peak": a.nlte_peak_to_peak, "nlte_max": float(np.max(a.nlte)),
         "stiffness_mean": a.stiffness_mean, "stiffness_ripple": a.stiffness_ripple,
         "load_share_left": a.share_left, "load_share_right": a.share_right, "load_balance_error": a.balance_error,
+        "interior_load_share_min": None if a.interior_force is None else
+        (np.min(a.interior_force, axis=1) / a.force).tolist(),
         "max_pressure": p.pressure, "max_pressure_interior": p.interior_pressure, "max_pressure_phase": p.phase,
         "max_pressure_helix": p.helix, "max_pressure_u": p.u, "max_pressure_zeta": p.zeta,
         "max_pressure_where": p.where, "edge_contact": p.edge,

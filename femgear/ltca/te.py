@@ -79,6 +79,8 @@ class TEAnalysis:
     balance_error: float          #: max over the phases of |F_left + F_right − F| / F [-]
     pressure: PressurePeak
     worst_phase: int              #: index of the phase holding the largest pressure
+    #: (2, n_phases) normal load of each helix away from the flank edges (not on a contact line's end point) [N]
+    interior_force: np.ndarray | None = None
     #: loaded TE amplitudes with twice the points per contact line (None: no refinement run) [m]
     harmonics_refined: np.ndarray | None = None
     peak_to_peak_refined: float | None = None
@@ -91,20 +93,24 @@ class TEAnalysis:
         return np.abs(self.harmonics_refined - self.harmonics) / max(float(self.harmonics_refined.max()), 1e-300)
 
 
+def line_ends(arr: np.ndarray) -> np.ndarray:
+    """Mask of the contact points (rows of a ``line_load`` array) that are the first or last point of their line."""
+    edge = np.zeros(arr.shape[0], bool)
+    for h in (0, 1):
+        for j in np.unique(arr[arr[:, 0] == h, 1]):
+            idx = np.nonzero((arr[:, 0] == h) & (arr[:, 1] == j))[0]
+            z = arr[idx, 3]
+            edge[idx[np.argmin(z)]] = edge[idx[np.argmax(z)]] = True
+    return edge
+
+
 def point_pressures(result, pair: GearPair, youngs_modulus: float, poisson_ratio: float, i: int):
     """(p [Pa], edge mask) of the contact points of phase ``i`` (``result.line_load``, keep_lines=True)."""
     arr = result.line_load[i]
     cb = math.cos(pair.beta_b)
     u, w = arr[:, 2], arr[:, 4]
     R = u * (pair.line_of_action - u) / pair.line_of_action / cb
-    p = hertz_pressure(w, R, reduced_modulus(youngs_modulus, poisson_ratio))
-    edge = np.zeros(u.size, bool)
-    for h in (0, 1):
-        for j in np.unique(arr[arr[:, 0] == h, 1]):
-            idx = np.nonzero((arr[:, 0] == h) & (arr[:, 1] == j))[0]
-            z = arr[idx, 3]
-            edge[idx[np.argmin(z)]] = edge[idx[np.argmax(z)]] = True
-    return p, edge
+    return hertz_pressure(w, R, reduced_modulus(youngs_modulus, poisson_ratio)), line_ends(arr)
 
 
 def _where(pair: GearPair, u: float, zeta: float, half_du: float, half_dz: float, edge: bool) -> str:
@@ -134,6 +140,17 @@ def pressure_peak(result, pair: GearPair, youngs_modulus: float, poisson_ratio: 
     return PressurePeak(best, float(result.phase[worst]), ("left", "right")[h], u, z, e, label, inner), worst
 
 
+def interior_force(result) -> np.ndarray:
+    """(2, n_phases): the normal load of each helix on contact points that are not a line's end [N]."""
+    out = np.zeros((2, result.phase.size))
+    for i, arr in enumerate(result.line_load):
+        edge = line_ends(arr)
+        f = arr[:, 4] * result.line_length[i]
+        for h in (0, 1):
+            out[h, i] = float(f[(arr[:, 0] == h) & ~edge].sum())
+    return out
+
+
 def analyse_cycle(result, pair: GearPair, youngs_modulus: float, poisson_ratio: float, torque: float,
                   n_harmonics: int = 5, helix_te: tuple[np.ndarray, np.ndarray] | None = None,
                   refined=None) -> TEAnalysis:
@@ -158,7 +175,7 @@ def analyse_cycle(result, pair: GearPair, youngs_modulus: float, poisson_ratio: 
         stiffness_ripple=float(np.ptp(k) / np.mean(k)), share_left=float(np.mean(result.force_left) / F),
         share_right=float(np.mean(result.force_right) / F),
         balance_error=float(np.max(np.abs(result.force_left + result.force_right - F)) / F),
-        pressure=peak, worst_phase=worst,
+        pressure=peak, worst_phase=worst, interior_force=interior_force(result),
         harmonics_refined=None if refined is None else refined.harmonics(n_harmonics),
         peak_to_peak_refined=None if refined is None else refined.lte_peak_to_peak())
 
@@ -234,16 +251,22 @@ def modified_keys(modifications) -> list[str]:
     return keys
 
 
-def check_contact(analysis: TEAnalysis, modifications, tolerance: float = 1e-9) -> None:
-    """:class:`SceneError` naming the modification keys if a helix carries no load at some phase at this load
-    (the flanks of that helix lost contact: the modification opens them by more than the elastic approach)."""
-    for name, F in (("left", analysis.force_left), ("right", analysis.force_right)):
-        lost = np.nonzero(F <= tolerance * analysis.force)[0]
+def check_contact(analysis: TEAnalysis, modifications, tolerance: float = 1e-6) -> None:
+    """:class:`SceneError` naming the modification keys if, at some phase of this load, a helix carries no load away
+    from the flank edges (less than ``tolerance`` of the force): its flanks lost contact everywhere but, at most,
+    on the end points of the contact lines (a misalignment leaving only the apex ends, a relief or crowning that
+    opens the flanks more than they deflect)."""
+    inner = analysis.interior_force
+    if inner is None:
+        inner = np.array([analysis.force_left, analysis.force_right])
+    for h, name in enumerate(("left", "right")):
+        lost = np.nonzero(inner[h] <= tolerance * analysis.force)[0]
         if lost.size:
             keys = modified_keys(modifications) or ["modifications"]
-            raise SceneError(", ".join(keys), f"the {name} helix loses contact at {lost.size} of {F.size} phases "
-                             f"(first at phase {analysis.phase[lost[0]]:.3f}) at the design load "
-                             f"{analysis.torque:g} N m: the modification opens its flanks more than they deflect")
+            raise SceneError(", ".join(keys), f"the {name} helix loses contact at {lost.size} of {inner[h].size} "
+                             f"phases (first at phase {analysis.phase[lost[0]]:.3f}; load only at the flank edges, if "
+                             f"any) at the design load {analysis.torque:g} N m: the modification opens its flanks "
+                             "more than they deflect")
 
 
 @dataclass(frozen=True)
@@ -281,5 +304,5 @@ def one_phase(result, i: int):
 
 
 __all__ = ["HarrisMap", "PressurePeak", "TEAnalysis", "analyse_cycle", "check_contact", "check_torques",
-           "harris_map", "helix_alone_te", "modified_keys", "nominal_contact_stress", "one_phase",
+           "harris_map", "helix_alone_te", "interior_force", "line_ends", "modified_keys", "nominal_contact_stress", "one_phase",
            "point_pressures", "pressure_peak"]

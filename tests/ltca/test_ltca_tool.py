@@ -68,6 +68,7 @@ def test_unmodified_flanks_zero_unloaded_te_and_loads_balance(plain, coarse_mode
     assert a.peak_to_peak == pytest.approx(r.lte_peak_to_peak(), rel=1e-12) and a.peak_to_peak > 0
     np.testing.assert_allclose(a.force_left + a.force_right, baseline_force, rtol=1e-9)
     assert a.balance_error < 1e-9
+    assert np.all(a.interior_force > 0) and np.all(a.interior_force <= np.array([a.force_left, a.force_right]))
     assert a.share_left == pytest.approx(0.5, abs=1e-9) and a.share_right == pytest.approx(0.5, abs=1e-9)
     assert a.stiffness_mean == pytest.approx(np.mean(r.k_secant), rel=1e-12)
     assert a.stiffness_ripple == pytest.approx(np.ptp(r.k_secant) / np.mean(r.k_secant), rel=1e-12)
