@@ -13,20 +13,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.cli import main
+from tests.cli.test_bad_input import cli
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = str(ROOT / "studies" / "paper_baseline.toml")
 RELIEF = ["--set", "modifications.tip_relief=10e-6", "--set", "modifications.tip_relief_length=2.5e-3"]
-
-
-def cli(argv: list[str], capsys) -> tuple[int, str, str]:
-    try:
-        rc = main(argv)
-    except SystemExit as exc:
-        rc = exc.code
-    out, err = capsys.readouterr()
-    return rc, out, err
 
 
 @pytest.mark.parametrize("args, key", [
