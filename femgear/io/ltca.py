@@ -141,5 +141,28 @@ def write_maps_vtu(path: str | Path, maps: LoadMaps) -> Path:
     return write_vtu(path, maps_mesh(maps))
 
 
+def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, poisson_ratio: float) -> Path:
+    """Write the pressure map on the 3-D pinion flanks of both helices, in the pinion's body frame, as VTK
+    unstructured quads (``.vtu``; :func:`femgear.ltca.vtk.flank_pressure_map`).
+
+    The body's groove width and stagger come from ``result.info`` (:func:`femgear.ltca.analysis.mesh_cycle`).
+    Point data: ``p_max`` [Pa], ``w_mean`` [N/m], ``rho``, ``zeta`` [m], ``helix`` (0 left, 1 right),
+    ``edge`` (1 on the flank's edges, where ``p_max`` is an edge contact and not a Hertz pressure).
+    Both members in mesh: :func:`write_maps`, :func:`write_maps_vtu`.
+    """
+    import meshio
+
+    from femgear.ltca.vtk import flank_pressure_map, helix_flank_quads
+
+    fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
+    pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.info.get("groove", 0.0),
+                                   result.info.get("stagger", 0.0))
+    R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
+    data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), 2),
+            "zeta": np.tile(Z.ravel(), 2), "helix": np.repeat([0, 1], R.size).astype(np.int32),
+            "edge": np.tile(fmap.edge.ravel(), 2).astype(np.int32)}
+    return write_vtu(path, meshio.Mesh(pts, [("quad", quads)], point_data=data))
+
+
 __all__ = ["UNITS", "harris_payload", "ltca_summary", "maps_mesh", "member_mesh", "te_curves", "te_summary",
-           "torque_tag", "write_ltca_results", "write_maps", "write_maps_vtu"]
+           "torque_tag", "write_flank_pressure", "write_ltca_results", "write_maps", "write_maps_vtu"]
