@@ -44,10 +44,11 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     t0 = time.perf_counter()
     stiffness = mesh_stiffness_from_scene(case.scene)
     contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness)
+    te = transmission_error(case, stiffness)
     if case.levels.dynamics == "none":
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
         return RunResult(case, contact, stiffness, replace(tribology, film=level_film(case, tribology.load_per_length)),
-                         seconds=time.perf_counter() - t0)
+                         seconds=time.perf_counter() - t0, transmission_error=te)
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
     st = coupled.state
@@ -62,7 +63,19 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if levels.wear != "none" else None, st.thermal_face),
         film=level_film(case, st.load_per_length))
-    return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0)
+    return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
+                     transmission_error=te)
+
+
+def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
+    """The :class:`femgear.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
+    ltca = stiffness.info.get("ltca") if stiffness.level == "ltca" else None
+    if ltca is None or not ltca.line_load:
+        return None
+    from femgear.ltca.te import analyse_cycle
+
+    m, op = case.material, case.scene.operating
+    return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, op.torque, n_harmonics)
 
 
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,

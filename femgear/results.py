@@ -16,6 +16,7 @@ from femgear.case import Case
 from femgear.contact.path import ContactPath
 from femgear.coupling.loop import CoupledResult
 from femgear.lubrication.films import LevelFilm
+from femgear.ltca.te import TEAnalysis
 from femgear.stiffness.tvms import MeshStiffness
 
 
@@ -49,3 +50,6 @@ class RunResult:
     tribology: Tribology
     coupled: CoupledResult | None = None        #: with a dynamics level
     seconds: float = 0.0
+    #: ``stiffness = "ltca"``: loaded TE, its harmonics, stiffness, load share and peak pressure of the LTCA
+    #: cycle of the stiffness level (new flanks with the scene's modifications, operating torque)
+    transmission_error: TEAnalysis | None = None

@@ -39,6 +39,16 @@ def key_figures(summary: dict[str, Any], seconds: float | None = None) -> list[t
     rows.append(("mesh stiffness, mean (ripple)",
                  f"{_fmt(_get(summary, 'stiffness', 'mean_total'), 1e-9)} "
                  f"({_fmt(_get(summary, 'stiffness', 'ripple_total'), 100, '.2f')} %)", "kN/µm"))
+    te = summary.get("transmission_error")
+    if te:
+        harm = " ".join(_fmt(h, 1e6, ".3f") for h in list(te.get("lte_harmonics", []))[:3])
+        rows.append(("loaded TE p-p (LTCA, normal); harmonics 1-3",
+                     f"{_fmt(te.get('lte_peak_to_peak'), 1e6, '.4f')}; {harm}", "µm"))
+        if te.get("lte_peak_to_peak_deviated") is not None:
+            rows.append(("loaded TE p-p, worn/expanded flanks (last pass)",
+                         _fmt(te.get("lte_peak_to_peak_deviated"), 1e6, ".4f"), "µm"))
+        rows.append(("max LTCA contact pressure", f"{_fmt(te.get('max_pressure'), 1e-9, '.3f')} at "
+                     f"{te.get('max_pressure_where')}" + (" (edge contact)" if te.get("edge_contact") else ""), "GPa"))
     rows.append(("Hertz pressure at the pitch point", _fmt(_get(summary, "contact", "pitch", "hertz_pressure"), 1e-9),
                  "GPa"))
     film = summary.get("film")
