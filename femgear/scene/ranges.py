@@ -29,7 +29,7 @@ oil.pressure_viscosity          5e-9–6e-8 1/Pa                         1e-9–
 oil.temperature_viscosity       ≤ 0.1 1/K                              ≤ 0.5 1/K
 oil.density                     —                                      500–2500 kg/m³
 temperatures (ambient, oil)     250–423 K (in plausibility)            200–600 K
-thermal.*_temperature_rise      ≤ 150 K                                ≤ 400 K
+thermal.*_temperature_rise      ≤ 150 K                                ≤ 250 K (steel tempers above)
 operating.speed_rpm             pitch-line speed ≥ 0.1 m/s             ≥ 1 mm/s (tip burst: plausibility)
 operating.torque                (Hertz pressure: plausibility)         nominal σ_H0 ≤ 8 GPa
 pinion/gear.eccentricity        ≤ backlash and ≤ ISO 1328 class-11     < m_n
@@ -171,7 +171,7 @@ def _oil_ranges(scene) -> list[Range]:
         out.append(Range(key, t, (200.0, 600.0), (200.0, 600.0), "K", "an absolute oil temperature", celsius))
     for key in ("flank_temperature_rise", "shaft_temperature_rise"):
         rise = getattr(scene.thermal, key)
-        out.append(Range(f"thermal.{key}", rise, (0.0, 400.0), (0.0, 150.0), "K",
+        out.append(Range(f"thermal.{key}", rise, (0.0, 250.0), (0.0, 150.0), "K",
                          "a temperature rise over the ambient (not an absolute temperature)"))
     return out
 
