@@ -273,3 +273,11 @@ def test_unusual_but_possible_inputs_warn_in_one_line_and_run(scene, override, k
     rc, out, err = cli(["info", scene, "--set", override], capsys)
     assert rc == 0 and "eps_alpha" in out
     assert key in assert_one_line(err, "warning")
+
+
+@pytest.mark.parametrize("sweep", ["1e-6:500:3", "100:1e6:3"])
+def test_a_dynamics_sweep_outside_the_speed_range_names_sweep(sweep, capsys):
+    t0 = time.perf_counter()
+    rc, out, err = cli(["dynamics", BASE, "--sweep", sweep], capsys)
+    assert rc == 2 and "rpm" in assert_one_line(err, "--sweep")
+    assert time.perf_counter() - t0 < 2.0
