@@ -3,9 +3,10 @@
 This file imports nothing from femgear: it reads the scene TOML itself and writes out the
 formulas of the standards and the classic papers, so that ``tests/zoo/test_hand_figures.py``
 checks femgear's ``info`` against an independent calculation.  Printed as the comment block
-each zoo scene carries::
+each zoo scene carries (``--write`` replaces the block in the file)::
 
     python tests/zoo/hand_figures.py studies/zoo/marine.toml
+    python tests/zoo/hand_figures.py --write studies/zoo/*.toml
 
 Conditions of the figures: ISO's uniform load along the contact lines (femgear's
 ``physics.stiffness = "iso6336"`` level) and a constant friction coefficient
@@ -246,6 +247,15 @@ def block(path: str | Path) -> str:
     return "\n".join(lines)
 
 
+def write_block(path: str | Path) -> None:
+    """Replace (or append) the scene's hand-figure block in place."""
+    path = Path(path)
+    text = path.read_text()
+    head = text.split("\n# --- hand-checked figures", 1)[0].rstrip("\n")
+    path.write_text(f"{head}\n\n{block(path)}\n")
+
+
 if __name__ == "__main__":
-    for arg in sys.argv[1:]:
-        print(block(arg))
+    write = "--write" in sys.argv
+    for arg in (a for a in sys.argv[1:] if a != "--write"):
+        write_block(arg) if write else print(block(arg))
