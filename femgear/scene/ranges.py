@@ -19,15 +19,16 @@ key                             plausible                              possible 
 pair.normal_module              0.3–50 mm                              0.05–100 mm
 pair/pinion/gear.face_width     2–80 m_n, ≤ 2.5 d_1                    0.2–500 m_n
 pair.groove_width               ≤ 3 b                                  ≤ 20 b
-pinion/gear.tip_diameter        —                                      0.5–2 × m_n (z/cos β + 2)
-pair.centre_distance            —                                      0.5–2 × (z1 + z2) m_n / (2 cos β)
+pinion/gear.tip_diameter        0.8–1.25 × m_n (z/cos β + 2)           0.5–2 × m_n (z/cos β + 2)
+pair.centre_distance            0.8–1.25 × reference a                 0.5–2 × (z1 + z2) m_n / (2 cos β)
 pinion/gear.bore_radius         —                                      < reference radius
 pinion/gear.shaft_diameter      ≤ d_a                                  ≤ 10 d_a
 pinion/gear.bearing_span        ≥ the member's total face width        ≤ 200 d_a
 oil.viscosity                   1e-3–1 Pa s                            1e-4–5 Pa s
 oil.pressure_viscosity          5e-9–6e-8 1/Pa                         1e-9–1e-7 1/Pa
 oil.temperature_viscosity       ≤ 0.1 1/K                              ≤ 0.5 1/K
-oil.density                     —                                      500–2500 kg/m³
+oil.density                     700–2000 kg/m³                         500–2500 kg/m³
+oil.specific_heat, conductivity 1500–3000 J/(kg K), 0.08–0.7 W/(m K)   500–10000, 0.02–2
 temperatures (ambient, oil)     250–423 K (in plausibility)            200–600 K
 thermal.*_temperature_rise      ≤ 150 K                                ≤ 250 K (steel tempers above)
 operating.speed_rpm             pitch-line speed ≥ 0.1 m/s             ≥ 1 mm/s (tip burst: plausibility)
@@ -40,6 +41,9 @@ pinion/gear.unbalance           —                                      unbalan
 material.youngs_modulus         —                                      1–1000 GPa
 material.density                —                                      500–25000 kg/m³
 material.hardness               —                                      0.1–20 GPa
+material.thermal_expansion      —                                      1e-7–1e-4 1/K
+material.conductivity, .spec.h. —                                      1–500 W/(m K), 100–5000 J/(kg K)
+roughness.rq                    ≤ 10 µm                                ≤ min(100 µm, 0.1 m_n)
 ==============================  =====================================  ===================================
 
 Sources of the bounds: ISO 54 / DIN 780 module series (0.05–100 mm), ISO 6336-1 (b/d1 of
@@ -162,6 +166,9 @@ def _oil_ranges(scene) -> list[Range]:
               "a temperature-viscosity coefficient"),
         Range("oil.density", o.density, (500.0, 2500.0), (700.0, 2000.0), "kg/m³", "a lubricant's density",
               ((1e3, 0.0, "g/cm³"),)),
+        Range("oil.specific_heat", o.specific_heat, (500.0, 10000.0), (1500.0, 3000.0), "J/(kg K)",
+              "a lubricant's specific heat", ((1e3, 0.0, "kJ/(kg K)"),)),
+        Range("oil.conductivity", o.conductivity, (0.02, 2.0), (0.08, 0.7), "W/(m K)", "a lubricant's conductivity"),
     ]
     celsius = ((1.0, 273.15, "°C"),)
     temperatures = [("operating.ambient_temperature", scene.operating.ambient_temperature)]
@@ -214,7 +221,16 @@ def _error_ranges(scene) -> list[Range]:
             Range("material.density", mat.density, (500.0, 25000.0), (500.0, 25000.0), "kg/m³", "a gear material",
                   ((1e3, 0.0, "g/cm³"),)),
             Range("material.hardness", mat.hardness, (1e8, 2e10), (1e8, 2e10), "Pa", "a flank hardness",
-                  ((9.80665e6, 0.0, "HV"), (1e6, 0.0, "MPa")))]
+                  ((9.80665e6, 0.0, "HV"), (1e6, 0.0, "MPa"))),
+            Range("material.thermal_expansion", mat.thermal_expansion, (1e-7, 1e-4), (1e-7, 1e-4), "1/K",
+                  "a linear expansion coefficient", ((1e-6, 0.0, "µm/(m K)"),)),
+            Range("material.conductivity", mat.conductivity, (1.0, 500.0), (1.0, 500.0), "W/(m K)",
+                  "a gear material's conductivity"),
+            Range("material.specific_heat", mat.specific_heat, (100.0, 5000.0), (100.0, 5000.0), "J/(kg K)",
+                  "a gear material's specific heat", ((1e3, 0.0, "kJ/(kg K)"),))]
+    rq = scene.roughness.rq
+    out.append(Range("roughness.rq", rq, (0.0, min(1e-4, 0.1 * m)), (0.0, 1e-5), "m",
+                     "a composite RMS flank roughness (ground 0.1–0.5 µm, hobbed 1–3 µm)", UM_MM))
     return out
 
 

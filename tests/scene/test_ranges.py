@@ -39,6 +39,9 @@ SLIPS = [
     ("oil.density=0.87", "oil.density", ["g/cm³"]),
     ("gear.bearing_span=500.0", "gear.bearing_span", ["500 mm"]),
     ("thermal.flank_temperature_rise=313.0", "thermal.flank_temperature_rise", ["not an absolute"]),
+    ("material.thermal_expansion=11.6", "material.thermal_expansion", ["µm/(m K)", "1.16e-05"]),
+    ("roughness.rq=0.4", "roughness.rq", ["0.4 µm"]),
+    ("oil.specific_heat=2.0", "oil.specific_heat", ["kJ/(kg K)"]),
 ]
 
 
