@@ -206,11 +206,12 @@ def figures(path: str | Path) -> list[tuple[str, float, float, str]]:
     c_th, cp, cga, cgb = c_prime(P, s, line_load)
     out += [("stiffness_iso6336.c_prime_th", c_th * 1e9, G["iso"], "ISO 6336-1:2019 method B q', c'_th = 1/q'"),
             ("stiffness_iso6336.c_prime", cp * 1e9, G["iso"], "ISO 6336-1:2019 method B c'"),
-            ("stiffness_iso6336.c_gamma_alpha", cga * 1e9, G["iso"], "ISO 6336-1:2019 c_γα = c'(0.75 ε_α + 0.25)")]
+            ("stiffness_iso6336.c_gamma_alpha", cga * 1e9, G["iso"], "ISO 6336-1:2019 c_γα = c'(0.75 ε_α + 0.25)"),
+            ("stiffness_iso6336.c_gamma_beta", cgb * 1e9, G["iso"], "ISO 6336-1:2019 c_γβ = 0.85 c_γα")]
     s0, s1, s2 = sigma_h(P, s, T1)
     out += [("rating.sigma_H0", s0, G["iso"], "ISO 6336-2:2019 method B σ_H0"),
             ("rating.sigma_H.0", s1, G["iso"], "ISO 6336-2:2019 σ_H1 = Z_B σ_H0 √(K_A K_v K_Hβ K_Hα)"),
-            ("rating.sigma_H.1", s2, G["iso"], "ISO 6336-2:2019 σ_H2 = Z_D σ_H0 √(K ...)")]
+            ("rating.sigma_H.1", s2, G["iso"], "ISO 6336-2:2019 σ_H2 = Z_D σ_H0 √(K_A K_v K_Hβ K_Hα)")]
     # the pitch point C: Hertz and films
     wC = P.line_load(P.uC, F_helix)
     rho1, rho2 = P.uC, T - P.uC
