@@ -281,3 +281,10 @@ def test_a_dynamics_sweep_outside_the_speed_range_names_sweep(sweep, capsys):
     rc, out, err = cli(["dynamics", BASE, "--sweep", sweep], capsys)
     assert rc == 2 and "rpm" in assert_one_line(err, "--sweep")
     assert time.perf_counter() - t0 < 2.0
+
+
+def test_an_unusual_input_warns_once_in_a_run_too(tmp_path, capsys):
+    rc, _, err = cli(["run", BASE, *CHEAP, "--set", "oil.pressure_viscosity=3e-9", "--out", str(tmp_path / "r"),
+                      "--no-plots", "--no-vtk"], capsys)
+    assert rc == 0
+    assert "oil.pressure_viscosity" in assert_one_line(err, "warning")
