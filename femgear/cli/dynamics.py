@@ -48,7 +48,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.transient >= args.cycles:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
     if args.sweep:
-        sweep_speeds(args.sweep)
+        _check_sweep_speeds(args.scene, args.overrides, sweep_speeds(args.sweep))
     case = build_case(load_scene(args.scene, args.overrides))
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
@@ -103,6 +103,22 @@ def sweep_speeds(text: str):
     if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= hi and count >= 1):
         raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {text!r}")
     return np.linspace(lo, hi, count)
+
+
+def _check_sweep_speeds(scene_path, overrides, speeds) -> None:
+    """The sweep's end speeds pass the scene's speed checks (:mod:`femgear.scene.ranges`, the burst
+    speed), before any computing; a refusal names ``--sweep``."""
+    from femgear.errors import ArgumentError, SceneError
+    from femgear.scene.load import read_toml, scene_from_dict
+
+    data = read_toml(scene_path)
+    for rpm in (float(speeds[0]), float(speeds[-1])):
+        try:
+            scene_from_dict(data, [*overrides, f"operating.speed_rpm={rpm!r}"], warn=False)
+        except SceneError as exc:
+            if exc.key != "operating.speed_rpm":
+                raise
+            raise ArgumentError("--sweep", exc.message) from None
 
 
 def _sweep(case, args, out: Path) -> int:

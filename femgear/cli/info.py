@@ -42,7 +42,9 @@ UNITS = {
     "load_per_length": "N/m", "line_load": "N/m", "max_line_load": "N/m",
     "hertz_pressure": "Pa", "max_hertz_pressure": "Pa", "sigma_H": "Pa", "sigma_H0": "Pa", "sigma_HP": "Pa",
     "sigma_Hlim": "Pa", "entrainment_speed": "m/s", "max_sliding_speed": "m/s", "pitch_line_velocity": "m/s",
-    "input_power": "W", "mean_loss": "W", "energy_per_mesh_cycle": "J", "max_loss_density": "W/m",
+    "input_power": "W", "c_prime_th": "N/m/m", "c_prime": "N/m/m", "c_gamma_alpha": "N/m/m",
+    "c_gamma_beta": "N/m/m", "theta_fl_A": "K", "theta_fl_E": "K", "theta_fl_max": "K",
+    "theta_fl_max_position": "m", "mean_loss": "W", "energy_per_mesh_cycle": "J", "max_loss_density": "W/m",
 }
 
 
