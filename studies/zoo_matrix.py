@@ -185,6 +185,7 @@ def main(argv=None) -> int:
     ap.add_argument("--coarse", action="store_true", help="coarse numerics (fewer mesh periods and path points)")
     ap.add_argument("--timeout", type=float, default=900.0, help="seconds per cell")
     ap.add_argument("--dry-run", action="store_true", help="validate every cell's scene, run nothing")
+    ap.add_argument("--markdown", type=Path, help="also write the matrix as a Markdown table to this file")
     ap.add_argument("--json", action="store_true", help="print one JSON object as the last line")
     args = ap.parse_args(argv)
     chosen = scenes()
@@ -200,15 +201,53 @@ def main(argv=None) -> int:
     else:
         with ThreadPoolExecutor(args.jobs) as pool:
             rows = list(pool.map(lambda t: run_cell(*t, args.coarse, args.timeout), todo))
+    if not args.dry_run:
+        rows = record(rows)
     width = max(len(r["cell"]) for r in rows)
     for r in rows:
         print(f"{r['scene']:16s} {r['cell']:{width}s} {r['seconds']:7.1f} s  {r['verdict']}")
     failed = [r for r in rows if r["verdict"].startswith("FAIL")]
     print(f"{len(rows)} cells: {sum(r['verdict'] in ('ok', 'valid') for r in rows)} ok, "
           f"{sum(r['verdict'].startswith('refused') for r in rows)} refused, {len(failed)} failed")
+    if args.markdown:
+        args.markdown.write_text(markdown(rows))
     if args.json:
         print(json.dumps({"cells": rows}))
     return 1 if failed else 0
+
+
+def record(rows: list[dict]) -> list[dict]:
+    """Merge ``rows`` into ``out/zoo_matrix/cells.json`` (later runs of a cell replace earlier ones), so a
+    matrix run in parts adds up; returns every recorded row."""
+    store = OUT / "cells.json"
+    old = json.loads(store.read_text())["cells"] if store.exists() else []
+    merged = {(r["scene"], r["cell"]): r for r in old + rows}
+    OUT.mkdir(parents=True, exist_ok=True)
+    store.write_text(json.dumps({"cells": list(merged.values())}, indent=1))
+    return list(merged.values())
+
+
+def markdown(rows: list[dict]) -> str:
+    """The matrix as a Markdown table: one row per cell, one column per scene; refusals as numbered notes."""
+    names = sorted({r["scene"] for r in rows})
+    columns = list(dict.fromkeys(r["cell"] for r in rows))
+    at = {(r["scene"], r["cell"]): r for r in rows}
+    notes: list[str] = []
+    lines = ["| cell | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
+    for c in columns:
+        entries = []
+        for n in names:
+            r = at.get((n, c))
+            if r is None:
+                entries.append("")
+            elif r["verdict"] in ("ok", "valid"):
+                entries.append(f"{r['verdict']} {r['seconds']:.0f} s")
+            else:
+                if r["verdict"] not in notes:
+                    notes.append(r["verdict"])
+                entries.append(f"{r['verdict'].split(':')[0]} [{notes.index(r['verdict']) + 1}]")
+        lines.append(f"| `{c}` | " + " | ".join(entries) + " |")
+    return "\n".join(lines + [""] + [f"{i}. {v}" for i, v in enumerate(notes, 1)]) + "\n"
 
 
 if __name__ == "__main__":
