@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from femgear.cli.common import add_scene_arguments, emit_json
+from femgear.cli.common import add_scene_arguments, emit_json, load_scene_arg
 
 
 def register(sub) -> None:
@@ -35,7 +35,6 @@ def register(sub) -> None:
 
 def _run(args: argparse.Namespace) -> int:
     from femgear.case import build_case
-    from femgear.scene import load_scene
 
     from femgear.cli.limits import finite
     from femgear.errors import ArgumentError
@@ -49,7 +48,7 @@ def _run(args: argparse.Namespace) -> int:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
     if args.sweep:
         sweep_speeds(args.sweep)
-    case = build_case(load_scene(args.scene, args.overrides))
+    case = build_case(load_scene_arg(args))
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
     else:
