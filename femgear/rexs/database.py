@@ -144,3 +144,49 @@ def spec(component: str, attribute: str) -> tuple[str, str]:
     if (component, attribute) in ATTRIBUTES:
         return ATTRIBUTES[component, attribute][:2]
     return CUSTOM[component, attribute]
+
+
+#: REXS 1.4 component types femgear reads or writes
+COMPONENT_TYPES = frozenset({
+    "gear_unit", "gear_casing", "shaft", "concept_bearing", "cylindrical_stage", "cylindrical_gear",
+    "cylindrical_gear_flank", "cylindrical_stage_gear_data", "cylindrical_gear_manufacturing_settings",
+    "rack_shaped_tool", "material", "lubricant", "tip_relief", "root_relief", "helix_crowning", "helix_slope",
+    "end_relief_datum_face", "end_relief_non_datum_face", "planetary_stage", "bevel_stage", "worm_stage"})
+#: REXS 1.4 relation types femgear writes, with the roles each takes
+RELATIONS = {"assembly": {"assembly", "part"}, "ordered_assembly": {"assembly", "part"},
+             "reference": {"origin", "referenced"}, "stage": {"stage", "gear_1", "gear_2"},
+             "stage_gear_data": {"stage", "gear", "stage_gear_data"}, "flank": {"gear", "left", "right"},
+             "manufacturing_step": {"workpiece", "tool", "manufacturing_settings"}}
+
+
+def id_problems(model) -> list[str]:
+    """Where a model departs from the REXS 1.4 ids and units of this table (empty: none).
+
+    Checks every component type, every attribute id and its declared unit (REXS attributes against
+    :data:`ATTRIBUTES`, ``custom_`` ones against :data:`CUSTOM`), the value types of numbers and
+    booleans, and every relation type and role against :data:`RELATIONS`.
+    """
+    out = []
+    for comp in model.components.values():
+        if comp.type not in COMPONENT_TYPES:
+            out.append(f"component {comp.id}: type {comp.type!r} is not a REXS 1.4 type femgear knows")
+        for attr in comp.attributes.values():
+            key = (comp.type, attr.id)
+            known = ATTRIBUTES.get(key, (None, None, None))[:2] if not attr.id.startswith("custom_") else \
+                CUSTOM.get(key, (None, None))
+            if known[0] is None:
+                out.append(f"component {comp.id} ({comp.type}): attribute {attr.id!r} is not in the 1.4 table")
+                continue
+            unit, kind = known
+            if (attr.unit or "none") != unit:
+                out.append(f"component {comp.id} ({comp.type}) attribute {attr.id}: unit {attr.unit!r}, 1.4 has {unit!r}")
+            expected = {"floating_point": float, "integer": int, "boolean": bool, "enum": str, "string": str}[kind]
+            if type(attr.value) is not expected:
+                out.append(f"component {comp.id} ({comp.type}) attribute {attr.id}: {attr.value!r} is not {kind}")
+    for rel in model.relations:
+        roles = RELATIONS.get(rel.type)
+        if roles is None:
+            out.append(f"relation {rel.id}: type {rel.type!r} is not one femgear writes")
+        elif any(r.role not in roles for r in rel.refs):
+            out.append(f"relation {rel.id} ({rel.type}): roles {[r.role for r in rel.refs]} not in {sorted(roles)}")
+    return out

@@ -59,6 +59,8 @@ def export_scene(scene, source: str = "femgear") -> tuple[Model, list[str]]:
     skipped: list[str] = []
     unit = b.add("gear_unit", scene.meta.name, {})
     halves = 2 if pair.kind == "double-helical" else 1
+    stages = [b.add("cylindrical_stage", scene.meta.name if halves == 1 else f"{scene.meta.name} {('left', 'right')[h]}",
+                    _stage(scene, pair, law)) for h in range(halves)]
     mat = b.add("material", f"{scene.meta.name} steel", _material(scene))
     lub = b.add("lubricant", f"{scene.meta.name} oil", _lubricant(scene, law))
     b.relate("reference", (unit, "origin"), (lub, "referenced"))
@@ -67,8 +69,7 @@ def export_scene(scene, source: str = "femgear") -> tuple[Model, list[str]]:
         b.relate("assembly", (unit, "assembly"), (shaft, "part"))
     gears = [[_gear(b, scene, pair, i, h, halves, mat, shafts[i]) for h in range(halves)] for i in range(2)]
     for h in range(halves):
-        stage = b.add("cylindrical_stage", scene.meta.name if halves == 1 else f"{scene.meta.name} {('left', 'right')[h]}",
-                      _stage(scene, pair, law))
+        stage = stages[h]
         b.relate("assembly", (unit, "assembly"), (stage, "part"))
         b.relate("stage", (stage, "stage"), (gears[0][h], "gear_1"), (gears[1][h], "gear_2"))
         for i in range(2):
