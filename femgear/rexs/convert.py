@@ -15,6 +15,8 @@ Readings (ISO 21771 terms):
   is kept where it differs;
 - double-helical: the groove is |u_A − u_B| − b between the halves' ``u_coordinate_on_shaft``
   (taken as the middle of each half's face);
+- a backlash not in the model is the recommended minimum of ISO/TR 10064-2,
+  j_bn,min = 2/3 (0.06 mm + 0.0005 a + 0.03 m_n);
 - the dedendum h_fP/m_n comes from the rack-shaped tool (its addendum h_aP0*), else from the root
   diameter, d_f = d − 2 m_n (h_fP − x); the root radius ρ_fP/m_n is the tool's tip radius factor.
 """
@@ -240,7 +242,12 @@ def _stage_values(conv: Conversion, parts: PairParts) -> None:
     if given:
         conv.put("pair.backlash", sum(given) / len(given), s1 + s2)
     else:
-        conv.default("pair.backlash", 0.0, "no minimum/maximum_normal_backlash on the stage")
+        m_n = conv.get("pair.normal_module")
+        a_w = a if a is not None else (conv.get("pinion.teeth") + conv.get("gear.teeth")) * m_n / 2 / math.cos(
+            math.radians(conv.get("pair.helix_angle_deg")))
+        j_min = 2 / 3 * (0.06e-3 + 0.0005 * a_w + 0.03 * m_n)
+        conv.default("pair.backlash", j_min, "no minimum/maximum_normal_backlash on the stage: the recommended "
+                                             "minimum of ISO/TR 10064-2, 2/3 (0.06 mm + 0.0005 a + 0.03 m_n)")
     stagger, src = conv.agree(parts.stages, "custom_femgear_stagger", "the stagger of the helices")
     if stagger is not None:
         conv.put("pair.stagger", stagger, src)
