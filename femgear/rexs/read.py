@@ -58,7 +58,9 @@ def read_model(path: str | Path, load_case: int | None = None) -> Model:
     if data[:4] == b"PK\x03\x04" or path.suffix.lower() == ".rexsz":
         data, member = _zip_member(data, source)
         source = f"{source}:{member}"
-    raw = _parse_json(data, source) if data.lstrip()[:1] == b"{" else _parse_xml(data, source)
+    head = data.lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
+    is_json = head in (b"{", b"[") or (head != b"<" and source.lower().endswith(".rexsj"))
+    raw = _parse_json(data, source) if is_json else _parse_xml(data, source)
     return _select_load_case(raw, source, load_case)
 
 
@@ -178,6 +180,8 @@ def _parse_json(data: bytes, source: str) -> dict:
         doc = json.loads(data.decode("utf-8"), parse_constant=_no_constant)
     except UnicodeDecodeError as exc:
         raise RexsError(source, f"not UTF-8 text (invalid byte at {exc.start})") from None
+    except RecursionError:
+        raise RexsError(source, "JSON nested too deeply to be a REXS model") from None
     except json.JSONDecodeError as exc:
         raise RexsError(source, f"not valid JSON (line {exc.lineno}, column {exc.colno}): truncated or damaged "
                                 "file") from None

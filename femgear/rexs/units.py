@@ -13,7 +13,8 @@ import math
 
 #: unit -> (quantity, factor, offset): value_in_scene_unit = factor * value + offset
 UNITS: dict[str, tuple[str, float, float]] = {
-    "none": ("1", 1.0, 0.0), "": ("1", 1.0, 0.0), "-": ("1", 1.0, 0.0), "%": ("1", 0.01, 0.0),
+    "none": ("dimensionless", 1.0, 0.0), "": ("dimensionless", 1.0, 0.0), "-": ("dimensionless", 1.0, 0.0),
+    "%": ("dimensionless", 0.01, 0.0),
     "mm": ("length", 1e-3, 0.0), "m": ("length", 1.0, 0.0), "mum": ("length", 1e-6, 0.0),
     "µm": ("length", 1e-6, 0.0), "um": ("length", 1e-6, 0.0), "cm": ("length", 1e-2, 0.0),
     "deg": ("angle", 1.0, 0.0), "°": ("angle", 1.0, 0.0), "rad": ("angle", 180.0 / math.pi, 0.0),
@@ -59,7 +60,7 @@ def to_scene_unit(value: float, declared: str | None, expected: str) -> float:
     quantity = UNITS[expected][0]
     unit = normalise(declared)
     if unit is None:
-        if quantity == "1":
+        if quantity == "dimensionless":
             return value
         raise UnitMismatch(f"no unit declared (expected {expected!r} or another {quantity} unit)")
     if unit not in UNITS:

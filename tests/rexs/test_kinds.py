@@ -93,3 +93,32 @@ def test_listing_as_json(two_stage, cli):
     data = json.loads(out.strip().splitlines()[-1])
     assert rc == 0 and [s["id"] for s in data["stages"]] == [10, 30]
     assert data["stages"][1]["centre_distance"] == pytest.approx(0.245)
+
+
+def test_missing_backlash_is_the_iso_tr_10064_2_minimum(two_stage):
+    """j_bn,min = 2/3 (0.06 mm + 0.0005 a + 0.03 m_n), ISO/TR 10064-2 (stage 30: a = 245 mm, m_n = 5 mm)."""
+    conv = read_stage(two_stage(), 30)
+    assert conv.data["pair"]["backlash"] == pytest.approx(2 / 3 * (0.06 + 0.0005 * 245 + 0.03 * 5) * 1e-3, rel=1e-12)
+    assert "pair.backlash" in conv.defaults
+
+
+def test_load_case_picks_the_operating_point(two_stage, two_stage_text, cli):
+    """The load spectrum's case overrides the component's value; --load-case chooses the case."""
+    spectrum = ('</components>\n  <load_spectrum id="1">'
+                '<load_case id="1"><component id="41" name="Input shaft" type="shaft">'
+                '<attribute id="rotational_speed" unit="1 / min">1000</attribute></component></load_case>'
+                '<load_case id="2"><component id="41" name="Input shaft" type="shaft">'
+                '<attribute id="rotational_speed" unit="rad / s">100</attribute></component>'
+                '<component id="81" name="x" type="cylindrical_stage_gear_data">'
+                '<attribute id="torque" unit="N m">-650</attribute></component></load_case></load_spectrum>')
+    path = two_stage(two_stage_text.replace("</components>", spectrum))
+    assert scene_from_rexs(path, 10, warn=False).operating.speed_rpm == 1000
+    second = scene_from_rexs(path, 10, load_case=2, warn=False).operating
+    assert second.speed_rpm == pytest.approx(3000 / 3.141592653589793) and second.torque == 650
+    rc, _, err = cli("rexs", path, "--stage", 10, "--load-case", 3)
+    assert rc == 2 and "--load-case 3" in err and "1, 2" in err
+
+
+def test_deeply_nested_json_is_one_line(two_stage, cli):
+    rc, _, err = cli("rexs", two_stage("[" * 100000 + "]" * 100000, name="deep.rexsj"))
+    assert rc == 2 and len(err.strip().splitlines()) == 1 and "JSON" in err

@@ -31,7 +31,7 @@ def test_writing_inverts_reading(unit):
 
 @pytest.mark.parametrize("unit, expected, words", [
     ("deg", "mm", "not a length unit"), ("furlong", "mm", "unknown unit"), (None, "mm", "no unit declared"),
-    ("mm", "none", "not a 1 unit"),
+    ("mm", "none", "not a dimensionless unit"),
 ])
 def test_a_unit_of_another_quantity_is_refused(unit, expected, words):
     with pytest.raises(UnitMismatch, match=words):
@@ -50,3 +50,14 @@ def test_temperature_coefficient_is_the_log_slope_of_eta():
     numeric = -(math.log(nu[1]) - math.log(nu[0])) / (2 * h)
     assert temperature_coefficient(220e-6, 19e-6, t, eps) == pytest.approx(numeric, rel=1e-6)
     assert 0.02 < numeric < 0.06     # a mineral oil near 60 °C
+
+
+def test_every_unit_of_the_shipped_table_converts():
+    """Each 1.4 unit femgear maps, and each of its custom units, is one the converter knows."""
+    from femgear.rexs.database import ATTRIBUTES, CUSTOM
+    from femgear.rexs.units import UNITS
+
+    units = {u for u, _, _ in ATTRIBUTES.values()} | {u for u, _ in CUSTOM.values()}
+    assert units <= set(UNITS), units - set(UNITS)
+    assert all(attr.startswith("custom_femgear_") for _, attr in CUSTOM)
+    assert not set(ATTRIBUTES) & set(CUSTOM)
