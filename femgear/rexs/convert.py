@@ -131,6 +131,10 @@ def pair_geometry(conv: Conversion) -> None:
             conv.put(f"{name}.face_width", b, src)
     if parts.kind == "double-helical":
         _groove(conv, parts, [b for b, _ in widths])
+    else:
+        groove, src = conv.agree(parts.stages, "custom_femgear_groove_width", "the groove width")
+        if groove is not None:
+            conv.put("pair.groove_width", groove, src)
     _profile(conv, parts, m_n)
     _stage_values(conv, parts)
 

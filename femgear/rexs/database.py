@@ -127,6 +127,7 @@ CUSTOM: dict[tuple[str, str], tuple[str, str]] = {
     ("cylindrical_gear", "custom_femgear_eccentricity_phase"): ("deg", "floating_point"),
     ("cylindrical_gear", "custom_femgear_unbalance"): ("kg m", "floating_point"),
     ("cylindrical_stage", "custom_femgear_stagger"): ("none", "floating_point"),
+    ("cylindrical_stage", "custom_femgear_groove_width"): ("mm", "floating_point"),
     ("cylindrical_stage", "custom_femgear_loop_stiffness"): ("N m / rad", "floating_point"),
     ("lubricant", "custom_femgear_specific_heat"): ("J / (kg K)", "floating_point"),
     ("lubricant", "custom_femgear_thermal_conductivity"): ("W / (m K)", "floating_point"),

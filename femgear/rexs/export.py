@@ -151,6 +151,8 @@ def _stage(scene, pair, law) -> dict:
             "radial_contact_ratio": pair.eps_alpha, "overlap_contact_ratio": pair.eps_beta,
             "total_contact_ratio": pair.eps_gamma,
             "custom_femgear_stagger": scene.pair.stagger or None,
+            "custom_femgear_groove_width": scene.pair.groove_width if pair.n_helices == 1 and scene.pair.groove_width
+            else None,  # one helix: no halves to place, the scene's groove kept as it is
             "custom_femgear_loop_stiffness": scene.operating.loop_stiffness or None}
 
 

@@ -179,9 +179,10 @@ def stage_rows(model: Model) -> list[StageRow]:
         parts = pair_parts(model, stage)
         g1, g2 = parts.members[0][0], parts.members[1][0]
         note = parts.kind
-        if parts.kind == "double-helical":
-            note += " (halves in stages " + ", ".join(str(s.id) for s in parts.stages) + ")" if len(
-                parts.stages) > 1 else " (halves: gears " + ", ".join(str(g.id) for g in parts.members[0] + parts.members[1]) + ")"
+        if parts.kind == "double-helical" and len(parts.stages) > 1:
+            note += f" (halves in stages {', '.join(str(s.id) for s in parts.stages)})"
+        elif parts.kind == "double-helical":
+            note += f" (halves: gears {', '.join(str(g.id) for g in parts.members[0] + parts.members[1])})"
         rows.append(StageRow(stage.id, stage.type, stage.name, note, True,
                              (model.value(g1, "number_of_teeth"), model.value(g2, "number_of_teeth")),
                              model.value(g1, "normal_module"), model.value(g1, "helix_angle_reference_diameter"),

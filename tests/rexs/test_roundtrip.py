@@ -34,8 +34,8 @@ VARIANTS = {
     "per-member": ["modifications.pinion.tip_relief=15e-6", "modifications.pinion.tip_relief_length=2.5e-3",
                    "modifications.gear.crowning=6e-6"],
     "single-helical": ['pair.kind="single-helical"', "pinion.axial_stiffness=1e9", "gear.axial_stiffness=2e9",
-                       "pinion.axial_damping=300.0", "pair.groove_width=0.0"],  # one helix: no groove
-    "spur": ['pair.kind="spur"', "pair.helix_angle_deg=0.0", "pair.groove_width=0.0"],
+                       "pinion.axial_damping=300.0"],
+    "spur": ['pair.kind="spur"', "pair.helix_angle_deg=0.0"],
     "shifted": ['operating.driver="gear"', "oil.reference_temperature=313.0", "pinion.profile_shift=0.3",
                 "gear.profile_shift=-0.1", "pinion.face_width=0.125", "pinion.bore_radius=0.02", "pinion.eccentricity=1e-5",
                 "pinion.eccentricity_phase_deg=30.0", "pinion.unbalance=1e-3", "pair.stagger=0.25",
@@ -154,3 +154,17 @@ def test_exported_figures_are_femgears(cli, tmp_path):
     assert model.value(stage, "radial_contact_ratio") == pytest.approx(pair.eps_alpha, rel=1e-12)
     tips = sorted(model.value(g, "tip_diameter") for g in model.of_type("cylindrical_gear"))
     assert tips[0] == pytest.approx(2 * pair.ra1, rel=1e-12) and tips[-1] == pytest.approx(2 * pair.ra2, rel=1e-12)
+
+
+def test_a_root_diameter_off_the_rack_tool_names_both(cli, tmp_path):
+    """Exported model with one gear's root diameter moved by 0.1 m_n: the dedendum disagrees with the hob."""
+    out = tmp_path / "pair.rexs"
+    _export(cli, MARINE, out)
+    model = read_model(out)
+    gear = model.of_type("cylindrical_gear")[0]
+    d_f = gear.attributes["root_diameter"].value
+    text = out.read_text().replace(f'unit="mm">{d_f!r}<', f'unit="mm">{d_f - 1.2!r}<')  # both halves
+    out.write_text(text)
+    rc, _, err = cli("rexs", out, "--stage", 2)
+    assert rc == 2 and f"component {gear.id}" in err and "attribute root_diameter" in err
+    assert "attribute addendum_coefficient_reference_profile" in err and len(err.strip().splitlines()) == 1
