@@ -122,3 +122,11 @@ def test_load_case_picks_the_operating_point(two_stage, two_stage_text, cli):
 def test_deeply_nested_json_is_one_line(two_stage, cli):
     rc, _, err = cli("rexs", two_stage("[" * 100000 + "]" * 100000, name="deep.rexsj"))
     assert rc == 2 and len(err.strip().splitlines()) == 1 and "JSON" in err
+
+
+def test_stage_is_needed_only_when_the_model_has_several_pairs(two_stage, cli):
+    rc, _, err = cli("info", two_stage(), "-q")
+    assert rc == 2 and "give --stage ID" in err and "10 (cylindrical_stage), 30 (cylindrical_stage)" in err
+    rc, out, err = cli("info", two_stage(herringbone(stages=2)), "--json", "-q")   # two stages, one pair
+    assert rc == 0, err
+    assert json.loads(out.strip().splitlines()[-1])["geometry"]["kind"] == "double-helical"
