@@ -108,7 +108,10 @@ def twin_half(model: Model, gear: Component) -> Component | None:
         other = model.components.get(gid)
         if other is None or other.id == gear.id or other.type not in GEAR_TYPES:
             continue
-        z2, m2, beta2 = _signature(model, other)
+        z2, m2, beta2 = (model.value(other, a) for a in ("number_of_teeth", "normal_module",
+                                                          "helix_angle_reference_diameter"))
+        if None in (z2, m2, beta2):  # a gear that cannot be a half of this one
+            continue
         if z2 == z and abs(m2 - m) <= 1e-9 * m and abs(beta2 + beta) <= 1e-9 * abs(beta):
             twins.append(other)
     if len(twins) > 1:

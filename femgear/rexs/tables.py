@@ -201,7 +201,8 @@ def operating(conv: Conversion) -> None:
              if halves[i] in _stage_pair(conv, s)] for halves in parts.members]
     driving = [any(model.value(d, "is_driving_gear") for d in ds if d is not None) for ds in data]
     if all(driving):
-        raise model.error(data[1][0], "is_driving_gear", "both gears of the stage are marked as driving")
+        raise model.error(next(d for d in data[1] if d is not None), "is_driving_gear",
+                          "both gears of the stage are marked as driving")
     drv = 1 if driving[1] else 0
     srcs = [(d, "is_driving_gear") for ds in data for d in ds if d is not None and
             model.value(d, "is_driving_gear") is not None]
