@@ -9,6 +9,7 @@ side (the profile shift behind a tip diameter, both shifts behind a centre dista
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Iterable
 from pathlib import Path
@@ -31,7 +32,10 @@ def convert(model: Model, stage_id: int | None = None) -> Conversion:
     """The scene dictionary of one stage of ``model`` (None: its only pair), with sources and defaults."""
     stage, parts = select_stage(model, stage_id)
     conv = Conversion(model, stage, parts)
-    name = re.sub(r"[^A-Za-z0-9_ .+-]", "_", stage.name or f"stage {stage.id}").strip(" .") or f"stage_{stage.id}"
+    names = [s.name for s in parts.stages if s.name]
+    common = os.path.commonprefix(names).strip() if len(names) > 1 else ""   # "marine left", "marine right"
+    name = common or stage.name or f"stage {stage.id}"
+    name = re.sub(r"[^A-Za-z0-9_ .+-]", "_", name).strip(" .") or f"stage_{stage.id}"
     conv.put("meta.name", name[:100], [])
     conv.put("meta.description", f"REXS {model.version} model {model.source} ({model.application or 'unknown tool'}), "
                                  f"stage {stage.id}", [])
