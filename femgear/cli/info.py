@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from femgear.cli.common import add_scene_arguments, emit_json
+from femgear.cli.common import add_scene_arguments, emit_json, load_scene_arg
 
 
 def register(sub) -> None:
@@ -17,10 +17,9 @@ def register(sub) -> None:
 def _info(args: argparse.Namespace) -> int:
     from femgear.contact.path import contact_along_path, zone_grid
     from femgear.geometry import GearPair
-    from femgear.scene import load_scene
     from femgear.summary import scene_summary
 
-    scene = load_scene(args.scene, args.overrides)
+    scene = load_scene_arg(args)
     pair = GearPair.from_scene(scene)
     contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
     summary = scene_summary(scene, pair, contact)
