@@ -9,10 +9,11 @@ inside its range, else the line TEHL; the baseline with the paper's 10 µm crown
 A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
 
 - ``ok`` — exit 0 and the invariants hold: the time-mean load along the path carries the
-  normal force (b/(p_bt cos β_b) ∫ w̄ du = F_n per helix, to 2 %), films positive, contact
-  temperatures finite and non-negative, coupling converged, and the film and temperature
-  within a factor of :data:`FACTOR` of the formula figures of ``femgear info`` (a coarse net
-  for unit or scaling faults, not a validation);
+  normal force (helical: b/(p_bt cos β_b) ∫ w̄ du = F_n per helix, to 2 %; spur, whose load jumps
+  at B and D: w̄ b = F_n inside the single-contact zone), films positive, contact temperatures
+  finite and non-negative (zero only for the levels without heating), coupling converged, and
+  the film and temperature within a factor of :data:`FACTOR` of the formula figures of
+  ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
 - ``refused: <line>`` — exit 2 within :data:`REFUSAL_SECONDS` with one line naming the key;
 - ``FAIL: ...`` — anything else (a raw solver line, a broken invariant, a late refusal).
 
@@ -36,7 +37,7 @@ ROOT = Path(__file__).resolve().parents[1]
 ZOO = ROOT / "studies" / "zoo"
 OUT = ROOT / "out" / "zoo_matrix"
 FACTOR = 5.0              #: films and temperatures within this factor of the formula figures
-REFUSAL_SECONDS = 10.0    #: a refusal comes before computing (the CLI's start-up included)
+REFUSAL_SECONDS = 30.0    #: a refusal comes before computing: the CLI's start-up (imports), ~3 s idle, more on a loaded machine
 FORCE_TOLERANCE = 0.02    #: the path integral of the time-mean load against F_n
 COARSE = ("numerics.dynamics_cycles=20", "numerics.transient_cycles=10", "numerics.path_points=21")
 
@@ -103,7 +104,7 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     for key in ("film_central", "film_minimum"):
         if min(path[key]) <= 0 or not all(map(math.isfinite, path[key])):
             bad.append(f"{key} not positive")
-    if "temperature_rise" in path:
+    if "temperature_rise" in path and summary["physics"]["lubrication"] not in ("none", "constant"):
         dT = path["temperature_rise"]
         if not all(map(math.isfinite, dT)) or min(dT) < 0:
             bad.append("temperature rise negative or not finite")
@@ -112,7 +113,14 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     h = path["film_central"][len(path["s"]) // 2]
     if not hand["film"] / FACTOR < h < hand["film"] * FACTOR:
         bad.append(f"mid-path film {h:.3g} m vs formula {hand['film']:.3g} m")
-    carried = hand["force_scale"] * _trapezoid(path["load_per_length"], path["s"])
+    w, s = path["load_per_length"], path["s"]
+    if hand["single"] is None:
+        carried = hand["force_scale"] * _trapezoid(w, s)
+    else:       # spur: one pair carries F_n inside the single-contact zone (D, B), away from its bounds
+        lo, hi = hand["single"]
+        margin = 0.1 * (hi - lo)
+        inside = [wi for wi, si in zip(w, s) if lo + margin < si < hi - margin]
+        carried = hand["face_width"] * sum(inside) / len(inside)
     if abs(carried / hand["force"] - 1) > FORCE_TOLERANCE:
         bad.append(f"path load carries {carried:.4g} N, F_n per helix {hand['force']:.4g} N")
     return bad
@@ -123,10 +131,12 @@ def _trapezoid(y, x) -> float:
 
 
 def hand_figures(path: Path) -> dict:
-    """The formula figures a cell is held against: F_n per helix, the force scale b/(p_bt cos β_b),
-    the formula film at the pitch point and the formula-level contact temperature."""
+    """The formula figures a cell is held against: F_n per helix, the force scale b/(p_bt cos β_b), the
+    single-contact zone (s_D, s_B) of a spur pair (None for helical), the formula film at the pitch point
+    and the formula-level contact temperature."""
     from femgear.case import build_case
     from femgear.contact.path import contact_along_path
+    from femgear.contact.sharing import single_contact_bounds
     from femgear.lubrication.levels import friction_along_path
 
     scene = _load(path, ['physics.lubrication="formula"'])
@@ -134,8 +144,10 @@ def hand_figures(path: Path) -> dict:
     pair = case.pair
     contact = contact_along_path(scene, pair=pair, u=case.path.u)
     _, dT = friction_along_path(case, contact.line_load)
+    u_B, u_D = single_contact_bounds(pair)
     return {"force": case.operating.normal_force / pair.n_helices,
-            "force_scale": pair.b / (pair.p_bt * math.cos(pair.beta_b)),
+            "force_scale": pair.b / (pair.p_bt * math.cos(pair.beta_b)), "face_width": pair.b,
+            "single": (u_D - pair.u_pitch, u_B - pair.u_pitch) if pair.beta_b == 0 else None,
             "film": float(contact.film_central[contact.pitch_index]), "flash": float(max(dT))}
 
 
