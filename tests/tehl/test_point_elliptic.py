@@ -77,3 +77,26 @@ def test_elliptic_thermal_film_thicker_than_circular():
     ell = solve_tehl_point(100.0, 0.0123, 1.09, 0.3, 313.0, Ry=0.123, **kw)
     assert ell.hc > 1.1 * circ.hc and ell.pmax < circ.pmax
     assert np.all(np.isfinite(ell.p)) and ell.dT_max > 0
+
+
+def test_a_contact_the_point_solver_cannot_hold_is_solved_as_a_line_contact(monkeypatch, caplog):
+    """The R_x/R_y → 0 limit: where the point solve raises, the contact gets the line TEHL of the same load
+    per unit length on R_x, and a warning names it."""
+    import femgear.tehl.point_level as pl
+    from femgear.errors import ConvergenceError
+    from femgear.tehl.line import solve_tehl_line
+    from femgear.tehl.solver import tehl_setup
+
+    scene = _scene(10e-6)
+
+    def fail(*args, **kw):
+        raise ConvergenceError("ehl point", "load continuation failed")
+
+    monkeypatch.setattr(pl, "solve_tehl_point", fail)
+    w, R, ue, srr, T = 9.0e4, 0.0123, 1.0, 0.3, 313.0
+    with caplog.at_level("WARNING", logger="femgear.tehl"):
+        mu, dT = pl.tehl_point_solver(scene)(w=w, R=R, ue=ue, srr=srr, T=T)
+    Rx, _ = crowned_contact(scene).radii(R)
+    line = solve_tehl_line(w, float(Rx), ue, srr, T, level=scene.numerics.ehl_level, **tehl_setup(scene))
+    assert mu[0] == pytest.approx(line.mu, rel=1e-12) and dT[0] == pytest.approx(line.dT_max, rel=1e-12)
+    assert "solved as a line contact" in caplog.text
