@@ -116,7 +116,7 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     w, s = path["load_per_length"], path["s"]
     if hand["single"] is None:
         carried = hand["force_scale"] * _trapezoid(w, s)
-    else:       # spur: one pair carries F_n inside the single-contact zone (D, B), away from its bounds
+    else:       # spur: one pair carries F_n inside the single-contact zone (B, D), away from its bounds
         lo, hi = hand["single"]
         margin = 0.1 * (hi - lo)
         inside = [wi for wi, si in zip(w, s) if lo + margin < si < hi - margin]
@@ -132,7 +132,7 @@ def _trapezoid(y, x) -> float:
 
 def hand_figures(path: Path) -> dict:
     """The formula figures a cell is held against: F_n per helix, the force scale b/(p_bt cos β_b), the
-    single-contact zone (s_D, s_B) of a spur pair (None for helical), the formula film at the pitch point
+    single-contact zone (s_B, s_D) of a spur pair (None for helical), the formula film at the pitch point
     and the formula-level contact temperature."""
     from femgear.case import build_case
     from femgear.contact.path import contact_along_path
@@ -147,7 +147,7 @@ def hand_figures(path: Path) -> dict:
     u_B, u_D = single_contact_bounds(pair)
     return {"force": case.operating.normal_force / pair.n_helices,
             "force_scale": pair.b / (pair.p_bt * math.cos(pair.beta_b)), "face_width": pair.b,
-            "single": (u_D - pair.u_pitch, u_B - pair.u_pitch) if pair.beta_b == 0 else None,
+            "single": (min(u_B, u_D) - pair.u_pitch, max(u_B, u_D) - pair.u_pitch) if pair.beta_b == 0 else None,
             "film": float(contact.film_central[contact.pitch_index]), "flash": float(max(dT))}
 
 
