@@ -141,11 +141,16 @@ def hermite_extremes(x: np.ndarray, dx: np.ndarray, dt: float) -> tuple[np.ndarr
     x = np.asarray(x, dtype=float)
     d = np.asarray(dx, dtype=float) * dt
     x2, d2 = x.reshape(x.shape[0], -1), d.reshape(d.shape[0], -1)
-    x0, x1, d0, d1 = x2[:-1], x2[1:], d2[:-1], d2[1:]
+    hi, lo = x2.max(axis=0), x2.min(axis=0)
+    # only intervals whose cubic can pass the sample extremes: with the Hermite basis,
+    # |p(s) − (h00 x0 + h01 x1)| ≤ 4/27 (|d0| + |d1|)
+    reach = (4 / 27) * (np.abs(d2[:-1]) + np.abs(d2[1:]))
+    cand = (np.maximum(x2[:-1], x2[1:]) + reach > hi) | (np.minimum(x2[:-1], x2[1:]) - reach < lo)
+    rows, cols = np.nonzero(cand)
+    x0, x1, d0, d1 = x2[rows, cols], x2[rows + 1, cols], d2[rows, cols], d2[rows + 1, cols]
     a = 6 * (x0 - x1) + 3 * (d0 + d1)
     b = 6 * (x1 - x0) - 4 * d0 - 2 * d1
     c = d0
-    hi, lo = x2.max(axis=0), x2.min(axis=0)
     disc = b * b - 4 * a * c
     with np.errstate(divide="ignore", invalid="ignore"):
         sq = np.sqrt(np.maximum(disc, 0.0))
@@ -155,11 +160,11 @@ def hermite_extremes(x: np.ndarray, dx: np.ndarray, dt: float) -> tuple[np.ndarr
         ok = (disc >= 0) & (r > 0) & (r < 1)
         if not ok.any():
             continue
-        r = np.where(ok, r, 0.0)
-        val = ((2 * r**3 - 3 * r**2 + 1) * x0 + (r**3 - 2 * r**2 + r) * d0 + (-2 * r**3 + 3 * r**2) * x1
-               + (r**3 - r**2) * d1)
-        hi = np.maximum(hi, np.where(ok, val, -np.inf).max(axis=0))
-        lo = np.minimum(lo, np.where(ok, val, np.inf).min(axis=0))
+        r = r[ok]
+        val = ((2 * r**3 - 3 * r**2 + 1) * x0[ok] + (r**3 - 2 * r**2 + r) * d0[ok] + (-2 * r**3 + 3 * r**2) * x1[ok]
+               + (r**3 - r**2) * d1[ok])
+        np.maximum.at(hi, cols[ok], val)
+        np.minimum.at(lo, cols[ok], val)
     shape = x.shape[1:]
     return hi.reshape(shape), lo.reshape(shape)
 
