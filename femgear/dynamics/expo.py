@@ -236,14 +236,13 @@ def _phase_stiffness(model: GearRotorModel, per: int, substeps: int) -> np.ndarr
 _BATCH = 512
 
 
-def _build_contact_propagators(model: GearRotorModel, cache: dict, kstep: np.ndarray, dt: float, count: int) -> None:
-    """The propagators of the all-in-contact state of the first ``count`` phases, batched."""
-    todo = [j for j in range(count) if (j, (1, 1)) not in cache]
-    for lo in range(0, len(todo), _BATCH):
-        idx = todo[lo:lo + _BATCH]
-        mats = _expo_matrices(model, kstep[idx], (1, 1), dt)
-        for i, j in enumerate(idx):
-            cache[(j, (1, 1))] = tuple(a[i] for a in mats)
+def _contact_propagators(model: GearRotorModel, cache: dict, kstep: np.ndarray, dt: float) -> tuple:
+    """The propagators (Φ, W0, Wh, W1, U) of the all-in-contact state of every phase, stacked
+    (per, ...), built in batches of :data:`_BATCH` phases and cached under "contact"."""
+    if "contact" not in cache:
+        parts = [_expo_matrices(model, kstep[lo:lo + _BATCH], (1, 1), dt) for lo in range(0, kstep.shape[0], _BATCH)]
+        cache["contact"] = tuple(np.concatenate([p[k] for p in parts]) for k in range(5))
+    return cache["contact"]
 
 
 def _channels(model: GearRotorModel, Minv: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -258,21 +257,29 @@ def _channels(model: GearRotorModel, Minv: np.ndarray) -> tuple[np.ndarray, np.n
     return Gz, Bw
 
 
-def _fast_path_inputs(cache: dict, per: int, steps: int, Fe, ecols, dcols, Bw):
-    """The known inputs of every step while both drive flanks are in contact, per phase, and the
-    friction input matrices (n2, 12) at the three hold nodes."""
-    known = np.empty((steps, Bw.shape[0]))
-    Wfr = []
+def _fast_path_inputs(mats: tuple, steps: int, Fe, ecols, dcols, Bw, Gz):
+    """The fast path (both drive flanks in contact), augmented by the mesh deflections and rates
+    of the new state (rows Gz·):
+
+    - ``Phi``: (per, 2n+4, 2n) [Φ_j; Gz Φ_j] per phase j;
+    - ``known``: (steps, 2n+4) the known inputs of every step (external forces, c ė_s, u_s = e_s + b_s);
+    - ``Wfr``: (per, 2n+4, 12) the friction inputs μ|N_s| A_s, μ|N_s| B_s (s = 0, 1) at the three
+      hold nodes, per phase.
+    """
+    Ph, W0, Wh, W1, U = mats
+    per, m = Ph.shape[0], Bw.shape[0]
+    aug = np.vstack([np.eye(m), Gz])
+    known = np.empty((steps, m + 4))
+    Fd = Fe + dcols @ Bw[:, :2].T
     for j in range(min(per, steps)):
-        Phi, W0, Wh, W1, U = cache[(j, (1, 1))]
         idx = np.arange(j, steps, per)
         i0, ih, i1 = 2 * idx, 2 * idx + 1, 2 * idx + 2
-        known[idx] = (Fe[i0] + dcols[i0] @ Bw[:, :2].T) @ W0.T + (Fe[ih] + dcols[ih] @ Bw[:, :2].T) @ Wh.T \
-            + (Fe[i1] + dcols[i1] @ Bw[:, :2].T) @ W1.T \
+        kn = Fd[i0] @ W0[j].T + Fd[ih] @ Wh[j].T + Fd[i1] @ W1[j].T \
             + np.concatenate([ecols[i0, :1], ecols[ih, :1], ecols[i1, :1], ecols[i0, 1:], ecols[ih, 1:], ecols[i1, 1:]],
-                             axis=1) @ U.T
-        Wfr.append(np.hstack([W0 @ Bw[:, 2:], Wh @ Bw[:, 2:], W1 @ Bw[:, 2:]]))
-    return known, Wfr
+                             axis=1) @ U[j].T
+        known[idx] = kn @ aug.T
+    Wfr = np.concatenate([aug @ W @ Bw[:, 2:] for W in (W0, Wh, W1)], axis=-1)
+    return aug @ Ph, known, Wfr
 
 
 def _general_step(model, cache, j, ks, side, dt, y, i2, data, Nn, N_prev):
@@ -282,6 +289,8 @@ def _general_step(model, cache, j, ks, side, dt, y, i2, data, Nn, N_prev):
     Fe, Bw, cm, eed, AA, BB, ee, bb = data
     chi = (int(side[0] != 0), int(side[1] != 0))
     mats = cache.get((j, chi))
+    if mats is None and chi == (1, 1):
+        mats = tuple(a[j] for a in cache["contact"])
     if mats is None:
         mats = cache[(j, chi)] = tuple(a[0] for a in _expo_matrices(model, ks[None], chi, dt))
     Phi, W0, Wh, W1, U = mats
@@ -328,11 +337,11 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
     switches = 0
     t_setup = time.perf_counter()
-    _build_contact_propagators(model, cache, kstep, dt, min(per, steps))   # all-in-contact, up front
+    contact = _contact_propagators(model, cache, kstep, dt)     # all-in-contact, up front
     k0 = kstep[:, 0].tolist()                # the stiffness at the start of each phase slot (friction's |N|)
     ecols = np.stack([e[0] + bt[0], e[1] + bt[1]], axis=1)    # u_s = e_s + b_s(t) on the drive flank
     dcols = np.stack([cm[0] * ed[0], cm[1] * ed[1]], axis=1)
-    known, Wfr = _fast_path_inputs(cache, per, steps, Fe, ecols, dcols, Bw)
+    PhiG, known, Wfr = _fast_path_inputs(contact, steps, Fe, ecols, dcols, Bw, Gz)
     setup = time.perf_counter() - t_setup
 
     rec = record_plan(steps, dt, record_every, record_from - t_start)
@@ -340,59 +349,59 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
     ri = 0
     next_rec = rec[0] if rec.size else -1
     y = np.concatenate([q, v])
-    N_prev = None
+    N_prev = (0.0, 0.0)
     side_prev = None
     fast = (1, 1)
+    g = (Gz @ y).tolist()
     t0 = time.perf_counter()
     for i in range(steps + 1):
         if i == next_rec:
-            out[ri] = y
+            out[ri] = y[:n2]
             ri += 1
             next_rec = rec[ri] if ri < rec.size else -1
         if i == steps:
             break
         j = i % per
-        kj = k0[j]
         i2 = 2 * i
-        gq0, gq1, gv0, gv1 = (Gz @ y).tolist()
-        side = [0, 0]
-        Nn = [0.0, 0.0]
-        for s, (gq, gv) in enumerate(((gq0, gv0), (gq1, gv1))):
-            b = bb[s][i2]
-            d = gq - ee[s][i2]
-            if d > b:
-                side[s] = 1
-            elif d < -b:
-                side[s] = -1
-            if mu > 0.0 and side[s] != 0:
-                Nn[s] = mu * abs(kj[s] * (d - side[s] * b) + cm[s] * (gv - eed[s][i2]))
-        side = (side[0], side[1])
+        gq0, gq1, gv0, gv1 = g
+        d0 = gq0 - ee[0][i2]
+        d1 = gq1 - ee[1][i2]
+        b0 = bb[0][i2]
+        b1 = bb[1][i2]
+        side = (1 if d0 > b0 else (-1 if d0 < -b0 else 0), 1 if d1 > b1 else (-1 if d1 < -b1 else 0))
+        if mu > 0.0:
+            kj = k0[j]
+            Nn = (mu * abs(kj[0] * (d0 - side[0] * b0) + cm[0] * (gv0 - eed[0][i2])) if side[0] else 0.0,
+                  mu * abs(kj[1] * (d1 - side[1] * b1) + cm[1] * (gv1 - eed[1][i2])) if side[1] else 0.0)
+        else:
+            Nn = (0.0, 0.0)
         if side != side_prev:
             if side_prev is not None:
                 switches += 1
             N_prev = Nn
             side_prev = side
         if side == fast:
-            Phi = cache[(j, fast)][0]
             if mu > 0.0:
-                a0, a1 = Nn[0], Nn[1]
-                d0, d1 = a0 - N_prev[0], a1 - N_prev[1]
-                fr = []
-                for w in (0.0, 0.5, 1.0):
-                    i3 = i2 + int(2 * w)
-                    b0, b1 = a0 + w * d0, a1 + w * d1
-                    fr += [b0 * AA[0][i3], b0 * BB[0][i3], b1 * AA[1][i3], b1 * BB[1][i3]]
-                y = Phi @ y + known[i] + Wfr[j] @ fr
+                a0, a1 = Nn
+                e0, e1 = a0 - N_prev[0], a1 - N_prev[1]
+                h0, h1 = a0 + 0.5 * e0, a1 + 0.5 * e1
+                f0, f1 = a0 + e0, a1 + e1
+                y = PhiG[j] @ y[:n2] + known[i] + Wfr[j] @ (
+                    a0 * AA[0][i2], a0 * BB[0][i2], a1 * AA[1][i2], a1 * BB[1][i2],
+                    h0 * AA[0][i2 + 1], h0 * BB[0][i2 + 1], h1 * AA[1][i2 + 1], h1 * BB[1][i2 + 1],
+                    f0 * AA[0][i2 + 2], f0 * BB[0][i2 + 2], f1 * AA[1][i2 + 2], f1 * BB[1][i2 + 2])
             else:
-                y = Phi @ y + known[i]
+                y = PhiG[j] @ y[:n2] + known[i]
+            g = y[n2:].tolist()
             N_prev = Nn
             continue
-        y = _general_step(model, cache, j, kstep[j], side, dt, y, i2, (Fe, Bw, cm, eed, AA, BB, ee, bb), Nn, N_prev)
+        y = _general_step(model, cache, j, kstep[j], side, dt, y[:n2], i2, (Fe, Bw, cm, eed, AA, BB, ee, bb), Nn, N_prev)
+        g = (Gz @ y).tolist()
         N_prev = Nn
     seconds = time.perf_counter() - t0
     if not np.all(np.isfinite(out)):
         raise ConvergenceError("expo", "the solution became non-finite", {"dt": [dt]})
     return Simulation(model=model, method="expo", dt=dt, t=t_start + rec * dt, q=out[:, :n].copy(), v=out[:, n:].copy(),
                       seconds=seconds, steps=steps,
-                      info={"contact_switches": switches, "steps_per_mesh_period": per, "cached_propagators": len(cache),
+                      info={"contact_switches": switches, "steps_per_mesh_period": per, "cached_propagators": per + len(cache) - 1,
                             "setup_seconds": setup, "substeps": substeps})
