@@ -257,14 +257,16 @@ def _channels(model: GearRotorModel, Minv: np.ndarray) -> tuple[np.ndarray, np.n
     return Gz, Bw
 
 
-def _fast_path_inputs(mats: tuple, steps: int, Fe, ecols, dcols, Bw, Gz):
+def _fast_path_inputs(mats: tuple, steps: int, Fe, ecols, dcols, Bw, Gz, AB):
     """The fast path (both drive flanks in contact), augmented by the mesh deflections and rates
     of the new state (rows Gz·):
 
-    - ``Phi``: (per, 2n+4, 2n) [Φ_j; Gz Φ_j] per phase j;
+    - ``MJ``: (per, 2n+4, 2n[+12]) [Φ_j | W_fr,j; Gz Φ_j | Gz W_fr,j] per phase j, W_fr,j the
+      friction inputs μ|N_s| A_s, μ|N_s| B_s (s = 0, 1) at the three hold nodes (without friction,
+      ``AB`` None: Φ_j alone);
     - ``known``: (steps, 2n+4) the known inputs of every step (external forces, c ė_s, u_s = e_s + b_s);
-    - ``Wfr``: (per, 2n+4, 12) the friction inputs μ|N_s| A_s, μ|N_s| B_s (s = 0, 1) at the three
-      hold nodes, per phase.
+    - ``ABn``: (steps, 12) A_s, B_s at the three nodes of every step (``AB``: A, B on the half-step
+      grid), or None.
     """
     Ph, W0, Wh, W1, U = mats
     per, m = Ph.shape[0], Bw.shape[0]
@@ -278,8 +280,12 @@ def _fast_path_inputs(mats: tuple, steps: int, Fe, ecols, dcols, Bw, Gz):
             + np.concatenate([ecols[i0, :1], ecols[ih, :1], ecols[i1, :1], ecols[i0, 1:], ecols[ih, 1:], ecols[i1, 1:]],
                              axis=1) @ U[j].T
         known[idx] = kn @ aug.T
+    if AB is None:
+        return aug @ Ph, known, None
+    A, B = AB
     Wfr = np.concatenate([aug @ W @ Bw[:, 2:] for W in (W0, Wh, W1)], axis=-1)
-    return aug @ Ph, known, Wfr
+    ABn = np.stack([X[s][o:o + 2 * steps:2] for o in range(3) for s in range(2) for X in (A, B)], axis=1)
+    return np.concatenate([aug @ Ph, Wfr], axis=-1), known, ABn
 
 
 def _general_step(model, cache, j, ks, side, dt, y, i2, data, Nn, N_prev):
@@ -341,22 +347,24 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
     k0 = kstep[:, 0].tolist()                # the stiffness at the start of each phase slot (friction's |N|)
     ecols = np.stack([e[0] + bt[0], e[1] + bt[1]], axis=1)    # u_s = e_s + b_s(t) on the drive flank
     dcols = np.stack([cm[0] * ed[0], cm[1] * ed[1]], axis=1)
-    PhiG, known, Wfr = _fast_path_inputs(contact, steps, Fe, ecols, dcols, Bw, Gz)
+    MJ, known, ABn = _fast_path_inputs(contact, steps, Fe, ecols, dcols, Bw, Gz, (A, B) if mu > 0.0 else None)
     setup = time.perf_counter() - t_setup
 
     rec = record_plan(steps, dt, record_every, record_from - t_start)
     out = np.empty((rec.size, n2))
     ri = 0
     next_rec = rec[0] if rec.size else -1
-    y = np.concatenate([q, v])
+    z = np.zeros(MJ.shape[-1])               # fast-path state (y, friction inputs at the three nodes)
+    z[:n2] = np.concatenate([q, v])
+    zf = z[n2:]
     N_prev = (0.0, 0.0)
     side_prev = None
     fast = (1, 1)
-    g = (Gz @ y).tolist()
+    g = (Gz @ z[:n2]).tolist()
     t0 = time.perf_counter()
     for i in range(steps + 1):
         if i == next_rec:
-            out[ri] = y[:n2]
+            out[ri] = z[:n2]
             ri += 1
             next_rec = rec[ri] if ri < rec.size else -1
         if i == steps:
@@ -384,19 +392,17 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
             if mu > 0.0:
                 a0, a1 = Nn
                 e0, e1 = a0 - N_prev[0], a1 - N_prev[1]
-                h0, h1 = a0 + 0.5 * e0, a1 + 0.5 * e1
-                f0, f1 = a0 + e0, a1 + e1
-                y = PhiG[j] @ y[:n2] + known[i] + Wfr[j] @ (
-                    a0 * AA[0][i2], a0 * BB[0][i2], a1 * AA[1][i2], a1 * BB[1][i2],
-                    h0 * AA[0][i2 + 1], h0 * BB[0][i2 + 1], h1 * AA[1][i2 + 1], h1 * BB[1][i2 + 1],
-                    f0 * AA[0][i2 + 2], f0 * BB[0][i2 + 2], f1 * AA[1][i2 + 2], f1 * BB[1][i2 + 2])
-            else:
-                y = PhiG[j] @ y[:n2] + known[i]
-            g = y[n2:].tolist()
+                h0, h1, f0, f1 = a0 + 0.5 * e0, a1 + 0.5 * e1, a0 + e0, a1 + e1
+                np.multiply(ABn[i], (a0, a0, a1, a1, h0, h0, h1, h1, f0, f0, f1, f1), out=zf)
+            r = MJ[j] @ z
+            r += known[i]
+            z[:n2] = r[:n2]
+            g = r[n2:].tolist()
             N_prev = Nn
             continue
-        y = _general_step(model, cache, j, kstep[j], side, dt, y[:n2], i2, (Fe, Bw, cm, eed, AA, BB, ee, bb), Nn, N_prev)
-        g = (Gz @ y).tolist()
+        z[:n2] = _general_step(model, cache, j, kstep[j], side, dt, z[:n2], i2, (Fe, Bw, cm, eed, AA, BB, ee, bb), Nn,
+                               N_prev)
+        g = (Gz @ z[:n2]).tolist()
         N_prev = Nn
     seconds = time.perf_counter() - t0
     if not np.all(np.isfinite(out)):
