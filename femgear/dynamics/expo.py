@@ -9,12 +9,18 @@ quadratic hold through t_n, t_n+h/2, t_n+h (the mesh force is a small difference
 and k·Gq, so a linear hold's O(h²) error would be amplified); the friction force — the
 only state-dependent remainder — with μ|N| extrapolated linearly from the last two
 steps (exponential time differencing, Cox & Matthews, J. Comput. Phys. 176:430, 2002).
-Φ_j and the hold integrals come from one block matrix exponential (Van Loan, IEEE TAC
-23:395, 1978), cached per (phase, contact state) and across runs of the same structure
-and step (:func:`_propagator_cache`).  While both drive flanks are in contact (the
-usual state) the known inputs of every step are precomputed per phase, so a step costs
-two small mat-vecs.  Exact for the linear time-invariant case; stable far above the
-RK4 limit.
+The stiffness over the sub-steps is the band-exact staircase (:func:`band_exact_staircase`:
+the mesh orders below half the sub-step count are the table's), and its sub-step count
+follows the highest mode the mesh reaches (:func:`default_substeps`).  Φ_j and the hold
+integrals Γ_p = h p! φ_{p+1}(A h) come from the Taylor series of the φ-functions with
+scaling and doubling, batched over all phases (:func:`_substeps`; equal to Van Loan's
+block exponential, IEEE TAC 23:395, 1978, to round-off), cached per structure and step
+(:func:`_propagator_cache`).  While both drive flanks are in contact (the usual state)
+the known inputs of every step are precomputed and a step is one product of
+[Φ_j | W_fr,j; Gz Φ_j | Gz W_fr,j] with (y, friction inputs), which also gives the mesh
+deflections the next step's contact check needs.  Exact for the linear time-invariant
+case; stable far above the RK4 limit.  The step itself is chosen in
+:func:`femgear.dynamics.run.step_plan` (docs/dynamics_step.md).
 """
 
 from __future__ import annotations
