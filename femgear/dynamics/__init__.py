@@ -12,15 +12,18 @@
                  excitation, damping builders); ``with_friction``/``with_deviation``.
 - ``integrate``  :func:`simulate`, one entry point for the integrators:
   ``rk4``        fixed-step RK4 (paper) and its stability limit;
-  ``expo``       exponential integrator, exact propagators per mesh phase (the fast one);
+  ``expo``       exponential integrator, exact propagators per mesh phase (the fast one),
+                 band-exact stiffness staircase, Taylor φ-functions for the sub-steps;
   ``newmark``    implicit HHT-α/Newmark with exact Newton on the gap;
   ``simulation`` the recorded :class:`Simulation` and shared input helpers.
 - ``response``   amplitudes (half peak-to-peak), mesh forces, bearing accelerations,
                  Hanning spectra with mesh orders; frozen :class:`Response`.
-- ``modal``      linearised (mean-stiffness) modal analysis with modal energy per DOF group.
+- ``modal``      linearised (mean-stiffness) modal analysis with modal energy per DOF group;
+                 the highest mode the mesh excitation reaches.
 - ``sweep``      time-domain speed sweeps (DTE RMS vs mesh frequency).
 - ``sdof``       Kahraman–Singh single-DOF backlash oscillator and frequency sweeps.
-- ``run``        one dynamic run of a model (integration → response → modes), pure.
+- ``run``        one dynamic run of a model (integration → response → modes), pure; the default
+                 step plan (docs/dynamics_step.md).
 - ``plot``       PNG plots (matplotlib imported lazily); files: :mod:`femgear.io.dynamics`.
 """
 

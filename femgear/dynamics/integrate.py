@@ -39,13 +39,15 @@ def simulate(
     max_iter: int = 20,
     check_stability: bool = True,
     substeps: int | None = None,
+    t_start: float = 0.0,
 ) -> Simulation:
-    """Integrate from t = 0 over ``duration`` [s] with the fixed step ``dt`` [s].
+    """Integrate from t = ``t_start`` (default 0) over ``duration`` [s] with the fixed step ``dt`` [s].
 
     Initial state: the static equilibrium of the mean system (``q0``/``v0`` override).
     States at t ≥ ``record_from`` are recorded every ``record_every`` steps.
     ``alpha`` ∈ [−1/3, 0]: HHT numerical damping (``newmark`` only).
-    ``substeps``: stiffness sub-steps inside one ``expo`` step (default: ≥ 800 per mesh period).
+    ``t_start``: the time of the initial state (``expo`` only; a whole number of mesh periods).
+    ``substeps``: stiffness sub-steps inside one ``expo`` step (default: :func:`femgear.dynamics.expo.default_substeps`).
     """
     if method not in METHODS:
         raise ValueError(f"method must be one of {', '.join(METHODS)} (got {method!r})")
@@ -68,7 +70,9 @@ def simulate(
                 )
         return rk4(model, steps, dt, q, v, record_every, record_from)
     if method == "expo":
-        return expo(model, steps, dt, q, v, record_every, record_from, substeps)
+        return expo(model, steps, dt, q, v, record_every, record_from, substeps, t_start)
+    if t_start != 0.0:
+        raise ValueError(f"t_start is supported by method='expo' only (got {method!r})")
     if not -1 / 3 <= alpha <= 0:
         raise ValueError(f"alpha must be in [-1/3, 0] (got {alpha!r})")
     return newmark(model, steps, dt, q, v, record_every=record_every, record_from=record_from, alpha=alpha,

@@ -59,3 +59,23 @@ def modal_analysis(model: GearRotorModel) -> ModalResult:
     with np.errstate(divide="ignore", invalid="ignore"):
         energy["mesh"] = np.where(strain > 1e-12 * strain.max(), mesh / strain, 0.0)
     return ModalResult(frequencies=f, shapes=model.T @ phi, energy=energy)
+
+
+#: mesh strain-energy fraction above which a mode counts as reached by the mesh excitation
+MESH_ENERGY_MIN = 1e-3
+
+
+def mesh_mode_limit(model: GearRotorModel) -> float:
+    """The highest natural frequency [Hz] of the flexible modes that load the mesh (mesh
+    strain-energy fraction ≥ :data:`MESH_ENERGY_MIN`); 0 when none does.
+
+    Every mesh excitation (the stiffness table, transmission errors, flank deviations,
+    friction) acts through the two mesh springs, so a mode that does not strain them is
+    not driven by it; a mode that does is reached at every speed: the piecewise-linear
+    stiffness tables carry content at all mesh orders (at 100 rpm the baseline's 8.3 kHz
+    mode, mesh order 161, holds ~1/5 of the gear's velocity amplitude).
+    """
+    r = modal_analysis(model)
+    flexible = r.frequencies > 1e-6 * max(r.frequencies.max(), 1e-300)
+    hit = flexible & (r.energy["mesh"] >= MESH_ENERGY_MIN)
+    return float(r.frequencies[hit].max()) if hit.any() else 0.0

@@ -228,9 +228,11 @@ class GearRotorModel:
             Q = Q - (aN * np.moveaxis(A, 0, -1)) @ self.H0 - (aN * np.moveaxis(B, 0, -1)) @ self.H1
         return delta, N, Q
 
-    def acceleration(self, t, q, v) -> np.ndarray:
-        """q̈ from the equations of motion (vectorised; for post-processing)."""
-        _, _, Q = self.mesh_forces(t, q, v)
+    def acceleration(self, t, q, v, Q: np.ndarray | None = None) -> np.ndarray:
+        """q̈ from the equations of motion (vectorised; for post-processing); ``Q``: the generalised
+        mesh forces of :meth:`mesh_forces` when already known."""
+        if Q is None:
+            _, _, Q = self.mesh_forces(t, q, v)
         rhs = self.external_force(t) + Q - q @ self.K.T - v @ self.C.T
         return np.linalg.solve(self.M, np.moveaxis(rhs, -1, 0).reshape(self.n, -1)).T.reshape(np.shape(q))
 
