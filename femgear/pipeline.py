@@ -18,6 +18,7 @@ iterates to convergence.
 
 from __future__ import annotations
 
+import logging
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -44,8 +45,9 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     stiffness = mesh_stiffness_from_scene(case.scene)
     contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness)
     if case.levels.dynamics == "none":
-        return RunResult(case, contact, stiffness, static_tribology(case, contact, stiffness, wear_checkpoint),
-                         seconds=time.perf_counter() - t0)
+        tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
+        return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0,
+                         rating=case_rating(case, contact, tribology))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
     st = coupled.state
@@ -59,7 +61,20 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles,
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if levels.wear != "none" else None, st.thermal_face))
-    return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0)
+    return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
+                     rating=case_rating(case, contact, tribology))
+
+
+def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
+    """The four ISO ratings with femgear's contact temperature of the run's lubrication level beside them;
+    None (logged) when a rating input is outside what the standards can compute (e.g. a rim too thin)."""
+    from femgear.rate import rate_case
+
+    try:
+        return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication)
+    except ValueError as exc:
+        logging.getLogger("femgear.rating").warning("rating: not computed: %s", exc)
+        return None
 
 
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,

@@ -15,6 +15,7 @@ import numpy as np
 from femgear.case import Case
 from femgear.contact.path import ContactPath
 from femgear.coupling.loop import CoupledResult
+from femgear.rating.suite import PairRating
 from femgear.stiffness.tvms import MeshStiffness
 
 
@@ -46,3 +47,6 @@ class RunResult:
     tribology: Tribology
     coupled: CoupledResult | None = None        #: with a dynamics level
     seconds: float = 0.0
+    #: ISO 6336-2/-3, ISO/TS 6336-20/21/22 ratings beside femgear's own figures (:func:`femgear.rate.rate_case`);
+    #: None when the rating could not be computed (logged)
+    rating: PairRating | None = None

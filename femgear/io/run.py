@@ -3,7 +3,8 @@
 Layout (the contract; keys are added, never renamed without a README note):
 
 - ``summary``: ``scene`` (name), ``geometry``, ``contact`` (pitch point and path
-  extremes), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
+  extremes), ``rating`` (ISO 6336-2 pitting), ``safety_factors``, ``bending``, ``scuffing``,
+  ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
   and statically mean_per_helix, seconds), ``friction`` (mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
   gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
@@ -71,7 +72,7 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
 def run_summary(result: RunResult) -> dict[str, Any]:
     """The ``summary`` object of ``results.json`` (without ``outputs``)."""
     case, ms = result.case, result.stiffness
-    summary = scene_summary(case.scene, case.pair, result.contact)
+    summary = scene_summary(case.scene, case.pair, result.contact, ratings=result.rating)
     summary["physics"] = case.levels.model_dump()
     summary["stiffness"] = {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()}
     static = result.coupled is None
