@@ -127,4 +127,9 @@ def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
         files["friction_path_png"] = plot_friction_path(
             result.case.path.s, t.friction_coefficient, t.temperature_rise, out_dir / "friction_path.png",
             title=f"{name}: lubrication = {result.case.levels.lubrication}")
+    if result.rating is not None:
+        from femgear.plot.rating import plot_rating_path
+
+        files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
+                                                    out_dir / "rating_path.png", title=f"{name}: ISO ratings")
     return files
