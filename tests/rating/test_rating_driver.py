@@ -101,3 +101,9 @@ def test_run_carries_the_rating_and_the_writer_only_reads_it(tmp_path, monkeypat
     saved = json.loads((tmp_path / "results.json").read_text())["summary"]
     assert saved["bending"]["S_F"] == list(result.rating.bending.S_F)
     assert saved["scuffing"]["femgear"]["lubrication_level"] == "formula"
+
+
+def test_bad_stage_is_one_line_naming_the_key():
+    out = subprocess.run([sys.executable, "-m", "femgear", "info", str(FZG), "--set", "rating.scuffing_load_stage=15"],
+                         capture_output=True, text=True)
+    assert out.returncode == 2 and "rating.scuffing_load_stage" in out.stderr
