@@ -66,8 +66,9 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
 
 
 def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
-    """The four ISO ratings with femgear's contact temperature of the run's lubrication level beside them;
-    None (logged) when a rating input is outside what the standards can compute (e.g. a rim too thin)."""
+    """The four ISO ratings with femgear's contact temperature of the run's lubrication level beside them
+    (defaults and range flags in results.json, logged at INFO); None (logged) when a rating input is
+    outside what the standards can compute (e.g. a rim too thin)."""
     from femgear.rate import rate_case
 
     try:

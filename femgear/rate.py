@@ -4,7 +4,7 @@
 ``femgear info``) and returns the frozen :class:`femgear.rating.suite.PairRating` that the
 writers only read.  Keys of ``[rating]`` left out take the defaults documented in the schema
 (and docs/rating.md); one log line names them.  Inputs outside a method's range give one
-warning line each (key and limit) and flag the factor (``PairRating.flags``).
+line each (key and limit) and flag the factor (``PairRating.flags``), printed by ``femgear info``.
 """
 
 from __future__ import annotations
@@ -80,7 +80,11 @@ def _fillets(scene, pair: GearPair):
 
 def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.ndarray | None = None,
               level: str | None = None) -> PairRating:
-    """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them."""
+    """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them.
+
+    The defaults line and the range flags are logged at INFO (``-v``) and carried in the result
+    (``defaults``, ``flags``), which ``femgear info`` prints and results.json holds; stderr keeps the
+    CLI's one-line-per-problem contract (``tests/cli/test_bad_input.py``)."""
     from dataclasses import replace
 
     from femgear.summary import scene_rating
@@ -96,7 +100,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     stage_s = _value(r, "scuffing_load_stage", used)
     stage_m = _value(r, "micropitting_load_stage", used)
     if used:
-        log.warning("rating: defaults used for %s (docs/rating.md)", ", ".join(used))
+        log.info("rating: defaults used for %s (docs/rating.md)", ", ".join(used))
     rims = []
     for m, member in ((1, scene.pinion), (2, scene.gear)):
         rf, ra = (pair.rf1, pair.ra1) if m == 1 else (pair.rf2, pair.ra2)
@@ -117,7 +121,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     rating = rate_pair(pair, scene_rating(scene, pair), pinion_torque(scene), pinion_speed(scene), bending, scuff,
                        float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
     for flag in rating.flags:
-        log.warning("rating: %s; the factor is flagged", flag)
+        log.info("rating: %s; the factor is flagged", flag)
     if r.fillet_fe:
         rating = replace(rating, own=replace(own, fillet=_fillets(scene, pair)))
     return rating

@@ -28,13 +28,14 @@ def _rate(overrides=()):
 
 
 def test_defaults_are_said_in_one_line(caplog):
-    with caplog.at_level(logging.WARNING, logger="femgear.rating"):
+    """One log line (INFO, ``-v``) and the ``defaults`` of the result, which ``femgear info`` prints on one line."""
+    with caplog.at_level(logging.INFO, logger="femgear.rating"):
         r = _rate()
     lines = [rec.getMessage() for rec in caplog.records if "defaults used" in rec.getMessage()]
     assert len(lines) == 1 and "rating.scuffing_load_stage=12.0" in lines[0]
     assert "rating.micropitting_load_stage=8.0" in r.defaults
     caplog.clear()
-    with caplog.at_level(logging.WARNING, logger="femgear.rating"):
+    with caplog.at_level(logging.INFO, logger="femgear.rating"):
         r = _rate(ALL_KEYS)
     assert not any("defaults used" in rec.getMessage() for rec in caplog.records) and r.defaults == ()
 
@@ -51,7 +52,7 @@ def test_inputs_reach_the_factors():
 
 
 def test_out_of_range_warns_with_key_and_limit(caplog):
-    with caplog.at_level(logging.WARNING, logger="femgear.rating"):
+    with caplog.at_level(logging.INFO, logger="femgear.rating"):
         r = _rate(ALL_KEYS + ["rating.root_roughness_rz=[5e-5, 1e-5]"])
     msg = [rec.getMessage() for rec in caplog.records if "flagged" in rec.getMessage()]
     assert len(msg) == 1 and "rating.root_roughness_rz" in msg[0] and "40 µm" in msg[0]
@@ -80,6 +81,9 @@ def test_info_prints_all_safety_factors(scene):
         assert sf[key] > 0
     assert d["scuffing"]["femgear"]["max_contact_temperature"] > d["scuffing"]["oil_temperature"]
     assert d["micropitting"]["femgear"]["lambda_min"] > 0
+    text = subprocess.run([sys.executable, "-m", "femgear", "info", str(scene)], capture_output=True, text=True,
+                          check=True).stdout
+    assert text.count("  defaults: ") == 1 and "S_lambda: " in text
 
 
 @pytest.mark.slow
