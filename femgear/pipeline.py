@@ -21,7 +21,7 @@ from __future__ import annotations
 import logging
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -33,6 +33,7 @@ from femgear.coupling.loop import (
     CouplingSetup, CouplingState, line_stiffness, ltca_face_reference, ltca_reference, run_coupled,
 )
 from femgear.coupling.thermal import ThermalUnits, roll_distances, thermal_units
+from femgear.lubrication.films import level_film
 from femgear.lubrication.levels import friction_along_path
 from femgear.results import RunResult, Tribology
 from femgear.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
@@ -44,9 +45,11 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     t0 = time.perf_counter()
     stiffness = mesh_stiffness_from_scene(case.scene)
     contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness)
+    te = transmission_error(case, stiffness)
     if case.levels.dynamics == "none":
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
-        return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0,
+        tribology = replace(tribology, film=level_film(case, tribology.load_per_length))
+        return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0, transmission_error=te,
                          rating=case_rating(case, contact, tribology))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
@@ -60,19 +63,32 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         thermal_deviation=st.thermal_deviation if levels.thermal != "none" else None,
         wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles,
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
-                      st.wear_face if levels.wear != "none" else None, st.thermal_face))
+                      st.wear_face if levels.wear != "none" else None, st.thermal_face),
+        film=level_film(case, st.load_per_length))
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
-                     rating=case_rating(case, contact, tribology))
+                     transmission_error=te, rating=case_rating(case, contact, tribology))
+
+
+def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
+    """The :class:`femgear.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
+    ltca = stiffness.info.get("ltca") if stiffness.level == "ltca" else None
+    if ltca is None or not ltca.line_load:
+        return None
+    from femgear.ltca.te import analyse_cycle
+
+    m, op = case.material, case.scene.operating
+    return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, op.torque, n_harmonics)
 
 
 def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
-    """The four ISO ratings with femgear's contact temperature of the run's lubrication level beside them
+    """The four ISO ratings with femgear's contact temperature and film of the run's lubrication level beside them
     (defaults and range flags in results.json, logged at INFO); None (logged) when a rating input is
     outside what the standards can compute (e.g. a rim too thin)."""
     from femgear.rate import rate_case
 
     try:
-        return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication)
+        return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
+                         tribology.film)
     except ValueError as exc:
         logging.getLogger("femgear.rating").warning("rating: not computed: %s", exc)
         return None

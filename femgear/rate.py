@@ -44,9 +44,10 @@ def viscosity_law(scene):
 
 
 def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperature_rise: np.ndarray | None,
-                level: str | None) -> OwnFigures:
+                level: str | None, film=None) -> OwnFigures:
     """femgear's film, λ and contact temperature along the contact pass's path (``temperature_rise``: ΔT of the
-    lubrication level ``level`` on the same positions; None: computed with the ``formula`` level)."""
+    lubrication level ``level`` on the same positions; None: computed with the ``formula`` level; ``film``: the
+    :class:`femgear.lubrication.films.LevelFilm` of the level that ran, else the contact pass's h_min)."""
     if temperature_rise is None or level in (None, "none", "constant"):
         from femgear.case import build_case
         from femgear.lubrication.levels import lubrication_solver
@@ -58,11 +59,12 @@ def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperat
                                      T=np.full(k.u.shape, scene.operating.ambient_temperature))
         level = "formula"
     bulk = scene.operating.ambient_temperature + scene.thermal.flank_temperature_rise
-    film = np.asarray(contact.film_minimum, float)
-    return OwnFigures(u=np.asarray(contact.kin.u, float), film=film,
-                      film_level="contact pass: Dowson–Higginson h_min of the shared line load",
-                      specific_film=film / Ra, temperature=bulk + np.asarray(temperature_rise, float),
-                      temperature_level=level)
+    if film is not None and np.shape(film.minimum) == np.shape(contact.kin.u):
+        h, label = np.asarray(film.minimum, float), f"{film.level}: h_min of {film.method}"
+    else:
+        h, label = np.asarray(contact.film_minimum, float), "contact pass: Dowson–Higginson h_min of the shared line load"
+    return OwnFigures(u=np.asarray(contact.kin.u, float), film=h, film_level=label, specific_film=h / Ra,
+                      temperature=bulk + np.asarray(temperature_rise, float), temperature_level=level)
 
 
 def _fillets(scene, pair: GearPair):
@@ -79,7 +81,7 @@ def _fillets(scene, pair: GearPair):
 
 
 def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.ndarray | None = None,
-              level: str | None = None) -> PairRating:
+              level: str | None = None, film=None) -> PairRating:
     """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them.
 
     The defaults line and the range flags are logged at INFO (``-v``) and carried in the result
@@ -117,7 +119,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
                            effusivity=thermal_effusivity(mat.conductivity, mat.density, mat.specific_heat),
                            Ra=Ra, X_L=OIL_FACTOR[oil_type], K=K, X_S=1.2 if r.lubrication_method == "spray" else 1.0,
                            X_W=r.structural_factor)
-    own = own_figures(scene, pair, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level)
+    own = own_figures(scene, pair, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
     rating = rate_pair(pair, scene_rating(scene, pair), pinion_torque(scene), pinion_speed(scene), bending, scuff,
                        float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
     for flag in rating.flags:

@@ -15,6 +15,8 @@ import numpy as np
 from femgear.case import Case
 from femgear.contact.path import ContactPath
 from femgear.coupling.loop import CoupledResult
+from femgear.lubrication.films import LevelFilm
+from femgear.ltca.te import TEAnalysis
 from femgear.rating.suite import PairRating
 from femgear.stiffness.tvms import MeshStiffness
 
@@ -35,6 +37,8 @@ class Tribology:
     face_grid: np.ndarray | None = None
     wear_face: np.ndarray | None = None         #: (member, helix, n, m) wear depth, ``wear.field = "face"`` [m]
     thermal_face: np.ndarray | None = None      #: (member, helix, n, m) ζ_T of ``thermal = "fe3d"`` [m]
+    #: the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.lubrication.films`)
+    film: LevelFilm | None = None
 
 
 @dataclass(frozen=True)
@@ -47,6 +51,9 @@ class RunResult:
     tribology: Tribology
     coupled: CoupledResult | None = None        #: with a dynamics level
     seconds: float = 0.0
+    #: ``stiffness = "ltca"``: loaded TE, its harmonics, stiffness, load share and peak pressure of the LTCA
+    #: cycle of the stiffness level (new flanks with the scene's modifications, operating torque)
+    transmission_error: TEAnalysis | None = None
     #: ISO 6336-2/-3, ISO/TS 6336-20/21/22 ratings beside femgear's own figures (:func:`femgear.rate.rate_case`);
     #: None when the rating could not be computed (logged)
     rating: PairRating | None = None

@@ -120,28 +120,63 @@ def rating_summary(rating: PittingRating) -> dict[str, Any]:
     }
 
 
-def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshPowerLoss, str]:
-    """Mesh power loss on the positions of ``contact`` with μ of the scene's lubrication level.
-
-    Levels beyond ``formula`` (FE EHL, TEHL) are summarised with ``formula`` (the
-    returned level says which was used); ``femgear run`` carries the level's own μ.
-    """
+def path_friction(scene, pair: GearPair, contact: ContactPath) -> tuple[np.ndarray, str]:
+    """μ along ``contact`` at the oil temperature, of the scene's lubrication level (levels beyond
+    ``formula``, FE EHL and TEHL, are summarised with ``formula``; the returned level says which)."""
     from femgear.case import build_case
     from femgear.lubrication.levels import lubrication_solver
 
-    from femgear.contact.path import contact_along_path, zone_grid
-
     level = scene.physics.lubrication
     level = level if level in SUMMARY_FRICTION_LEVELS else "formula"
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    solver = lubrication_solver(build_case(scene, pair), level)
+    mu, _ = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, scene.operating.ambient_temperature))
+    return np.asarray(mu, float), level
+
+
+def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshPowerLoss, str]:
+    """Mesh power loss on the positions of ``contact`` with μ of the scene's lubrication level
+    (:func:`path_friction`); ``femgear run`` carries the level's own μ."""
+    from femgear.contact.path import contact_along_path, zone_grid
+
     if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
         # the load jumps at B and D must lie on the grid for an exact path integral
         contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, contact.kin.u.size))
     k = contact.kin
     w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
-    solver = lubrication_solver(build_case(scene, pair), level)
-    mu, _ = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, scene.operating.ambient_temperature))
+    mu, level = path_friction(scene, pair, contact)
     omega1 = pinion_speed(scene) * 2 * math.pi / 60
-    return mesh_power_loss(pair, k.u, np.asarray(mu, float), w, k.vs, pinion_torque(scene), omega1), level
+    return mesh_power_loss(pair, k.u, mu, w, k.vs, pinion_torque(scene), omega1), level
+
+
+def flash_summary(scene, pair: GearPair, contact: ContactPath) -> dict[str, Any]:
+    """Blok's maximum flash temperature (:func:`femgear.lubrication.flash.blok_flash_temperature`)
+    along the path, with the line load of the load sharing and μ of :func:`path_friction`: at the
+    start A and the end E of contact (the largest sliding) and its maximum."""
+    from femgear.lubrication.flash import blok_flash_temperature, thermal_effusivity
+
+    mu, level = path_friction(scene, pair, contact)
+    k, m = contact.kin, scene.material
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    B = thermal_effusivity(m.conductivity, m.density, m.specific_heat)
+    theta = np.asarray(blok_flash_temperature(mu, w, k.vs, contact.hertz_half_width, k.v1, k.v2, B, B), float)
+    j = int(np.argmax(theta))
+    return {"friction_level": level, "theta_fl_A": float(theta[0]), "theta_fl_E": float(theta[-1]),
+            "theta_fl_max": float(theta[j]), "theta_fl_max_position": float(k.s[j])}
+
+
+def stiffness_summary(scene, pair: GearPair) -> dict[str, Any]:
+    """ISO 6336-1:2019 method B single and mesh stiffness per unit face width (SI: N/m per m), at the
+    scene's load F_t K_A / b (below 100 N/mm the standard reduces c')."""
+    from femgear.stiffness.iso6336 import iso6336_stiffness
+
+    F_t = pinion_torque(scene) / pair.r1
+    line_load = F_t * scene.rating.application_factor / (pair.b * pair.n_helices)
+    iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=scene.material.youngs_modulus)
+    unit = 1e9  # N/(mm µm) -> N/m per m
+    return {"method": "ISO 6336-1:2019 method B", "c_prime_th": iso.c_th * unit, "c_prime": iso.c_prime * unit,
+            "c_gamma_alpha": iso.c_gamma_alpha * unit, "c_gamma_beta": iso.c_gamma_beta * unit}
 
 
 def power_loss_summary(loss: MeshPowerLoss, level: str) -> dict[str, Any]:
@@ -164,6 +199,8 @@ def scene_summary(scene, pair: GearPair, contact: ContactPath, power_loss: bool 
         "geometry": geometry_summary(pair, pinion_speed(scene)),
         "contact": contact_summary(contact),
         "rating": rating_summary(scene_rating(scene, pair) if ratings is None else ratings.pitting),
+        "stiffness_iso6336": stiffness_summary(scene, pair),
+        "flash_temperature": flash_summary(scene, pair, contact),
     }
     if ratings is not None:
         out.update(pair_rating_summary(ratings))

@@ -230,7 +230,7 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
 
 
 def run(coarse: bool = False) -> dict:
-    from femgear.ltca.vtk import write_flank_pressure
+    from femgear.io.ltca import write_flank_pressure
     from femgear.stiffness.tvms import mesh_stiffness
 
     scene, pair = setup()

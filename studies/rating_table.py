@@ -1,7 +1,7 @@
 """The rating table of docs/rating.md: ISO safety factors beside femgear's own figures, one table per pair.
 
-Covers the paper's baseline and every scene under studies/zoo/ (globbed, so new zoo scenes join
-by themselves), plus the FZG C test gear.  Run from the repository root:
+Covers every scene under studies/zoo/ (globbed, so new zoo scenes join by themselves), plus the
+paper's baseline and the FZG C test gear where the zoo has no copy of them.  Run from the repository root:
 
     PYTHONPATH=$PWD python studies/rating_table.py            # ~10 s per pair
     PYTHONPATH=$PWD python studies/rating_table.py --fillet   # + the FE fillet stress (~20–40 s per pair)
@@ -20,8 +20,11 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def setup() -> list[Path]:
-    return [ROOT / "studies" / "paper_baseline.toml", *sorted((ROOT / "studies" / "zoo").glob("*.toml")),
-            ROOT / "studies" / "fzg_c14.toml"]
+    """Every zoo scene, plus the paper's baseline and FZG C14 where the zoo has no copy of them."""
+    zoo = sorted((ROOT / "studies" / "zoo").glob("*.toml"))
+    extra = [ROOT / "studies" / name for name in ("paper_baseline.toml", "fzg_c14.toml")
+             if name not in {p.name for p in zoo}]
+    return extra + zoo
 
 
 def rate(path: Path, fillet: bool):

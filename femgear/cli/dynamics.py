@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from femgear.cli.common import add_scene_arguments, emit_json
+from femgear.cli.common import add_scene_arguments, emit_json, load_scene_arg
 
 
 def register(sub) -> None:
@@ -35,7 +35,6 @@ def register(sub) -> None:
 
 def _run(args: argparse.Namespace) -> int:
     from femgear.case import build_case
-    from femgear.scene import load_scene
 
     from femgear.cli.limits import finite
     from femgear.errors import ArgumentError
@@ -47,9 +46,10 @@ def _run(args: argparse.Namespace) -> int:
     finite("--transient", args.transient, nonnegative=True)
     if args.transient >= args.cycles:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
+    scene = load_scene_arg(args)
     if args.sweep:
-        sweep_speeds(args.sweep)
-    case = build_case(load_scene(args.scene, args.overrides))
+        _check_sweep_speeds(scene, sweep_speeds(args.sweep))
+    case = build_case(scene)
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
     else:
@@ -103,6 +103,22 @@ def sweep_speeds(text: str):
     if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= hi and count >= 1):
         raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {text!r}")
     return np.linspace(lo, hi, count)
+
+
+def _check_sweep_speeds(scene, speeds) -> None:
+    """The sweep's end speeds pass the scene's speed checks (:mod:`femgear.scene.ranges`, the burst
+    speed), before any computing; a refusal names ``--sweep``."""
+    from femgear.errors import ArgumentError, SceneError
+    from femgear.scene.load import scene_from_dict
+
+    data = scene.model_dump(exclude_none=True)
+    for rpm in (float(speeds[0]), float(speeds[-1])):
+        try:
+            scene_from_dict(data, [f"operating.speed_rpm={rpm!r}"], warn=False)
+        except SceneError as exc:
+            if exc.key != "operating.speed_rpm":
+                raise
+            raise ArgumentError("--sweep", exc.message) from None
 
 
 def _sweep(case, args, out: Path) -> int:

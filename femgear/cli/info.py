@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from femgear.cli.common import add_scene_arguments, emit_json
+from femgear.cli.common import add_scene_arguments, emit_json, load_scene_arg
 
 
 def register(sub) -> None:
@@ -19,10 +19,9 @@ def _info(args: argparse.Namespace) -> int:
     from femgear.contact.path import contact_along_path, zone_grid
     from femgear.geometry import GearPair
     from femgear.rate import rate_case
-    from femgear.scene import load_scene
     from femgear.summary import scene_summary
 
-    scene = load_scene(args.scene, args.overrides)
+    scene = load_scene_arg(args)
     pair = GearPair.from_scene(scene)
     contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
     summary = scene_summary(scene, pair, contact, ratings=rate_case(scene, pair, contact))
@@ -44,7 +43,9 @@ UNITS = {
     "load_per_length": "N/m", "line_load": "N/m", "max_line_load": "N/m",
     "hertz_pressure": "Pa", "max_hertz_pressure": "Pa", "sigma_H": "Pa", "sigma_H0": "Pa", "sigma_HP": "Pa",
     "sigma_Hlim": "Pa", "entrainment_speed": "m/s", "max_sliding_speed": "m/s", "pitch_line_velocity": "m/s",
-    "input_power": "W", "mean_loss": "W", "energy_per_mesh_cycle": "J", "max_loss_density": "W/m",
+    "input_power": "W", "c_prime_th": "N/m/m", "c_prime": "N/m/m", "c_gamma_alpha": "N/m/m",
+    "c_gamma_beta": "N/m/m", "theta_fl_A": "K", "theta_fl_E": "K", "theta_fl_max": "K",
+    "theta_fl_max_position": "m", "mean_loss": "W", "energy_per_mesh_cycle": "J", "max_loss_density": "W/m",
     "s_Fn": "m", "rho_F": "m", "h_Fe": "m", "sigma_F0": "Pa", "sigma_F": "Pa", "sigma_Flim": "Pa", "sigma_FP": "Pa",
     "fillet_max_principal": "Pa", "fillet_radius": "m", "oil_temperature": "K", "max_flash_temperature": "K",
     "mean_flash_temperature": "K", "bulk_temperature": "K", "max_contact_temperature": "K",

@@ -39,10 +39,25 @@ def key_figures(summary: dict[str, Any], seconds: float | None = None) -> list[t
     rows.append(("mesh stiffness, mean (ripple)",
                  f"{_fmt(_get(summary, 'stiffness', 'mean_total'), 1e-9)} "
                  f"({_fmt(_get(summary, 'stiffness', 'ripple_total'), 100, '.2f')} %)", "kN/µm"))
+    te = summary.get("transmission_error")
+    if te:
+        harm = " ".join(_fmt(h, 1e6, ".3f") for h in list(te.get("lte_harmonics", []))[:3])
+        rows.append(("loaded TE p-p (LTCA, normal); harmonics 1-3",
+                     f"{_fmt(te.get('lte_peak_to_peak'), 1e6, '.4f')}; {harm}", "µm"))
+        if te.get("lte_peak_to_peak_deviated") is not None:
+            rows.append(("loaded TE p-p, worn/expanded flanks (last pass)",
+                         _fmt(te.get("lte_peak_to_peak_deviated"), 1e6, ".4f"), "µm"))
+        rows.append(("max LTCA contact pressure", f"{_fmt(te.get('max_pressure'), 1e-9, '.3f')} at "
+                     f"{te.get('max_pressure_where')}" + (" (edge contact)" if te.get("edge_contact") else ""), "GPa"))
     rows.append(("Hertz pressure at the pitch point", _fmt(_get(summary, "contact", "pitch", "hertz_pressure"), 1e-9),
                  "GPa"))
-    rows.append(("central film at the pitch point", _fmt(_get(summary, "contact", "pitch", "film_central"), 1e6),
-                 "µm"))
+    film = summary.get("film")
+    if film:
+        rows.append((f"central film at the pitch point ({film['level']})", _fmt(film.get("central_pitch"), 1e6), "µm"))
+        rows.append((f"minimum film along the path ({film['level']})", _fmt(film.get("minimum"), 1e6), "µm"))
+    else:
+        rows.append(("central film at the pitch point (formula)",
+                     _fmt(_get(summary, "contact", "pitch", "film_central"), 1e6), "µm"))
     if "friction" in summary:
         f = summary["friction"]
         rows.append(("μ max / mean", f"{_fmt(f.get('mu_max'), 1, '.4f')} / {_fmt(f.get('mu_mean'), 1, '.4f')}", ""))

@@ -11,7 +11,7 @@ import argparse
 import time
 from pathlib import Path
 
-from femgear.cli.common import add_scene_arguments, emit_json
+from femgear.cli.common import add_scene_arguments, emit_json, load_scene_arg
 
 
 def register(sub) -> None:
@@ -28,9 +28,8 @@ def _run(args: argparse.Namespace) -> int:
     from femgear.cli.report import CouplingProgress, key_figures, print_key_figures
     from femgear.io.paths import child_path, prepare_output_dir
     from femgear.pipeline import run_scene
-    from femgear.scene import load_scene
 
-    scene = load_scene(args.scene, args.overrides)
+    scene = load_scene_arg(args)
     if args.out is None:
         out = prepare_output_dir(child_path("out", scene.meta.name, "meta.name"), "meta.name")
     else:

@@ -73,9 +73,36 @@ def crowned_contact(scene, pair=None) -> CrownedContact:
     mods = scene.modifications
     c1, c2 = mods.member(1).crowning, mods.member(2).crowning
     if c1 + c2 <= 0.0:
-        raise SceneError("modifications.crowning", "a point-contact lubrication level needs a lead crowning "
-                         "(an uncrowned involute flank has no curvature along the contact line)")
+        raise SceneError("modifications.crowning", "physics.lubrication = \"tehl-point\" needs a lead crowning > 0 "
+                         "(an uncrowned involute flank has no curvature along the contact line: a line contact, "
+                         "use \"tehl\")")
     b = pair.b
     kappa = 8.0 * (c1 + c2) / b**2
     length = b / math.cos(pair.beta_b) * pair.eps_alpha / pair.eps_gamma
     return CrownedContact(kappa=kappa, beta_b=pair.beta_b, contact_length=length)
+
+
+#: Smallest R_x/R_y at which the ``tehl-point`` level is measured: the paper's pair with a 10 µm lead crowning
+#: (0.0044–0.0050 along the path; studies/benchmarks/tehl_point.py: grid level 1 against 2 within 2.8 % in h_c,
+#: 0.2 % in μ).  Below it the ellipse is a line contact for the point solver's grid (its stretched cells reach
+#: aspect ratios beyond those tested) and the load continuation fails (a 2 x 120 mm marine helix: 4e-4).
+MIN_POINT_RATIO = 4.0e-3
+
+
+def check_point_range(scene, pair, R: np.ndarray) -> None:
+    """Refuse ``physics.lubrication = "tehl-point"`` up front where the crowned contact is too slender for the
+    point solver (R_x/R_y < :data:`MIN_POINT_RATIO` somewhere on the path, radii ``R``): one line naming the key,
+    the ratio, the limit, and the level or the crowning that would run."""
+    geo = crowned_contact(scene, pair)
+    Rx, Ry = geo.radii(R)
+    ratio = float(np.min(Rx / Ry))
+    if ratio >= MIN_POINT_RATIO:
+        return
+    mods = scene.modifications
+    crowning = mods.member(1).crowning + mods.member(2).crowning
+    needed = crowning * MIN_POINT_RATIO / ratio
+    raise SceneError("physics.lubrication",
+                     f'"tehl-point": the crowned contact\'s R_x/R_y = {ratio:.2g} is below {MIN_POINT_RATIO:g}, the '
+                     f"most slender ellipse the point solver is validated for (b = {pair.b * 1e3:.0f} mm, crowning "
+                     f"{crowning * 1e6:.3g} µm summed); it is a line contact: use \"tehl\" (or a summed crowning "
+                     f"≥ {needed * 1e6:.0f} µm)")

@@ -57,7 +57,7 @@ from femgear.errors import ConvergenceError
 from femgear.lubrication.levels import Lubrication, lubrication_solver
 from femgear.stiffness.tvms import MeshStiffness
 from femgear.wear.face import FaceReference
-from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map, trapezoid_weights
+from femgear.wear.load_sharing import ReferenceLoad, load_map, reference_load_map
 
 
 def line_stiffness(case: Case, mean_helix_stiffness: float, stiffness: MeshStiffness | None = None):
@@ -197,7 +197,7 @@ def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra
     solves each kept phase of both helices at every step; None keeps all)."""
     res = info["ltca"]
     k = _phase_stride(res, n_phase)
-    return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u, trapezoid_weights(u))[:, ::k],
+    return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u, scaled=True)[:, ::k],
                          deviation=np.asarray(deviation, dtype=float), offsets=(0.0, float(info["options"]["stagger"])),
                          approach=res.path_approach(pair, u, info.get("modifications"), extra)[:, ::k])
 

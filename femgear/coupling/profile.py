@@ -39,7 +39,9 @@ def phase_table(pair: GearPair, u: np.ndarray, deviation: np.ndarray, n_phase: i
 
     The deviation is interpolated linearly between the positions ``u`` and integrated
     exactly over each line's extent, so the table is smooth in the phase (no steps at
-    the grid spacing, which the dynamics would feel as an excitation).
+    the grid spacing, which the dynamics would feel as an excitation).  A spur pair's
+    lines each cover the whole face at one position: the mean is that over the pairs in
+    contact (equal lengths b).
     """
     u = np.asarray(u, dtype=float)
     deviation = np.asarray(deviation, dtype=float)
@@ -48,6 +50,11 @@ def phase_table(pair: GearPair, u: np.ndarray, deviation: np.ndarray, n_phase: i
     table = np.empty(n_phase)
     for i in range(n_phase):
         lines = contact_lines(pair, i / n_phase, offset)
+        if pair.beta_b == 0:
+            if lines.u_lo.size == 0:
+                raise ValueError("no tooth pair in contact")
+            table[i] = float(np.mean(np.interp(lines.u_lo, u, deviation)))
+            continue
         lo = np.clip(lines.u_lo, u[0], u[-1])
         hi = np.clip(lines.u_hi, u[0], u[-1])
         width = np.sum(hi - lo)

@@ -5,6 +5,7 @@
 - ``paths``     output folders checked writable before a computation; names kept inside their root
 - ``paraview``  .pvd collections of .vtu files (meshio); ``paraview_run`` the main job's set
 - ``run``, ``dynamics``  the results.json layout of a run and the dynamics files
+- ``ltca``      ``femgear ltca``'s results.json and ParaView sets; the loaded-TE block of a run's results.json
 """
 
 from femgear.io.atomic import atomic_write, write_bytes_atomic, write_text_atomic

@@ -20,8 +20,11 @@ file renamed into place), the ``.pvd`` last, so that a collection that exists is
   fields on the 3-D loaded flank of tooth 0 of both members, both helices, over (ρ, ζ):
   ``wear_depth`` [m] (the run's final face wear field, whose face mean is ``flanks.pvd``'s
   wear) and ``thermal_deviation`` [m] (ζ_T of the 3-D unit solutions at the run's bulk rise),
-  with ``member``, ``helix``, ``u``, ``rho``, ``zeta``; each member in its LTCA body frame, the
-  gear shifted by a_w along x (:func:`femgear.io.paraview_run.face_mesh`).
+  with ``member``, ``helix``, ``u``, ``rho``, ``zeta``; each member's LTCA body frame turned into its
+  meshing position, the gear's axis at (a_w, 0) (:func:`femgear.io.paraview_run.face_mesh`).
+- ``ltca_pressure.vtu`` (with ``stiffness = "ltca"``): the LTCA's pressure and load maps on the
+  loaded flanks of both members in mesh (:mod:`femgear.ltca.maps`): ``p_max``, ``w_mean``,
+  ``w_worst``, ``edge``, ``edge_contact``, ``member``, ``helix``, ``rho``, ``u``, ``zeta``.
 - ``dynamics.pvd`` (with a dynamics level): the last simulated mesh cycle as a time
   series: the working pitch circles of the four helix halves, with the vector
   ``displacement`` = d + θ × r of each body's six DOFs [m] (it includes the static

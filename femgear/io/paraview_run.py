@@ -123,13 +123,14 @@ def face_mesh(result: RunResult):
     ``thermal_deviation``, both [m]) on the 3-D loaded flanks of tooth 0 of both members, both helices,
     as a meshio quad mesh (None without face fields).
 
-    Each member in its own body frame (:func:`femgear.ltca.vtk.helix_flank_quads`: the LTCA's member
-    bodies), the gear shifted by the centre distance along x; a flank point at path position u_k has
+    Each member's body frame (:func:`femgear.ltca.vtk.helix_flank_quads`: the LTCA's member bodies) turned
+    into its meshing position, the gear's axis at (a_w, 0) (:func:`femgear.ltca.maps.to_mesh`); a flank point at path position u_k has
     roll distance ρ₁ = u_k (pinion) or ρ₂ = T₁T₂ − u_k (gear), face coordinate ζ_m of the run's face grid.
     Point data also ``member`` (1, 2), ``helix`` (0 left, 1 right), ``u``, ``rho``, ``zeta`` [m]."""
     import meshio
 
     from femgear.coupling.thermal import roll_distances
+    from femgear.ltca.maps import to_mesh
     from femgear.ltca.vtk import helix_flank_quads
 
     t, case = result.tribology, result.case
@@ -143,7 +144,7 @@ def face_mesh(result: RunResult):
     U, Z = np.meshgrid(u, grid, indexing="ij")
     for j in (0, 1):
         pts, q = helix_flank_quads(pair, j + 1, rho[j], grid, case.groove_width, case.stagger)
-        pts[:, 0] += j * pair.a_w
+        pts = to_mesh(pair, j + 1, pts)
         quads.append(q + sum(len(p) for p in points))
         points.append(pts)
         for k, v in fields.items():
@@ -159,19 +160,25 @@ def face_mesh(result: RunResult):
 
 def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path]:
     """Write ``flanks.pvd``, with dynamics ``dynamics.pvd``, with ``thermal = "fe"`` ``body.pvd``, and with
-    ``stiffness = "ltca"`` the LTCA's pressure map on the 3-D pinion flanks of both helices, ``ltca_pressure.vtu``
-    (:func:`femgear.ltca.vtk.write_flank_pressure`; the LTCA cycle of the stiffness level: new flanks with the
-    scene's modifications), and with face-resolved fields (``wear.field = "face"``, ``thermal = "fe3d"``)
+    ``stiffness = "ltca"`` the LTCA's pressure and load maps on the 3-D loaded flanks of both members, both
+    helices, each turned into its meshing position, ``ltca_pressure.vtu`` (:func:`femgear.ltca.maps.load_maps`;
+    the LTCA cycle of the stiffness level: new flanks with the scene's modifications; ``w_worst`` at the phase
+    of the largest pressure), and with face-resolved fields (``wear.field = "face"``, ``thermal = "fe3d"``)
     ``flank_face.vtu`` (:func:`face_mesh`)."""
     out_dir = Path(out_dir)
     files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
     ltca = result.stiffness.info.get("ltca") if result.stiffness is not None else None
     if ltca is not None and ltca.line_load:
-        from femgear.ltca.vtk import write_flank_pressure
+        from femgear.io.ltca import write_maps_vtu
+        from femgear.ltca.maps import load_maps
+        from femgear.ltca.te import pressure_peak
 
-        m = result.case.material
-        files["ltca_pressure_vtu"] = write_flank_pressure(out_dir / "ltca_pressure.vtu", ltca, result.case.pair,
-                                                          m.youngs_modulus, m.poisson_ratio)
+        m, case, te = result.case.material, result.case, result.transmission_error
+        worst = te.worst_phase if te is not None else pressure_peak(ltca, case.pair, m.youngs_modulus,
+                                                                    m.poisson_ratio)[1]
+        maps = load_maps(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, case.scene.operating.torque, worst,
+                         case.groove_width, case.stagger)
+        files["ltca_pressure_vtu"] = write_maps_vtu(out_dir / "ltca_pressure.vtu", maps)
     face = face_mesh(result)
     if face is not None:
         from femgear.io.paraview import write_vtu

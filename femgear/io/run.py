@@ -8,6 +8,10 @@ Layout (the contract; keys are added, never renamed without a README note):
   and statically mean_per_helix, seconds), ``friction`` (mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
   gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
+  with ``stiffness = "ltca"`` ``transmission_error`` (:func:`femgear.io.ltca.te_summary`: loaded TE
+  p-p, harmonics, stiffness mean/ripple, load share, peak pressure and its edge flag, unloaded TE;
+  ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
+  TE p-p of the last coupling pass's worn and expanded flanks),
   with dynamics ``dynamics`` (:func:`femgear.io.dynamics.dynamics_summary`) and
   ``coupling`` (mode, converged, iterations, seconds, history), ``outputs`` (files);
 - ``scene``: the validated scene;
@@ -15,11 +19,13 @@ Layout (the contract; keys are added, never renamed without a README note):
   films, and the tribology fields: load_per_length, friction_coefficient,
   temperature_rise, thermal_deviation_pinion/gear, wear_pinion/gear);
 - ``mesh_stiffness`` (phase, k_left, k_right) and, with dynamics,
-  ``mesh_force_per_phase`` (left, right).
+  ``mesh_force_per_phase`` (left, right); with ``ltca`` ``transmission_error_per_phase``
+  (:func:`femgear.io.ltca.te_curves`: phase, lte, nlte, force_left/right, k_total).
 """
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Any
 
@@ -60,6 +66,11 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
         "hertz_pressure": c.hertz_pressure, "hertz_half_width": c.hertz_half_width,
         "film_central": c.film_central, "film_minimum": c.film_minimum, "load_per_length": t.load_per_length,
     }
+    if t.film is not None:      # the film of the level that ran replaces the formula film, which stays as *_formula
+        fields.update(film_central_formula=c.film_central, film_minimum_formula=c.film_minimum,
+                      film_central=t.film.central, film_minimum=t.film.minimum, film_pressure_max=t.film.pressure_max)
+        if t.film.temperature_rise is not None:
+            fields["film_temperature_rise"] = t.film.temperature_rise
     if t.friction_coefficient is not None:
         fields.update(friction_coefficient=t.friction_coefficient, temperature_rise=t.temperature_rise)
     if t.thermal_deviation is not None:
@@ -89,7 +100,30 @@ def run_summary(result: RunResult) -> dict[str, Any]:
                                "history": {"iteration": h.iteration, "mesh_force_change": h.mesh_force_change,
                                            "mu_change": h.mu_change, "seconds": h.seconds}}
     summary.update(tribology_summary(result.tribology, case.path.s, static))
+    if result.transmission_error is not None:
+        summary["transmission_error"] = _te_summary(result)
+    if result.tribology.film is not None:
+        summary["film"] = film_summary(result.tribology.film, case.path.s, result.contact.pitch_index)
     return summary
+
+
+def _te_summary(result: RunResult) -> dict[str, Any]:
+    from femgear.io.ltca import UNITS, te_summary
+
+    out = te_summary(result.transmission_error, math.cos(result.case.pair.beta_b))
+    out["resolved_orders"] = result.stiffness.info.get("resolved_orders")
+    if result.coupled is not None and math.isfinite(result.coupled.state.lte_peak_to_peak):
+        out["lte_peak_to_peak_deviated"] = result.coupled.state.lte_peak_to_peak
+    out["units"] = {k: UNITS[k] for k in out if k in UNITS} | {"lte_peak_to_peak_deviated": "m"}
+    return out
+
+
+def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
+    """The film of the lubrication level that ran, labelled with it."""
+    i = int(np.argmin(film.minimum))
+    return {"level": film.level, "method": film.method, "central_pitch": float(film.central[pitch]),
+            "minimum": float(film.minimum[i]), "minimum_position": float(s[i]),
+            "pressure_max": float(np.max(film.pressure_max))}
 
 
 def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tuple[dict[str, Any], dict[str, Path]]:
@@ -114,6 +148,10 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tup
     if result.coupled is not None:
         force = result.coupled.state.mesh_force
         payload["mesh_force_per_phase"] = {"left": force[0], "right": force[1]}
+    if result.transmission_error is not None:
+        from femgear.io.ltca import te_curves
+
+        payload["transmission_error_per_phase"] = te_curves(result.transmission_error)
     write_json(files["results"], payload)
     return summary, files
 

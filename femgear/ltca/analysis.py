@@ -28,6 +28,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from femgear.geometry.gear import GearPair
+from femgear.geometry.lines import hat_integrals
 from femgear.ltca.compliance import MemberCompliance, member_compliance
 from femgear.ltca.contact import phase_points, solve_phase
 from femgear.ltca.halfspace import hertz_pressure, reduced_modulus
@@ -135,9 +136,9 @@ class LTCAResult:
         return out
 
     def _path_lines(self, pair: GearPair, u: np.ndarray):
-        """Per phase i and helix h, each contact line's grid positions: (i, h, on-mask, u_j, w_j, ζ(u), F) with
-        the line's point positions u_j and loads w_j sorted in u, the face coordinate of u on it and
-        the line's load F = Σ w_j Δℓ_j [N]."""
+        """Per phase i and helix h, each contact line's grid positions: (i, h, on-mask, u_j, w_j, ζ(u), F,
+        (u_lo, u_hi)) with the line's point positions u_j and loads w_j sorted in u, the face coordinate of u
+        on it, the line's load F = Σ w_j Δℓ_j [N] and its extent in u (half a segment beyond the end points)."""
         if not self.line_load:
             raise ValueError("no line loads kept: run mesh_cycle(..., keep_lines=True)")
         tb = math.tan(pair.beta_b)
@@ -149,10 +150,11 @@ class LTCAResult:
                     m = (arr[:, 0] == h) & (arr[:, 1] == j)
                     order = np.argsort(arr[m, 2])
                     uj, wj, zj, lj = arr[m, 2][order], arr[m, 4][order], arr[m, 3][order], dl[m][order]
-                    on = (u >= uj[0] - half * lj[0]) & (u <= uj[-1] + half * lj[-1])
-                    yield i, h, on, uj, wj, zj[0] + (u[on] - uj[0]) / tb, float(wj @ lj)
+                    lo, hi = uj[0] - half * lj[0], uj[-1] + half * lj[-1]
+                    on = (u >= lo) & (u <= hi)
+                    yield i, h, on, uj, wj, zj[0] + (u[on] - uj[0]) / tb, float(wj @ lj), (lo, hi)
 
-    def path_load(self, pair: GearPair, u: np.ndarray, weights: np.ndarray | None = None) -> np.ndarray:
+    def path_load(self, pair: GearPair, u: np.ndarray, scaled: bool = False) -> np.ndarray:
         """Load per unit contact-line length w' at the path positions ``u`` [N/m]: (helix, phase, position).
 
         For each phase and helix, every grid position u on a contact line takes the linear
@@ -162,8 +164,9 @@ class LTCAResult:
         of u.  Where lines of one helix overlap in u (overlap ratio ε_β > 1) the loads of the
         covering lines are averaged (the face-uniform reading of :mod:`femgear.wear.load_sharing`).
 
-        ``weights``: the quadrature weights Δu of the positions; each line's grid loads are then
-        scaled to carry the line's LTCA load, Σ w' Δu / sin β_b = Σ w'_p Δℓ_p.  Without it a line
+        ``scaled``: each line's grid loads are scaled to carry the line's LTCA load, Σ_k w'_k H_k / sin β_b
+        = Σ w'_p Δℓ_p with H_k the line's exact hat-function weights
+        (:func:`femgear.geometry.lines.hat_integrals`; nodes of the grid outside the line count 0).  Without it a line
         piece much shorter than the grid spacing (where a contact line meets a tip edge, its
         one point can carry 30× the mean w') would count over a whole grid cell (up to 3× the
         helix force at that phase on the level-1 model with 61 positions).
@@ -171,18 +174,18 @@ class LTCAResult:
         u = np.asarray(u, float)
         out = np.zeros((2, self.phase.size, u.size))
         hits = np.zeros(out.shape)
-        for i, h, on, w, _ in self._grid_lines(pair, u, weights):
+        for i, h, on, w, _ in self._grid_lines(pair, u, scaled):
             out[h, i, on] += w
             hits[h, i, on] += 1
         return out / np.maximum(hits, 1)
 
-    def _grid_lines(self, pair: GearPair, u: np.ndarray, weights: np.ndarray | None):
+    def _grid_lines(self, pair: GearPair, u: np.ndarray, scaled: bool):
         """Per phase i, helix h and contact line: (i, h, on-mask, w' at u[on], ζ at u[on]), the line's loads
-        interpolated in u and, with ``weights``, scaled to carry its LTCA load (:meth:`path_load`)."""
+        interpolated in u and, if ``scaled``, scaled to carry its LTCA load (:meth:`path_load`)."""
         sb = math.sin(pair.beta_b)
-        for i, h, on, uj, wj, zeta, carried in self._path_lines(pair, u):
+        for i, h, on, uj, wj, zeta, carried, (lo, hi) in self._path_lines(pair, u):
             w = np.interp(u[on], uj, wj)
-            grid = float(w @ weights[on]) / sb if weights is not None else 0.0
+            grid = float(w @ hat_integrals(u, lo, hi)[on]) / sb if scaled else 0.0
             yield i, h, on, (w * (carried / grid) if grid > 0 else w), zeta
 
     def path_zeta(self, pair: GearPair, u: np.ndarray) -> np.ndarray:
@@ -192,7 +195,7 @@ class LTCAResult:
         positions at one (phase, u), which the (phase, u) grid cannot hold)."""
         u = np.asarray(u, float)
         out = np.full((2, self.phase.size, u.size), np.nan)
-        for i, h, on, _, zeta in self._grid_lines(pair, u, None):
+        for i, h, on, _, zeta in self._grid_lines(pair, u, False):
             if np.any(np.isfinite(out[h, i, on])):
                 raise ValueError("path_zeta: contact lines of one helix overlap in u (overlap ratio > 1); "
                                  "the face-resolved wear needs one line per helix at each path position")
@@ -212,7 +215,7 @@ class LTCAResult:
         u = np.asarray(u, float)
         out = np.zeros((2, self.phase.size, u.size))
         hits = np.zeros(out.shape)
-        for i, h, on, _, _, zeta, _ in self._path_lines(pair, u):
+        for i, h, on, _, _, zeta, _, _ in self._path_lines(pair, u):
             eps = separation(pair, modifications, ("left", "right")[h], u[on], zeta, extra)
             out[h, i, on] += self.lte[i] - eps
             hits[h, i, on] += 1

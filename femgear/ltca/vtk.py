@@ -1,4 +1,4 @@
-"""The pressure map of an LTCA cycle on the 3-D pinion flanks of both helices, as a VTK file for ParaView.
+"""The pressure map of an LTCA cycle on the 3-D pinion flanks of both helices (written by :mod:`femgear.io.ltca`).
 
 The loaded flank of the pinion's tooth 0 of each helix is tessellated on a (ρ, ζ) grid (ρ the
 roll distance over the active flank, ζ the helix's own face coordinate, the groove at ζ = b).
@@ -29,8 +29,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from pathlib import Path
-
 import numpy as np
 
 
@@ -93,27 +91,6 @@ def flank_pressure_map(result, pair, youngs_modulus: float, poisson_ratio: float
                 np.maximum.at(pmax[h], (i, k), hertz_pressure(w, R, Ep))
                 np.add.at(wsum[h], (i, k), w)
     return FlankMap(rho, zeta, pmax, wsum / len(result.line_load), pair.beta_b)
-
-
-def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, poisson_ratio: float) -> Path:
-    """Write the pressure map on the 3-D pinion flanks of both helices as VTK unstructured quads (``.vtu``).
-
-    The body's groove width and stagger come from ``result.info`` (:func:`femgear.ltca.analysis.mesh_cycle`).
-    Point data: ``p_max`` [Pa], ``w_mean`` [N/m], ``rho``, ``zeta`` [m], ``helix`` (0 left, 1 right),
-    ``edge`` (1 on the flank's edges, where ``p_max`` is an edge contact and not a Hertz pressure).
-    """
-    import meshio
-
-    from femgear.io.paraview import write_vtu
-
-    fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
-    pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.info.get("groove", 0.0),
-                                   result.info.get("stagger", 0.0))
-    R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
-    data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), 2),
-            "zeta": np.tile(Z.ravel(), 2), "helix": np.repeat([0, 1], R.size).astype(np.int32),
-            "edge": np.tile(fmap.edge.ravel(), 2).astype(np.int32)}
-    return write_vtu(path, meshio.Mesh(pts, [("quad", quads)], point_data=data))
 
 
 def helix_flank_quads(pair, member: int, rho: np.ndarray, zeta: np.ndarray, groove: float = 0.0,

@@ -16,6 +16,7 @@ from pydantic import ValidationError
 from femgear.errors import SceneError
 from femgear.scene.plausibility import check_operating_limits, plausibility_warnings
 from femgear.scene.presets import expand_preset
+from femgear.scene.ranges import check_input_ranges
 from femgear.scene.schema import Scene
 
 
@@ -69,8 +70,11 @@ def _first_error(exc: ValidationError) -> SceneError:
 def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, warn: bool = True) -> Scene:
     """Validate a raw scene dictionary (plus overrides) and check the gear is feasible.
 
-    Impossible operating points raise :class:`SceneError`; implausible ones are logged as
-    warnings (``warn=False`` skips that check, :mod:`femgear.scene.plausibility`).
+    Impossible inputs and operating points raise :class:`SceneError`; implausible ones are logged as
+    warnings, one line per key (``warn=False`` skips them).  The inputs as typed are checked in
+    engineering terms first (:mod:`femgear.scene.ranges`), before any derived geometry, so that a
+    unit slip is blamed on the key the user typed; then the gear's feasibility
+    (:mod:`femgear.geometry`) and the operating point (:mod:`femgear.scene.plausibility`).
     """
     from femgear.geometry import GearPair  # the feasibility checks are geometry's
 
@@ -79,13 +83,20 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
         scene = Scene.model_validate(raw)
     except ValidationError as exc:
         raise _first_error(exc) from None
+    range_warnings = check_input_ranges(scene)
     pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
+    if scene.physics.lubrication == "tehl-point":
+        from femgear.contact.crowning import check_point_range
+        from femgear.geometry import kinematics, path_positions
+
+        check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
     if warn:
         from femgear.contact.path import contact_along_path
 
-        plausibility_warnings(scene, pair, float(contact_along_path(scene, pair=pair).hertz_pressure.max()))
+        plausibility_warnings(scene, pair, float(contact_along_path(scene, pair=pair).hertz_pressure.max()),
+                              earlier=range_warnings)
     return scene
 
 

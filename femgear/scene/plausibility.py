@@ -17,9 +17,6 @@ Warned (logger ``femgear.scene``):
 - maximum Hertz pressure along the path above 3 GPa (beyond case-hardened steel's
   contact fatigue limit, ISO 6336-5 σ_Hlim ≈ 1.5 GPa, with margin for static peaks);
 - a pitch-line speed above 100 m/s (beyond the film formulas' usual validation range);
-- eccentricity of a member above the pair's backlash (the teeth then separate or
-  jam once per revolution; the dynamics models contact loss, the quasi-static pass
-  does not);
 - an ambient temperature below 250 K (below the pour point of gear oils), or more than 60 K from the oil's viscosity reference
   temperature, or above 423 K (150 °C, the upper limit of mineral gear oils): the
   exponential viscosity-temperature law is then an extrapolation.
@@ -29,6 +26,7 @@ from __future__ import annotations
 
 import logging
 import math
+from collections.abc import Sequence
 
 from femgear.errors import SceneError
 from femgear.scene.schema import Scene
@@ -71,9 +69,14 @@ def check_operating_limits(scene: Scene, pair) -> None:
             f"(the rim bursts above {v_burst:.0f} m/s)")
 
 
-def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None = None) -> list[str]:
-    """Warnings (each ``key: message``) for implausible but computable inputs; also logged."""
-    out: list[str] = []
+def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None = None,
+                          earlier: Sequence[str] = ()) -> list[str]:
+    """Warnings (each ``key: message``) for implausible but computable inputs; also logged.
+
+    ``earlier``: warnings of the input ranges (:mod:`femgear.scene.ranges`, e.g. the eccentricity
+    against the backlash); one line per key is logged, the first one given for it.
+    """
+    out: list[str] = list(earlier)
     v_pitch = 2.0 * math.pi * pair.rw1 * _pinion_rpm(scene) / 60.0
     if v_pitch > MAX_PLAUSIBLE_SPEED:
         out.append(f"operating.speed_rpm: pitch-line speed {v_pitch:.4g} m/s is above {MAX_PLAUSIBLE_SPEED:g} m/s, "
@@ -81,11 +84,6 @@ def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None =
     if max_hertz_pressure is not None and max_hertz_pressure > MAX_HERTZ_PRESSURE:
         out.append(f"operating.torque: maximum Hertz pressure {max_hertz_pressure / 1e9:.3g} GPa is above "
                    f"{MAX_HERTZ_PRESSURE / 1e9:g} GPa (beyond the flank's contact strength)")
-    for member in ("pinion", "gear"):
-        e = getattr(scene, member).eccentricity
-        if e > scene.pair.backlash:
-            out.append(f"{member}.eccentricity: {e:g} m is larger than the backlash {scene.pair.backlash:g} m; "
-                       "the teeth lose contact or jam once per revolution")
     t_amb, t_ref = scene.operating.ambient_temperature, scene.oil_reference_temperature
     if t_amb > MAX_OIL_TEMPERATURE:
         out.append(f"operating.ambient_temperature: {t_amb:g} K is above {MAX_OIL_TEMPERATURE:g} K, "
@@ -96,9 +94,12 @@ def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None =
     if abs(t_amb - t_ref) > MAX_VISCOSITY_EXTRAPOLATION:
         out.append(f"operating.ambient_temperature: {t_amb:g} K is {abs(t_amb - t_ref):.0f} K from the oil's "
                    f"viscosity reference {t_ref:g} K; the viscosity-temperature law is extrapolated")
+    first: dict[str, str] = {}
     for message in out:
+        first.setdefault(message.split(":", 1)[0], message)
+    for message in first.values():
         log.warning(message)
-    return out
+    return list(first.values())
 
 
 def _pinion_rpm(scene: Scene) -> float:

@@ -436,16 +436,6 @@ class Scene(_Frozen):
     physics: Physics = Physics()
     rating: Rating = Rating()
 
-    @field_validator("physics")
-    @classmethod
-    def _point_contact_needs_crowning(cls, physics: Physics, info: ValidationInfo) -> Physics:
-        mods = info.data.get("modifications")
-        if physics.lubrication == "tehl-point" and mods is not None and (
-                mods.member(1).crowning + mods.member(2).crowning <= 0):
-            raise ValueError("lubrication = \"tehl-point\" needs modifications.crowning > 0 (an uncrowned "
-                             "involute flank has no curvature along the contact line)")
-        return physics
-
     @property
     def oil_reference_temperature(self) -> float:
         """Temperature at which ``oil.viscosity`` holds [K]."""

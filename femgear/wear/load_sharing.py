@@ -24,7 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from femgear.geometry import GearPair, contact_lines
+from femgear.geometry import GearPair
+from femgear.geometry.lines import line_weights
 
 
 @dataclass(frozen=True)
@@ -36,34 +37,26 @@ class LoadMap:
     loaded_fraction: np.ndarray  #: fraction of phases in which u carries load [-]
 
 
-def phase_coverage(pair: GearPair, u: np.ndarray, phases: np.ndarray, offset: float = 0.0) -> np.ndarray:
-    """Boolean matrix (phase × position): is ``u`` on a contact line at that phase?"""
-    cover = np.zeros((phases.size, u.size), dtype=bool)
-    for i, ph in enumerate(phases):
-        lines = contact_lines(pair, ph, offset)
-        for lo, hi in zip(lines.u_lo, lines.u_hi):
-            cover[i] |= (u >= lo) & (u <= hi)
-    return cover
-
-
-def distribute(force: np.ndarray, cover: np.ndarray, du: np.ndarray, deviation: np.ndarray,
+def distribute(force: np.ndarray, weights: np.ndarray, deviation: np.ndarray,
                c_l: float | np.ndarray, sin_beta_b: float) -> np.ndarray:
     """Load per unit length w'(φ, u) [N/m] for per-phase forces ``force`` [N].
 
-    ``du`` are the quadrature weights of the positions (trapezoid), ``deviation`` the
-    flank deviation h(u) [m] (positive = material removed), or one row per phase (the
-    effective deviation of :func:`reference_load_map`); ``c_l`` the stiffness per unit
-    line length [N/m²], a number, one value per position or one row per phase.
+    ``weights`` are the contact lines' quadrature weights per phase and position
+    (:func:`line_weights`; 0 off the lines), ``deviation`` the flank deviation h(u) [m]
+    (positive = material removed), or one row per phase (the effective deviation of
+    :func:`reference_load_map`); ``c_l`` the stiffness per unit line length [N/m²], a
+    number, one value per position or one row per phase.  At each phase the approach δ
+    solves Σ_k c_l,k max(δ − h_k, 0) W_k / sin β_b = F exactly.
     """
     c_l = np.asarray(c_l, dtype=float)
-    w = np.zeros(cover.shape)
-    for i in range(cover.shape[0]):
-        on = cover[i]
+    w = np.zeros(weights.shape)
+    for i in range(weights.shape[0]):
+        on = weights[i] > 0
         if not on.any() or force[i] <= 0:
             continue
         h = (deviation[i] if deviation.ndim == 2 else deviation)[on]
-        c_all = np.broadcast_to(c_l[i] if c_l.ndim == 2 else c_l, du.shape)
-        cw = c_all[on] * du[on] / sin_beta_b
+        c_all = np.broadcast_to(c_l[i] if c_l.ndim == 2 else c_l, weights.shape[1:])
+        cw = c_all[on] * weights[i, on] / sin_beta_b
 
         def excess(delta: float) -> float:
             return float(np.sum(np.maximum(delta - h, 0.0) * cw)) - force[i]
@@ -98,8 +91,7 @@ def load_map(pair: GearPair, u: np.ndarray, force: np.ndarray, deviation: np.nda
     n_phase = n_phase or (force.size if force.size > 1 else 64)
     phases = np.arange(n_phase) / n_phase
     force = np.broadcast_to(force, phases.shape) if force.size == 1 else force
-    cover = phase_coverage(pair, u, phases, offset)
-    w = distribute(force, cover, trapezoid_weights(u), deviation, c_l, math.sin(pair.beta_b))
+    w = distribute(force, line_weights(pair, u, phases, offset), deviation, c_l, math.sin(pair.beta_b))
     loaded = w > 0
     count = loaded.sum(axis=0)
     mean = np.where(count > 0, w.sum(axis=0) / np.maximum(count, 1), 0.0)
@@ -178,8 +170,8 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
 
     At each phase the reference shape is scaled to the helix's force F_s(φ) (a scalar, one
     value per phase i/k shared by the helices, or one row per helix; interpolated
-    periodically onto ``ref.phases``): ŵ = w_ref F_s / ∫ w_ref dl, dl = du / sin β_b
-    (trapezoid on ``u``).  A deviation h(u) other than the reference's changes it locally
+    periodically onto ``ref.phases``): ŵ = w_ref F_s / Σ_lines ∫ w_ref dl, dl = du / sin β_b
+    (:func:`line_weights`: every line counts, also where lines overlap in u).  A deviation h(u) other than the reference's changes it locally
     by a Winkler layer ``c_l``, with the approach change Δδ(φ) set by equilibrium:
 
         w'(u, φ) = max(ŵ(u, φ) + c_l(u) (Δδ(φ) − (h(u) − h_ref(u))), 0),  Σ∫ w' dl = F_s(φ),
@@ -212,7 +204,7 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
         if a.load.shape[1:] != (ref.phases.size, u.size) or a.load.shape[0] < n_h:
             raise ValueError(f"reference load shape {a.load.shape} does not match ({n_h}, {ref.phases.size}, {u.size})")
     forces = _phase_forces(force, ref.phases, n_h)
-    du, sb = trapezoid_weights(u), math.sin(pair.beta_b)
+    sb = math.sin(pair.beta_b)
     c_l = np.broadcast_to(np.asarray(c_l, dtype=float), u.shape)
     deviation = np.asarray(deviation, dtype=float)
     t = ref.progress(deviation)
@@ -221,13 +213,13 @@ def reference_loads(pair: GearPair, u: np.ndarray, force, deviation: np.ndarray,
     stiff = sum(wt * a.stiffness(c_l) for wt, a in anchors)
     out = np.zeros((n_h, ref.phases.size, u.size))
     for s in range(n_h):
-        cover = phase_coverage(pair, u, ref.phases, ref.offsets[s])
-        base = np.zeros(cover.shape)
+        weights = line_weights(pair, u, ref.phases, ref.offsets[s])
+        base = np.zeros(weights.shape)
         for wt, a in anchors:
-            shape = np.where(cover, a.load[s], 0.0)
-            carried = shape @ du / sb
+            shape = np.where(weights > 0, a.load[s], 0.0)
+            carried = np.sum(shape * weights, axis=1) / sb
             base += wt * shape * np.divide(forces[s], carried, out=np.zeros_like(carried), where=carried > 0)[:, None]
-        out[s] = distribute(forces[s], cover, du, (dh[s] if dh.ndim == 3 else dh[None, :]) - base / stiff[s],
+        out[s] = distribute(forces[s], weights, (dh[s] if dh.ndim == 3 else dh[None, :]) - base / stiff[s],
                             stiff[s], sb)
     return out
 

@@ -234,3 +234,57 @@ def test_a_shell_sees_one_line_and_the_exit_code(tmp_path):
     run = subprocess.run([sys.executable, "-m", "femgear", "ehl", "point", "--M"], capture_output=True, text=True)
     assert run.returncode == 2
     assert_one_line(run.stderr, "--M")
+
+
+# --- issue 25 item 6: unit slips, checked in engineering terms before any computing ---------------------------
+
+MARINE = str(ROOT / "studies" / "zoo" / "marine.toml")
+#: the slips of issue 25 (and their kin): each refused on the key typed, with the likely unit
+UNIT_SLIPS = [("pair.normal_module=6", "pair.normal_module", "6 mm"),
+              ("pair.face_width=120", "pair.face_width", "120 mm"),
+              ("oil.pressure_viscosity=20", "oil.pressure_viscosity", "GPa⁻¹"),
+              ("oil.viscosity=39.7", "oil.viscosity", "cSt"),
+              ("gear.eccentricity=1.0", "gear.eccentricity", "µm"),
+              ("operating.speed_rpm=1e-6", "operating.speed_rpm", "pitch-line speed"),
+              ("operating.torque=2e7", "operating.torque", "σ_H0"),
+              ("operating.ambient_temperature=40.0", "operating.ambient_temperature", "°C")]
+
+
+@pytest.mark.parametrize("command", ["info", "run"])
+@pytest.mark.parametrize("scene", [BASE, MARINE], ids=["baseline", "marine"])
+@pytest.mark.parametrize("override,key,unit", UNIT_SLIPS, ids=[s[1] for s in UNIT_SLIPS])
+def test_unit_slips_exit_2_naming_the_key_before_any_computing(command, scene, override, key, unit, tmp_path, capsys):
+    argv = [command, scene, "--set", override] + (["--out", str(tmp_path / "o")] if command == "run" else [])
+    t0 = time.perf_counter()
+    rc, out, err = cli(argv, capsys)
+    elapsed = time.perf_counter() - t0
+    assert rc == 2 and out == ""
+    line = assert_one_line(err, key, unit)
+    assert line.startswith(f"femgear: error: {key}:")
+    assert elapsed < 2.0, f"{elapsed:.2f} s: the refusal must come before any computing"
+    assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())
+
+
+@pytest.mark.parametrize("scene", [BASE, MARINE], ids=["baseline", "marine"])
+@pytest.mark.parametrize("override,key", [("oil.pressure_viscosity=3e-9", "oil.pressure_viscosity"),
+                                          ("operating.speed_rpm=2.0", "operating.speed_rpm"),
+                                          ("oil.viscosity=2.0", "oil.viscosity")])
+def test_unusual_but_possible_inputs_warn_in_one_line_and_run(scene, override, key, capsys):
+    rc, out, err = cli(["info", scene, "--set", override], capsys)
+    assert rc == 0 and "eps_alpha" in out
+    assert key in assert_one_line(err, "warning")
+
+
+@pytest.mark.parametrize("sweep", ["1e-6:500:3", "100:1e6:3"])
+def test_a_dynamics_sweep_outside_the_speed_range_names_sweep(sweep, capsys):
+    t0 = time.perf_counter()
+    rc, out, err = cli(["dynamics", BASE, "--sweep", sweep], capsys)
+    assert rc == 2 and "rpm" in assert_one_line(err, "--sweep")
+    assert time.perf_counter() - t0 < 2.0
+
+
+def test_an_unusual_input_warns_once_in_a_run_too(tmp_path, capsys):
+    rc, _, err = cli(["run", BASE, *CHEAP, "--set", "oil.pressure_viscosity=3e-9", "--out", str(tmp_path / "r"),
+                      "--no-plots", "--no-vtk"], capsys)
+    assert rc == 0
+    assert "oil.pressure_viscosity" in assert_one_line(err, "warning")

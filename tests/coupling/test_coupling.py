@@ -33,6 +33,22 @@ def test_tables_are_the_contact_line_mean(baseline_pair):
     assert np.ptp(table) > 0          # and it varies over the mesh period
 
 
+def test_spur_tables_are_the_mean_over_the_pairs_in_contact(baseline_path):
+    """Spur pair (zero line extent): at phase φ the pairs sit at u_A + (φ + k) p_bt; the table of
+    h(u) is the mean of h over them (found by the zoo: a spur scene with a thermal level failed)."""
+    from femgear.geometry import GearPair
+
+    p = GearPair.from_scene(load_scene(baseline_path, ['pair.kind="spur"', "pair.helix_angle_deg=0.0"]))
+    u = path_positions(p, 201)
+    h = 1e-6 * ((u - p.u_start) / p.g_alpha) ** 2
+    n = 16
+    table = phase_table(p, u, h, n)
+    for i in range(n):
+        at = p.u_start + (i / n + np.arange(-1, 4)) * p.p_bt
+        at = at[(at >= p.u_start) & (at <= p.u_end)]
+        assert table[i] == pytest.approx(np.mean(np.interp(at, u, h)), rel=1e-12)
+
+
 @pytest.fixture(scope="module")
 def setup(baseline_path):
     scene = load_scene(baseline_path, FAST + ['physics.thermal="analytic"', 'physics.wear="archard"',

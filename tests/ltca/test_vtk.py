@@ -54,7 +54,7 @@ def test_pressure_map_vtk_lies_on_the_3d_flanks_of_both_helices(symmetric_cycle,
     z → 2b + g − z (no stagger), with the same pressures."""
     import meshio
 
-    from femgear.ltca.vtk import write_flank_pressure
+    from femgear.io.ltca import write_flank_pressure
 
     path = write_flank_pressure(tmp_path / "p.vtu", symmetric_cycle, baseline_pair, 210e9, 0.3)
     m = meshio.read(path)
@@ -123,7 +123,8 @@ def test_edge_contacts_are_flagged_not_shown_as_hertz_pressures(coarse_model, ba
     import meshio
 
     from femgear.ltca.analysis import mesh_cycle
-    from femgear.ltca.vtk import flank_pressure_map, write_flank_pressure
+    from femgear.io.ltca import write_flank_pressure
+    from femgear.ltca.vtk import flank_pressure_map
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(), n_phases=64)
     fmap = flank_pressure_map(r, baseline_pair, 210e9, 0.3)

@@ -105,11 +105,10 @@ def test_load_follows_the_local_pair_stiffness():
     from femgear.wear.load_sharing import distribute
 
     u = np.linspace(0.0, 1e-2, 21)
-    du = np.full(u.size, u[1] - u[0])
-    cover = np.ones((1, u.size), dtype=bool)
+    du = np.full((1, u.size), u[1] - u[0])
     c = 1e10 * (1.0 - 0.25 * ((u - u.mean()) / np.ptp(u) * 2) ** 2)     # 25 % softer at the ends
-    w = distribute(np.array([1000.0]), cover, du, np.zeros(u.size), c, 0.5)[0]
+    w = distribute(np.array([1000.0]), du, np.zeros(u.size), c, 0.5)[0]
     assert np.allclose(w / c, w[0] / c[0], rtol=1e-9)
-    assert np.sum(w * du / 0.5) == pytest.approx(1000.0, rel=1e-9)
-    flat = distribute(np.array([1000.0]), cover, du, np.zeros(u.size), 1e10, 0.5)[0]
+    assert np.sum(w * du[0] / 0.5) == pytest.approx(1000.0, rel=1e-9)
+    flat = distribute(np.array([1000.0]), du, np.zeros(u.size), 1e10, 0.5)[0]
     assert np.allclose(flat, flat[0], rtol=1e-9)
