@@ -74,10 +74,12 @@ def _fillets(scene, pair: GearPair):
     points = (pair.u_start + pair.p_bt, pair.u_end - pair.p_bt)   # outer single contact of pinion, gear
     if pair.eps_alpha >= 2:
         points = (pair.u_end, pair.u_start)
-    members = (scene.pinion, scene.gear)
+    # clamped at the bore or 6 m_n below the root circle, whichever is outer: the rim deeper down does not
+    # change the root stress (turbo gear, z 181: clamp at 6 m_n or at r = 0.3 m, 0.6 % apart) and a long
+    # thin sector of a large gear is ill-conditioned
+    clamp = (max(scene.pinion.bore_radius, pair.rf1 - 6 * pair.m_n), max(scene.gear.bore_radius, pair.rf2 - 6 * pair.m_n))
     return tuple(fillet_stress(pair, m, points[m - 1], force, scene.material.youngs_modulus,
-                               scene.material.poisson_ratio, bore_radius=members[m - 1].bore_radius)
-                 for m in (1, 2))
+                               scene.material.poisson_ratio, bore_radius=clamp[m - 1]) for m in (1, 2))
 
 
 def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.ndarray | None = None,
