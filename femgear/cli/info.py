@@ -9,7 +9,7 @@ from femgear.cli.common import add_scene_arguments, emit_json, load_scene_arg
 
 
 def register(sub) -> None:
-    p = sub.add_parser("info", help="geometry, contact, ISO safety factors (S_H, S_F, S_B, S_intS, S_λ) and mesh power loss")
+    p = sub.add_parser("info", help="geometry, contact, ISO safety factors S_H, S_F, S_B, S_intS, S_λ, power loss")
     add_scene_arguments(p)
     p.add_argument("--json", action="store_true", help="print one JSON object as the last line")
     p.set_defaults(func=_info)
