@@ -18,6 +18,7 @@ iterates to convergence.
 
 from __future__ import annotations
 
+import logging
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -47,8 +48,9 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     te = transmission_error(case, stiffness)
     if case.levels.dynamics == "none":
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
-        return RunResult(case, contact, stiffness, replace(tribology, film=level_film(case, tribology.load_per_length)),
-                         seconds=time.perf_counter() - t0, transmission_error=te)
+        tribology = replace(tribology, film=level_film(case, tribology.load_per_length))
+        return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0, transmission_error=te,
+                         rating=case_rating(case, contact, tribology))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
     st = coupled.state
@@ -64,7 +66,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
                       st.wear_face if levels.wear != "none" else None, st.thermal_face),
         film=level_film(case, st.load_per_length))
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
-                     transmission_error=te)
+                     transmission_error=te, rating=case_rating(case, contact, tribology))
 
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
@@ -76,6 +78,20 @@ def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 
 
     m, op = case.material, case.scene.operating
     return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, op.torque, n_harmonics)
+
+
+def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
+    """The four ISO ratings with femgear's contact temperature and film of the run's lubrication level beside them
+    (defaults and range flags in results.json, logged at INFO); None (logged) when a rating input is
+    outside what the standards can compute (e.g. a rim too thin)."""
+    from femgear.rate import rate_case
+
+    try:
+        return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
+                         tribology.film)
+    except ValueError as exc:
+        logging.getLogger("femgear.rating").warning("rating: not computed: %s", exc)
+        return None
 
 
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,

@@ -17,6 +17,7 @@ from femgear.contact.path import ContactPath
 from femgear.coupling.loop import CoupledResult
 from femgear.lubrication.films import LevelFilm
 from femgear.ltca.te import TEAnalysis
+from femgear.rating.suite import PairRating
 from femgear.stiffness.tvms import MeshStiffness
 
 
@@ -53,3 +54,6 @@ class RunResult:
     #: ``stiffness = "ltca"``: loaded TE, its harmonics, stiffness, load share and peak pressure of the LTCA
     #: cycle of the stiffness level (new flanks with the scene's modifications, operating torque)
     transmission_error: TEAnalysis | None = None
+    #: ISO 6336-2/-3, ISO/TS 6336-20/21/22 ratings beside femgear's own figures (:func:`femgear.rate.rate_case`);
+    #: None when the rating could not be computed (logged)
+    rating: PairRating | None = None

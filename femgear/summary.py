@@ -16,6 +16,8 @@ from femgear.contact.path import ContactPath, pinion_speed, pinion_torque
 from femgear.geometry import GearPair, mesh_frequency
 from femgear.rating import LoadFactors, MaterialLimits, MeshPowerLoss, PittingRating, contact_stress, mesh_power_loss
 from femgear.rating import pitting_rating as _pitting_rating
+from femgear.rating.summary import pair_rating_summary
+from femgear.rating.suite import PairRating
 
 #: lubrication levels cheap enough for a summary; heavier ones are summarised with ``formula``
 SUMMARY_FRICTION_LEVELS = ("none", "constant", "formula")
@@ -187,16 +189,21 @@ def power_loss_summary(loss: MeshPowerLoss, level: str) -> dict[str, Any]:
     }
 
 
-def scene_summary(scene, pair: GearPair, contact: ContactPath, power_loss: bool = True) -> dict[str, Any]:
-    """Geometry, contact, ISO 6336-2 rating and (``power_loss``) mesh power loss of a scene."""
+def scene_summary(scene, pair: GearPair, contact: ContactPath, power_loss: bool = True,
+                  ratings: PairRating | None = None) -> dict[str, Any]:
+    """Geometry, contact, ISO 6336-2 rating and (``power_loss``) mesh power loss of a scene; with ``ratings``
+    (computed by the driver, :func:`femgear.rate.rate_case`) also bending, scuffing, micropitting and the
+    safety factors, each with femgear's own figures beside them."""
     out = {
         "scene": scene.meta.name,
         "geometry": geometry_summary(pair, pinion_speed(scene)),
         "contact": contact_summary(contact),
-        "rating": rating_summary(scene_rating(scene, pair)),
+        "rating": rating_summary(scene_rating(scene, pair) if ratings is None else ratings.pitting),
         "stiffness_iso6336": stiffness_summary(scene, pair),
         "flash_temperature": flash_summary(scene, pair, contact),
     }
+    if ratings is not None:
+        out.update(pair_rating_summary(ratings))
     if power_loss:
         out["power_loss"] = power_loss_summary(*scene_power_loss(scene, pair, contact))
     return out

@@ -80,6 +80,13 @@ class ToothFE:
 
         ``patch``: half-length of the loaded flank strip (default 0.15 m_n, independent of h).
         """
+        u_, d, section = self.solve_load(u, force, patch)
+        dx, dy = self._probe(u_, section)
+        return float(np.mean(dx * d[0] + dy * d[1])) / force
+
+    def solve_load(self, u: float, force: float, patch: float | None = None):
+        """Displacement DOFs under the normal ``force`` per unit face width at path position ``u``:
+        (displacements, load direction, P's cross-section points)."""
         from skfem import FacetBasis
 
         P, d, section = self._geometry(u)
@@ -95,8 +102,7 @@ class ToothFE:
         f = traction.assemble(fb, tx=t * d[0] + 0 * x, ty=t * d[1] + 0 * x)
         u_, info = self.problem.solve(f, case=f"tooth compliance member {self.member} at u={u:.6g}")
         self.solve_seconds += info.seconds
-        dx, dy = self._probe(u_, section)
-        return float(np.mean(dx * d[0] + dy * d[1])) / force
+        return u_, d, section
 
     def _probe(self, u_, points):
         (ux, bx), (uy, by) = self.problem.basis.split(u_)

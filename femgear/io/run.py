@@ -3,7 +3,8 @@
 Layout (the contract; keys are added, never renamed without a README note):
 
 - ``summary``: ``scene`` (name), ``geometry``, ``contact`` (pitch point and path
-  extremes), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
+  extremes), ``rating`` (ISO 6336-2 pitting), ``safety_factors``, ``bending``, ``scuffing``,
+  ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
   and statically mean_per_helix, seconds), ``friction`` (mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
   gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
@@ -82,7 +83,7 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
 def run_summary(result: RunResult) -> dict[str, Any]:
     """The ``summary`` object of ``results.json`` (without ``outputs``)."""
     case, ms = result.case, result.stiffness
-    summary = scene_summary(case.scene, case.pair, result.contact)
+    summary = scene_summary(case.scene, case.pair, result.contact, ratings=result.rating)
     summary["physics"] = case.levels.model_dump()
     summary["stiffness"] = {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()}
     static = result.coupled is None
@@ -164,4 +165,9 @@ def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
         files["friction_path_png"] = plot_friction_path(
             result.case.path.s, t.friction_coefficient, t.temperature_rise, out_dir / "friction_path.png",
             title=f"{name}: lubrication = {result.case.levels.lubrication}")
+    if result.rating is not None:
+        from femgear.plot.rating import plot_rating_path
+
+        files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
+                                                    out_dir / "rating_path.png", title=f"{name}: ISO ratings")
     return files

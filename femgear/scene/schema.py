@@ -268,7 +268,8 @@ class Numerics(_Frozen):
 
 
 class Rating(_Frozen):
-    """``[rating]``: ISO 6336-2:2019 method B pitting rating (``femgear info``).
+    """``[rating]``: ISO 6336-2 pitting, ISO 6336-3 bending, ISO/TS 6336-20/21 scuffing and ISO/TS 6336-22
+    micropitting ratings (``femgear info``, ``femgear run``; docs/rating.md).
 
     Defaults: K factors 1 (uniform load, no dynamic overload: give the K factors of the
     application), σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
@@ -290,6 +291,31 @@ class Rating(_Frozen):
                           "sets Z_R (None: 1)")
     work_hardening_factor: Pos = Field(1.0, description="Z_W [-]")
     size_factor: Pos = Field(1.0, description="Z_X [-]")
+    # ---- bending, scuffing, micropitting (docs/rating.md; None: the documented default, logged) ----
+    bending_stress_limit: Pos | None = Field(
+        None, description="σ_Flim, nominal stress number (bending) [Pa]; default 5e8 (case-carburised, ISO 6336-5 MQ)")
+    bending_min_safety_factor: Pos = Field(1.0, description="S_Fmin [-]")
+    root_roughness_rz: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
+        None, description="root fillet roughness R_z of pinion and gear [m] (Y_RrelT); default 1e-5 each")
+    finishing: Literal["ground", "honed", "shaved", "hobbed"] | None = Field(
+        None, description="flank finishing; sets roughness_ra when that is not given (ground 0.4, honed 0.3, "
+                          "shaved 0.8, hobbed 1.6 µm); default ground")
+    roughness_ra: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
+        None, description="arithmetic mean flank roughness R_a of pinion and gear [m] (scuffing μ, micropitting λ); "
+                          "default from finishing")
+    oil_type: Literal["mineral", "pao", "pag", "pag-water", "traction", "phosphate-ester"] | None = Field(
+        None, description="base oil, sets the lubricant factor X_L of ISO/TS 6336-20/21; default mineral")
+    scuffing_load_stage: float | None = Field(
+        None, ge=1, le=14, description="FZG A/8.3/90 scuffing failure load stage of the oil (ISO 14635-1) [-]; "
+                                       "default 12 (the DIN 51517-3 CLP minimum)")
+    micropitting_load_stage: float | None = Field(
+        None, ge=1, le=14, description="FZG GF-C/8.3/90 micropitting failure load stage of the oil (FVA 54) [-]; "
+                                       "default 8 (GFT medium)")
+    lubrication_method: Literal["dip", "spray"] = Field("dip", description="X_S of the bulk temperature: dip 1, spray 1.2")
+    structural_factor: Pos = Field(1.0, description="X_W of the scuffing temperature (case-carburised 1) [-]")
+    fillet_fe: bool = Field(
+        False, description="also solve the 2-D FE section for the max principal fillet stress beside σ_F0 "
+                           "(about 10 s per member)")
 
 
 class FlankModification(_Frozen):

@@ -1,0 +1,131 @@
+"""Bind a scene's ``[rating]`` table to the four ISO ratings and femgear's own figures (driver level).
+
+:func:`rate_case` is called by the driver (``femgear run``: :func:`femgear.pipeline.run_case`;
+``femgear info``) and returns the frozen :class:`femgear.rating.suite.PairRating` that the
+writers only read.  Keys of ``[rating]`` left out take the defaults documented in the schema
+(and docs/rating.md); one log line names them.  Inputs outside a method's range give one
+line each (key and limit) and flag the factor (``PairRating.flags``), printed by ``femgear info``.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+
+import numpy as np
+
+from femgear.contact.path import ContactPath, pinion_speed, pinion_torque
+from femgear.geometry import GearPair
+from femgear.lubrication.flash import thermal_effusivity
+from femgear.rating.bending import BendingInputs
+from femgear.rating.scuffing import OIL_FACTOR, ScuffingInputs
+from femgear.rating.suite import OwnFigures, PairRating, rate_pair
+
+log = logging.getLogger("femgear.rating")
+
+#: R_a of the flank by finishing process [m] (typical values, docs/rating.md)
+FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
+DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5], "finishing": "ground",
+            "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0}
+
+
+def _value(r, key: str, used: list[str]):
+    v = getattr(r, key)
+    if v is None:
+        used.append(f"rating.{key}={DEFAULTS[key]}")
+        return DEFAULTS[key]
+    return v
+
+
+def viscosity_law(scene):
+    """η(T) of the scene's oil: η0 exp(−β_T (T − T0)) [Pa s]."""
+    oil, T0 = scene.oil, scene.oil_reference_temperature
+    return lambda T: oil.viscosity * math.exp(-oil.temperature_viscosity * (T - T0))
+
+
+def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperature_rise: np.ndarray | None,
+                level: str | None, film=None) -> OwnFigures:
+    """femgear's film, λ and contact temperature along the contact pass's path (``temperature_rise``: ΔT of the
+    lubrication level ``level`` on the same positions; None: computed with the ``formula`` level; ``film``: the
+    :class:`femgear.lubrication.films.LevelFilm` of the level that ran, else the contact pass's h_min)."""
+    if temperature_rise is None or level in (None, "none", "constant"):
+        from femgear.case import build_case
+        from femgear.lubrication.levels import lubrication_solver
+
+        k = contact.kin
+        w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+        solver = lubrication_solver(build_case(scene, pair), "formula")
+        _, temperature_rise = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
+                                     T=np.full(k.u.shape, scene.operating.ambient_temperature))
+        level = "formula"
+    bulk = scene.operating.ambient_temperature + scene.thermal.flank_temperature_rise
+    if film is not None and np.shape(film.minimum) == np.shape(contact.kin.u):
+        h, label = np.asarray(film.minimum, float), f"{film.level}: h_min of {film.method}"
+    else:
+        h, label = np.asarray(contact.film_minimum, float), "contact pass: Dowson–Higginson h_min of the shared line load"
+    return OwnFigures(u=np.asarray(contact.kin.u, float), film=h, film_level=label, specific_film=h / Ra,
+                      temperature=bulk + np.asarray(temperature_rise, float), temperature_level=level)
+
+
+def _fillets(scene, pair: GearPair):
+    from femgear.body.fillet import fillet_stress
+
+    force = pinion_torque(scene) / pair.r1 / pair.n_helices / (pair.b * math.cos(pair.alpha_wt))
+    points = (pair.u_start + pair.p_bt, pair.u_end - pair.p_bt)   # outer single contact of pinion, gear
+    if pair.eps_alpha >= 2:
+        points = (pair.u_end, pair.u_start)
+    # clamped at the bore or 6 m_n below the root circle, whichever is outer: the rim deeper down does not
+    # change the root stress (turbo gear, z 181: clamp at 6 m_n or at r = 0.3 m, 0.6 % apart) and a long
+    # thin sector of a large gear is ill-conditioned
+    clamp = (max(scene.pinion.bore_radius, pair.rf1 - 6 * pair.m_n), max(scene.gear.bore_radius, pair.rf2 - 6 * pair.m_n))
+    return tuple(fillet_stress(pair, m, points[m - 1], force, scene.material.youngs_modulus,
+                               scene.material.poisson_ratio, bore_radius=clamp[m - 1]) for m in (1, 2))
+
+
+def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.ndarray | None = None,
+              level: str | None = None, film=None) -> PairRating:
+    """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them.
+
+    The defaults line and the range flags are logged at INFO (``-v``) and carried in the result
+    (``defaults``, ``flags``), which ``femgear info`` prints and results.json holds; stderr keeps the
+    CLI's one-line-per-problem contract (``tests/cli/test_bad_input.py``)."""
+    from dataclasses import replace
+
+    from femgear.summary import scene_rating
+
+    r, used = scene.rating, []
+    sigma_Flim = _value(r, "bending_stress_limit", used)
+    root_rz = _value(r, "root_roughness_rz", used)
+    if r.roughness_ra is not None:
+        Ra = tuple(r.roughness_ra)
+    else:
+        Ra = (FINISHING_RA[_value(r, "finishing", used)],) * 2
+    oil_type = _value(r, "oil_type", used)
+    stage_s = _value(r, "scuffing_load_stage", used)
+    stage_m = _value(r, "micropitting_load_stage", used)
+    if used:
+        log.info("rating: defaults used for %s (docs/rating.md)", ", ".join(used))
+    rims = []
+    for m, member in ((1, scene.pinion), (2, scene.gear)):
+        rf, ra = (pair.rf1, pair.ra1) if m == 1 else (pair.rf2, pair.ra2)
+        rims.append((rf - member.bore_radius) / (ra - rf) if member.bore_radius > 0 else math.inf)
+    K = r.application_factor * r.dynamic_factor * r.face_load_factor * r.transverse_load_factor
+    bending = BendingInputs(sigma_Flim=sigma_Flim, S_Fmin=r.bending_min_safety_factor, K_A=r.application_factor,
+                            K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor, K_Falpha=r.transverse_load_factor,
+                            life_hours=r.life_hours, root_Rz=tuple(root_rz), rim_ratio=tuple(rims))
+    eta = viscosity_law(scene)
+    mat = scene.material
+    theta_oil = scene.operating.ambient_temperature
+    scuff = ScuffingInputs(oil_temperature=theta_oil, oil_viscosity=eta(theta_oil), youngs_modulus=mat.youngs_modulus,
+                           poisson_ratio=mat.poisson_ratio,
+                           effusivity=thermal_effusivity(mat.conductivity, mat.density, mat.specific_heat),
+                           Ra=Ra, X_L=OIL_FACTOR[oil_type], K=K, X_S=1.2 if r.lubrication_method == "spray" else 1.0,
+                           X_W=r.structural_factor)
+    own = own_figures(scene, pair, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
+    rating = rate_pair(pair, scene_rating(scene, pair), pinion_torque(scene), pinion_speed(scene), bending, scuff,
+                       float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
+    for flag in rating.flags:
+        log.info("rating: %s; the factor is flagged", flag)
+    if r.fillet_fe:
+        rating = replace(rating, own=replace(own, fillet=_fillets(scene, pair)))
+    return rating
