@@ -1,18 +1,117 @@
-"""Measuring cost: median wall time and peak Python-heap memory of a call.
+"""Cost: measuring it (median wall time, peak memory) and announcing it before a long stage.
 
-Used by the benchmark scripts in ``studies/benchmarks`` and the speed–accuracy study;
-never by tests (machines are shared and noisy, so figures are medians, reported next
-to a reference measured in the same run).
+:func:`measure` is used by the benchmark scripts in ``studies/benchmarks`` and the
+speed–accuracy study; never by tests (machines are shared and noisy, so figures are
+medians, reported next to a reference measured in the same run).
+
+Long stages (the FE stiffness, the LTCA unit loads, the ``fe``/``fe3d`` thermal solves, the
+TEHL map) announce themselves before they start (:func:`announce`): an :class:`Estimate` of
+the DOF, memory and time is logged (INFO, i.e. ``-v``; at :data:`NOTICE`, shown by default, when
+it exceeds :data:`LONG_STAGE_SECONDS`), and a memory estimate over :func:`memory_budget` raises
+:class:`femgear.errors.ResourceError` naming the scene key and the level that fits — the
+mechanism ``femgear ehl --level`` uses (:mod:`femgear.cli.limits`).  :class:`Progress` logs
+"done/total" lines for stages over :data:`PROGRESS_SECONDS`.
 """
 
 from __future__ import annotations
 
+import logging
+import math
+import os
+import resource
 import statistics
 import time
 import tracemalloc
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
+
+from femgear.errors import ArgumentError, ResourceError
+
+log = logging.getLogger("femgear.cost")
+NOTICE = 25                   #: log level between INFO and WARNING: shown by default, without "warning:"
+logging.addLevelName(NOTICE, "NOTICE")
+LONG_STAGE_SECONDS = 10.0     #: estimates above this are shown without -v
+PROGRESS_SECONDS = 2.0        #: stages longer than this log progress lines (at most one per this interval)
+GIB = 1024.0**3
+
+
+def memory_budget() -> float:
+    """Bytes a single job may use: ``FEMGEAR_MEMORY_GB`` if set, else 80 % of the available memory."""
+    env = os.environ.get("FEMGEAR_MEMORY_GB")
+    if env:
+        try:
+            value = float(env)
+        except ValueError:
+            raise ArgumentError("FEMGEAR_MEMORY_GB", f"must be a number of GB (got {env!r})") from None
+        if not math.isfinite(value) or value <= 0:
+            raise ArgumentError("FEMGEAR_MEMORY_GB", f"must be a positive number of GB (got {env!r})")
+        return value * 1e9
+    return 0.8 * available_bytes()
+
+
+def available_bytes() -> float:
+    """``MemAvailable`` of /proc/meminfo (the physical memory where it cannot be read) [B]."""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return float(line.split()[1]) * 1024.0
+    except OSError:
+        pass
+    return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+
+
+def peak_rss_bytes() -> int:
+    """Peak resident size of this process so far [B] (``getrusage``; Linux reports KiB)."""
+    return int(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss) * 1024
+
+
+def _duration(seconds: float) -> str:
+    return f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.1f} min"
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """Expected cost of a stage: its size, peak memory and wall time."""
+
+    stage: str            #: what runs, e.g. "LTCA unit loads, gear body (level 1)"
+    dofs: int             #: unknowns of the largest system
+    memory_bytes: float   #: expected peak resident memory [B]
+    seconds: float        #: expected wall time on an unloaded 2-core machine [s]
+
+    def line(self) -> str:
+        parts = [f"{self.dofs / 1e3:.0f} k DOF"] if self.dofs else []
+        parts += [f"about {self.memory_bytes / GIB:.2g} GiB"] if self.memory_bytes else []
+        return f"{self.stage}: {', '.join(parts + [f'about {_duration(self.seconds)}'])}"
+
+
+def announce(estimate: Estimate, argument: str, fits: Callable[[float], str] | None = None) -> None:
+    """Log ``estimate`` (module docstring); raise :class:`ResourceError` naming ``argument`` when its memory
+    exceeds :func:`memory_budget`.  ``fits(budget)`` names what fits instead (e.g. the finest level)."""
+    budget = memory_budget()
+    if estimate.memory_bytes > budget:
+        raise ResourceError(argument, estimate.memory_bytes, budget,
+                            f"{estimate.stage}; {fits(budget)}" if fits is not None else estimate.stage)
+    log.log(NOTICE if estimate.seconds > LONG_STAGE_SECONDS else logging.INFO, estimate.line())
+
+
+class Progress:
+    """``progress(done)``: a "stage: done/total" line once the stage has run :data:`PROGRESS_SECONDS`, then at
+    most one per that interval and one at the end (NOTICE when ``expected_seconds`` is long, else INFO)."""
+
+    def __init__(self, stage: str, total: int, expected_seconds: float = 0.0):
+        self.stage, self.total = stage, total
+        self.level = NOTICE if expected_seconds > LONG_STAGE_SECONDS else logging.INFO
+        self.start = self.last = time.perf_counter()
+
+    def __call__(self, done: int) -> None:
+        now = time.perf_counter()
+        if now - self.start < PROGRESS_SECONDS:
+            return
+        if now - self.last >= PROGRESS_SECONDS or done >= self.total:
+            self.last = now
+            log.log(self.level, f"{self.stage}: {done}/{self.total} ({now - self.start:.0f} s)")
 
 
 @dataclass(frozen=True)

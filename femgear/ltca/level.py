@@ -79,8 +79,9 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
     """
     from femgear.ltca.analysis import build_model, mesh_cycle
 
-    model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger,
-                        **{k: v for k, v in (body or {}).items() if k != "stagger"})
+    body = {k: v for k, v in (body or {}).items() if k != "stagger"}
+    check_body_memory(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
+    model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger, **body)
     orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
     while orders < MIN_RESOLVED_ORDERS and 2 * n_line <= MAX_LINE_POINTS:
         n_line *= 2
@@ -91,6 +92,45 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
             "harmonic_change": change, "model": model, "modifications": modifications,
             "options": {"n_phases": n_positions, "stagger": stagger, "n_line": n_line}}
     return res, info
+
+
+def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int, stagger: float = 0.0,
+                   bore_radius: tuple[float, float] = (0.0, 0.0), groove_width: float = 0.0,
+                   cached: bool = True) -> list:
+    """:class:`femgear.perf.Estimate` of each member body that :func:`ltca_cycle` would compute at body
+    ``level`` (``cached`` False: also those already in the disk cache).  Meshes the sections only."""
+    from femgear.ltca.compliance import build_estimate, cache_path
+    from femgear.mesh.segment import default_spec
+
+    out = []
+    for member in (1, 2):
+        spec = default_spec(pair, member, level, r_bore=bore_radius[member - 1], groove=groove_width,
+                            stagger=stagger)
+        if cached and cache_path(pair, member, spec, youngs_modulus, poisson_ratio).exists():
+            continue
+        out.append(build_estimate(pair, member, spec, n_loads=63 * (1 if stagger == 0 else 2)))
+    return out
+
+
+def check_body_memory(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int, stagger: float = 0.0,
+                      **body) -> None:
+    """Refuse (:class:`femgear.errors.ResourceError`, exit 2, naming ``numerics.body_level`` and the finest
+    level that fits) before any body is built when one needs more memory than the budget."""
+    from femgear.errors import ResourceError
+    from femgear.perf import memory_budget
+
+    budget = memory_budget()
+    over = [e for e in body_estimates(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
+            if e.memory_bytes > budget]
+    if not over:
+        return
+    fits = next((k for k in range(level - 1, -1, -1)
+                 if all(e.memory_bytes <= budget
+                        for e in body_estimates(pair, youngs_modulus, poisson_ratio, k, stagger, cached=False, **body))),
+                None)
+    hint = f"numerics.body_level = {fits} fits" if fits is not None else "no body level fits"
+    worst = max(over, key=lambda e: e.memory_bytes)
+    raise ResourceError("numerics.body_level", worst.memory_bytes, budget, f"{worst.stage} at level {level}; {hint}")
 
 
 def deviated_cycle(info: dict, extra) -> dict:
@@ -108,10 +148,11 @@ def deviated_cycle(info: dict, extra) -> dict:
 
 
 def ltca_options_from_scene(scene) -> dict:
-    """Force, modifications and the member bodies (bore, groove) of a scene for :func:`ltca_cycle`."""
+    """Force, modifications, the member bodies (bore, groove) and their resolution ``numerics.body_level``
+    of a scene for :func:`ltca_cycle`."""
     from femgear.ltca.analysis import body_options, normal_force
 
     pair = GearPair.from_scene(scene)
     body = {k: v for k, v in body_options(scene).items() if k != "stagger"}   # tvms passes the stagger itself
     return {"force": normal_force(pair, scene.operating.torque, scene.operating.driver),
-            "modifications": scene.modifications, "body": body}
+            "modifications": scene.modifications, "body": body, "level": scene.numerics.body_level}

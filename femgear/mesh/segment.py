@@ -45,6 +45,7 @@ middle tooth of each helix); :func:`flank_regions` splits ``flank`` per helix, t
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -54,6 +55,7 @@ from femgear.geometry.gear import GearPair
 
 HAND = {1: -1, 2: 1}   #: helix hand of the left helix per member
 GROOVE_DEPTH = 0.5     #: groove floor below the root circle, in normal modules (hob run-out; a choice, not a standard)
+FAR_FRACTION = 0.25    #: far-field element size cap as a fraction of the rim depth below the groove floor
 
 
 @dataclass(frozen=True)
@@ -152,12 +154,50 @@ def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
     return frame_of(pair, member, spec.groove, spec.stagger)
 
 
-def _layers(pair: GearPair, spec: SegmentSpec) -> tuple[np.ndarray, int, int]:
+def far_size(pair: GearPair, member: int, spec: SegmentSpec) -> float:
+    """Largest element size of the body [m]: ``spec.h_far`` if > 0, else max(12 h_tooth, ¼ of the rim's depth
+    below the groove floor) — in module units, so that geometrically similar gears get the same mesh; the
+    deep rim of a large wheel (the marine gear: 40 m_n) is coarsened with its depth, not capped at 4 m_n."""
+    if spec.h_far > 0:
+        return spec.h_far
+    return max(12.0 * spec.h_tooth, FAR_FRACTION * (groove_radius(pair, member) - bore_radius(pair, member, spec)))
+
+
+def mesh_revision(pair: GearPair, member: int, spec: SegmentSpec) -> str | None:
+    """None when :func:`member_body` gives the same mesh as before the far-field rule of :func:`far_size`
+    and the graded groove layers (no groove and a far size of 12 h_tooth), else a tag for cache keys."""
+    if spec.groove <= 0 and spec.h_far <= 0 and far_size(pair, member, spec) == 12.0 * spec.h_tooth:
+        return None
+    if spec.groove <= 0 and spec.h_far > 0:
+        return None
+    return "body-v3"
+
+
+def groove_layers(b: float, groove: float, dz: float, rate: float, cap: float) -> np.ndarray:
+    """Interior layer positions across the groove (z − b in (0, g]): the layer spacing ``dz`` of the helices at
+    both ends, growing by ``rate`` per unit distance from the nearer helix towards the middle, at most ``cap``."""
+    if groove <= 0:
+        return np.zeros(0)
+    z, out = 0.0, []
+    while True:
+        d = min(z, groove - z)
+        step = min(cap, dz + rate * d)
+        if z + step >= groove - 0.5 * dz:
+            out.append(groove)
+            break
+        z += step
+        out.append(z)
+    out = np.array(out)
+    return out * (groove / out[-1])
+
+
+def _layers(pair: GearPair, spec: SegmentSpec, h_far: float | None = None) -> tuple[np.ndarray, int, int]:
     """(z of every layer, index of the layer at z = b, at z = b + g)."""
     left = np.linspace(0.0, pair.b, spec.layers + 1)
     if spec.groove > 0:
-        ng = max(1, int(math.ceil(spec.groove / (pair.b / spec.layers))))
-        mid = np.linspace(pair.b, pair.b + spec.groove, ng + 1)[1:]
+        dz = pair.b / spec.layers
+        mid = pair.b + groove_layers(pair.b, spec.groove, dz, spec.grade, h_far or 12.0 * spec.h_tooth)
+        ng = mid.size
     else:
         ng, mid = 0, np.zeros(0)
     right = pair.b + spec.groove + left[1:]
@@ -168,8 +208,6 @@ def member_body(pair: GearPair, member: int, spec: SegmentSpec):
     """The tetrahedral body (skfem ``MeshTet``) of ``member``, both helices, named regions attached."""
     import skfem
 
-    from femgear.mesh.section import gear_section
-
     if spec.n_teeth < 1 or spec.n_teeth % 2 == 0:
         raise ValueError(f"n_teeth must be odd and ≥ 1 (the middle tooth is loaded), got {spec.n_teeth}")
     if not 0 < spec.h_tooth <= spec.h:
@@ -177,21 +215,44 @@ def member_body(pair: GearPair, member: int, spec: SegmentSpec):
     if spec.stagger != 0 and spec.groove <= 0:
         raise ValueError(f"stagger={spec.stagger}: a staggered double-helical body needs groove_width > 0 "
                          "(the right helix's teeth are turned across the groove)")
-    rf = pair.rf1 if member == 1 else pair.rf2
-    ra = pair.ra1 if member == 1 else pair.ra2
     r_g = groove_radius(pair, member)
-    h_far = spec.h_far if spec.h_far > 0 else 12.0 * spec.h_tooth
-    sec = gear_section(pair, member, spec.h, n_teeth=spec.n_teeth, bore_radius=bore_radius(pair, member, spec),
-                       refine_at=(0.0, 0.5 * (rf + ra)), refine_ratio=spec.h_tooth / spec.h,
-                       refine_radius=0.75 * (ra - rf), split_radius=r_g,
-                       grade=(spec.grade, h_far, min(spec.fine_teeth, spec.n_teeth)), ring=True)
-    zs, k_b, k_g = _layers(pair, spec)
+    h_far = far_size(pair, member, spec)
+    sec = body_section(pair, member, spec)
+    zs, k_b, k_g = _layers(pair, spec, h_far)
     frame = helix_frame(pair, member, spec)
     mesh, layer_of, node2d = _sweep(sec, zs, frame, (k_b, k_g), r_g)
     boundaries = _name_facets(mesh, sec, layer_of, node2d, (0, k_b, k_g, zs.size - 1))
     boundaries["loaded_flank"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 0)
     boundaries["loaded_flank_right"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 1)
     return skfem.MeshTet(mesh.p, mesh.t, _boundaries=boundaries)
+
+
+@functools.lru_cache(maxsize=8)
+def body_section(pair: GearPair, member: int, spec: SegmentSpec):
+    """The transverse section (skfem ``MeshTri``) that :func:`member_body` sweeps (cached: the cost estimate
+    meshes it before the body)."""
+    from femgear.mesh.section import gear_section
+
+    rf = pair.rf1 if member == 1 else pair.rf2
+    ra = pair.ra1 if member == 1 else pair.ra2
+    return gear_section(pair, member, spec.h, n_teeth=spec.n_teeth, bore_radius=bore_radius(pair, member, spec),
+                        refine_at=(0.0, 0.5 * (rf + ra)), refine_ratio=spec.h_tooth / spec.h,
+                        refine_radius=0.75 * (ra - rf), split_radius=groove_radius(pair, member),
+                        grade=(spec.grade, far_size(pair, member, spec), min(spec.fine_teeth, spec.n_teeth)),
+                        ring=True)
+
+
+def body_size(pair: GearPair, member: int, spec: SegmentSpec) -> tuple[int, int]:
+    """(nodes, tetrahedra) of :func:`member_body` from its section alone (a fraction of a second)."""
+    sec = body_section(pair, member, spec)
+    zs, k_b, k_g = _layers(pair, spec, far_size(pair, member, spec))
+    inner = _below_split(sec)
+    n_inner = np.unique(sec.t[:, inner]).size
+    n_groove = k_g - k_b                                   # groove layer slabs (sections below the floor)
+    slabs = zs.size - 1
+    nodes = sec.p.shape[1] * (zs.size - max(0, n_groove - 1)) + n_inner * max(0, n_groove - 1)
+    tets = 3 * (sec.t.shape[1] * (slabs - n_groove) + int(inner.sum()) * n_groove)
+    return int(nodes), int(tets)
 
 
 def _below_split(sec) -> np.ndarray:
