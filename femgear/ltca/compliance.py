@@ -56,6 +56,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import logging
 import os
 import time
 from dataclasses import asdict, dataclass, field
@@ -67,7 +68,9 @@ from femgear.geometry.gear import GearPair
 from femgear.ltca.flank import flank_normals, flank_points, half_thickness, roll_range
 from femgear.ltca.halfspace import boussinesq_depth
 from femgear.mesh.segment import SegmentSpec
-from femgear.perf import Estimate, Progress, announce
+from femgear.perf import LONG_STAGE_SECONDS, NOTICE, Estimate, Progress, announce
+
+log = logging.getLogger(__name__)
 
 CACHE_VERSION = 3     #: 3: both helices, the groove and the rim down to the bore in one body (cross kernels)
 DEFAULT_DEPTH = 0.4    #: reading depth below the flank, in normal modules (clipped near the tip)
@@ -316,6 +319,9 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimat
     t_mesh = time.perf_counter() - t0
     frame = helix_frame(pair, member, spec)
     model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=SOLVE_TOL, solver="auto")
+    log.log(NOTICE if estimate.seconds > LONG_STAGE_SECONDS else logging.INFO,
+            f"{estimate.stage}: meshed and assembled ({model.free.size / 1e3:.0f} k DOF, "
+            f"{time.perf_counter() - t0:.0f} s); {model.solver} factor and {n_rho * n_z} unit loads next")
     r0, r1 = roll_range(pair, member)
     grid_rho = np.linspace(r0, r1, n_rho)
     grid_z = np.linspace(0.0, pair.b, n_z)
