@@ -42,7 +42,7 @@ MAX_LINE_POINTS = 64          #: the finest contact-line discretisation that ref
 
 
 def resolved_orders(model, force: float, modifications=None, stagger: float = 0.0, n_line: int = 16, extra=None,
-                    n_phases: int = 64) -> tuple[int, np.ndarray]:
+                    n_phases: int = 64, spectra: dict | None = None) -> tuple[int, np.ndarray]:
     """(H, change): mesh orders 1…H of the total secant stiffness are resolved by ``n_line`` points per line.
 
     ``change[h − 1]`` = |K_h(n_line) − K_h(2 n_line)| / |K_h(2 n_line)| for the complex harmonics K_h of
@@ -54,12 +54,13 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
     """
     from femgear.ltca.analysis import mesh_cycle
 
-    spectra = []
+    memo = {} if spectra is None else spectra     # spectra by points per line: doubling reuses the finer one
     for n in (n_line, 2 * n_line):
-        r = mesh_cycle(model, force, modifications, n_phases=n_phases, stagger=stagger, n_line=n, extra=extra,
-                       keep_lines=False)
-        spectra.append(np.fft.rfft(r.k_secant)[1:n_phases // 2])
-    a, b = spectra
+        if n not in memo:
+            r = mesh_cycle(model, force, modifications, n_phases=n_phases, stagger=stagger, n_line=n, extra=extra,
+                           keep_lines=False)
+            memo[n] = np.fft.rfft(r.k_secant)[1:n_phases // 2]
+    a, b = memo[n_line], memo[2 * n_line]
     change = np.abs(a - b) / np.maximum(np.abs(b), 1e-300)
     median = np.array([np.median(change[max(0, i - 1):i + 2]) for i in range(change.size)])
     bad = np.nonzero(median > RESOLUTION_TOLERANCE)[0]
@@ -82,10 +83,11 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
     body = {k: v for k, v in (body or {}).items() if k != "stagger"}
     check_body_memory(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
     model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger, **body)
-    orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
+    spectra: dict = {}
+    orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra, spectra=spectra)
     while orders < MIN_RESOLVED_ORDERS and 2 * n_line <= MAX_LINE_POINTS:
         n_line *= 2
-        orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
+        orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra, spectra=spectra)
     res = mesh_cycle(model, force, modifications, n_phases=n_positions, stagger=stagger, n_line=n_line, extra=extra)
     info = {"ltca": res, "excitation": res.excitation(), "model_seconds": model.seconds,
             "lte_peak_to_peak": res.lte_peak_to_peak(), "force": force, "resolved_orders": orders,

@@ -1,6 +1,7 @@
 """Cost of the FE stages per gear pair and body level: DOF, peak memory, cold time (issue 26).
 
-    python studies/benchmarks/cost.py [--levels 0,1] [--pairs baseline,marine] [--skip fidelity,fe]
+    python studies/benchmarks/cost.py [--levels 0,1 | --levels "baseline=0,1,2,3/marine=0,1,2"]
+                                      [--pairs baseline,marine] [--skip ltca,fe,refusal,fidelity]
 
 Pairs: the paper's baseline and every scene of ``studies/zoo/*.toml``.  Per pair and
 ``numerics.body_level``: the member bodies' DOF and tetrahedra; the ``ltca`` stiffness cold
@@ -131,12 +132,20 @@ def refusal(scene_path: Path) -> dict:
             "lines": len(lines), "message": lines[-1] if lines else ""}
 
 
-def run(pairs: list[str], levels: list[int], skip: set[str], cap_gb: float) -> dict:
+def parse_levels(text: str, pairs: list[str]) -> dict[str, list[int]]:
+    """``"0,1"`` (every pair) or ``"baseline=0,1,2/marine=0,1"`` → {pair: levels}."""
+    if "=" not in text:
+        return {p: [int(x) for x in text.split(",")] for p in pairs}
+    spec = dict(part.split("=") for part in text.split("/"))
+    return {p: [int(x) for x in spec.get(p, "1").split(",")] for p in pairs}
+
+
+def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: float) -> dict:
     paths = scenes()
     out: dict = {"levels": levels, "pairs": {}}
     for name in pairs:
-        rec: dict = {"scene": str(paths[name].relative_to(ROOT))}
-        for level in levels:
+        rec: dict = {"scene": str(paths[name].relative_to(ROOT)), "levels": levels[name]}
+        for level in levels[name]:
             rec[f"size_{level}"] = one("size", str(paths[name]), level)
             if "ltca" not in skip:
                 rec[f"ltca_{level}"] = child("ltca", paths[name], level, cap_gb)
@@ -162,8 +171,8 @@ def table(r: dict) -> list[str]:
     ref = r["pairs"].get("baseline", {})
     ref_dofs = sum(ref.get("size_1", {}).get(f"member{m}_dofs", 0) for m in (1, 2)) or None
     for name, rec in r["pairs"].items():
-        finest = max((lv for lv in r["levels"] if "k_mean" in rec.get(f"ltca_{lv}", {})), default=None)
-        for lv in r["levels"]:
+        finest = max((lv for lv in rec["levels"] if "k_mean" in rec.get(f"ltca_{lv}", {})), default=None)
+        for lv in rec["levels"]:
             s, lt = rec[f"size_{lv}"], rec.get(f"ltca_{lv}", {})
             conv = "—"
             if finest is not None and "k_mean" in lt:
@@ -212,7 +221,8 @@ def main(argv=None) -> None:
     if a.one:
         print(json.dumps(one(a.one[0], a.one[1], int(a.one[2]))))
         return
-    r = run(a.pairs.split(","), [int(x) for x in a.levels.split(",")], set(filter(None, a.skip.split(","))), a.cap_gb)
+    pairs = a.pairs.split(",")
+    r = run(pairs, parse_levels(a.levels, pairs), set(filter(None, a.skip.split(","))), a.cap_gb)
     print("\n".join(table(r)))
     out = ROOT / "out" / "benchmarks"
     out.mkdir(parents=True, exist_ok=True)
