@@ -33,10 +33,9 @@ import numpy as np
 
 from femgear.contact.crowning import crowned_contact
 from femgear.tehl.point import solve_tehl_point
-from femgear.tehl.solver import map_progress, tehl_setup
+from femgear.tehl.solver import tehl_setup
 
 POINT_LEVEL = 1
-POINT_SECONDS = 1.0   #: rough wall time of one point solve at level 1 (announce and progress only) [s]
 
 
 def tehl_point_solver(scene, level: int | None = None, pair=None, details: list | None = None, **options):
@@ -56,9 +55,7 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
         Rx, Ry = geo.radii(R)
         F = geo.load(w)
         mu, dT = np.empty(w.shape), np.empty(w.shape)
-        progress = map_progress(f"TEHL point solves (level {level})", w.size, POINT_SECONDS * 4.0 ** (level - 1))
-        for n, i in enumerate(np.ndindex(w.shape)):
-            progress(n)
+        for i in np.ndindex(w.shape):
             r = solve_tehl_point(float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]),
                                  Ry=float(Ry[i]), level=level, **setup)
             mu[i], dT[i] = r.mu, r.dT_max
