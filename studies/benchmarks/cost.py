@@ -146,7 +146,11 @@ def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: 
     for name in pairs:
         rec: dict = {"scene": str(paths[name].relative_to(ROOT)), "levels": levels[name]}
         for level in levels[name]:
-            rec[f"size_{level}"] = one("size", str(paths[name]), level)
+            try:
+                rec[f"size_{level}"] = one("size", str(paths[name]), level)
+            except (ValueError, ArithmeticError) as exc:     # a body femgear cannot mesh: a failed row
+                rec[f"size_{level}"] = {"failed": True, "message": f"{type(exc).__name__}: {exc}"}
+                continue
             if "ltca" not in skip:
                 rec[f"ltca_{level}"] = child("ltca", paths[name], level, cap_gb)
                 print(f"{name} level {level}: ltca {json.dumps(rec[f'ltca_{level}'])}", file=sys.stderr, flush=True)
@@ -174,6 +178,9 @@ def table(r: dict) -> list[str]:
         finest = max((lv for lv in rec["levels"] if "k_mean" in rec.get(f"ltca_{lv}", {})), default=None)
         for lv in rec["levels"]:
             s, lt = rec[f"size_{lv}"], rec.get(f"ltca_{lv}", {})
+            if s.get("failed"):
+                rows.append(f"| {name} | {lv} | failed: {s['message'][:90]} | | | | | | | |")
+                continue
             conv = "—"
             if finest is not None and "k_mean" in lt:
                 f = rec[f"ltca_{finest}"]
@@ -187,7 +194,8 @@ def table(r: dict) -> list[str]:
                         f"{_fmt(lt.get('peak_rss_MiB'), '.0f')} | {_fmt(lt.get('k_mean'), '.4e')} | "
                         f"{_fmt(lt.get('lte_pp_um'), '.4f')} | {conv} |")
         if ref_dofs and name != "baseline":
-            d = sum(rec["size_1"][f"member{m}_dofs"] for m in (1, 2)) if "size_1" in rec else None
+            ok = "size_1" in rec and not rec["size_1"].get("failed")
+            d = sum(rec["size_1"][f"member{m}_dofs"] for m in (1, 2)) if ok else None
             rows.append(f"| {name} / baseline DOF at level 1 | | {_fmt(d / ref_dofs if d else None, '.2f')} × | "
                         "| | | | | | |")
     rows.append("")
