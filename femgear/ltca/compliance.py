@@ -9,8 +9,10 @@ subtracting the half-space part it already holds):
 - The member is one body holding both helices, the groove and the rim down to the bore
   (:func:`femgear.mesh.segment.member_body`).  Unit normal loads, one per node g of a (ρ, ζ)
   grid on the loaded flank of the left helix's middle tooth, spread as bilinear hats φ_g
-  (total force 1 N); one factorisation (P1: sparse LU) or SA hierarchy
-  (:class:`femgear.body.elastic3d.Elastic3D`) serves all of them.
+  (total force 1 N); one factorisation (CHOLMOD, else SuperLU) or SA hierarchy
+  (:class:`femgear.body.elastic3d.Elastic3D`) serves all of them, solved in blocks of right-hand
+  sides.  Before a body is built its DOF, memory and time are estimated and announced
+  (:func:`build_estimate`, :func:`femgear.perf.announce`; ``docs/cost.md``).
 - G^FE_d[k][g′, g]: approach (displacement along −n) at depth d(g′) below node g′ of
   tooth k (k = −(n−1)/2 … (n−1)/2, cyclic offsets) for load g on tooth 0, read on the loaded
   helix (``bulk``) and on the other helix at the same (ρ, ζ) (``cross``: the helices' coupling

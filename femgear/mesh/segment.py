@@ -72,7 +72,7 @@ class SegmentSpec:
     groove: float = 0.0  #: groove width g between the helices
     stagger: float = 0.0  #: right helix against the left one [transverse base pitches]
     grade: float = 0.35  #: growth of the element size with the depth below the groove floor / the distance [m/m]
-    h_far: float = 0.0   #: largest element size in the rim; 0: 12 h_tooth (4 m_n at level 1; refines with the level)
+    h_far: float = 0.0   #: largest element size in the rim; 0: :func:`far_size` (max(12 h_tooth, ¼ rim depth))
     fine_teeth: int = 3  #: middle teeth kept at ≤ h (the outer ones only carry kernel readings: coarser)
     far_dz: float = FAR_DZ  #: layer spacing of the far field [m_n] (beyond the teeth, below the rim's top); 0: none
 
