@@ -110,7 +110,14 @@ def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, 
                             stagger=stagger)
         if cached and cache_path(pair, member, spec, youngs_modulus, poisson_ratio).exists():
             continue
-        out.append(build_estimate(pair, member, spec, n_loads=63 * (1 if stagger == 0 else 2)))
+        try:
+            out.append(build_estimate(pair, member, spec, n_loads=63 * (1 if stagger == 0 else 2)))
+        except ValueError as exc:      # e.g. a bore too close to the root circle for the body's rim
+            from femgear.errors import SceneError
+
+            name = "pinion" if member == 1 else "gear"
+            raise SceneError(f"{name}.bore_radius", f"the {name}'s LTCA body cannot be meshed: {exc} "
+                             f"(the bore is the scene's bore_radius, else half the shaft_diameter)") from None
     return out
 
 
