@@ -129,12 +129,12 @@ def thermal_units_3d(pair: GearPair, member: int, expansion: float, youngs_modul
         info["cached"] = True
         return Thermal3DUnits(member, d["rho"], d["zeta"], d["flank"], d["shaft"], info)
     from femgear.ltca.compliance import build_estimate
-    from femgear.perf import announce
+    from femgear.perf import announce, interruptible
 
     est = build_estimate(pair, member, spec, 1, 2)
     est = replace(est, stage=est.stage.replace("LTCA", "fe3d thermal"))
     announce(est, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level")
-    res = _compute(pair, member, spec, expansion, youngs_modulus, poisson_ratio, n_rho, n_z)
+    res = interruptible(_compute, pair, member, spec, expansion, youngs_modulus, poisson_ratio, n_rho, n_z)
     if cache:
         save_cache(path, rho=res.rho, zeta=res.zeta, flank=res.flank, shaft=res.shaft, info=json.dumps(res.info))
     return res

@@ -70,7 +70,7 @@ from femgear.geometry.gear import GearPair
 from femgear.ltca.flank import flank_normals, flank_points, half_thickness, roll_range
 from femgear.ltca.halfspace import boussinesq_depth
 from femgear.mesh.segment import SegmentSpec
-from femgear.perf import LONG_STAGE_SECONDS, NOTICE, Estimate, Progress, announce
+from femgear.perf import LONG_STAGE_SECONDS, NOTICE, Estimate, Progress, announce, interruptible
 
 log = logging.getLogger(__name__)
 
@@ -189,7 +189,8 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
                                 data["fe_cross"])
     estimate = build_estimate(pair, member, spec, order, n_rho * n_z * (1 if spec.stagger == 0 else 2))
     announce(estimate, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level")
-    result = _compute(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0, estimate)
+    result = interruptible(_compute, pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0,
+                           estimate)
     if cache:
         right = np.zeros(0) if result.bulk_right is None else result.bulk_right
         save_cache(path, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,

@@ -134,3 +134,36 @@ def test_ctrl_c_in_a_long_stage_prints_one_line_and_exits_130(tmp_path, marker, 
     assert rc == 130, err
     assert err.strip().splitlines()[-1] == "femgear: interrupted"
     assert "Traceback" not in err
+
+
+def test_interruptible_returns_the_value_and_the_error_of_the_child():
+    from femgear.errors import SceneError
+    from femgear.perf import interruptible
+
+    assert interruptible(divmod, 17, 5) == (3, 2)
+    with pytest.raises(SceneError, match="pinion.bore_radius: too thin") as info:
+        interruptible(_raise_scene_error)
+    assert info.value.key == "pinion.bore_radius"
+
+
+def _raise_scene_error():
+    from femgear.errors import SceneError
+
+    raise SceneError("pinion.bore_radius", "too thin")
+
+
+def test_ctrl_c_kills_the_forked_stage_at_once(tmp_path):
+    """The parent takes SIGINT while its child computes (here: sleeps 60 s), kills it and exits 130."""
+    code = ("import sys, time\nfrom femgear.cli import main\nimport femgear.cli\n"
+            "from femgear.perf import interruptible\n"
+            "def job(args):\n    print('child started', file=sys.stderr, flush=True)\n"
+            "    interruptible(time.sleep, 60)\n"
+            "import argparse\nns = argparse.Namespace(func=job, debug=False)\n"
+            "sys.exit(femgear.cli._dispatch(ns))\n")
+    proc = subprocess.Popen([sys.executable, "-c", code], env=_env(tmp_path), stderr=subprocess.PIPE, text=True)
+    assert "child started" in proc.stderr.readline()
+    time.sleep(0.5)
+    proc.send_signal(signal.SIGINT)
+    rc = proc.wait(30)                  # not the child's 60 s
+    assert rc == 130
+    assert proc.stderr.read().strip().splitlines()[-1] == "femgear: interrupted"
