@@ -215,9 +215,12 @@ def table(r: dict) -> list[str]:
                         f"{ref_['lines']} line(s): `{ref_['message']}`")
     fid = r.get("fidelity")
     if fid:
+        failed = fid.get("failed") or fid.get("rc", 0) != 0
+        why = fid.get("message") or (fid.get("stderr") or [""])[-1]
         rows.append("- baseline, full fidelity (ltca + tehl-point + fe3d, crowning 10 µm) cold: " + (
-            f"{fid['seconds']:.0f} s (CPU {fid['cpu_s']:.0f} s), peak {fid['peak_rss_MiB']:.0f} MiB, exit {fid['rc']}"
-            if "seconds" in fid else f"FAILED (exit {fid['rc']} after {fid['wall_s']:.0f} s): {fid['message']}"))
+            f"{'FAILED ' if failed else ''}{fid.get('seconds', fid['wall_s']):.0f} s"
+            + (f" (CPU {fid['cpu_s']:.0f} s), peak {fid['peak_rss_MiB']:.0f} MiB" if "cpu_s" in fid else "")
+            + f", exit {fid['rc']}" + (f": `{why[:300]}`" if failed else "")))
     return rows
 
 
