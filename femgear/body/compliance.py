@@ -1,9 +1,12 @@
 """FE tooth compliance along the path of contact (the ``fe`` mesh-stiffness level).
 
 Each member is meshed once (the whole gear by default, graded: ``h·refine_ratio`` on
-the loaded tooth, ``h`` elsewhere; P2, plane strain, bore clamped — the body of
-Sainsot's foundation term) and its pyamg hierarchy is built once; every path
-position is then one right-hand side.  A sector of a few teeth is not used by
+the loaded tooth, ``h`` on its neighbours, then growing by :data:`GRADE` per unit distance
+from the three middle teeth and per unit depth below the root, up to max(4 h, ¼ of the rim);
+P2, plane strain, bore clamped — the body of Sainsot's foundation term) and factored once;
+every path position is then one right-hand side.  Sizes are in module units
+(:func:`section_size`), so similar gears get the same mesh: the marine wheel (z 97, a 40 m_n
+rim) had 1 M DOF with the uniform h = m_n/4 of the whole gear (251 s, 9.6 GB).  A sector of a few teeth is not used by
 default: with free cut sides it is far too soft (rim bending), with clamped or
 roller sides too stiff near the root (−35 % at the start of contact, measured).
 
@@ -29,6 +32,29 @@ import numpy as np
 from femgear.body.elastic import ElasticProblem
 from femgear.body.forms import traction
 from femgear.geometry.gear import GearPair
+from femgear.mesh.segment import FAR_FRACTION
+from femgear.perf import Estimate, Progress, announce
+
+
+GRADE = 0.35   #: growth of the element size per unit distance beyond the three middle teeth and below the root
+
+
+def section_size(pair: GearPair, level: int = 1) -> float:
+    """Element size of the ``fe`` level's section on the teeth at body ``level``: m_n/(3 + level) (m_n/4 at the
+    default level 1; half that at the contact), in module units like the 3-D bodies."""
+    if level < 0:
+        raise ValueError(f"level must be ≥ 0, got {level}")
+    return pair.m_n / (3 + level)
+
+
+def section_estimate(mesh, order: int, member: int, n_positions: int) -> Estimate:
+    """Expected DOF, memory and time of one member's ``fe`` compliance: SuperLU (COLAMD) on the 2-D section,
+    fitted on this 2-core machine (docs/cost.md): 0.3 GB + 3 kB per DOF, 20 µs per DOF plus 3 µs per DOF
+    and path position."""
+    n_nodes = mesh.p.shape[1] + (mesh.facets.shape[1] if order == 2 else 0)
+    dofs = 2 * n_nodes
+    return Estimate(f"fe stiffness, {'pinion' if member == 1 else 'gear'} section (P{order})", dofs,
+                    0.3e9 + 3.0e3 * dofs, 2e-5 * dofs + 3e-6 * dofs * n_positions)
 
 
 class ToothFE:
@@ -36,19 +62,24 @@ class ToothFE:
 
     def __init__(self, pair: GearPair, member: int, youngs_modulus: float, poisson_ratio: float,
                  h: float | None = None, n_teeth: int | None = None, bore_radius: float = 0.0,
-                 plane: str = "strain", order: int = 2, refine_ratio: float = 0.5, solver: str = "lu"):
+                 plane: str = "strain", order: int = 2, refine_ratio: float = 0.5, solver: str = "lu",
+                 level: int = 1, grade: float | None = GRADE, n_positions: int = 9):
         from femgear.mesh.section import gear_section
 
         t0 = time.perf_counter()
         self.pair, self.member = pair, member
         rf = pair.rf1 if member == 1 else pair.rf2
         rbore = bore_radius if bore_radius > 0 else 0.5 * rf
-        self.h = h or pair.m_n / 4
+        self.h = h or section_size(pair, level)
         ra = pair.ra1 if member == 1 else pair.ra2
         centre = (0.0, 0.5 * (rf + ra))
+        far = None if grade is None else (grade, max(4.0 * self.h, FAR_FRACTION * (rf - rbore)), 3)
         self.mesh = gear_section(pair, member, self.h, n_teeth=n_teeth, bore_radius=rbore, refine_at=centre,
-                                 refine_ratio=refine_ratio, refine_radius=1.2 * (ra - rf))
+                                 refine_ratio=refine_ratio, refine_radius=1.2 * (ra - rf), grade=far)
         self.mesh_seconds = time.perf_counter() - t0
+        self.estimate = section_estimate(self.mesh, order, member, n_positions)
+        announce(self.estimate, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level or "
+                                                                      "a larger stiffness.fe_mesh_size")
         self.problem = ElasticProblem(self.mesh, youngs_modulus, poisson_ratio, plane, order=order, solver=solver)
         self.problem.fix(self.problem.boundary_dofs("bore"), 0.0)
         self.solve_seconds = 0.0
@@ -116,7 +147,7 @@ class ToothFE:
 def fe_pair_stiffness_per_width(pair: GearPair, u: np.ndarray, youngs_modulus: float, poisson_ratio: float,
                                 bore_radius: tuple[float, float] = (0.0, 0.0), h: float | None = None,
                                 n_teeth: int | None = None, order: int = 2, plane: str = "strain",
-                                refine_ratio: float = 0.5):
+                                refine_ratio: float = 0.5, level: int = 1, grade: float | None = GRADE):
     """Transverse tooth-pair stiffness per unit face width at ``u`` from the FE teeth in series + Hertz.
 
     Returns (k [N/m per m], info) with the per-member compliances, DOF counts and times.
@@ -129,8 +160,12 @@ def fe_pair_stiffness_per_width(pair: GearPair, u: np.ndarray, youngs_modulus: f
     for member in (1, 2):
         model = ToothFE(pair, member, youngs_modulus, poisson_ratio, h=h, n_teeth=n_teeth,
                         bore_radius=bore_radius[member - 1], plane=plane, order=order,
-                        refine_ratio=refine_ratio)
-        comp[member] = np.array([model.compliance(ui) for ui in u])
+                        refine_ratio=refine_ratio, level=level, grade=grade, n_positions=u.size)
+        progress = Progress(model.estimate.stage, u.size, model.estimate.seconds)
+        comp[member] = np.empty(u.size)
+        for i, ui in enumerate(u):
+            comp[member][i] = model.compliance(ui)
+            progress(i + 1)
         info["ndofs"].append(model.ndofs)
         info["h"] = model.h
         info[f"solve_seconds_{member}"] = model.solve_seconds

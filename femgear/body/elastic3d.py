@@ -18,8 +18,18 @@ Two solvers (``solver``):
   factors in 26 s (83 M entries in L + U, ≈ 1 GB) and 63 load cases take 5 s together, against
   82 s of SA-CG (2 cores under load, 23 Nov 2026).  The factor's fill grows fast with P2, where
   the AMG stays.  A solution whose relative residual exceeds 1e-8 raises ConvergenceError.
-  (CHOLMOD is not in the environment.)  ``"auto"``: ``lu`` for P1 up to :data:`LU_MAX_DOFS`
-  free DOF (memory: ≈ 1 GB at 58 k DOF, a few GB at 140 k), ``amg`` otherwise.
+- ``"cholmod"``: a supernodal sparse Cholesky factor (CHOLMOD with a METIS ordering, through the
+  ``cholespy`` wheel, which carries its own reference BLAS), then block solves of all load cases.
+  Far less fill than SuperLU's minimum degree: the marine pinion body (102 k DOF) factors in 25 s
+  within the memory its assembly needs, where SuperLU needs several GB (``docs/cost.md``).
+  ``"auto"``: ``cholmod`` when ``cholespy`` is installed, else ``lu`` for P1 up to
+  :data:`LU_MAX_DOFS` free DOF (memory: ≈ 1 GB at 58 k DOF, a few GB at 140 k), else ``amg``.
+
+Assembly.  P1 stiffness matrices are assembled directly (constant strain per tetrahedron,
+exact: K_(a i)(b j) = V [μ δ_ij ∇φ_a·∇φ_b + μ ∂_j φ_a ∂_i φ_b + λ ∂_i φ_a ∂_j φ_b]) in chunks
+of :data:`ASSEMBLY_CHUNK` elements; P2 by scikit-fem over element chunks.  Chunks keep the
+assembly's transient memory bounded (scikit-fem over the whole marine pinion body peaked at
+1.5 GB for a 0.4 GB result), so the peak stays linear in the DOF.
 """
 
 from __future__ import annotations
@@ -31,7 +41,54 @@ import numpy as np
 
 from femgear.errors import ConvergenceError
 
-LU_MAX_DOFS = 160_000  #: ``solver="auto"``: the sparse LU up to this many free DOF (P1 only), SA-CG above
+LU_MAX_DOFS = 160_000  #: ``solver="auto"`` without cholespy: the sparse LU up to this many free DOF (P1 only), SA-CG above
+ASSEMBLY_CHUNK = 40_000  #: elements per assembly chunk
+SOLVE_CHUNK = 16         #: load cases per block solve (a progress step)
+SOLVERS = ("amg", "lu", "cholmod", "auto")
+
+
+def cholmod_available() -> bool:
+    """True when the ``cholespy`` wheel (CHOLMOD) can be imported."""
+    try:
+        import cholespy  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def auto_solver(order: int, ndofs: int) -> str:
+    """The solver ``"auto"`` picks for ``ndofs`` free DOF of order ``order``."""
+    if cholmod_available():
+        return "cholmod"
+    return "lu" if order == 1 and ndofs <= LU_MAX_DOFS else "amg"
+
+
+def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: str = "auto") -> tuple[float, float]:
+    """(peak resident memory [B], wall time [s]) expected for meshing, assembling, factoring (or the SA
+    hierarchy) and ``n_loads`` solves of a body with ``dofs`` unknowns and ``tets`` elements.
+
+    Fitted to measurements on the shared 2-core machine (``python studies/benchmarks/cost.py``, docs/cost.md):
+    the process and the mesh ≈ 0.3 GB + 5 kB per DOF (basis, matrix, load vectors); CHOLMOD's factor
+    ≈ 110 n^(4/3) B (METIS fill of these swept bodies); SuperLU's (minimum degree) ≈ 420 n^(4/3) B;
+    SA-AMG ≈ 3 kB per DOF.  Times: ≈ 80 µs per DOF to mesh and assemble, the factor ≈ 40 s (n/1e5)^1.5,
+    0.3 µs per DOF and load case to solve; SA-CG ≈ 13 µs per DOF and load case.  Checked against the CPU
+    times of the cold LTCA (both members and the mesh cycle): baseline level 1 / 3 and marine level 1
+    measured 23 / 82 / 120 s, modelled 23 / 65 / 120 s.
+    """
+    solver = auto_solver(order, dofs) if solver == "auto" else solver
+    n = float(max(dofs, 1))
+    memory = 0.3e9 + 5.0e3 * n + 8.0 * n * n_loads
+    seconds = 8.0e-5 * n + 1e-5 * tets
+    if solver == "cholmod":
+        memory += 110.0 * n ** (4 / 3)
+        seconds += 40.0 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
+    elif solver == "lu":
+        memory += 420.0 * n ** (4 / 3)
+        seconds += 60.0 * (n / 1e5) ** 1.6 + 5e-7 * n * n_loads
+    else:
+        memory += 3.0e3 * n
+        seconds += 1.3e-5 * n * n_loads * (2.0 if order == 2 else 1.0)
+    return memory, seconds
 
 
 def _elasticity_form(lam: float, mu: float):
@@ -44,6 +101,35 @@ def _elasticity_form(lam: float, mu: float):
         return ddot(2.0 * mu * eps + lam * eye(trace(eps), 3), sym_grad(v))
 
     return form
+
+
+def assemble_p1(mesh, element_dofs: np.ndarray, n: int, lam: float, mu: float, chunk: int = ASSEMBLY_CHUNK):
+    """Stiffness matrix (n × n CSR) of P1 vector tetrahedra, local DOF 3a + i = component i of vertex a.
+
+    Constant strain per element (exact, module docstring); ``element_dofs`` (12, n_elements) maps the
+    local DOF to the global ones (scikit-fem's numbering).
+    """
+    from scipy.sparse import coo_matrix
+
+    K = None
+    eye3 = np.eye(3)
+    for lo in range(0, mesh.t.shape[1], chunk):
+        t = mesh.t[:, lo:lo + chunk]
+        x = mesh.p[:, t]                                           # (3, 4, ne)
+        J = np.transpose(x[:, 1:] - x[:, :1], (2, 0, 1))           # (ne, 3 coords, 3 edges)
+        Jinv = np.linalg.inv(J)
+        vol = np.abs(np.linalg.det(J)) / 6.0
+        g = np.concatenate([-Jinv.sum(axis=1, keepdims=True), Jinv], axis=1)   # (ne, 4 vertices, 3): ∇φ_a
+        dots = np.einsum("eak,ebk->eab", g, g)
+        Ke = (mu * dots[:, :, None, :, None] * eye3[None, None, :, None, :]
+              + mu * np.einsum("eaj,ebi->eaibj", g, g) + lam * np.einsum("eai,ebj->eaibj", g, g))
+        Ke = (Ke * vol[:, None, None, None, None]).reshape(-1, 12, 12)
+        dofs = element_dofs[:, lo:lo + chunk].T                    # (ne, 12)
+        rows = np.broadcast_to(dofs[:, :, None], Ke.shape).ravel()
+        cols = np.broadcast_to(dofs[:, None, :], Ke.shape).ravel()
+        part = coo_matrix((Ke.ravel(), (rows, cols)), shape=(n, n)).tocsr()
+        K = part if K is None else K + part
+    return K
 
 
 def rigid_body_modes_3d(basis) -> np.ndarray:
@@ -85,25 +171,31 @@ class Elastic3D:
 
         if order not in (1, 2):
             raise ValueError(f"order must be 1 or 2, got {order!r}")
-        if solver not in ("amg", "lu", "auto"):
-            raise ValueError(f"solver must be 'amg', 'lu' or 'auto', got {solver!r}")
+        if solver not in SOLVERS:
+            raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
+        if solver == "cholmod" and not cholmod_available():
+            raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
         if clamped is not None and clamped not in mesh.boundaries:
             raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
         t0 = time.perf_counter()
         self.mesh, self.order, self.tol, self.maxiter = mesh, order, tol, maxiter
         self.E, self.nu = youngs_modulus, poisson_ratio
         elem = ElementVector(ElementTetP2() if order == 2 else ElementTetP1())
-        self.basis = Basis(mesh, elem, intorder=2 * (order - 1) if order == 2 else 1)
+        intorder = 2 * (order - 1) if order == 2 else 1
+        self.basis = Basis(mesh, elem, intorder=intorder)
         lam = youngs_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio))
         mu = youngs_modulus / (2 * (1 + poisson_ratio))
-        K = _elasticity_form(lam, mu).assemble(self.basis).tocsr()
+        if order == 1:
+            K = assemble_p1(mesh, self.basis.element_dofs, self.basis.N, lam, mu)
+        else:
+            K = _assemble_chunks(mesh, elem, intorder, _elasticity_form(lam, mu))
         held = [np.asarray(fixed if fixed is not None else [], dtype=np.int64)]
         if clamped is not None:
             held.append(self.basis.get_dofs(mesh.boundaries[clamped]).flatten())
         self.free = np.setdiff1d(np.arange(self.basis.N), np.concatenate(held))
         self.K = K[self.free][:, self.free].tocsr()
         self.assembly_seconds = time.perf_counter() - t0
-        self.solver = solver if solver != "auto" else ("lu" if order == 1 and self.free.size <= LU_MAX_DOFS else "amg")
+        self.solver = solver if solver != "auto" else auto_solver(order, self.free.size)
         self._ml = None
         self.setup_seconds = 0.0
         self.solve_seconds = 0.0
@@ -119,36 +211,49 @@ class Elastic3D:
         self.setup_seconds = time.perf_counter() - t0
 
     def _factor(self):
-        import scipy.sparse.linalg as sla
-
         t0 = time.perf_counter()
-        self._ml = sla.splu(self.K.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                            options={"SymmetricMode": True})
+        if self.solver == "cholmod":
+            self._ml = _CholmodFactor(self.K)
+        else:
+            import scipy.sparse.linalg as sla
+
+            self._ml = sla.splu(self.K.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                                options={"SymmetricMode": True})
         self.setup_seconds = time.perf_counter() - t0
 
-    def solve_many(self, F: np.ndarray, case: str = "3-D elasticity") -> np.ndarray:
-        """Displacements (basis.N, m) for the load vectors F (basis.N, m) [N]: one block solve with ``lu``."""
+    def solve_many(self, F: np.ndarray, case: str = "3-D elasticity", progress=None) -> np.ndarray:
+        """Displacements (basis.N, m) for the load vectors F (basis.N, m) [N]: block solves of
+        :data:`SOLVE_CHUNK` load cases with one factor (``lu``, ``cholmod``), one SA-CG solve each with
+        ``amg``.  ``progress``: called with the number of load cases done after each block."""
         F = np.asarray(F, float)
+        m = F.shape[1]
+        U = np.zeros((self.basis.N, m))
         if self.solver == "amg":
-            return np.column_stack([self.solve(F[:, j], case=f"{case}, load {j}") for j in range(F.shape[1])])
+            for j in range(m):
+                U[:, j] = self.solve(F[:, j], case=f"{case}, load {j}")
+                if progress is not None:
+                    progress(j + 1)
+            return U
         if self._ml is None:
             self._factor()
-        t0 = time.perf_counter()
-        rhs = F[self.free]
-        x = self._ml.solve(rhs)
-        res = np.linalg.norm(self.K @ x - rhs, axis=0) / np.maximum(np.linalg.norm(rhs, axis=0), 1e-300)
-        if not np.all(np.isfinite(x)) or res.max() > 1e-8:
-            raise ConvergenceError(case, f"sparse LU solution has relative residual {res.max():.3g}",
-                                   {"residual": res.tolist()})
-        U = np.zeros((self.basis.N, F.shape[1]))
-        U[self.free] = x
-        self.solve_seconds += time.perf_counter() - t0
-        self.solves += F.shape[1]
+        for lo in range(0, m, SOLVE_CHUNK):
+            t0 = time.perf_counter()
+            rhs = F[self.free, lo:lo + SOLVE_CHUNK]
+            x = self._ml.solve(rhs)
+            res = np.linalg.norm(self.K @ x - rhs, axis=0) / np.maximum(np.linalg.norm(rhs, axis=0), 1e-300)
+            if not np.all(np.isfinite(x)) or res.max() > 1e-8:
+                raise ConvergenceError(case, f"sparse {self.solver} solution has relative residual {res.max():.3g}",
+                                       {"residual": res.tolist()})
+            U[self.free, lo:lo + SOLVE_CHUNK] = x
+            self.solve_seconds += time.perf_counter() - t0
+            self.solves += rhs.shape[1]
+            if progress is not None:
+                progress(min(m, lo + SOLVE_CHUNK))
         return U
 
     def solve(self, f: np.ndarray, case: str = "3-D elasticity") -> np.ndarray:
         """Displacement DOF vector (length ``basis.N``) for the load vector ``f`` [N]."""
-        if self.solver == "lu":
+        if self.solver in ("lu", "cholmod"):
             return self.solve_many(np.asarray(f, float)[:, None], case)[:, 0]
         if self._ml is None:
             self._hierarchy()
@@ -187,3 +292,33 @@ class Elastic3D:
         nnz = int(self._ml.L.nnz + self._ml.U.nnz) if self.solver == "lu" and self._ml is not None else 0
         return SolveStats(self.basis.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
                           self.solves, self.iterations, nnz)
+
+
+def _assemble_chunks(mesh, elem, intorder: int, form, chunk: int = ASSEMBLY_CHUNK):
+    """``form`` assembled by scikit-fem over chunks of elements and summed (bounded transient memory)."""
+    from skfem import Basis
+
+    K = None
+    n_el = mesh.t.shape[1]
+    for lo in range(0, n_el, chunk):
+        part = form.assemble(Basis(mesh, elem, intorder=intorder, elements=np.arange(lo, min(n_el, lo + chunk))))
+        K = part.tocsr() if K is None else K + part.tocsr()
+    return K
+
+
+class _CholmodFactor:
+    """CHOLMOD's Cholesky factor of an SPD matrix (cholespy); ``solve`` takes one or a block of right-hand sides."""
+
+    def __init__(self, K):
+        from cholespy import CholeskySolverD, MatrixType
+
+        C = K.tocoo()
+        self.n = K.shape[0]
+        self._s = CholeskySolverD(self.n, C.row.astype(np.int32), C.col.astype(np.int32),
+                                  np.ascontiguousarray(C.data, dtype=np.float64), MatrixType.COO)
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        b = np.ascontiguousarray(rhs, dtype=np.float64)
+        x = np.zeros_like(b)
+        self._s.solve(b, x)
+        return x

@@ -188,11 +188,11 @@ def flank_displacement(result: ThermoElasticResult, pair: GearPair, member: int,
 def flank_deviation(pair: GearPair, member: int, u, level: str, dT_flank: float, dT_shaft: float,
                     expansion: float, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
                     conductivity: float = 46.0, bore_radius: float = 0.0, h: float | None = None,
-                    groove: float = 0.0, stagger: float = 0.0):
+                    groove: float = 0.0, stagger: float = 0.0, body_level: int = 1):
     """Thermal flank deviation ζ_T along the normal line of action at path positions ``u`` [m].
 
     ``level``: ``none`` (zeros), ``analytic``, ``fe`` or ``fe3d`` (see module docstring; ``h`` is the
-    2-D mesh size, ``groove`` and ``stagger`` shape the 3-D body).
+    2-D mesh size, ``groove`` and ``stagger`` shape the 3-D body, ``body_level`` its resolution).
     """
     r, alpha, rho = _flank_radius(pair, member, u)
     cb = math.cos(pair.beta_b)
@@ -208,7 +208,8 @@ def flank_deviation(pair: GearPair, member: int, u, level: str, dT_flank: float,
     if level == "fe3d":
         from femgear.body.thermal3d import thermal_units_3d
 
-        units = thermal_units_3d(pair, member, expansion, youngs_modulus, poisson_ratio, bore_radius, groove, stagger)
+        units = thermal_units_3d(pair, member, expansion, youngs_modulus, poisson_ratio, bore_radius, groove, stagger,
+                                 level=body_level)
         return units.face_mean(rho, dT_flank, dT_shaft)
     raise ValueError(f"level must be 'none', 'analytic', 'fe' or 'fe3d', got {level!r}")
 
@@ -222,6 +223,14 @@ def gear_thermo_elastic(pair: GearPair, member: int, dT_flank: float, dT_shaft: 
     rf = pair.rf1 if member == 1 else pair.rf2
     rbore = bore_radius if bore_radius > 0 else 0.5 * rf
     mesh = gear_section(pair, member, h or pair.m_n / 5, n_teeth=n_teeth, bore_radius=rbore)
+    from dataclasses import replace
+
+    from femgear.body.compliance import section_estimate
+    from femgear.perf import announce
+
+    est = section_estimate(mesh, 2, member, 1)
+    announce(replace(est, stage=est.stage.replace("fe stiffness", "fe thermal")), "thermal.mesh_size",
+             lambda budget: "choose a larger thermal.mesh_size")
     temp = solve_temperature(mesh, conductivity, {"flank": dT_flank, "fillet": dT_flank, "tip": dT_flank,
                                                   "bore": dT_shaft})
     full = "sides" not in mesh.boundaries
@@ -242,4 +251,4 @@ def flank_deviation_from_scene(scene, member: int, u, level: str | None = None, 
     return flank_deviation(pair, member, u, level or scene.physics.thermal, scene.thermal.flank_temperature_rise,
                            scene.thermal.shaft_temperature_rise, mat.thermal_expansion, mat.youngs_modulus,
                            mat.poisson_ratio, mat.conductivity, bore, h if h is not None else scene.thermal.mesh_size,
-                           scene.pair.groove_width, scene.pair.stagger)
+                           scene.pair.groove_width, scene.pair.stagger, scene.numerics.body_level)

@@ -40,7 +40,7 @@ from __future__ import annotations
 import json
 import math
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 
 import numpy as np
 
@@ -115,15 +115,26 @@ def thermal_units_3d(pair: GearPair, member: int, expansion: float, youngs_modul
     if level < 0:
         raise ValueError(f"level must be ≥ 0, got {level}")
     spec = body_spec(pair, member, level, bore_radius, groove, stagger)
-    key = cache_key({"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
-                     "E": youngs_modulus, "nu": poisson_ratio, "expansion": expansion, "grid": [n_rho, n_z]})
+    from femgear.mesh.segment import mesh_revision
+
+    payload = {"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
+               "E": youngs_modulus, "nu": poisson_ratio, "expansion": expansion, "grid": [n_rho, n_z]}
+    if mesh_revision(pair, member, spec) is not None:     # the far-field rule or the graded groove changed the mesh
+        payload["mesh"] = mesh_revision(pair, member, spec)
+    key = cache_key(payload)
     path = cache_dir() / f"thermal3d-member{member}-{key}.npz"
     if cache and path.exists():
         d = np.load(path, allow_pickle=False)
         info = json.loads(str(d["info"]))
         info["cached"] = True
         return Thermal3DUnits(member, d["rho"], d["zeta"], d["flank"], d["shaft"], info)
-    res = _compute(pair, member, spec, expansion, youngs_modulus, poisson_ratio, n_rho, n_z)
+    from femgear.ltca.compliance import build_estimate
+    from femgear.perf import announce, interruptible
+
+    est = build_estimate(pair, member, spec, 1, 2)
+    est = replace(est, stage=est.stage.replace("LTCA", "fe3d thermal"))
+    announce(est, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level")
+    res = interruptible(_compute, pair, member, spec, expansion, youngs_modulus, poisson_ratio, n_rho, n_z)
     if cache:
         save_cache(path, rho=res.rho, zeta=res.zeta, flank=res.flank, shaft=res.shaft, info=json.dumps(res.info))
     return res
@@ -188,7 +199,7 @@ def _compute(pair, member, spec, expansion, E, nu, n_rho, n_z) -> Thermal3DUnits
     from skfem import ElementTetP1, ElementVector
 
     vb = Basis(mesh, ElementVector(ElementTetP1()), intorder=1)
-    model = Elastic3D(mesh, E, nu, order=1, clamped=None, solver="lu",
+    model = Elastic3D(mesh, E, nu, order=1, clamped=None, solver="auto",
                       fixed=determinate_support_3d(vb, mesh, 0.5 * frame.width))
     sb = Basis(mesh, ElementTetP1(), quadrature=model.basis.quadrature)
     bT = thermal_modulus(E, nu, expansion, "strain")          # 3-D: (3λ + 2μ) λ_T

@@ -80,11 +80,14 @@ def _add_global_options(parser: argparse.ArgumentParser) -> None:
 @contextlib.contextmanager
 def cli_logging(verbose: int = 0, quiet: bool = False) -> Iterator[None]:
     """While a command runs: records of ``femgear.*`` to stderr as ``femgear: level: message``
-    (warnings by default, INFO with -v, DEBUG with -vv, errors only with -q); Python warnings
+    (warnings and the cost notices of long stages by default, INFO with -v, DEBUG with -vv, errors only
+    with -q); Python warnings
     (numpy's RuntimeWarnings inside a diverging iteration, ...) only with -v.  The previous
     logging state is restored afterwards (the CLI may run inside another program or a test).
     """
-    level = logging.ERROR if quiet else (logging.WARNING, logging.INFO, logging.DEBUG)[min(verbose, 2)]
+    from femgear.perf import NOTICE   # cost estimates and progress of long stages: shown by default
+
+    level = logging.ERROR if quiet else (NOTICE, logging.INFO, logging.DEBUG)[min(verbose, 2)]
     handler = logging.StreamHandler(sys.stderr)
     handler.setFormatter(_Formatter())
     loggers = {logging.getLogger("femgear"): level,
@@ -107,7 +110,8 @@ def cli_logging(verbose: int = 0, quiet: bool = False) -> Iterator[None]:
 
 class _Formatter(logging.Formatter):
     def format(self, record: logging.LogRecord) -> str:
-        text = f"femgear: {record.levelname.lower()}: {record.getMessage()}"
+        label = "" if record.levelname == "NOTICE" else f"{record.levelname.lower()}: "
+        text = f"femgear: {label}{record.getMessage()}"
         return text + ("\n" + self.formatException(record.exc_info) if record.exc_info else "")
 
 

@@ -13,36 +13,11 @@ machine, OPENBLAS_NUM_THREADS=1) of ``femgear ehl`` fitted with a margin:
 from __future__ import annotations
 
 import math
-import os
 
 from femgear.errors import ArgumentError, ResourceError
+from femgear.perf import memory_budget
 
 BASE_BYTES = 0.10e9
-
-
-def memory_budget() -> float:
-    """Bytes a single job may use: ``FEMGEAR_MEMORY_GB`` if set, else 80 % of the available memory."""
-    env = os.environ.get("FEMGEAR_MEMORY_GB")
-    if env:
-        try:
-            value = float(env)
-        except ValueError:
-            raise ArgumentError("FEMGEAR_MEMORY_GB", f"must be a number of GB (got {env!r})") from None
-        if not math.isfinite(value) or value <= 0:
-            raise ArgumentError("FEMGEAR_MEMORY_GB", f"must be a positive number of GB (got {env!r})")
-        return value * 1e9
-    return 0.8 * _available_bytes()
-
-
-def _available_bytes() -> float:
-    try:
-        with open("/proc/meminfo", encoding="ascii") as fh:
-            for line in fh:
-                if line.startswith("MemAvailable:"):
-                    return float(line.split()[1]) * 1024.0
-    except OSError:
-        pass
-    return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
 
 
 def ehl_memory(kind: str, level: int) -> float:

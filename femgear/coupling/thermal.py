@@ -77,7 +77,8 @@ def _thermal_units_3d(case: Case, members) -> ThermalUnits:
 
     m = case.material
     bodies = tuple(thermal_units_3d(case.pair, j, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, b,
-                                    case.groove_width, case.stagger) for j, b in members)
+                                    case.groove_width, case.stagger, level=case.numerics.body_level)
+                   for j, b in members)
     return ThermalUnits.from_bodies(bodies, roll_distances(case.pair, case.path.u))
 
 

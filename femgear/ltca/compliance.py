@@ -9,8 +9,10 @@ subtracting the half-space part it already holds):
 - The member is one body holding both helices, the groove and the rim down to the bore
   (:func:`femgear.mesh.segment.member_body`).  Unit normal loads, one per node g of a (ρ, ζ)
   grid on the loaded flank of the left helix's middle tooth, spread as bilinear hats φ_g
-  (total force 1 N); one factorisation (P1: sparse LU) or SA hierarchy
-  (:class:`femgear.body.elastic3d.Elastic3D`) serves all of them.
+  (total force 1 N); one factorisation (CHOLMOD, else SuperLU) or SA hierarchy
+  (:class:`femgear.body.elastic3d.Elastic3D`) serves all of them, solved in blocks of right-hand
+  sides.  Before a body is built its DOF, memory and time are estimated and announced
+  (:func:`build_estimate`, :func:`femgear.perf.announce`; ``docs/cost.md``).
 - G^FE_d[k][g′, g]: approach (displacement along −n) at depth d(g′) below node g′ of
   tooth k (k = −(n−1)/2 … (n−1)/2, cyclic offsets) for load g on tooth 0, read on the loaded
   helix (``bulk``) and on the other helix at the same (ρ, ζ) (``cross``: the helices' coupling
@@ -56,6 +58,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import logging
 import os
 import time
 from dataclasses import asdict, dataclass, field
@@ -67,6 +70,9 @@ from femgear.geometry.gear import GearPair
 from femgear.ltca.flank import flank_normals, flank_points, half_thickness, roll_range
 from femgear.ltca.halfspace import boussinesq_depth
 from femgear.mesh.segment import SegmentSpec
+from femgear.perf import LONG_STAGE_SECONDS, NOTICE, Estimate, Progress, announce, interruptible
+
+log = logging.getLogger(__name__)
 
 CACHE_VERSION = 3     #: 3: both helices, the groove and the rim down to the bore in one body (cross kernels)
 DEFAULT_DEPTH = 0.4    #: reading depth below the flank, in normal modules (clipped near the tip)
@@ -149,8 +155,22 @@ def save_cache(path: Path, **arrays) -> None:
 
 def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, order: int,
          n_rho: int, n_z: int, depth: float) -> str:
-    return cache_key({"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
-                      "E": E, "nu": nu, "order": order, "grid": [n_rho, n_z], "depth": depth})
+    from femgear.mesh.segment import mesh_revision
+
+    payload = {"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
+               "E": E, "nu": nu, "order": order, "grid": [n_rho, n_z], "depth": depth}
+    revision = mesh_revision(pair, member, spec)
+    if revision is not None:      # the far-field rule or the graded groove changed this body's mesh
+        payload["mesh"] = revision
+    return cache_key(payload)
+
+
+def cache_path(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: float, poisson_ratio: float,
+               order: int = 1, n_rho: int = 7, n_z: int = 9, depth: float | None = None) -> Path:
+    """The disk-cache file of :func:`member_compliance` with these arguments (it may not exist)."""
+    d0 = depth if depth is not None else DEFAULT_DEPTH * pair.m_n
+    key = _key(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
+    return cache_dir() / f"member{member}-{key}.npz"
 
 
 def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: float,
@@ -158,8 +178,7 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
                       depth: float | None = None, cache: bool = True) -> MemberCompliance:
     """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present."""
     d0 = depth if depth is not None else DEFAULT_DEPTH * pair.m_n
-    key = _key(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
-    path = cache_dir() / f"member{member}-{key}.npz"
+    path = cache_path(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     if cache and path.exists():
         data = np.load(path, allow_pickle=False)
         info = json.loads(str(data["info"]))
@@ -168,7 +187,10 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
         return MemberCompliance(member, data["rho"], data["z"], data["offsets"], data["bulk"], data["fe_self"],
                                 data["depth"], int(data["ndofs"]), info, data["cross"], right, float(data["groove"]),
                                 data["fe_cross"])
-    result = _compute(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
+    estimate = build_estimate(pair, member, spec, order, n_rho * n_z * (1 if spec.stagger == 0 else 2))
+    announce(estimate, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level")
+    result = interruptible(_compute, pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0,
+                           estimate)
     if cache:
         right = np.zeros(0) if result.bulk_right is None else result.bulk_right
         save_cache(path, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,
@@ -248,7 +270,7 @@ def _readings(model, probes, u):
     return np.array(out)
 
 
-def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices, E, nu):
+def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices, E, nu, progress_seconds=0.0):
     """Kernels of the loaded helices: {(read helix, loaded helix): G (n_off, n_grid, n_grid)}, and the
     half-space parts [HS_self, HS_cross] of the readings on tooth 0 of the left and the right helix for
     loads on the left tooth 0, one column per grid node."""
@@ -262,7 +284,9 @@ def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices,
         loads, xq, weights = flank_unit_loads(pair, member, model, grid_rho, grid_z, hl, frame)
         for h in (0, 1):
             G[(h, hl)] = np.zeros((offsets.size, rho_g.size, rho_g.size))
-        U = model.solve_many(np.column_stack(loads), case=f"flank compliance member {member}, helix {hl}")
+        stage = f"LTCA unit loads, {'pinion' if member == 1 else 'gear'} body, helix {hl}"
+        U = model.solve_many(np.column_stack(loads), case=f"flank compliance member {member}, helix {hl}",
+                             progress=Progress(stage, len(loads), expected_seconds=progress_seconds))
         for g in range(rho_g.size):
             for h in (0, 1):
                 G[(h, hl)][:, :, g] = _readings(model, probes[h], U[:, g])
@@ -272,7 +296,24 @@ def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices,
     return G, HS
 
 
-def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberCompliance:
+def build_estimate(pair: GearPair, member: int, spec: SegmentSpec, order: int = 1, n_loads: int = 63) -> Estimate:
+    """Expected DOF, peak memory and time of one member's kernels (:func:`member_compliance`, not cached).
+
+    The DOF come from the body's section (:func:`femgear.mesh.segment.body_size`, exact for P1); memory and
+    time from :func:`femgear.body.elastic3d.solve_cost`, measured on this 2-core machine (``docs/cost.md``).
+    """
+    from femgear.body.elastic3d import solve_cost
+    from femgear.mesh.segment import body_size
+
+    nodes, tets = body_size(pair, member, spec)
+    dofs = 3 * (nodes if order == 1 else nodes + int(1.2 * tets))
+    memory, seconds = solve_cost(dofs, tets, order, n_loads)
+    name = "pinion" if member == 1 else "gear"
+    return Estimate(f"LTCA {name} body (P{order}, h_tooth = m_n/{pair.m_n / spec.h_tooth:.3g})", dofs, memory,
+                    seconds)
+
+
+def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimate) -> MemberCompliance:
     from femgear.body.elastic3d import Elastic3D
     from femgear.mesh.segment import helix_frame, member_body
 
@@ -281,6 +322,9 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
     t_mesh = time.perf_counter() - t0
     frame = helix_frame(pair, member, spec)
     model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=SOLVE_TOL, solver="auto")
+    log.log(NOTICE if estimate.seconds > LONG_STAGE_SECONDS else logging.INFO,
+            f"{estimate.stage}: meshed and assembled ({model.free.size / 1e3:.0f} k DOF, "
+            f"{time.perf_counter() - t0:.0f} s); {model.solver} factor and {n_rho * n_z} unit loads next")
     r0, r1 = roll_range(pair, member)
     grid_rho = np.linspace(r0, r1, n_rho)
     grid_z = np.linspace(0.0, pair.b, n_z)
@@ -291,7 +335,7 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0) -> MemberComplian
     offsets = np.arange(-half, half + 1)
     symmetric = spec.stagger == 0          # mirror-symmetric body: the right helix's kernels are the left ones
     G, HS = _influence(pair, member, model, frame, (grid_rho, grid_z, rho_g, z_g), depth, offsets,
-                       (0,) if symmetric else (0, 1), E, nu)
+                       (0,) if symmetric else (0, 1), E, nu, estimate.seconds)
     mid = int(np.nonzero(offsets == 0)[0][0])
     bulk, cross = G[(0, 0)].copy(), G[(1, 0)].copy()
     bulk[mid] -= HS[0]
@@ -327,4 +371,5 @@ def mean_self_compliance(c: MemberCompliance) -> float:
     return float(np.mean(np.diag(c.bulk[mid])))
 
 
-__all__ = ["MemberCompliance", "member_compliance", "cache_dir", "cache_key", "save_cache", "mean_self_compliance"]
+__all__ = ["MemberCompliance", "member_compliance", "cache_dir", "cache_key", "cache_path", "save_cache",
+           "mean_self_compliance", "build_estimate"]

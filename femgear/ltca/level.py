@@ -42,7 +42,7 @@ MAX_LINE_POINTS = 64          #: the finest contact-line discretisation that ref
 
 
 def resolved_orders(model, force: float, modifications=None, stagger: float = 0.0, n_line: int = 16, extra=None,
-                    n_phases: int = 64) -> tuple[int, np.ndarray]:
+                    n_phases: int = 64, spectra: dict | None = None) -> tuple[int, np.ndarray]:
     """(H, change): mesh orders 1…H of the total secant stiffness are resolved by ``n_line`` points per line.
 
     ``change[h − 1]`` = |K_h(n_line) − K_h(2 n_line)| / |K_h(2 n_line)| for the complex harmonics K_h of
@@ -54,12 +54,13 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
     """
     from femgear.ltca.analysis import mesh_cycle
 
-    spectra = []
+    memo = {} if spectra is None else spectra     # spectra by points per line: doubling reuses the finer one
     for n in (n_line, 2 * n_line):
-        r = mesh_cycle(model, force, modifications, n_phases=n_phases, stagger=stagger, n_line=n, extra=extra,
-                       keep_lines=False)
-        spectra.append(np.fft.rfft(r.k_secant)[1:n_phases // 2])
-    a, b = spectra
+        if n not in memo:
+            r = mesh_cycle(model, force, modifications, n_phases=n_phases, stagger=stagger, n_line=n, extra=extra,
+                           keep_lines=False)
+            memo[n] = np.fft.rfft(r.k_secant)[1:n_phases // 2]
+    a, b = memo[n_line], memo[2 * n_line]
     change = np.abs(a - b) / np.maximum(np.abs(b), 1e-300)
     median = np.array([np.median(change[max(0, i - 1):i + 2]) for i in range(change.size)])
     bad = np.nonzero(median > RESOLUTION_TOLERANCE)[0]
@@ -79,18 +80,66 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
     """
     from femgear.ltca.analysis import build_model, mesh_cycle
 
-    model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger,
-                        **{k: v for k, v in (body or {}).items() if k != "stagger"})
-    orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
+    body = {k: v for k, v in (body or {}).items() if k != "stagger"}
+    check_body_memory(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
+    model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger, **body)
+    spectra: dict = {}
+    orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra, spectra=spectra)
     while orders < MIN_RESOLVED_ORDERS and 2 * n_line <= MAX_LINE_POINTS:
         n_line *= 2
-        orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra)
+        orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra, spectra=spectra)
     res = mesh_cycle(model, force, modifications, n_phases=n_positions, stagger=stagger, n_line=n_line, extra=extra)
     info = {"ltca": res, "excitation": res.excitation(), "model_seconds": model.seconds,
             "lte_peak_to_peak": res.lte_peak_to_peak(), "force": force, "resolved_orders": orders,
             "harmonic_change": change, "model": model, "modifications": modifications,
             "options": {"n_phases": n_positions, "stagger": stagger, "n_line": n_line}}
     return res, info
+
+
+def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int, stagger: float = 0.0,
+                   bore_radius: tuple[float, float] = (0.0, 0.0), groove_width: float = 0.0,
+                   cached: bool = True) -> list:
+    """:class:`femgear.perf.Estimate` of each member body that :func:`ltca_cycle` would compute at body
+    ``level`` (``cached`` False: also those already in the disk cache).  Meshes the sections only."""
+    from femgear.ltca.compliance import build_estimate, cache_path
+    from femgear.mesh.segment import default_spec
+
+    out = []
+    for member in (1, 2):
+        spec = default_spec(pair, member, level, r_bore=bore_radius[member - 1], groove=groove_width,
+                            stagger=stagger)
+        if cached and cache_path(pair, member, spec, youngs_modulus, poisson_ratio).exists():
+            continue
+        try:
+            out.append(build_estimate(pair, member, spec, n_loads=63 * (1 if stagger == 0 else 2)))
+        except ValueError as exc:      # e.g. a bore too close to the root circle for the body's rim
+            from femgear.errors import SceneError
+
+            name = "pinion" if member == 1 else "gear"
+            raise SceneError(f"{name}.bore_radius", f"the {name}'s LTCA body cannot be meshed: {exc} "
+                             f"(the bore is the scene's bore_radius, else half the shaft_diameter)") from None
+    return out
+
+
+def check_body_memory(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int, stagger: float = 0.0,
+                      **body) -> None:
+    """Refuse (:class:`femgear.errors.ResourceError`, exit 2, naming ``numerics.body_level`` and the finest
+    level that fits) before any body is built when one needs more memory than the budget."""
+    from femgear.errors import ResourceError
+    from femgear.perf import memory_budget
+
+    budget = memory_budget()
+    over = [e for e in body_estimates(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
+            if e.memory_bytes > budget]
+    if not over:
+        return
+    fits = next((k for k in range(level - 1, -1, -1)
+                 if all(e.memory_bytes <= budget
+                        for e in body_estimates(pair, youngs_modulus, poisson_ratio, k, stagger, cached=False, **body))),
+                None)
+    hint = f"numerics.body_level = {fits} fits" if fits is not None else "no body level fits"
+    worst = max(over, key=lambda e: e.memory_bytes)
+    raise ResourceError("numerics.body_level", worst.memory_bytes, budget, f"{worst.stage} at level {level}; {hint}")
 
 
 def deviated_cycle(info: dict, extra) -> dict:
@@ -108,10 +157,11 @@ def deviated_cycle(info: dict, extra) -> dict:
 
 
 def ltca_options_from_scene(scene) -> dict:
-    """Force, modifications and the member bodies (bore, groove) of a scene for :func:`ltca_cycle`."""
+    """Force, modifications, the member bodies (bore, groove) and their resolution ``numerics.body_level``
+    of a scene for :func:`ltca_cycle`."""
     from femgear.ltca.analysis import body_options, normal_force
 
     pair = GearPair.from_scene(scene)
     body = {k: v for k, v in body_options(scene).items() if k != "stagger"}   # tvms passes the stagger itself
     return {"force": normal_force(pair, scene.operating.torque, scene.operating.driver),
-            "modifications": scene.modifications, "body": body}
+            "modifications": scene.modifications, "body": body, "level": scene.numerics.body_level}

@@ -25,7 +25,9 @@ from femgear.geometry.profile import tooth_profile
 def _gmsh_session(name: str):
     import gmsh
 
-    gmsh.initialize(["-noenv"], readConfigFiles=False)
+    # interruptible=False: gmsh's default sets SIGINT to SIG_DFL for the rest of the process (never restored), so
+    # a later Ctrl-C killed femgear without its "interrupted" line and exit code 130
+    gmsh.initialize(["-noenv"], readConfigFiles=False, interruptible=False)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.option.setNumber("General.NumThreads", 1)

@@ -45,6 +45,7 @@ middle tooth of each helix); :func:`flank_regions` splits ``flank`` per helix, t
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -54,6 +55,9 @@ from femgear.geometry.gear import GearPair
 
 HAND = {1: -1, 2: 1}   #: helix hand of the left helix per member
 GROOVE_DEPTH = 0.5     #: groove floor below the root circle, in normal modules (hob run-out; a choice, not a standard)
+FAR_FRACTION = 0.25    #: far-field element size cap as a fraction of the rim depth below the groove floor
+FAR_DZ = 2.0           #: layer spacing of the far field, in normal modules (every k-th layer of the teeth's)
+FAR_MARGIN = 1.0       #: the far field starts this many m_n beyond the five teeth and below the groove floor
 
 
 @dataclass(frozen=True)
@@ -68,13 +72,15 @@ class SegmentSpec:
     groove: float = 0.0  #: groove width g between the helices
     stagger: float = 0.0  #: right helix against the left one [transverse base pitches]
     grade: float = 0.35  #: growth of the element size with the depth below the groove floor / the distance [m/m]
-    h_far: float = 0.0   #: largest element size in the rim; 0: 12 h_tooth (4 m_n at level 1; refines with the level)
+    h_far: float = 0.0   #: largest element size in the rim; 0: :func:`far_size` (max(12 h_tooth, ¼ rim depth))
     fine_teeth: int = 3  #: middle teeth kept at ≤ h (the outer ones only carry kernel readings: coarser)
+    far_dz: float = FAR_DZ  #: layer spacing of the far field [m_n] (beyond the teeth, below the rim's top); 0: none
 
     def key(self) -> tuple:
-        return (round(self.h_tooth, 12), round(self.h, 12), self.layers, self.n_teeth, round(self.r_bore, 12),
+        base = (round(self.h_tooth, 12), round(self.h, 12), self.layers, self.n_teeth, round(self.r_bore, 12),
                 round(self.groove, 12), round(self.stagger, 12), round(self.grade, 12), round(self.h_far, 12),
                 self.fine_teeth, "body-v2")
+        return base if self.far_dz == FAR_DZ else base + (round(self.far_dz, 9),)
 
 
 def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, r_bore: float = 0.0,
@@ -152,12 +158,57 @@ def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
     return frame_of(pair, member, spec.groove, spec.stagger)
 
 
-def _layers(pair: GearPair, spec: SegmentSpec) -> tuple[np.ndarray, int, int]:
+def far_size(pair: GearPair, member: int, spec: SegmentSpec) -> float:
+    """Largest element size of the body [m]: ``spec.h_far`` if > 0, else max(12 h_tooth, ¼ of the rim's depth
+    below the groove floor) — in module units, so that geometrically similar gears get the same mesh; the
+    deep rim of a large wheel (the marine gear: 40 m_n) is coarsened with its depth, not capped at 4 m_n."""
+    if spec.h_far > 0:
+        return spec.h_far
+    return max(12.0 * spec.h_tooth, FAR_FRACTION * (groove_radius(pair, member) - bore_radius(pair, member, spec)))
+
+
+def mesh_revision(pair: GearPair, member: int, spec: SegmentSpec) -> str | None:
+    """None when :func:`member_body` gives the same mesh as before the far-field rule of :func:`far_size`,
+    the graded groove layers and the coarse far-field layers (no groove, a far size of 12 h_tooth or a given
+    one, ``far_dz`` 0), else a tag for cache keys."""
+    same_far = spec.h_far > 0 or far_size(pair, member, spec) == 12.0 * spec.h_tooth
+    if spec.groove <= 0 and same_far and coarse_step(pair, spec) == 1:
+        return None
+    return "body-v3"
+
+
+def coarse_step(pair: GearPair, spec: SegmentSpec) -> int:
+    """Every k-th layer of the teeth carries the far field: k = round(far_dz m_n / layer spacing), ≥ 1."""
+    if spec.far_dz <= 0:
+        return 1
+    return max(1, int(round(spec.far_dz * pair.m_n / (pair.b / spec.layers))))
+
+
+def groove_layers(b: float, groove: float, dz: float, rate: float, cap: float) -> np.ndarray:
+    """Interior layer positions across the groove (z − b in (0, g]): the layer spacing ``dz`` of the helices at
+    both ends, growing by ``rate`` per unit distance from the nearer helix towards the middle, at most ``cap``."""
+    if groove <= 0:
+        return np.zeros(0)
+    z, out = 0.0, []
+    while True:
+        d = min(z, groove - z)
+        step = min(cap, dz + rate * d)
+        if z + step >= groove - 0.5 * dz:
+            out.append(groove)
+            break
+        z += step
+        out.append(z)
+    out = np.array(out)
+    return out * (groove / out[-1])
+
+
+def _layers(pair: GearPair, spec: SegmentSpec, h_far: float | None = None) -> tuple[np.ndarray, int, int]:
     """(z of every layer, index of the layer at z = b, at z = b + g)."""
     left = np.linspace(0.0, pair.b, spec.layers + 1)
     if spec.groove > 0:
-        ng = max(1, int(math.ceil(spec.groove / (pair.b / spec.layers))))
-        mid = np.linspace(pair.b, pair.b + spec.groove, ng + 1)[1:]
+        dz = pair.b / spec.layers
+        mid = pair.b + groove_layers(pair.b, spec.groove, dz, spec.grade, h_far or 12.0 * spec.h_tooth)
+        ng = mid.size
     else:
         ng, mid = 0, np.zeros(0)
     right = pair.b + spec.groove + left[1:]
@@ -168,8 +219,6 @@ def member_body(pair: GearPair, member: int, spec: SegmentSpec):
     """The tetrahedral body (skfem ``MeshTet``) of ``member``, both helices, named regions attached."""
     import skfem
 
-    from femgear.mesh.section import gear_section
-
     if spec.n_teeth < 1 or spec.n_teeth % 2 == 0:
         raise ValueError(f"n_teeth must be odd and ≥ 1 (the middle tooth is loaded), got {spec.n_teeth}")
     if not 0 < spec.h_tooth <= spec.h:
@@ -177,21 +226,61 @@ def member_body(pair: GearPair, member: int, spec: SegmentSpec):
     if spec.stagger != 0 and spec.groove <= 0:
         raise ValueError(f"stagger={spec.stagger}: a staggered double-helical body needs groove_width > 0 "
                          "(the right helix's teeth are turned across the groove)")
-    rf = pair.rf1 if member == 1 else pair.rf2
-    ra = pair.ra1 if member == 1 else pair.ra2
     r_g = groove_radius(pair, member)
-    h_far = spec.h_far if spec.h_far > 0 else 12.0 * spec.h_tooth
-    sec = gear_section(pair, member, spec.h, n_teeth=spec.n_teeth, bore_radius=bore_radius(pair, member, spec),
-                       refine_at=(0.0, 0.5 * (rf + ra)), refine_ratio=spec.h_tooth / spec.h,
-                       refine_radius=0.75 * (ra - rf), split_radius=r_g,
-                       grade=(spec.grade, h_far, min(spec.fine_teeth, spec.n_teeth)), ring=True)
-    zs, k_b, k_g = _layers(pair, spec)
+    h_far = far_size(pair, member, spec)
+    sec = body_section(pair, member, spec)
+    zs, k_b, k_g = _layers(pair, spec, h_far)
     frame = helix_frame(pair, member, spec)
-    mesh, layer_of, node2d = _sweep(sec, zs, frame, (k_b, k_g), r_g)
+    mesh, layer_of, node2d = _sweep(sec, zs, frame, (k_b, k_g), r_g, far_triangles(pair, member, sec, spec),
+                                    coarse_step(pair, spec))
     boundaries = _name_facets(mesh, sec, layer_of, node2d, (0, k_b, k_g, zs.size - 1))
     boundaries["loaded_flank"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 0)
     boundaries["loaded_flank_right"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 1)
     return skfem.MeshTet(mesh.p, mesh.t, _boundaries=boundaries)
+
+
+@functools.lru_cache(maxsize=8)
+def body_section(pair: GearPair, member: int, spec: SegmentSpec):
+    """The transverse section (skfem ``MeshTri``) that :func:`member_body` sweeps (cached: the cost estimate
+    meshes it before the body)."""
+    from femgear.mesh.section import gear_section
+
+    rf = pair.rf1 if member == 1 else pair.rf2
+    ra = pair.ra1 if member == 1 else pair.ra2
+    return gear_section(pair, member, spec.h, n_teeth=spec.n_teeth, bore_radius=bore_radius(pair, member, spec),
+                        refine_at=(0.0, 0.5 * (rf + ra)), refine_ratio=spec.h_tooth / spec.h,
+                        refine_radius=0.75 * (ra - rf), split_radius=groove_radius(pair, member),
+                        grade=(spec.grade, far_size(pair, member, spec), min(spec.fine_teeth, spec.n_teeth)),
+                        ring=True)
+
+
+def body_size(pair: GearPair, member: int, spec: SegmentSpec) -> tuple[int, int]:
+    """(nodes, tetrahedra) of :func:`member_body` counted from its section alone (a fraction of a second;
+    exact without the far-field layers, within a few per cent with them: transition columns are estimated)."""
+    sec = body_section(pair, member, spec)
+    zs, k_b, k_g = _layers(pair, spec, far_size(pair, member, spec))
+    inner = _below_split(sec)
+    step = coarse_step(pair, spec)
+    far = far_triangles(pair, member, sec, spec) if step > 1 else np.zeros(sec.t.shape[1], bool)
+    fine_node = np.zeros(sec.p.shape[1], bool)
+    fine_node[sec.t[:, ~far].ravel()] = True
+    fine_col = ~far | fine_node[sec.t].all(axis=0)
+    inner_node = np.zeros(sec.p.shape[1], bool)
+    inner_node[sec.t[:, inner].ravel()] = True
+    coarse = coarse_layers(zs.size, k_b, k_g, step)
+    n_g = k_g - k_b                                       # groove slabs
+    n_mid = max(0, n_g - 1)                               # layers strictly inside the groove
+    c_mid = int(np.sum((coarse > k_b) & (coarse < k_g)))
+    lines = [(fine_node, zs.size, n_mid), (~fine_node, coarse.size, c_mid)]
+    nodes = sum(int(m.sum()) * (n - mid) + int((m & inner_node).sum()) * mid for m, n, mid in lines)
+    slabs, c_slabs = zs.size - 1, coarse.size - 1
+    c_groove = int(np.sum((coarse[:-1] >= k_b) & (coarse[:-1] < k_g)))
+    trans = ~fine_col & fine_node[sec.t].any(axis=0)
+    pure = ~fine_col & ~trans
+    tets = 3 * (int(fine_col.sum()) * (slabs - n_g) + int((fine_col & inner).sum()) * n_g)
+    tets += 3 * (int(pure.sum()) * (c_slabs - c_groove) + int((pure & inner).sum()) * c_groove)
+    n_trans = int(trans.sum()) * (c_slabs - c_groove) + int((trans & inner).sum()) * c_groove
+    return int(nodes + n_trans), int(tets + n_trans * (2 + 4 * step))
 
 
 def _below_split(sec) -> np.ndarray:
@@ -212,8 +301,40 @@ def _below_split(sec) -> np.ndarray:
     return np.isin(label, label[bore_tris])
 
 
-def _sweep(sec, zs: np.ndarray, frame: HelixFrame, groove_layers: tuple[int, int], r_g: float):
-    """Sweep the section mesh through the layers ``zs`` → (MeshTet, layer of each node, 2-D node of each node)."""
+def coarse_layers(n_layers: int, k_b: int, k_g: int, step: int) -> np.ndarray:
+    """Indices of the layers that carry the far field: every ``step``-th one from each end of a helix and the
+    groove's ends (the helices' outer faces and the groove walls are kept)."""
+    keep = {0, n_layers - 1, k_b, k_g}
+    for lo, hi in ((0, k_b), (k_b, k_g), (k_g, n_layers - 1)):
+        keep.update(range(lo, hi, step))
+    return np.array(sorted(keep))
+
+
+def far_triangles(pair: GearPair, member: int, sec, spec: SegmentSpec) -> np.ndarray:
+    """Section triangles of the far field (coarse layers): centroid more than :data:`FAR_MARGIN` m_n below the
+    groove floor, or that far beyond the tips of the five teeth (from the middle tooth's centre)."""
+    from femgear.geometry.profile import tooth_profile
+    from femgear.mesh.section import _teeth_reach
+
+    rf = pair.rf1 if member == 1 else pair.rf2
+    ra = pair.ra1 if member == 1 else pair.ra2
+    centre = np.array([0.0, 0.5 * (rf + ra)])
+    c = sec.p[:, sec.t].mean(axis=1)
+    reach = _teeth_reach(tooth_profile(pair, member), spec.n_teeth, tuple(centre)) + FAR_MARGIN * pair.m_n
+    deep = np.hypot(c[0], c[1]) < groove_radius(pair, member) - FAR_MARGIN * pair.m_n
+    return deep | (np.hypot(c[0] - centre[0], c[1] - centre[1]) > reach)
+
+
+def _sweep(sec, zs: np.ndarray, frame: HelixFrame, groove_layers: tuple[int, int], r_g: float,
+           far: np.ndarray | None = None, step: int = 1):
+    """Sweep the section mesh through the layers ``zs`` → (MeshTet, layer of each node, 2-D node of each node).
+
+    ``far`` (bool per triangle) with ``step`` > 1: those triangles are swept through every ``step``-th layer
+    only (:func:`coarse_layers`).  Where a far column meets a node of the fine sweep it becomes a transition
+    column: its faces are triangulated to match both neighbours (the fine split on faces between fine node
+    lines, a fan from the lower coarse node on faces with one) and coned to a node at its centroid, so the mesh
+    stays conforming.  Such interior nodes have layer and 2-D node −1.
+    """
     import skfem
 
     n2, tri = sec.p.shape[1], sec.t
@@ -224,20 +345,65 @@ def _sweep(sec, zs: np.ndarray, frame: HelixFrame, groove_layers: tuple[int, int
     y = sin * sec.p[0] + cos * sec.p[1]
     p = np.vstack([x.ravel(), y.ravel(), np.repeat(zs, n2)])
     tri_sorted = np.sort(tri, axis=0)                    # a < b < c: the prism split below conforms
-    a, b, cc = tri_sorted
+    far = np.zeros(tri.shape[1], bool) if far is None or step <= 1 else np.asarray(far, bool)
+    fine_node = np.zeros(n2, bool)
+    fine_node[tri[:, ~far].ravel()] = True
+    fine_col = ~far | fine_node[tri].all(axis=0)          # far triangles whose nodes are all fine: swept finely
+    in_groove = (lambda k: groove_layers[0] <= k < groove_layers[1])
     tets = []
     for k in range(zs.size - 1):
-        sel = inner if groove_layers[0] <= k < groove_layers[1] else slice(None)
+        sel = fine_col & (inner if in_groove(k) else True)
         lo, hi = k * n2, (k + 1) * n2
-        A, B, C = a[sel], b[sel], cc[sel]
+        A, B, C = tri_sorted[:, sel]
         tets += [np.vstack([A + lo, B + lo, C + lo, C + hi]), np.vstack([A + lo, B + lo, B + hi, C + hi]),
                  np.vstack([A + lo, A + hi, B + hi, C + hi])]
+    extra = []
+    if (~fine_col).any():
+        layers = coarse_layers(zs.size, *groove_layers, step)
+        pure = ~fine_col & ~fine_node[tri].any(axis=0)
+        for s0, s1 in zip(layers[:-1], layers[1:]):
+            groove = in_groove(s0)
+            sel = pure & (inner if groove else True)
+            lo, hi = s0 * n2, s1 * n2
+            A, B, C = tri_sorted[:, sel]
+            tets += [np.vstack([A + lo, B + lo, C + lo, C + hi]), np.vstack([A + lo, B + lo, B + hi, C + hi]),
+                     np.vstack([A + lo, A + hi, B + hi, C + hi])]
+            for j in np.nonzero(~fine_col & ~pure & (inner if groove else True))[0]:
+                faces = _column_faces(tri_sorted[:, j], fine_node, s0, s1, n2)
+                extra.append(p[:, np.unique(faces)].mean(axis=1))
+                apex = p.shape[1] + len(extra) - 1
+                tets.append(np.vstack([faces.T, np.full(faces.shape[0], apex)]))
+    if extra:
+        p = np.hstack([p, np.array(extra).T])
     t = np.hstack(tets)
     used = np.unique(t)
     remap = np.full(p.shape[1], -1, dtype=np.int64)
     remap[used] = np.arange(used.size)
     mesh = skfem.MeshTet(p[:, used].copy(), remap[t])
-    return mesh, used // n2, used % n2
+    grid = used < n2 * zs.size
+    return mesh, np.where(grid, used // n2, -1), np.where(grid, used % n2, -1)
+
+
+def _column_faces(abc: np.ndarray, fine_node: np.ndarray, s0: int, s1: int, n2: int) -> np.ndarray:
+    """Boundary triangles (n, 3 node indices) of a transition column: section triangle ``abc`` (sorted) between
+    layers ``s0`` and ``s1``, node lines of fine nodes at every layer, of coarse ones at s0 and s1 only."""
+    def at(node, layer):
+        return layer * n2 + node
+
+    a, b, c = (int(v) for v in abc)
+    out = [(at(a, s0), at(b, s0), at(c, s0)), (at(a, s1), at(b, s1), at(c, s1))]
+    for u, v in ((a, b), (a, c), (b, c)):                 # u < v
+        fu, fv = fine_node[u], fine_node[v]
+        if fu and fv:                                    # the fine sweep's diagonal: (min, j) to (max, j + 1)
+            for j in range(s0, s1):
+                out += [(at(u, j), at(v, j), at(v, j + 1)), (at(u, j), at(u, j + 1), at(v, j + 1))]
+        elif fu or fv:                                   # fan from the coarse node's lower end
+            f, q = (u, v) if fu else (v, u)
+            out += [(at(q, s0), at(f, j), at(f, j + 1)) for j in range(s0, s1)]
+            out.append((at(q, s0), at(f, s1), at(q, s1)))
+        else:                                            # the coarse sweep's diagonal
+            out += [(at(u, s0), at(v, s0), at(v, s1)), (at(u, s0), at(u, s1), at(v, s1))]
+    return np.array(out, dtype=np.int64)
 
 
 def _name_facets(mesh, sec, layer_of: np.ndarray, node2d: np.ndarray, ends: tuple[int, int, int, int]) -> dict:

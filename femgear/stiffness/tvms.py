@@ -195,6 +195,7 @@ def mesh_stiffness_from_scene(scene, level: str | None = None, **kw) -> MeshStif
     fe_options = dict(kw.pop("fe_options", None) or {})
     if st.fe_mesh_size is not None:
         fe_options.setdefault("h", st.fe_mesh_size)
+    fe_options.setdefault("level", scene.numerics.body_level)
     args = dict(n_positions=st.n_positions, stagger=scene.pair.stagger, n_slices=st.n_slices,
                 youngs_modulus=scene.material.youngs_modulus, poisson_ratio=scene.material.poisson_ratio,
                 bore_radius=(scene.pinion.bore_radius, scene.gear.bore_radius),

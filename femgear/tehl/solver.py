@@ -17,6 +17,19 @@ from femgear.lubrication.path import solids_of
 from femgear.tehl.energy import ThermalProps
 from femgear.tehl.line import solve_tehl_line
 
+LINE_SECONDS = 0.3    #: rough wall time of one TEHL line solve at grid level 4 (announce and progress only) [s]
+
+
+def map_progress(stage: str, total: int, seconds_each: float):
+    """Announce ``total`` solves of ``seconds_each`` (:func:`femgear.perf.announce`, logged at INFO, by default
+    when long) and return a :class:`femgear.perf.Progress` called with the number done before each solve."""
+    from femgear.perf import Estimate, Progress, announce
+
+    est = Estimate(f"{stage}: {total} contacts", 0, 0.0, total * seconds_each)
+    if total > 1:
+        announce(est, "physics.lubrication")
+    return Progress(stage, total, est.seconds)
+
 
 def thermal_props(scene) -> ThermalProps:
     """Oil conductivity and specific heat, solid effusivities of a scene (same steel both)."""
@@ -41,7 +54,9 @@ def tehl_line_solver(scene, level: int | None = None, **options):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
                                                  for a in (w, R, ue, srr, T)))
         mu, dT = np.empty(w.shape), np.empty(w.shape)
-        for i in np.ndindex(w.shape):
+        progress = map_progress(f"TEHL line solves (level {level})", w.size, LINE_SECONDS * 2.0 ** (level - 4))
+        for n, i in enumerate(np.ndindex(w.shape)):
+            progress(n)
             r = solve_tehl_line(float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), float(T[i]),
                                 level=level, **setup)
             mu[i], dT[i] = r.mu, r.dT_max

@@ -77,4 +77,4 @@ def test_fe_level_mean_close_to_pem(baseline_pair):
                         fe_options={"n_fe": 3, "h": baseline_pair.m_n / 2.5, "refine_ratio": 0.5})
     pem = mesh_stiffness(baseline_pair, "pem", n_positions=40, n_slices=40)
     assert fe.mean == pytest.approx(pem.mean, rel=0.10)
-    assert fe.info["k_fe"].shape == (3,) and all(n > 10000 for n in fe.info["ndofs"])
+    assert fe.info["k_fe"].shape == (3,) and all(n > 3000 for n in fe.info["ndofs"])   # graded whole gears
