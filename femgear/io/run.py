@@ -17,7 +17,11 @@ Layout (the contract; keys are added, never renamed without a README note):
 - ``scene``: the validated scene;
 - ``along_path``: arrays over the ONE path grid of the case (s, radii, speeds, Hertz,
   films, and the tribology fields: load_per_length, friction_coefficient,
-  temperature_rise, thermal_deviation_pinion/gear, wear_pinion/gear);
+  temperature_rise, thermal_deviation_pinion/gear, wear_pinion/gear); ``film_central``,
+  ``film_minimum`` (and ``film_pressure_max``, thermal levels ``film_temperature_rise``) are those of
+  the lubrication level that ran (``summary.film``: level, method, pitch and minimum values), the
+  formula films stay as ``film_*_formula``; ``specific_film`` λ = h_min / R_a (R_a the mean of both
+  flanks, ``rating.roughness_ra`` or its default by ``rating.finishing``);
 - ``mesh_stiffness`` (phase, k_left, k_right) and, with dynamics,
   ``mesh_force_per_phase`` (left, right); with ``ltca`` ``transmission_error_per_phase``
   (:func:`femgear.io.ltca.te_curves`: phase, lte, nlte, force_left/right, k_total).
@@ -77,6 +81,9 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
         fields.update(thermal_deviation_pinion=t.thermal_deviation[0], thermal_deviation_gear=t.thermal_deviation[1])
     if t.wear is not None:
         fields.update(wear_pinion=t.wear[0], wear_gear=t.wear[1])
+    own = None if result.rating is None else result.rating.own
+    if own is not None and own.specific_film.shape == k.u.shape:     # λ = h_min / R_a of the film that ran
+        fields["specific_film"] = own.specific_film
     return fields
 
 
