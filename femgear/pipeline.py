@@ -64,7 +64,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles,
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if levels.wear != "none" else None, st.thermal_face),
-        film=level_film(case, st.load_per_length))
+        film=level_film(case, st.load_per_length, solver=setup.lubrication))
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
                      transmission_error=te, rating=case_rating(case, contact, tribology))
 

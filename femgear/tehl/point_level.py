@@ -50,7 +50,8 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
     """Direct thermal point-EHL solves (one per query point) in the map signature.
 
     ``details``: a list that receives each :class:`femgear.tehl.point.TEHLPointResult`
-    (films, pressure, temperature for studies). An uncrowned pair raises SceneError naming
+    (films, pressure, temperature for studies); ``solve.last`` holds the inputs and results of the
+    latest call (the film of the run's last pass, :func:`femgear.lubrication.films.level_film`). An uncrowned pair raises SceneError naming
     ``modifications.crowning``."""
     geo = crowned_contact(scene, pair)
     rough = scene.roughness if (scene.roughness.peak or scene.roughness.synthetic) else None
@@ -63,6 +64,7 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
         Rx, Ry = geo.radii(R)
         F = geo.load(w)
         mu, dT = np.empty(w.shape), np.empty(w.shape)
+        results = []
         for i in np.ndindex(w.shape):
             args = (float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]))
             try:
@@ -70,9 +72,13 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
             except ConvergenceError as exc:
                 r = _line_contact(float(w[i]), args, scene, exc)
             mu[i], dT[i] = r.mu, r.dT_max
-            if details is not None:
-                details.append(r)
+            results.append(r)
+        if details is not None:
+            details.extend(results)
+        solve.last = ((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), results)
         return mu, dT
+
+    solve.last = None   #: ((w, R, ue, srr, T), results) of the latest call: its films, without solving again
 
     return solve
 

@@ -57,3 +57,26 @@ def test_a_run_reports_the_film_of_its_level_and_lambda(baseline_path, tmp_path)
     assert min(path["film_minimum"]) == pytest.approx(film["minimum"], rel=1e-12)
     Ra = 0.4e-6      # rating.finishing default "ground"
     assert np.allclose(np.array(path["specific_film"]) * Ra, path["film_minimum"], rtol=1e-9)
+
+
+def test_the_point_film_reuses_the_runs_last_solves(baseline_path, monkeypatch):
+    """tehl-point: the film of the run's last pass comes from that pass's solves (no second set of point
+    solves); at other inputs it is solved afresh."""
+    import femgear.tehl.point_level as pl
+    from femgear.lubrication.levels import lubrication_solver
+
+    case = _case(baseline_path, 'physics.lubrication="tehl-point"', "modifications.crowning=10e-6",
+                 "numerics.path_points=3")
+    k, T = case.path, case.operating.ambient_temperature
+    w = contact_along_path(case.scene, pair=case.pair, u=k.u).line_load
+    solver = lubrication_solver(case, repeated=True)
+    mu, dT = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(w.shape, T))
+
+    def no_solve(*args, **kw):
+        raise AssertionError("solved again")
+
+    monkeypatch.setattr(pl, "solve_tehl_point", no_solve)
+    film = level_film(case, w, solver=solver)
+    assert film.level == "tehl-point" and np.allclose(film.temperature_rise, dT, rtol=0, atol=0)
+    with pytest.raises(AssertionError, match="solved again"):
+        level_film(case, 1.1 * w, solver=solver)
