@@ -4,23 +4,14 @@ checks holds on the cheapest real run.  The runs of all cells: ``make test-slow`
 
 from __future__ import annotations
 
-import importlib.util
 import math
 from pathlib import Path
 
 import pytest
 
+from studies import zoo_matrix as zm
+
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def _matrix():
-    spec = importlib.util.spec_from_file_location("zoo_matrix", ROOT / "studies" / "zoo_matrix.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-zm = _matrix()
 SCENES = zm.scenes()
 
 
