@@ -28,6 +28,7 @@ demo: $(STAMP)
 	$(BIN)/femgear run studies/paper_baseline.toml --out $(OUT)/paper_baseline
 
 test: $(STAMP)
+	$(BIN)/ruff check femgear tests studies meshes
 	$(BIN)/python -m pytest -q
 
 test-slow: $(STAMP)
