@@ -6,8 +6,14 @@ import numpy as np
 import pytest
 
 from femgear.body.thermal import (
-    analytic_radial_displacement, disk_radial_displacement, disk_temperature, flank_deviation,
-    flank_displacement, gear_thermo_elastic, solve_temperature, thermo_elastic,
+    analytic_radial_displacement,
+    disk_radial_displacement,
+    disk_temperature,
+    flank_deviation,
+    flank_displacement,
+    gear_thermo_elastic,
+    solve_temperature,
+    thermo_elastic,
 )
 from femgear.geometry.gear import GearPair
 from femgear.mesh.section import annulus, gear_section
@@ -62,7 +68,7 @@ def test_disk_solution_limits():
 
 
 def _disk_error(h, order):
-    from skfem import Basis, ElementTriP2, ElementVector, Functional
+    from skfem import Functional
 
     a, b = 0.02, 0.06
     mesh = annulus(a, b, h)

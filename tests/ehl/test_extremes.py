@@ -5,10 +5,10 @@ import numpy as np
 import pytest
 
 from femgear.contact.film import moes_line_central, nvm_central
-from femgear.errors import ConvergenceError
 from femgear.ehl.grid import Domain
 from femgear.ehl.line import solve_line
 from femgear.ehl.point import solve_point
+from femgear.errors import ConvergenceError
 
 SLOW_POINT_CASES = {
     "high load": (dict(M=1000.0, L=10.0, level=2), 0.10),
