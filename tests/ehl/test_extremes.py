@@ -67,21 +67,21 @@ def _check_raise(solve, kw, match):
     assert len(residual) > 0 and np.all(np.isfinite(residual))
 
 
-@pytest.mark.parametrize("name", list(POINT_ORACLE))
-def test_point_extremes_match_nvm(name):
-    kw, rel = POINT_ORACLE[name]
+def _check_nvm(kw, rel):
     r = solve_point(**kw)
     _check_film(r)
     assert r.Hc == pytest.approx(float(nvm_central(kw["M"], kw["L"])), rel=rel)
+
+
+@pytest.mark.parametrize("name", list(POINT_ORACLE))
+def test_point_extremes_match_nvm(name):
+    _check_nvm(*POINT_ORACLE[name])
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", list(SLOW_POINT_ORACLE))
 def test_point_extremes_match_nvm_slow(name):
-    kw, rel = SLOW_POINT_ORACLE[name]
-    r = solve_point(**kw)
-    _check_film(r)
-    assert r.Hc == pytest.approx(float(nvm_central(kw["M"], kw["L"])), rel=rel)
+    _check_nvm(*SLOW_POINT_ORACLE[name])
 
 
 @pytest.mark.parametrize("name", list(POINT_PHYSICS))
