@@ -28,6 +28,7 @@ demo: $(STAMP)
 	$(BIN)/femgear run studies/paper_baseline.toml --out $(OUT)/paper_baseline
 
 test: $(STAMP)
+	$(BIN)/ruff check femgear tests studies meshes
 	$(BIN)/python -m pytest -q
 
 test-slow: $(STAMP)
@@ -37,4 +38,4 @@ bench: $(STAMP)
 	@for f in studies/benchmarks/*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
 
 clean:
-	rm -rf $(OUT) .pytest_cache build *.egg-info
+	rm -rf $(OUT) .pytest_cache .ruff_cache build *.egg-info

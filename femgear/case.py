@@ -19,7 +19,17 @@ import numpy as np
 
 from femgear.geometry import GearPair, PathKinematics, kinematics, mesh_frequency, path_positions
 from femgear.scene.schema import (
-    Errors, Friction, Material, Member, Numerics, Oil, Physics, Scene, Stiffness, Thermal, Wear,
+    Errors,
+    Friction,
+    Material,
+    Member,
+    Numerics,
+    Oil,
+    Physics,
+    Scene,
+    Stiffness,
+    Thermal,
+    Wear,
 )
 
 

@@ -180,7 +180,7 @@ def interruptible(fn: Callable[..., Any], *args, **kwargs) -> Any:
         try:
             try:
                 payload = pickle.dumps((True, fn(*args, **kwargs)))
-            except BaseException as exc:               # noqa: BLE001 — every failure goes back to the parent
+            except BaseException as exc:               # every failure goes back to the parent
                 try:
                     payload = pickle.dumps((False, exc))
                 except Exception:                      # an exception that does not pickle: its text

@@ -30,7 +30,12 @@ import numpy as np
 from femgear.case import Case, build_case
 from femgear.contact.path import ContactPath, contact_along_path
 from femgear.coupling.loop import (
-    CouplingSetup, CouplingState, line_stiffness, ltca_face_reference, ltca_reference, run_coupled,
+    CouplingSetup,
+    CouplingState,
+    line_stiffness,
+    ltca_face_reference,
+    ltca_reference,
+    run_coupled,
 )
 from femgear.coupling.thermal import ThermalUnits, roll_distances, thermal_units
 from femgear.lubrication.films import level_film

@@ -15,8 +15,8 @@ import numpy as np
 from femgear.case import Case
 from femgear.contact.path import ContactPath
 from femgear.coupling.loop import CoupledResult
-from femgear.lubrication.films import LevelFilm
 from femgear.ltca.te import TEAnalysis
+from femgear.lubrication.films import LevelFilm
 from femgear.rating.suite import PairRating
 from femgear.stiffness.tvms import MeshStiffness
 

@@ -16,8 +16,8 @@ from femgear.contact.path import ContactPath, pinion_speed, pinion_torque
 from femgear.geometry import GearPair, mesh_frequency
 from femgear.rating import LoadFactors, MaterialLimits, MeshPowerLoss, PittingRating, contact_stress, mesh_power_loss
 from femgear.rating import pitting_rating as _pitting_rating
-from femgear.rating.summary import pair_rating_summary
 from femgear.rating.suite import PairRating
+from femgear.rating.summary import pair_rating_summary
 
 #: lubrication levels cheap enough for a summary; heavier ones are summarised with ``formula``
 SUMMARY_FRICTION_LEVELS = ("none", "constant", "formula")

@@ -47,10 +47,10 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # many small dense products: threads only contend
 
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import json
+import sys
+import time
+from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 ECCENTRICITIES = (0.0, 10e-6, 20e-6, 30e-6)

@@ -23,7 +23,6 @@ import time
 
 from femgear.contact.film import hamrock_dowson_central, nvm_central
 from femgear.contact.hertz import ellipticity_exact
-from femgear.ehl import params as pr
 from femgear.ehl.point import solve_point
 
 NVM_RANGE = (1.0 / 16.0, 1.0)

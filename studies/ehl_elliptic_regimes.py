@@ -106,6 +106,7 @@ def plot(rows: list[dict]) -> None:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     from femgear.contact.film import rigid_isoviscous_point
     cases = sorted({(r["M"], r["L"]) for r in rows})
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4), squeeze=False)

@@ -24,16 +24,16 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import argparse  # noqa: E402
-import json  # noqa: E402
-import math  # noqa: E402
-import time  # noqa: E402
-import tracemalloc  # noqa: E402
+import argparse
+import json
+import math
+import time
+import tracemalloc
 
-from femgear.contact.film import nvm_central  # noqa: E402
-from femgear.ehl import params as pr  # noqa: E402
-from femgear.ehl.point import solve_point  # noqa: E402
-from femgear.errors import ConvergenceError  # noqa: E402
+from femgear.contact.film import nvm_central
+from femgear.ehl import params as pr
+from femgear.ehl.point import solve_point
+from femgear.errors import ConvergenceError
 
 
 def one(M: float, L: float, level: int, method: str = "newton") -> dict:

@@ -25,12 +25,12 @@ from pathlib import Path
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from femgear.contact.film import nvm_central, rigid_isoviscous_point  # noqa: E402
-from femgear.ehl import params as pr  # noqa: E402
-from femgear.ehl.grid import Domain  # noqa: E402
-from femgear.ehl.point import solve_point  # noqa: E402
+from femgear.contact.film import nvm_central, rigid_isoviscous_point
+from femgear.ehl import params as pr
+from femgear.ehl.grid import Domain
+from femgear.ehl.point import solve_point
 
 try:
     from studies.ehl_grid_convergence import richardson

@@ -49,7 +49,7 @@ def fzg_table(torque: float = 200.0) -> dict:
     c = contact_along_path(scene, u=np.array([u_B, pair.u_pitch]))
     # hand calculation from the drawing data (as in tests/contact/test_sharing.py)
     m, z1, z2, a_w, b, al = 4.5e-3, 16, 24, 91.5e-3, 14e-3, math.radians(20)
-    rb1, rb2 = z1 * m / 2 * math.cos(al), z2 * m / 2 * math.cos(al)
+    rb1 = z1 * m / 2 * math.cos(al)
     aw = math.acos((z1 + z2) * m / 2 * math.cos(al) / a_w)
     T1T2, E_red, w = a_w * math.sin(aw), 206e9 / (1 - 0.09), torque / rb1 / b
     rows = {}

@@ -132,7 +132,7 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
                       else 0.0, **_depth_summary(c)}
     new = rows["new"]
     setup = _setup(coarse)
-    for (name, r), c in zip(rows.items(), cases):
+    for r, c in zip(rows.values(), cases):
         r["change_percent"] = {k: 100 * (r[k] / new[k] - 1) for k in ("gear_y_um", "gear_vy")}
         r["worn_orders"] = worn_orders(setup, c)
         r["unworn_orders"] = int(setup.ltca["resolved_orders"])

@@ -217,7 +217,7 @@ def plot(res: dict, name: str = "rig_conditions"):
     fig, ax = C.figure(1, 2)
     for p in range(2):
         a = ax[0][p]
-        for k, T in enumerate(TORQUES):
+        for T in TORQUES:
             idx = [i for i, c in enumerate(res["conditions"]) if c[1] == T]
             rpm = [res["conditions"][i][0] for i in idx]
             line, = a.plot(rpm, np.asarray(res["test"])[idx, p], "o--", mfc="none", label=f"test {T:.0f} N m")

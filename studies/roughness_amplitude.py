@@ -26,18 +26,22 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from concurrent.futures import ProcessPoolExecutor  # noqa: E402
-from functools import partial  # noqa: E402
-from pathlib import Path  # noqa: E402
+import json
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
+from functools import partial
+from pathlib import Path
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from femgear.ehl.surface import paper_peak, surface_speed  # noqa: E402
-from femgear.ehl.transient import (amplitude_reduction_fit, measure_amplitude_reduction,  # noqa: E402
-                                   solve_line_transient, steady_hc_hertz)
+from femgear.ehl.surface import paper_peak, surface_speed
+from femgear.ehl.transient import (
+    amplitude_reduction_fit,
+    measure_amplitude_reduction,
+    solve_line_transient,
+    steady_hc_hertz,
+)
 
 OUT = Path(__file__).resolve().parents[1] / "out" / "roughness"
 NABLA = (1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0)

@@ -17,15 +17,15 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import json
+import sys
+import time
+from pathlib import Path
 
-from femgear.ehl import params as pr  # noqa: E402
-from femgear.ehl.point import default_domain  # noqa: E402
-from femgear.ehl.surface import paper_peak  # noqa: E402
-from femgear.ehl.transient import solve_point_transient  # noqa: E402
+from femgear.ehl import params as pr
+from femgear.ehl.point import default_domain
+from femgear.ehl.surface import paper_peak
+from femgear.ehl.transient import solve_point_transient
 
 OUT = Path(__file__).resolve().parents[1] / "out" / "roughness"
 M, L, X_START = 20.0, 10.0, -2.0

@@ -23,21 +23,21 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import json
+import sys
+import time
+from pathlib import Path
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from femgear.contact.hertz import reduced_modulus  # noqa: E402
-from femgear.contact.path import contact_along_path  # noqa: E402
-from femgear.ehl.dimensional import EHLOil, solve_line_dimensional  # noqa: E402
-from femgear.ehl.line import X0_DEFAULT  # noqa: E402
-from femgear.ehl.surface import scene_features, surface_speed  # noqa: E402
-from femgear.ehl.transient import solve_line_transient  # noqa: E402
-from femgear.lubrication.oil import OilLaw  # noqa: E402
-from femgear.scene.load import read_toml, scene_from_dict  # noqa: E402
+from femgear.contact.hertz import reduced_modulus
+from femgear.contact.path import contact_along_path
+from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
+from femgear.ehl.line import X0_DEFAULT
+from femgear.ehl.surface import scene_features, surface_speed
+from femgear.ehl.transient import solve_line_transient
+from femgear.lubrication.oil import OilLaw
+from femgear.scene.load import read_toml, scene_from_dict
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "out" / "roughness"

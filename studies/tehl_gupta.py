@@ -33,16 +33,16 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import argparse  # noqa: E402
-import importlib.util  # noqa: E402
-import itertools  # noqa: E402
-import json  # noqa: E402
-import math  # noqa: E402
-from pathlib import Path  # noqa: E402
+import argparse
+import importlib.util
+import itertools
+import json
+import math
+from pathlib import Path
 
-from femgear.errors import ConvergenceError  # noqa: E402
-from femgear.lubrication.traction import gupta_thermal_factor  # noqa: E402
-from femgear.tehl import solve_tehl_line  # noqa: E402
+from femgear.errors import ConvergenceError
+from femgear.lubrication.traction import gupta_thermal_factor
+from femgear.tehl import solve_tehl_line
 
 ROOT = Path(__file__).resolve().parents[1]
 _spec = importlib.util.spec_from_file_location("_case", ROOT / "tests" / "tehl" / "_case.py")

@@ -25,18 +25,18 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import argparse  # noqa: E402
-import json  # noqa: E402
-from pathlib import Path  # noqa: E402
+import argparse
+import json
+from pathlib import Path
 
-from scipy.optimize import brentq  # noqa: E402
+from scipy.optimize import brentq
 
-from femgear.contact.film import hamrock_dowson_central  # noqa: E402
-from femgear.ehl.dimensional import solve_point_dimensional  # noqa: E402
-from femgear.scene import load_scene  # noqa: E402
-from femgear.tehl.line import ehl_oil_at  # noqa: E402
-from femgear.tehl.point import solve_tehl_point  # noqa: E402
-from femgear.tehl.solver import tehl_setup  # noqa: E402
+from femgear.contact.film import hamrock_dowson_central
+from femgear.ehl.dimensional import solve_point_dimensional
+from femgear.scene import load_scene
+from femgear.tehl.line import ehl_oil_at
+from femgear.tehl.point import solve_tehl_point
+from femgear.tehl.solver import tehl_setup
 
 ROOT = Path(__file__).resolve().parents[1]
 F, UE, T = 500.0, 10.0, 353.15

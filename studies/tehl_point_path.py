@@ -19,21 +19,21 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import argparse  # noqa: E402
-import json  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "benchmarks"))
-from tehl_point import crowned_scene  # noqa: E402
+from tehl_point import crowned_scene
 
-from femgear.case import build_case  # noqa: E402
-from femgear.contact.crowning import crowned_contact  # noqa: E402
-from femgear.contact.path import contact_along_path  # noqa: E402
-from femgear.tehl.point_level import tehl_point_solver  # noqa: E402
+from femgear.case import build_case
+from femgear.contact.crowning import crowned_contact
+from femgear.contact.path import contact_along_path
+from femgear.tehl.point_level import tehl_point_solver
 
 
 def along_path(scene, level: int) -> dict:

@@ -89,7 +89,7 @@ def plot(res: dict) -> list:
     fig, ax = C.figure(1, 2)
     for label, c in zip(RISES, res["cases"]):
         s = c["series"]
-        for j, axis in enumerate("xy"):
+        for j in range(2):                 # x, y
             ax[0][j].plot(s["gear.displacement"][:, j] * 1e6, s["gear.velocity"][:, j] * 1e3, lw=0.6, label=label)
     for j, axis in enumerate("xy"):
         ax[0][j].set(title=f"gear phase plane, {axis} (Fig. 13)", xlabel=f"{axis} [µm]", ylabel=f"v_{axis} [mm/s]")

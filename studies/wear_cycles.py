@@ -102,7 +102,7 @@ def plot(res: dict) -> list:
     paths = [C.save(fig, "wear_cycles", "amplitudes.png")]
     fig, ax = C.figure(1, 2)
     for c, r in zip(cases, rows):
-        for j, name in enumerate(("pinion", "gear")):
+        for j in range(2):                 # pinion, gear
             ax[0][j].plot(c["u"] * 1e3, c["wear"][j] * 1e6, label=f"{r['cycles']:.0e} cycles")
     for j, name in enumerate(("pinion", "gear")):
         ax[0][j].axvline(cases[0]["u_pitch"] * 1e3, color="k", lw=0.5)

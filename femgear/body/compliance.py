@@ -35,7 +35,6 @@ from femgear.geometry.gear import GearPair
 from femgear.mesh.segment import FAR_FRACTION
 from femgear.perf import Estimate, Progress, announce
 
-
 GRADE = 0.35   #: growth of the element size per unit distance beyond the three middle teeth and below the root
 
 

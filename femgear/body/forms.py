@@ -15,7 +15,7 @@ the thermal modulus (Timoshenko & Goodier, *Theory of Elasticity*, 3rd ed., §§
 from __future__ import annotations
 
 from skfem import BilinearForm, LinearForm
-from skfem.helpers import ddot, div, dot, grad, sym_grad, trace, eye
+from skfem.helpers import ddot, div, dot, eye, grad, sym_grad, trace
 
 
 def lame(youngs_modulus: float, poisson_ratio: float, plane: str) -> tuple[float, float]:

@@ -96,7 +96,6 @@ class ThermoElasticResult:
 
     def von_mises(self, youngs_modulus: float, poisson_ratio: float, expansion: float):
         """Element-mean von Mises stress [Pa] (plane stress), for VTK output."""
-        from skfem import ElementDG, ElementTriP0, Functional
         from skfem.helpers import sym_grad
 
         from femgear.body.forms import lame

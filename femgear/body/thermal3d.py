@@ -182,9 +182,9 @@ def remove_bore_rigid_motion(model, mesh, U: np.ndarray, z_mid: float, n_angles:
 def _compute(pair, member, spec, expansion, E, nu, n_rho, n_z) -> Thermal3DUnits:
     from skfem import Basis
 
+    from femgear.body.conduction import solve_temperature
     from femgear.body.elastic3d import Elastic3D
     from femgear.body.forms import thermal_load, thermal_modulus
-    from femgear.body.conduction import solve_temperature
     from femgear.ltca.flank import roll_range
     from femgear.mesh.segment import helix_frame, member_body
 

@@ -85,7 +85,7 @@ def cli_logging(verbose: int = 0, quiet: bool = False) -> Iterator[None]:
     (numpy's RuntimeWarnings inside a diverging iteration, ...) only with -v.  The previous
     logging state is restored afterwards (the CLI may run inside another program or a test).
     """
-    from femgear.perf import NOTICE   # cost estimates and progress of long stages: shown by default
+    from femgear.perf import NOTICE  # cost estimates and progress of long stages: shown by default
 
     level = logging.ERROR if quiet else (NOTICE, logging.INFO, logging.DEBUG)[min(verbose, 2)]
     handler = logging.StreamHandler(sys.stderr)

@@ -35,7 +35,6 @@ def register(sub) -> None:
 
 def _run(args: argparse.Namespace) -> int:
     from femgear.case import build_case
-
     from femgear.cli.limits import finite
     from femgear.errors import ArgumentError
     from femgear.io.paths import child_path, prepare_output_dir

@@ -6,7 +6,12 @@
 """
 
 from femgear.coupling.loop import (
-    CoupledResult, CouplingHistory, CouplingSetup, CouplingState, coupling_iterations, run_coupled,
+    CoupledResult,
+    CouplingHistory,
+    CouplingSetup,
+    CouplingState,
+    coupling_iterations,
+    run_coupled,
 )
 
 __all__ = ["CoupledResult", "CouplingHistory", "CouplingSetup", "CouplingState", "coupling_iterations", "run_coupled"]

@@ -48,10 +48,14 @@ from femgear.case import Case
 from femgear.coupling.profile import mesh_deviation
 from femgear.coupling.thermal import ThermalUnits, bulk_temperature_rise, roll_distances, thermal_units
 from femgear.dynamics.build import (
-    build_model, stiffness_source, with_deviated_tooth_contact, with_deviation, with_friction,
+    build_model,
+    stiffness_source,
+    with_deviated_tooth_contact,
+    with_deviation,
+    with_friction,
 )
-from femgear.dynamics.model import GearRotorModel, MeshDeviation
 from femgear.dynamics.modal import ModalResult, modal_analysis
+from femgear.dynamics.model import GearRotorModel, MeshDeviation
 from femgear.dynamics.run import DynamicsRun, run_dynamics
 from femgear.errors import ConvergenceError
 from femgear.lubrication.levels import Lubrication, lubrication_solver

@@ -27,10 +27,10 @@
 - ``plot``       PNG plots (matplotlib imported lazily); files: :mod:`femgear.io.dynamics`.
 """
 
+from femgear.dynamics.build import build_model, with_deviation, with_friction
 from femgear.dynamics.integrate import Simulation, simulate, stability_limit
 from femgear.dynamics.mesh import StiffnessTable, constant_stiffness, contact_line_stiffness
 from femgear.dynamics.modal import ModalResult, modal_analysis
-from femgear.dynamics.build import build_model, with_deviation, with_friction
 from femgear.dynamics.model import GearRotorModel, MeshDeviation
 from femgear.dynamics.response import Response, analyse
 from femgear.dynamics.run import DynamicsRun, run_dynamics

@@ -21,7 +21,12 @@ from scipy.linalg import eigh
 from femgear.case import Case
 from femgear.dynamics.layout import NDOF
 from femgear.dynamics.mesh import (
-    MeshGeometry, StiffnessTable, as_stiffness_table, constant_stiffness, contact_line_stiffness, friction_table,
+    MeshGeometry,
+    StiffnessTable,
+    as_stiffness_table,
+    constant_stiffness,
+    contact_line_stiffness,
+    friction_table,
     mesh_geometry,
 )
 from femgear.dynamics.model import LEVELS, GearRotorModel, MeshDeviation

@@ -17,8 +17,8 @@ import math
 import numpy as np
 
 from femgear.dynamics.expo import expo, expo_step  # noqa: F401  (re-exported)
-from femgear.dynamics.newmark import newmark
 from femgear.dynamics.model import GearRotorModel
+from femgear.dynamics.newmark import newmark
 from femgear.dynamics.rk4 import first_order_matrix, rk4, stability_limit  # noqa: F401  (re-exported)
 from femgear.dynamics.simulation import Simulation
 

@@ -105,7 +105,7 @@ def newmark(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.n
             x = x - alpha * (Nprev[0] * PWprev[0] + Nprev[1] * PWprev[1])
             gx0, gx1 = (np.array([gx0, gx1]) - alpha * (Nprev[0] * (G @ PWprev[0]) + Nprev[1] * (G @ PWprev[1]))).tolist()
         b = (bb[0][j], bb[1][j])
-        for it in range(max_iter):
+        for it in range(max_iter):  # noqa: B007 — the count is reported after the loop
             iters_total += 1
             kap = [0.0, 0.0]
             n0 = [0.0, 0.0]

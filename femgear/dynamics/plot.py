@@ -118,7 +118,7 @@ def plot_spectra(res: Response, path, max_order: float = 32.0) -> Path:
         ax.set_ylabel(label)
         for k in range(1, int(max_order) + 1):
             ax.axvline(k, color="0.8", lw=0.6, zorder=0)
-    axes[-1].set_xlabel("mesh order f/f_m  (f_m = %.1f Hz)" % res.mesh_frequency)
+    axes[-1].set_xlabel(f"mesh order f/f_m  (f_m = {res.mesh_frequency:.1f} Hz)")
     return _save(fig, path)
 
 

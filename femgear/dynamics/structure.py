@@ -100,7 +100,7 @@ def assemble_structure(members: tuple[Member, Member], material: Material, pair:
         Mfull = np.zeros((48, 48))
         Cfull = np.zeros((48, 48))
         keep, bearing_nodes = [], []
-        for member, name in enumerate(("pinion", "gear")):
+        for member in range(2):             # pinion, gear
             sec = ShaftSection(require_positive(shaft_diameter[member], "shaft_diameter"), material.youngs_modulus,
                                material.poisson_ratio, material.density)
             zb = bearing_span[member] / 2
@@ -116,7 +116,7 @@ def assemble_structure(members: tuple[Member, Member], material: Material, pair:
                 body = 6 * (2 * member + side)
                 Mfull[node:node + 6, node:node + 6] += M24[body:body + 6, body:body + 6]
                 keep.extend(range(node, node + 6))
-            for j, node in enumerate((base, base + 18)):
+            for node in (base, base + 18):
                 for d in range(3):
                     Kfull[node + d, node + d] += Kb_list[member][d, d]
                     Cfull[node + d, node + d] += Cb_list[member][d, d]

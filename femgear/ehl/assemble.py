@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from femgear.errors import ConvergenceError
 from femgear.ehl import accuracy as acc
 from femgear.ehl.results import EHLResult, centre_values
+from femgear.errors import ConvergenceError
 
 
 def assemble(kind: str, M: float, L: float, x, y, P2: np.ndarray, H2: np.ndarray, *, H0: float,

@@ -50,13 +50,12 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import ndimage
 
-from femgear.errors import ConvergenceError
-from femgear.ehl.fd import FDLevel, inject, prolong_bilinear, prolong_cubic, restrict_full_weighting
 from femgear.ehl.eliminate import SpikeElimination
+from femgear.ehl.fd import FDLevel, inject, prolong_bilinear, prolong_cubic, restrict_full_weighting
 from femgear.ehl.fdnewton import CoarseNewton
 from femgear.ehl.newton import History
 from femgear.ehl.relax import RelaxOptions, sweep
-
+from femgear.errors import ConvergenceError
 
 # the contraction credited to a warm cycle: its residual ratio clipped to [0.1, 0.5] (0.5:
 # the largest film contraction per V-cycle measured on the FMG levels of (20, 10), 0.28-0.45;

@@ -32,16 +32,16 @@ import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
 from femgear.contact.film import nvm_central
-from femgear.errors import ConvergenceError
 from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
 from femgear.ehl.fas import FAS, FasOptions
 from femgear.ehl.fd import FDLevel, inject, prolong_cubic
 from femgear.ehl.fdnewton import CoarseNewton
 from femgear.ehl.grid import Domain, Grid
-from femgear.ehl.results import EHLResult
 from femgear.ehl.relax import RelaxOptions
+from femgear.ehl.results import EHLResult
 from femgear.ehl.rheology import Rheology
+from femgear.errors import ConvergenceError
 
 ALPHA_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
 # the coarsest grid (17^2) takes the first-order upwind wedge (a coarse-grid approximation
@@ -146,7 +146,7 @@ class FasPoint:
         H0 = start.H0 + self.nvm_hertz(self.M, self.L) - self.nvm_hertz(start.M, start.L)
         return P, H0
 
-    def _warm(self, start: EHLResult, top: int, on_level, path: "_PointPath"):
+    def _warm(self, start: EHLResult, top: int, on_level, path: _PointPath):
         """The finest grid and the grid below (its films make the two-level error
         estimate) from ``path``'s predictions, cycled to the warm tolerance; without a
         prediction (or when the cycles fail from it): the finest grid from ``start``
@@ -263,7 +263,7 @@ class _PointPath:
         self.entries = entries
 
     @classmethod
-    def of(cls, reuse: dict | None, dom: Domain, ratio: float) -> "_PointPath":
+    def of(cls, reuse: dict | None, dom: Domain, ratio: float) -> _PointPath:
         key = ("point path", dom, ratio)
         return cls([] if reuse is None else reuse.setdefault(key, []))
 

@@ -20,8 +20,8 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 
-from femgear.errors import ConvergenceError
 from femgear.ehl.fd import FDLevel
+from femgear.errors import ConvergenceError
 
 MAX_DP = 1.0
 MAX_LOG_ETA = 4.0

@@ -31,7 +31,7 @@ class Domain:
         if not (self.x0 < 0.0 < self.x1 and self.y0 < 0.0 < self.y1):
             raise ValueError(f"domain must contain the origin: {self}")
 
-    def scaled(self, s: float) -> "Domain":
+    def scaled(self, s: float) -> Domain:
         return Domain(self.x0 * s, self.x1 * s, self.y0 * s, self.y1 * s, self.aspect)
 
 
@@ -55,7 +55,7 @@ class Grid:
         return self.h if self.hy is None else self.hy
 
     @staticmethod
-    def build(domain: Domain, level: int, n0: int = 16, aspect: float | None = None) -> "Grid":
+    def build(domain: Domain, level: int, n0: int = 16, aspect: float | None = None) -> Grid:
         """Level ``level`` grid: ``n0 * 2**level`` intervals on [x0, x1]; Y snapped to hy,
         hy = ``aspect`` h (None: square cells)."""
         if level < 0:

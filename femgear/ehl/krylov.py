@@ -20,7 +20,7 @@ iterations these warm steps take: measured in the same runs, the 41-position lin
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

@@ -14,7 +14,6 @@ import time
 import numpy as np
 
 from femgear.contact.film import moes_line_central
-from femgear.errors import ConvergenceError, SceneError
 from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
 from femgear.ehl.grid import prolongation_1d
@@ -24,6 +23,7 @@ from femgear.ehl.point import CONTINUATION, _result
 from femgear.ehl.results import EHLResult
 from femgear.ehl.rheology import Rheology
 from femgear.ehl.surface import apply_surface, evaluate
+from femgear.errors import ConvergenceError, SceneError
 
 X0_DEFAULT = -4.5
 DEFAULT_LEVEL = 6  # 1025 nodes
@@ -181,7 +181,7 @@ def _direct(make, lev: int, M, L, fac, hist: History, newton):
 
 
 def _warm(start: EHLResult | None, make, lev: int, M, L, fac, hist: History, newton,
-          path: "_PathHistory"):
+          path: _PathHistory):
     """(level, P_I, H0) solved on level ``lev`` from a neighbouring line solution
     ``start``, or None when there is none or Newton fails there. The start is the
     secant prediction of :class:`_PathHistory` when the history kept in ``reuse`` ends at
@@ -253,7 +253,7 @@ class _PathHistory:
         self.entries = entries
 
     @classmethod
-    def of(cls, reuse: dict | None, x0: float, x1: float) -> "_PathHistory":
+    def of(cls, reuse: dict | None, x0: float, x1: float) -> _PathHistory:
         return cls([] if reuse is None else reuse.setdefault((cls.KEY, x0, x1), []))
 
     def record(self, M: float, L: float, solved: dict) -> None:

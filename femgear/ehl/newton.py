@@ -18,18 +18,18 @@ history and raise :class:`femgear.errors.ConvergenceError` on failure; no NaN re
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from femgear.errors import ConvergenceError
 from femgear.ehl.grid import prolongation
 from femgear.ehl.krylov import gmres_right
 from femgear.ehl.level import Level
+from femgear.errors import ConvergenceError
 
 MAX_DP = 1.0
 RESIDUAL_TOL = 1e-10  # scaled residual norm accepted as converged after a full step
@@ -66,7 +66,7 @@ class History:
     def as_dict(self) -> dict:
         return {k: list(v) for k, v in self.__dict__.items() if isinstance(v, list)}
 
-    def extend(self, other: "History") -> None:
+    def extend(self, other: History) -> None:
         for k, v in other.as_dict().items():
             getattr(self, k).extend(v)
 

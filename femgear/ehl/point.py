@@ -33,17 +33,17 @@ import numpy as np
 
 from femgear.contact.film import nvm_central
 from femgear.contact.hertz import hertz_point
-from femgear.errors import ConvergenceError, SceneError
 from femgear.ehl import accuracy as acc
 from femgear.ehl import params as pr
+from femgear.ehl.assemble import assemble
+from femgear.ehl.fas_point import HIGH_ALPHA_FROM, solve_point_fas
 from femgear.ehl.grid import Domain, Grid, prolongation
 from femgear.ehl.level import Level
 from femgear.ehl.newton import History, newton_dense, newton_krylov
-from femgear.ehl.assemble import assemble
-from femgear.ehl.fas_point import HIGH_ALPHA_FROM, solve_point_fas
 from femgear.ehl.results import EHLResult
 from femgear.ehl.rheology import Rheology
 from femgear.ehl.surface import apply_surface, evaluate
+from femgear.errors import ConvergenceError, SceneError
 
 CONTINUATION = (0.0, 0.25, 0.5, 0.75, 1.0)
 STABILISATION = (2.0, 1.5, 1.2)

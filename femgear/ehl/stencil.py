@@ -42,7 +42,7 @@ class UniformElements:
         self._coef = [np.einsum("q,qi,qj->qij", w, g, phi) for g in grad]
 
     @classmethod
-    def quad(cls, nx: int, ny: int, h: float, hy: float | None = None) -> "UniformElements":
+    def quad(cls, nx: int, ny: int, h: float, hy: float | None = None) -> UniformElements:
         """Q1 on nx x ny nodes, cells h x hy (hy None: square, h x h)."""
         ii, jj = np.meshgrid(np.arange(nx - 1), np.arange(ny - 1))
         n0 = (jj * nx + ii).ravel()
@@ -55,7 +55,7 @@ class UniformElements:
         return cls(T, nx * ny, phi, (gx, gy), np.full(4, h * (h if hy is None else hy) / 4.0))
 
     @classmethod
-    def line(cls, n: int, h: float) -> "UniformElements":
+    def line(cls, n: int, h: float) -> UniformElements:
         i = np.arange(n - 1)
         T = np.stack([i, i + 1], axis=1)
         xi = np.array(_G)

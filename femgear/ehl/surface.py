@@ -25,7 +25,7 @@ as R(X - c T) with c = u_s / u_m and T = t u_m / a (:func:`surface_speed`).
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 import scipy.fft as sfft

@@ -36,14 +36,13 @@ roughness stays at rest to the Newton tolerance (tested).
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 import scipy.sparse as sp
 
 from femgear.contact.film import moes_line_central
-from femgear.errors import ArgumentError, ConvergenceError
 from femgear.ehl import params as pr
 from femgear.ehl.grid import Grid
 from femgear.ehl.level import Level
@@ -53,6 +52,7 @@ from femgear.ehl.point import default_domain, solve_point
 from femgear.ehl.reynolds import Linearization
 from femgear.ehl.rheology import Rheology
 from femgear.ehl.surface import apply_surface
+from femgear.errors import ArgumentError, ConvergenceError
 
 NEWTON_TOL = 1e-9
 STEP_RESIDUAL_TOL = 1e-9
@@ -201,7 +201,7 @@ def _check(scheme: str, T_end: float) -> None:
 
 
 def _march(levels: list, step: Callable, feature: Callable, PI, H0, *, speed: float, T_end: float,
-           dT: float | None, scheme: str, snapshots, case: str) -> "_Recorder":
+           dT: float | None, scheme: str, snapshots, case: str) -> _Recorder:
     """Time loop shared by the line and point solvers: at each step the surface at its new
     position on every level, the BDF2 (first step: Euler) squeeze coefficients on every
     level (old levels on the finest only: the coarser ones serve the preconditioner), and

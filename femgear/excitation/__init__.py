@@ -7,12 +7,7 @@
 """
 
 from femgear.excitation.backlash import contact_indicator, gap_function
-from femgear.excitation.errors import (
-    Eccentricity,
-    ProfileError,
-    RandomError,
-    Unbalance,
-)
+from femgear.excitation.errors import Eccentricity, ProfileError, RandomError, Unbalance
 
 __all__ = [
     "Eccentricity", "ProfileError", "RandomError", "Unbalance", "contact_indicator", "gap_function",

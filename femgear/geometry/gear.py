@@ -19,7 +19,6 @@ from functools import cached_property
 from femgear.errors import SceneError
 from femgear.geometry.involute import inv, inv_inverse
 
-
 KINDS = ("double-helical", "single-helical", "spur")
 __all__ = ["KINDS", "GearPair", "inv", "inv_inverse"]
 

@@ -19,7 +19,6 @@ CLI prints one line:
 from __future__ import annotations
 
 import math
-
 from dataclasses import replace
 
 from femgear.errors import SceneError

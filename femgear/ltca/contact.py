@@ -39,7 +39,13 @@ import numpy as np
 
 from femgear.errors import ConvergenceError
 from femgear.geometry.gear import GearPair
-from femgear.ltca.halfspace import HERTZ_TO_UNIFORM, hertz_half_width, reduced_modulus, strip_self_compliance, surface_green
+from femgear.ltca.halfspace import (
+    HERTZ_TO_UNIFORM,
+    hertz_half_width,
+    reduced_modulus,
+    strip_self_compliance,
+    surface_green,
+)
 
 
 @dataclass(frozen=True)

@@ -106,7 +106,7 @@ def hertz_traction(w, b, p_h, h, v1, v2, T_bulk, oil: OilLaw, solids: Solids, mo
     A = abel_matrix(n)
     T = np.broadcast_to(T_bulk, p.shape).copy()
     dT_surface = np.zeros(p.shape)
-    for it in range(1, max_iter + 1):
+    for it in range(1, max_iter + 1):  # noqa: B007 — the count is reported after the loop
         tau = shear_stress(oil.viscosity(p, T), rate, model, tau0)
         if limiting_shear > 0:
             tau = np.minimum(tau, limiting_shear * p)

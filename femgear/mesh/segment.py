@@ -349,7 +349,10 @@ def _sweep(sec, zs: np.ndarray, frame: HelixFrame, groove_layers: tuple[int, int
     fine_node = np.zeros(n2, bool)
     fine_node[tri[:, ~far].ravel()] = True
     fine_col = ~far | fine_node[tri].all(axis=0)          # far triangles whose nodes are all fine: swept finely
-    in_groove = (lambda k: groove_layers[0] <= k < groove_layers[1])
+
+    def in_groove(k):
+        return groove_layers[0] <= k < groove_layers[1]
+
     tets = []
     for k in range(zs.size - 1):
         sel = fine_col & (inner if in_groove(k) else True)

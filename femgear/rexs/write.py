@@ -7,7 +7,7 @@ the same double.  The caller writes the text to disk (atomically, :mod:`femgear.
 from __future__ import annotations
 
 import json
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from typing import Any
 from xml.etree.ElementTree import Element, SubElement, indent, tostring
 
@@ -23,7 +23,7 @@ def _text(value: Any) -> str:
 
 
 def _date() -> str:
-    return datetime.now(timezone.utc).replace(microsecond=0).isoformat()
+    return datetime.now(UTC).replace(microsecond=0).isoformat()
 
 
 def to_xml(model: Model, application_version: str = "") -> str:

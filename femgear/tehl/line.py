@@ -54,12 +54,12 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from femgear.errors import ConvergenceError
 from femgear.ehl import params as pr
 from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
 from femgear.ehl.level import Level
 from femgear.ehl.newton import newton_dense
 from femgear.ehl.rheology import ROELANDS_P0
+from femgear.errors import ConvergenceError
 from femgear.lubrication.oil import OilLaw
 from femgear.tehl.energy import EnergyState, ThermalProps, jaeger_matrix, solve_energy
 from femgear.tehl.loop import thermal_loop
@@ -234,7 +234,7 @@ class _Film:
         self.PI, self.H0 = self.start[0][self.lv.interior].copy(), res.H0
         self.P, self.H = (res.P, res.H) if k == level else self.lv.film(self.PI, self.H0)
 
-    def correct(self, coarse: "_Film", T_nodes: np.ndarray) -> None:
+    def correct(self, coarse: _Film, T_nodes: np.ndarray) -> None:
         """Start from the better (smaller Reynolds residual at the coarse temperatures
         ``T_nodes`` [K]) of the isothermal solution plus the prolonged thermal correction of
         the ``coarse`` grid (the nested iteration's coarse-grid correction: the fine-minus-

@@ -186,7 +186,7 @@ def run_face_wear(setup: WearSetup, face: FaceReference, cycles: float,
                   max_relative_change: float = 0.05) -> FaceWearState:
     """Accumulate face-resolved wear to ``cycles`` pinion revolutions."""
     final = FaceWearState.zero(setup.kin.u.size, face.grid.size)
-    for final in face_wear_steps(setup, face, cycles, None, max_relative_change):
+    for final in face_wear_steps(setup, face, cycles, None, max_relative_change):  # noqa: B007 — keeps the last
         pass
     return final
 

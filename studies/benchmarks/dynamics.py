@@ -21,11 +21,11 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # many small dense products: threads only contend
 
-import json  # noqa: E402
-import statistics  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import json
+import statistics
+import sys
+import time
+from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 KEYS = [f"{m}.{k}.{a}" for m in ("pinion", "gear") for k in ("displacement", "velocity") for a in "xy"] + \

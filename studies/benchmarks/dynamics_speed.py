@@ -27,14 +27,14 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # many small dense products: threads only contend
 
-import argparse  # noqa: E402
-import json  # noqa: E402
-import statistics  # noqa: E402
-import subprocess  # noqa: E402
-import sys  # noqa: E402
-import tempfile  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import argparse
+import json
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = {"baseline": ROOT / "studies" / "paper_baseline.toml", "marine": ROOT / "studies" / "zoo" / "marine.toml"}

@@ -31,22 +31,22 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import argparse  # noqa: E402
-import json  # noqa: E402
-import statistics  # noqa: E402
-import time  # noqa: E402
+import argparse
+import json
+import statistics
+import time
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from femgear.contact.film import nvm_central  # noqa: E402
-from femgear.ehl import params as pr  # noqa: E402
-from femgear.ehl.dimensional import EHLOil, solve_line_dimensional  # noqa: E402
-from femgear.ehl.grid import Grid  # noqa: E402
-from femgear.ehl.level import Level  # noqa: E402
-from femgear.ehl.line import line_level  # noqa: E402
-from femgear.ehl.point import default_domain, solve_point  # noqa: E402
-from femgear.ehl.rheology import Rheology  # noqa: E402
-from femgear.perf import measure  # noqa: E402
+from femgear.contact.film import nvm_central
+from femgear.ehl import params as pr
+from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
+from femgear.ehl.grid import Grid
+from femgear.ehl.level import Level
+from femgear.ehl.line import line_level
+from femgear.ehl.point import default_domain, solve_point
+from femgear.ehl.rheology import Rheology
+from femgear.perf import measure
 
 CASES = ((20.0, 10.0), (200.0, 10.0))
 

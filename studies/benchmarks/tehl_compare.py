@@ -18,16 +18,16 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import argparse  # noqa: E402
-import json  # noqa: E402
-import re  # noqa: E402
-import subprocess  # noqa: E402
-import sys  # noqa: E402
-import tempfile  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import argparse
+import json
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
 W, R, UE, T0 = 84332.0, 0.0123, 1.09, 313.0
@@ -51,12 +51,13 @@ def main() -> dict:
     tmp = tempfile.TemporaryDirectory()
     export_base(args.base, Path(tmp.name))
     sys.path.insert(0, tmp.name)
+    from femgear_base.tehl import solve_tehl_line as base_tehl_line
+
     from femgear.ehl.dimensional import solve_line_dimensional
     from femgear.scene import load_scene
     from femgear.tehl import solve_tehl_line
     from femgear.tehl.line import ehl_oil_at
     from femgear.tehl.solver import tehl_setup
-    from femgear_base.tehl import solve_tehl_line as base_tehl_line
 
     setup = tehl_setup(load_scene(ROOT / "studies" / "paper_baseline.toml"))
     oil = ehl_oil_at(setup["oil"], T0)

@@ -18,19 +18,19 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-import argparse  # noqa: E402
-import json  # noqa: E402
-import time  # noqa: E402
-import tomllib  # noqa: E402
-from pathlib import Path  # noqa: E402
+import argparse
+import json
+import time
+import tomllib
+from pathlib import Path
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from femgear.case import build_case  # noqa: E402
-from femgear.contact.path import contact_along_path  # noqa: E402
-from femgear.lubrication.levels import friction_along_path, lubrication_solver  # noqa: E402
-from femgear.scene import scene_from_dict  # noqa: E402
-from femgear.tehl.point_level import POINT_LEVEL, tehl_point_solver  # noqa: E402
+from femgear.case import build_case
+from femgear.contact.path import contact_along_path
+from femgear.lubrication.levels import friction_along_path, lubrication_solver
+from femgear.scene import scene_from_dict
+from femgear.tehl.point_level import POINT_LEVEL, tehl_point_solver
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -1,5 +1,7 @@
 """FE tooth compliance (``fe`` level) against the potential energy method."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -7,7 +9,6 @@ from femgear.body.compliance import ToothFE, fe_pair_stiffness_per_width
 from femgear.geometry.gear import GearPair
 from femgear.mesh.section import gear_section
 from femgear.stiffness.pem import pair_stiffness_per_width
-from pathlib import Path
 
 BASELINE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
 

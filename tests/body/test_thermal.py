@@ -6,8 +6,14 @@ import numpy as np
 import pytest
 
 from femgear.body.thermal import (
-    analytic_radial_displacement, disk_radial_displacement, disk_temperature, flank_deviation,
-    flank_displacement, gear_thermo_elastic, solve_temperature, thermo_elastic,
+    analytic_radial_displacement,
+    disk_radial_displacement,
+    disk_temperature,
+    flank_deviation,
+    flank_displacement,
+    gear_thermo_elastic,
+    solve_temperature,
+    thermo_elastic,
 )
 from femgear.geometry.gear import GearPair
 from femgear.mesh.section import annulus, gear_section
@@ -62,7 +68,7 @@ def test_disk_solution_limits():
 
 
 def _disk_error(h, order):
-    from skfem import Basis, ElementTriP2, ElementVector, Functional
+    from skfem import Functional
 
     a, b = 0.02, 0.06
     mesh = annulus(a, b, h)
@@ -120,14 +126,29 @@ def test_analytic_uniform_is_lambda_dT_rho():
 
 
 def test_scene_entry_point():
+    """The scene's rises, material and bore reach :func:`flank_deviation`: a uniform rise (flank =
+    shaft = 35 K) is a free dilatation, so the flank moves by λ ΔT ρ cos β_b along the line of action
+    (the closed form of ``test_analytic_uniform_is_lambda_dT_rho``) with the baseline's λ = 1.16e-5 /K;
+    a flank-only rise gives what the explicit call with the scene's values gives."""
     from pathlib import Path
 
     from femgear.body.thermal import flank_deviation_from_scene
     from femgear.scene import load_scene
 
-    sc = load_scene(Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml",
-                    overrides=["thermal.flank_temperature_rise=35", "physics.thermal=analytic"])
+    path = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
+    sc = load_scene(path, overrides=["thermal.flank_temperature_rise=35", "thermal.shaft_temperature_rise=35",
+                                     "physics.thermal=analytic"])
     p = GearPair.from_scene(sc)
     u = np.linspace(p.u_start, p.u_end, 4)
+    _, _, rho = contact_geometry(p, 1, u)
+    lam = sc.material.thermal_expansion
+    assert lam == 1.16e-5
+    np.testing.assert_allclose(flank_deviation_from_scene(sc, 1, u), lam * 35 * rho * math.cos(p.beta_b), rtol=1e-12)
+
+    sc = load_scene(path, overrides=["thermal.flank_temperature_rise=35", "physics.thermal=analytic"])
     z = flank_deviation_from_scene(sc, 1, u)
-    assert np.all(z > 0) and np.all(np.isfinite(z))
+    mat = sc.material
+    explicit = flank_deviation(p, 1, u, "analytic", 35.0, 0.0, lam, mat.youngs_modulus, mat.poisson_ratio,
+                               bore_radius=sc.pinion.bore_radius)
+    np.testing.assert_allclose(z, explicit, rtol=1e-12)
+    assert np.all(z < lam * 35 * rho * math.cos(p.beta_b))     # a cool shaft holds the flank back

@@ -2,7 +2,6 @@
 
 import math
 
-import numpy as np
 import pytest
 from scipy import integrate
 from scipy.special import ellipe, ellipk
@@ -75,7 +74,9 @@ def test_elliptical_contact_satisfies_boussinesq_displacement():
             B = 2 * (x0 * c / a**2 + y0 * s / b**2)
             C = x0**2 / a**2 + y0**2 / b**2 - 1
             rmax = (-B + math.sqrt(B * B - 4 * A * C)) / (2 * A)
-            f = lambda r: ph * math.sqrt(max(0.0, 1 - (x0 + r * c) ** 2 / a**2 - (y0 + r * s) ** 2 / b**2))
+            def f(r):
+                return ph * math.sqrt(max(0.0, 1 - (x0 + r * c) ** 2 / a**2 - (y0 + r * s) ** 2 / b**2))
+
             return integrate.quad(f, 0, rmax, epsabs=0, epsrel=1e-10, limit=200)[0]
 
         total = integrate.quad(radial, 0, 2 * math.pi, epsabs=0, epsrel=1e-10, limit=200)[0]

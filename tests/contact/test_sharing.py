@@ -26,7 +26,7 @@ def _hand_fzg_c14(torque: float):
     point C and at the inner point of single contact B (Niemann & Winter II §21; Johnson 4.45)."""
     m, z1, z2, a_w, b = 4.5e-3, 16, 24, 91.5e-3, 14e-3
     alpha = math.radians(20)
-    rb1, rb2 = z1 * m / 2 * math.cos(alpha), z2 * m / 2 * math.cos(alpha)
+    rb1 = z1 * m / 2 * math.cos(alpha)
     alpha_w = math.acos((z1 + z2) * m / 2 * math.cos(alpha) / a_w)
     T1T2 = a_w * math.sin(alpha_w)
     T1E = math.sqrt((82.456e-3 / 2) ** 2 - rb1**2)

@@ -7,8 +7,7 @@ import numpy as np
 import pytest
 
 from femgear.geometry import GearPair
-from femgear.mesh.segment import (body_size, coarse_layers, default_spec, groove_layers, member_body,
-                                  mesh_revision)
+from femgear.mesh.segment import body_size, coarse_layers, default_spec, groove_layers, member_body, mesh_revision
 
 
 def _boundary_area(mesh, facets) -> float:
@@ -26,7 +25,6 @@ def _volume(mesh) -> float:
 def grooved(baseline_scene):
     """The baseline pair with a 10 mm groove (both the far field and the groove layers are graded)."""
     from femgear.scene import load_scene
-
     from tests.conftest import BASELINE
 
     scene = load_scene(BASELINE, ["pair.groove_width=0.01"])

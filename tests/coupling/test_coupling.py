@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from femgear.coupling import CouplingSetup, coupling_iterations, run_coupled
 from femgear.case import build_case
+from femgear.coupling import CouplingSetup, coupling_iterations, run_coupled
 from femgear.coupling.profile import mesh_deviation, phase_table
 from femgear.errors import ConvergenceError
 from femgear.geometry import path_positions

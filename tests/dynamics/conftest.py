@@ -1,7 +1,8 @@
 """Fixtures of the dynamics tests: baseline models at both levels."""
 
-from femgear.case import build_case
 import pytest
+
+from femgear.case import build_case
 
 
 @pytest.fixture(scope="module")

@@ -1,9 +1,9 @@
 """Bad input is refused with a message naming the argument or scene key."""
 
-from femgear.case import build_case
 import numpy as np
 import pytest
 
+from femgear.case import build_case
 from femgear.errors import SceneError
 from femgear.scene import load_scene
 

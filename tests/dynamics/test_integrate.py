@@ -1,11 +1,10 @@
 """Tier 1/2: integrators — RK4 order, energy conservation, fast integrator vs fine RK4."""
 
-from femgear.case import build_case
-from femgear.dynamics import MeshDeviation, with_deviation
 import numpy as np
 import pytest
 
-from femgear.dynamics import build_model, simulate
+from femgear.case import build_case
+from femgear.dynamics import MeshDeviation, build_model, simulate, with_deviation
 from femgear.dynamics.integrate import expo_step
 from femgear.dynamics.response import analyse
 from femgear.scene import load_scene

@@ -1,9 +1,9 @@
 """Tier 3: linearised modal analysis against time-domain resonances."""
 
-from femgear.case import build_case
 import numpy as np
 import pytest
 
+from femgear.case import build_case
 from femgear.dynamics import build_model
 from femgear.dynamics.modal import modal_analysis
 from femgear.dynamics.sweep import peak_frequency, speed_sweep

@@ -1,11 +1,11 @@
 """Tier 1: the assembled model — symmetry, action = reaction, kinematics, statics."""
 
-from femgear.case import build_case
 import math
 
 import numpy as np
 import pytest
 
+from femgear.case import build_case
 from femgear.dynamics.layout import BODIES, dof
 from femgear.geometry import kinematics
 

@@ -8,7 +8,12 @@ import numpy as np
 import pytest
 
 from femgear.dynamics.one_mesh import (
-    MemberData, build_one_mesh, natural_frequencies, simulate_one_mesh, static_deflection, torsional_mode_hand,
+    MemberData,
+    build_one_mesh,
+    natural_frequencies,
+    simulate_one_mesh,
+    static_deflection,
+    torsional_mode_hand,
     torsional_sweep,
 )
 from femgear.geometry.gear import GearPair

@@ -1,6 +1,5 @@
 """Post-processing, friction power, results files and the command line."""
 
-from femgear.case import build_case
 import json
 import os
 import subprocess
@@ -8,6 +7,7 @@ import sys
 
 import numpy as np
 
+from femgear.case import build_case
 from femgear.dynamics.response import half_peak_to_peak, spectrum
 
 
@@ -27,9 +27,9 @@ def test_friction_dissipates_power_on_average(baseline_scene):
     the mean |sliding speed| over the helix's contact lines computed independently from the
     kinematics (v_s = ω1 ρ1 − ω2 ρ2); the tanh regularisation and the 64-point line quadrature
     of the tables are the only differences (< 1e-3)."""
-    from femgear.geometry import contact_lines, kinematics
     from femgear.dynamics import build_model
     from femgear.dynamics.layout import BODIES, dof
+    from femgear.geometry import contact_lines, kinematics
 
     m = build_model(build_case(baseline_scene), "lumped", stiffness="contact-line", friction=0.05)
     qdot = np.zeros(24)

@@ -8,11 +8,11 @@ import pytest
 
 from femgear.cli import main
 from femgear.contact.film import nvm_central
-from femgear.errors import SceneError
 from femgear.ehl import accuracy as acc
 from femgear.ehl.grid import Domain
 from femgear.ehl.line import solve_line
 from femgear.ehl.point import solve_point
+from femgear.errors import SceneError
 
 
 def test_richardson_recovers_a_second_order_sequence():

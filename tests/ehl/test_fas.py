@@ -5,13 +5,13 @@ import numpy as np
 import pytest
 
 from femgear.contact.film import nvm_central
-from femgear.errors import ConvergenceError
 from femgear.ehl import params as pr
 from femgear.ehl.fas import FAS, FasOptions
 from femgear.ehl.fas_point import solve_point_fas
 from femgear.ehl.fd import FDLevel, inject, prolong_bilinear, restrict_full_weighting
 from femgear.ehl.grid import Grid
 from femgear.ehl.point import default_domain, fas_suits, solve_point
+from femgear.errors import ConvergenceError
 
 
 @pytest.fixture(scope="module")

@@ -14,11 +14,10 @@ from functools import partial
 import numpy as np
 import pytest
 
-from femgear.errors import ArgumentError, SceneError
 from femgear.ehl.line import solve_line
 from femgear.ehl.point import solve_point
-from femgear.ehl.surface import (correlation_length, harmonic, hertz_height, paper_peak,
-                                 random_surface, surface_speed)
+from femgear.ehl.surface import correlation_length, harmonic, hertz_height, paper_peak, random_surface, surface_speed
+from femgear.errors import ArgumentError, SceneError
 
 
 def _ripple(x, dP, lam, half=0.5):

@@ -13,11 +13,17 @@ from functools import partial
 import numpy as np
 import pytest
 
-from femgear.errors import ArgumentError
 from femgear.ehl.line import solve_line
 from femgear.ehl.surface import paper_peak
-from femgear.ehl.transient import (amplitude_reduction_fit, entering_waviness, measure_amplitude_reduction,
-                                   nabla_line, solve_line_transient, wavelength_for)
+from femgear.ehl.transient import (
+    amplitude_reduction_fit,
+    entering_waviness,
+    measure_amplitude_reduction,
+    nabla_line,
+    solve_line_transient,
+    wavelength_for,
+)
+from femgear.errors import ArgumentError
 
 
 def test_smooth_surface_stays_at_the_steady_solution():

@@ -51,9 +51,9 @@ def _datasets(pvd: Path) -> list[dict]:
 
 
 def test_flanks_pvd_has_both_members_with_finite_fields(main_job):
-    import meshio
-
     import json
+
+    import meshio
 
     entries = _datasets(main_job / "flanks.pvd")
     assert [e["part"] for e in entries] == ["0", "1"]

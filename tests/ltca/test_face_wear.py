@@ -14,7 +14,14 @@ import pytest
 from femgear.geometry import kinematics, path_positions
 from femgear.wear import WearSetup, WearState, run_wear, wear_rates
 from femgear.wear.face import (
-    FaceReference, FaceWearState, along_lines, archard_volume, face_mean, face_rates, flank_volume, run_face_wear,
+    FaceReference,
+    FaceWearState,
+    along_lines,
+    archard_volume,
+    face_mean,
+    face_rates,
+    flank_volume,
+    run_face_wear,
 )
 
 N_ZETA = 21

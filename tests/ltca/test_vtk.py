@@ -122,8 +122,8 @@ def test_edge_contacts_are_flagged_not_shown_as_hertz_pressures(coarse_model, ba
     single-/double-contact variation), and the .vtu carries the flag."""
     import meshio
 
-    from femgear.ltca.analysis import mesh_cycle
     from femgear.io.ltca import write_flank_pressure
+    from femgear.ltca.analysis import mesh_cycle
     from femgear.ltca.vtk import flank_pressure_map
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(), n_phases=64)

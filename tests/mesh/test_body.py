@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 
-
 def _spec(pair, **kw):
     from femgear.mesh.segment import default_spec
 

@@ -18,7 +18,13 @@ import pytest
 
 from femgear.geometry.gear import GearPair
 from femgear.rating.scuffing import (
-    FZG_A_TORQUE, ScuffingInputs, flash_path, fzg_a_pair, fzg_torque, load_sharing_factor, mean_friction,
+    FZG_A_TORQUE,
+    ScuffingInputs,
+    flash_path,
+    fzg_a_pair,
+    fzg_torque,
+    load_sharing_factor,
+    mean_friction,
     scuffing_rating,
 )
 

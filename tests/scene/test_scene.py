@@ -2,6 +2,7 @@
 
 import tomllib
 
+import pydantic
 import pytest
 
 from femgear.errors import SceneError
@@ -26,7 +27,7 @@ def test_baseline_holds_the_papers_tables(baseline_scene):
 
 
 def test_scene_models_are_frozen(baseline_scene):
-    with pytest.raises(Exception):
+    with pytest.raises(pydantic.ValidationError, match="frozen"):
         baseline_scene.pair.normal_module = 1.0
 
 

@@ -7,7 +7,11 @@ import pytest
 
 from femgear.stiffness.iso6336 import iso6336_stiffness
 from femgear.stiffness.pem import (
-    SAINSOT, hertz_compliance, pair_stiffness_per_width, sainsot_coefficient, tooth_compliance,
+    SAINSOT,
+    hertz_compliance,
+    pair_stiffness_per_width,
+    sainsot_coefficient,
+    tooth_compliance,
 )
 from femgear.stiffness.tvms import mesh_stiffness
 

@@ -1,7 +1,6 @@
 """The ``tehl`` lubrication level: registry, coupling solver (a TEHL map), static path
 of ``femgear run`` and the along-path study helpers."""
 
-import importlib.util
 from pathlib import Path
 
 import numpy as np

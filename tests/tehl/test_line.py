@@ -5,8 +5,8 @@ import importlib.util
 from pathlib import Path
 
 import numpy as np
-import scipy.sparse.linalg
 import pytest
+import scipy.sparse.linalg
 
 from femgear.ehl import params as pr
 from femgear.ehl.dimensional import solve_line_dimensional
