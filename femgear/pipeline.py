@@ -120,7 +120,8 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
             case.stiffness.mesh_stiffness_per_width * pair.b
         info = {} if stiffness is None else stiffness.info
-        ref = ltca_reference(pair, case.path.u, info, np.zeros(case.path.u.size)) if "ltca" in info else None
+        ref = ltca_reference(pair, case.path.u, info, np.zeros(case.path.u.size)) \
+            if "ltca" in info and pair.beta_b > 0 else None     # spur: the Winkler sharing (see coupling.loop)
         setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / pair.n_helices,
                           c_l=line_stiffness(case, k_mean, stiffness),
                           coefficient=case.wear.coefficient, hardness=case.material.hardness, reference=ref)

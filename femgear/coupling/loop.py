@@ -248,7 +248,10 @@ def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta:
     (``wear_anchor = "unworn"``); with ``"pass"`` the reference ends at the pass's cycle (at h =
     Σ wear), blended along the way by the wear's progress towards Σ wear (see :class:`CouplingSetup`).
     """
-    if info is None:
+    if info is None or setup.pair.beta_b == 0:
+        # spur: a contact line is the whole face at one u, and the pairs in contact share the load by the
+        # Winkler layer of the level's pair stiffness (the spur load map); the LTCA's per-line reference
+        # reads helical lines
         return None, None
     h, z = wear.sum(axis=0), zeta.sum(axis=0)
     extra = None

@@ -164,9 +164,14 @@ class ContactSolution:
 
 
 def solve_contact(C: np.ndarray, eps: np.ndarray, force: float, case: str = "LTCA contact",
-                  active: np.ndarray | None = None, max_iter: int = 200) -> ContactSolution:
-    """Active-set solution of the unilateral contact problem for the total normal force ``force`` [N]."""
+                  active: np.ndarray | None = None, max_iter: int | None = None) -> ContactSolution:
+    """Active-set solution of the unilateral contact problem for the total normal force ``force`` [N].
+
+    One point enters or leaves the active set per iteration, so the cap scales with the points:
+    ``max_iter`` default 200 + 2 n (a wide, high-overlap helix, the turbo zoo pair's 2 × 100 mm at
+    ε_β 4, has several hundred loaded points and ran out of the old fixed 200)."""
     n = eps.size
+    max_iter = 200 + 2 * n if max_iter is None else max_iter
     if force <= 0:
         raise ValueError(f"force must be positive, got {force}")
     S = np.zeros(n, bool)
