@@ -87,6 +87,10 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
+    if scene.physics.lubrication in ("tehl", "tehl-point"):
+        from femgear.tehl.solver import check_tehl_range
+
+        check_tehl_range(scene, pair)
     if scene.physics.lubrication == "tehl-point":
         from femgear.contact.crowning import check_point_range
         from femgear.geometry import kinematics, path_positions

@@ -114,3 +114,26 @@ def tehl_map_solver(scene, level: int = 4, axes: dict | None = None):
 
     solve.cache = cache
     return solve
+
+
+#: Pitch-line speed above which the TEHL levels are refused [m/s]: the turbo zoo pair (131 m/s, entrainment
+#: up to 42 m/s) does not settle its thermal loop (a 12 K temperature change after 300 damped passes), the
+#: other zoo pairs (≤ 13 m/s) and the TEHL validation cases (≤ 20 m/s) do; the film and friction formulas are
+#: fitted below it too (:mod:`femgear.scene.plausibility`)
+MAX_TEHL_SPEED = 100.0
+
+
+def check_tehl_range(scene, pair) -> None:
+    """Refuse ``tehl``/``tehl-point`` up front above :data:`MAX_TEHL_SPEED`, with the levels that run there."""
+    import math
+
+    from femgear.errors import SceneError
+
+    op = scene.operating
+    rpm1 = op.speed_rpm if op.driver == "pinion" else op.speed_rpm * pair.z2 / pair.z1
+    v = 2.0 * math.pi * pair.rw1 * rpm1 / 60.0
+    if v > MAX_TEHL_SPEED:
+        raise SceneError("physics.lubrication", f'"{scene.physics.lubrication}": the pitch-line speed {v:.0f} m/s is '
+                         f"above {MAX_TEHL_SPEED:g} m/s, where the TEHL thermal loop does not settle; use "
+                         '"ehl-line" or "formula"')
+

@@ -100,3 +100,16 @@ def test_a_contact_the_point_solver_cannot_hold_is_solved_as_a_line_contact(monk
     line = solve_tehl_line(w, float(Rx), ue, srr, T, level=scene.numerics.ehl_level, **tehl_setup(scene))
     assert mu[0] == pytest.approx(line.mu, rel=1e-12) and dT[0] == pytest.approx(line.dT_max, rel=1e-12)
     assert "solved as a line contact" in caplog.text
+
+
+def test_the_tehl_levels_are_refused_above_their_speed_range():
+    """The turbo zoo pair (131 m/s pitch line): both TEHL levels refuse before computing, naming the key and
+    the levels that run there; the marine pair (13 m/s) is accepted."""
+    from femgear.scene import load_scene
+
+    zoo = BASE.parents[0] / "zoo"
+    for level in ("tehl", "tehl-point"):
+        with pytest.raises(SceneError, match=r'above 100 m/s.*"ehl-line"') as info:
+            load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"', "modifications.crowning=20e-6"])
+        assert info.value.key == "physics.lubrication"
+    assert load_scene(zoo / "marine.toml", ['physics.lubrication="tehl"']).physics.lubrication == "tehl"
