@@ -16,6 +16,7 @@ import numpy as np
 
 from femgear.contact.hertz import reduced_modulus
 from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
+from femgear.errors import SceneError
 from femgear.lubrication.flash import blok_flash_temperature
 from femgear.lubrication.oil import OilLaw
 from femgear.lubrication.path import solids_of
@@ -36,8 +37,11 @@ def ehl_line_solver(scene, level: int | None = None):
         prev, reuse = None, {}  # warm start from the previous position / map point
         for i in np.ndindex(w.shape):
             ehl = EHLOil(eta0=float(oil.viscosity(0.0, T[i])), alpha=oil.alpha, viscosity="roelands", compressible=True)
-            r = solve_line_dimensional(w[i], R[i], ue[i], E_red, ehl, level=level,
-                                       start=prev, reuse=reuse)
+            try:
+                r = solve_line_dimensional(w[i], R[i], ue[i], E_red, ehl, level=level, start=prev, reuse=reuse)
+            except SceneError as exc:       # the solver's own range (a light, slow contact's long inlet)
+                raise SceneError("physics.lubrication", f'"ehl-line": {exc.message}; use "formula" or "tehl"') \
+                    from None
             prev = r.result
             vs = abs(srr[i]) * ue[i]
             tau = shear_stress(oil.viscosity(r.p, T[i]), vs / r.h, "eyring", tau0)
