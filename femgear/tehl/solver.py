@@ -116,6 +116,11 @@ def tehl_map_solver(scene, level: int = 4, axes: dict | None = None):
     return solve
 
 
+#: The largest Moes M of the ``tehl`` map's envelope that the line EHL solver is validated at (Moes's line film to
+#: 1.2 % at (200, 10), README) and starts from Hertz at: the wind zoo stage's corner (346, 3.5) does not
+#: (neither does 216 at that L); the other zoo pairs' corners stay below 200
+MAX_MAP_M = 200.0
+
 #: Pitch-line speed above which the TEHL levels are refused [m/s]: the turbo zoo pair (131 m/s, entrainment
 #: up to 42 m/s) does not settle its thermal loop (a 12 K temperature change after 300 damped passes), the
 #: other zoo pairs (≤ 13 m/s) and the TEHL validation cases (≤ 20 m/s) do; the film and friction formulas are
@@ -136,4 +141,23 @@ def check_tehl_range(scene, pair) -> None:
         raise SceneError("physics.lubrication", f'"{scene.physics.lubrication}": the pitch-line speed {v:.0f} m/s is '
                          f"above {MAX_TEHL_SPEED:g} m/s, where the TEHL thermal loop does not settle; use "
                          '"ehl-line" or "formula"')
+    if scene.physics.lubrication == "tehl":
+        M, L = map_corner_moes(scene)
+        if M > MAX_MAP_M:
+            raise SceneError("physics.lubrication", f'"tehl": its friction map reaches Moes M = {M:.0f} (L = {L:.2g}) '
+                             f"at twice the load and +40 K, above M = {MAX_MAP_M:g}, the largest at which the line "
+                             'EHL solver is validated and starts; use "ehl-line" (direct solves at the path\'s loads)')
+
+
+def map_corner_moes(scene) -> tuple[float, float]:
+    """Moes (M, L) of the map envelope's heaviest corner: the largest load, smallest radius and entrainment
+    speed and the hottest oil of :func:`tehl_map_axes` (M grows and L falls with each)."""
+    from femgear.contact.film import moes_line
+
+    axes = tehl_map_axes(scene)
+    oil = OilLaw.from_scene(scene)
+    E = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
+    w, R, ue, T = axes["w"].max(), axes["R"].min(), axes["ue"].min(), axes["T"].max()
+    eta = float(oil.viscosity(0.0, T))
+    return tuple(float(x) for x in moes_line(w / (E * R), eta * ue / (E * R), oil.alpha * E))
 

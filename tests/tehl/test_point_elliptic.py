@@ -113,3 +113,16 @@ def test_the_tehl_levels_are_refused_above_their_speed_range():
             load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"', "modifications.crowning=20e-6"])
         assert info.value.key == "physics.lubrication"
     assert load_scene(zoo / "marine.toml", ['physics.lubrication="tehl"']).physics.lubrication == "tehl"
+
+
+def test_tehl_is_refused_where_its_map_leaves_the_line_solvers_range():
+    """The wind stage's map corner reaches Moes M = 346 at L = 4.3, where the line solve does not start: refused
+    before computing, pointing to the direct ehl-line; the FZG C pair's corner (127) is accepted."""
+    from femgear.scene import load_scene
+    from femgear.tehl.solver import map_corner_moes
+
+    zoo = BASE.parents[0] / "zoo"
+    with pytest.raises(SceneError, match=r"Moes M = 346.*\"ehl-line\""):
+        load_scene(zoo / "wind.toml", ['physics.lubrication="tehl"'])
+    assert map_corner_moes(load_scene(zoo / "fzg_c14.toml"))[0] == pytest.approx(126.8, rel=1e-3)
+    load_scene(zoo / "fzg_c14.toml", ['physics.lubrication="tehl"'])
