@@ -4,7 +4,7 @@ Rows: the scenes of ``studies/zoo/`` (and the paper's baseline).  Columns: each 
 levels one at a time on top of the scene's own ``[physics]`` (with the companions a level
 needs: a dynamics level for bidirectional coupling, one-way coupling without dynamics), plus
 the scene's full fidelity (``ltca`` + ``fe3d`` + the point TEHL where the crowned contact is
-inside its range, else the line TEHL; the baseline with the paper's 10 µm crowning).
+inside its range, else the line TEHL, else the FE line EHL; the baseline with the paper's 10 µm crowning).
 
 A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
 
@@ -79,7 +79,8 @@ def cells(path: Path) -> dict[str, list[str]]:
 
 
 def full_fidelity(path: Path) -> list[str]:
-    """The scene's full fidelity: LTCA, 3-D thermal, point TEHL where its range allows, else line TEHL."""
+    """The scene's full fidelity: LTCA, 3-D thermal, and the finest lubrication level its range allows: the point
+    TEHL, else the line TEHL, else the FE line EHL (the turbo pair, above the TEHL levels' speed range)."""
     from femgear.errors import SceneError
 
     base = ['physics.stiffness="ltca"', 'physics.thermal="fe3d"']
@@ -88,11 +89,13 @@ def full_fidelity(path: Path) -> list[str]:
         base += ['physics.dynamics="lumped"', 'physics.coupling="bidirectional"']
     crown = [] if scene.modifications.member(1).crowning + scene.modifications.member(2).crowning > 0 \
         else ["modifications.crowning=10e-6"]
-    try:
-        _load(path, base + crown + ['physics.lubrication="tehl-point"'])
-        return base + crown + ['physics.lubrication="tehl-point"']
-    except SceneError:
-        return base + ['physics.lubrication="tehl"']
+    for level, extra in (("tehl-point", crown), ("tehl", []), ("ehl-line", [])):
+        try:
+            _load(path, base + extra + [f'physics.lubrication="{level}"'])
+            return base + extra + [f'physics.lubrication="{level}"']
+        except SceneError:
+            continue
+    return base
 
 
 def _check(summary: dict, results: dict, hand: dict) -> list[str]:
