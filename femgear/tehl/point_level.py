@@ -51,8 +51,8 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
 
     ``details``: a list that receives each :class:`femgear.tehl.point.TEHLPointResult`
     (films, pressure, temperature for studies); ``solve.last`` holds the inputs and results of the
-    latest call (the film of the run's last pass, :func:`femgear.lubrication.films.level_film`). An uncrowned pair raises SceneError naming
-    ``modifications.crowning``."""
+    latest call (the film of the run's last pass, :func:`femgear.lubrication.films.level_film`).
+    An uncrowned pair raises SceneError naming ``modifications.crowning``."""
     geo = crowned_contact(scene, pair)
     rough = scene.roughness if (scene.roughness.peak or scene.roughness.synthetic) else None
     setup = {**tehl_setup(scene), "roughness": rough, **options}
