@@ -34,6 +34,8 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+import numpy as np
+
 ROOT = Path(__file__).resolve().parents[1]
 ZOO = ROOT / "studies" / "zoo"
 OUT = ROOT / "out" / "zoo_matrix"
@@ -125,7 +127,7 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
             bad.append(f"LTCA load balance error {te['load_balance_error']:.2g}")
         return bad
     if hand["single"] is None:
-        carried = hand["force_scale"] * _trapezoid(w, s)
+        carried = hand["force_scale"] * float(np.trapezoid(w, s))
     else:       # spur: one pair carries F_n inside the single-contact zone (B, D), away from its bounds
         lo, hi = hand["single"]
         margin = 0.1 * (hi - lo)
@@ -134,10 +136,6 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     if abs(carried / hand["force"] - 1) > FORCE_TOLERANCE:
         bad.append(f"path load carries {carried:.4g} N, F_n per helix {hand['force']:.4g} N")
     return bad
-
-
-def _trapezoid(y, x) -> float:
-    return sum(0.5 * (y[i] + y[i + 1]) * (x[i + 1] - x[i]) for i in range(len(x) - 1))
 
 
 def hand_figures(path: Path) -> dict:

@@ -53,8 +53,7 @@ class ContactPath:
 
 def pinion_speed(scene) -> float:
     """Pinion speed [rev/min] from the driving member's speed."""
-    op = scene.operating
-    return op.speed_rpm if op.driver == "pinion" else op.speed_rpm * scene.gear.teeth / scene.pinion.teeth
+    return scene.pinion_rpm
 
 
 def pinion_torque(scene) -> float:

@@ -77,7 +77,7 @@ def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None =
     against the backlash); one line per key is logged, the first one given for it.
     """
     out: list[str] = list(earlier)
-    v_pitch = 2.0 * math.pi * pair.rw1 * _pinion_rpm(scene) / 60.0
+    v_pitch = 2.0 * math.pi * pair.rw1 * scene.pinion_rpm / 60.0
     if v_pitch > MAX_PLAUSIBLE_SPEED:
         out.append(f"operating.speed_rpm: pitch-line speed {v_pitch:.4g} m/s is above {MAX_PLAUSIBLE_SPEED:g} m/s, "
                    "beyond the range the film and friction formulas were fitted in")
@@ -100,11 +100,6 @@ def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None =
     for message in first.values():
         log.warning(message)
     return list(first.values())
-
-
-def _pinion_rpm(scene: Scene) -> float:
-    op = scene.operating
-    return op.speed_rpm if op.driver == "pinion" else op.speed_rpm * scene.gear.teeth / scene.pinion.teeth
 
 
 __all__ = ["check_operating_limits", "plausibility_warnings", "tip_speeds"]

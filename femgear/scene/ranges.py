@@ -240,7 +240,7 @@ def _operating_checks(scene) -> list[str]:
     out: list[str] = []
     z1, z2 = scene.pinion.teeth, scene.gear.teeth
     d1 = _reference_diameter(scene, "pinion")
-    n1 = op.speed_rpm if op.driver == "pinion" else op.speed_rpm * z2 / z1
+    n1 = scene.pinion_rpm
     v = math.pi * d1 * n1 / 60
     if v < MIN_PITCH_SPEED:
         raise SceneError("operating.speed_rpm", f"{_fmt(op.speed_rpm)} rpm is a pitch-line speed of {_fmt(v)} m/s, "

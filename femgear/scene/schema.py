@@ -441,6 +441,12 @@ class Scene(_Frozen):
     rating: Rating = Rating()
 
     @property
+    def pinion_rpm(self) -> float:
+        """Speed of the pinion [rev/min], from the driving member's speed."""
+        op = self.operating
+        return op.speed_rpm if op.driver == "pinion" else op.speed_rpm * self.gear.teeth / self.pinion.teeth
+
+    @property
     def oil_reference_temperature(self) -> float:
         """Temperature at which ``oil.viscosity`` holds [K]."""
         t = self.oil.reference_temperature

@@ -134,9 +134,7 @@ def check_tehl_range(scene, pair) -> None:
 
     from femgear.errors import SceneError
 
-    op = scene.operating
-    rpm1 = op.speed_rpm if op.driver == "pinion" else op.speed_rpm * pair.z2 / pair.z1
-    v = 2.0 * math.pi * pair.rw1 * rpm1 / 60.0
+    v = 2.0 * math.pi * pair.rw1 * scene.pinion_rpm / 60.0
     if v > MAX_TEHL_SPEED:
         raise SceneError("physics.lubrication", f'"{scene.physics.lubrication}": the pitch-line speed {v:.0f} m/s is '
                          f"above {MAX_TEHL_SPEED:g} m/s, where the TEHL thermal loop does not settle; use "
