@@ -1,16 +1,16 @@
 """femgear: finite-element tribo-dynamics of double-helical gear pairs.
 
-Folders follow the data flow of a computation:
+The folders show the layers; imports only point down (``tests/architecture``):
 
-- ``scene``      TOML scene files validated into frozen models (SI units).
-- ``geometry``   involute/helical gear-pair geometry and kinematics (pure numpy).
-- ``contact``    Hertz contact and EHL film-thickness formulas (analytic oracles).
-- ``ehl``        finite-element (thermal) elastohydrodynamic lubrication.
-- ``body``       gear-body heat conduction, thermo-elasticity, FE tooth compliance.
-- ``stiffness``  time-varying mesh stiffness (ISO 6336, potential energy, FE).
-- ``dynamics``   gear-rotor dynamics; ``excitation`` its error sources.
-- ``wear``       Archard wear; ``coupling`` the bidirectional outer loop.
-- ``io``, ``plot``, ``cli``  results files, figures, command line.
+- ``physics``  the leaves: ``geometry`` (involute/helical kinematics), ``mesh`` (gmsh),
+  ``contact`` (Hertz, film formulas), ``lubrication`` (oil laws, traction), ``ehl`` and
+  ``tehl`` (isothermal and thermal EHL), ``body`` (FE heat conduction, thermo-elasticity,
+  compliance), ``stiffness`` (mesh stiffness), ``ltca`` (loaded tooth contact),
+  ``excitation`` (errors, backlash), ``wear`` (Archard), ``rating`` (ISO 6336).
+- ``system``   ``dynamics`` (gear-rotor model) and ``coupling`` (the outer loop).
+- ``scene``, ``rexs``  input: TOML scenes and REXS gear data, validated, SI.
+- ``case``, ``pipeline``, ``results``  the driver: bind a scene once, run it, typed results.
+- ``edge``     ``io`` (files), ``plot`` (figures), ``cli``, ``sweep``.
 
 Importing femgear has no side effects and does not import gmsh, VTK or matplotlib.
 """

@@ -2,6 +2,6 @@
 
 import sys
 
-from femgear.cli import main
+from femgear.edge.cli import main
 
 sys.exit(main())

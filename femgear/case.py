@@ -3,7 +3,7 @@
 A :class:`Case` is built once per run by :func:`build_case` (the scene's edge): the gear
 pair, the operating point, the one path grid every sub-model shares, and the scene's
 typed tables (materials, oil, members, errors, resolution knobs, physics levels).  The
-driver level (:mod:`femgear.pipeline`, :mod:`femgear.coupling`, :mod:`femgear.dynamics`)
+driver level (:mod:`femgear.pipeline`, :mod:`femgear.system.coupling`, :mod:`femgear.system.dynamics`)
 takes a Case; physics functions below it take arrays, numbers and typed objects.
 
 Lifetimes (ROSS habit): the pair, materials and oil stay fixed over a study; the
@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from femgear.geometry import GearPair, PathKinematics, kinematics, mesh_frequency, path_positions
+from femgear.physics.geometry import GearPair, PathKinematics, kinematics, mesh_frequency, path_positions
 from femgear.scene.schema import (
     Errors,
     Friction,

@@ -9,7 +9,7 @@ TEHL map) announce themselves before they start (:func:`announce`): an :class:`E
 the DOF, memory and time is logged (INFO, i.e. ``-v``; at :data:`NOTICE`, shown by default, when
 it exceeds :data:`LONG_STAGE_SECONDS`), and a memory estimate over :func:`memory_budget` raises
 :class:`femgear.errors.ResourceError` naming the scene key and the level that fits — the
-mechanism ``femgear ehl --level`` uses (:mod:`femgear.cli.limits`).  :class:`Progress` logs
+mechanism ``femgear ehl --level`` uses (:mod:`femgear.edge.cli.limits`).  :class:`Progress` logs
 "done/total" lines for stages over :data:`PROGRESS_SECONDS`.  :func:`interruptible` runs a stage in a
 forked child, so that Ctrl-C is taken at once even inside a long compiled call that holds the
 interpreter lock (CHOLMOD's factorisation).

@@ -5,15 +5,15 @@ pressure, film thickness, sliding) and the mesh stiffness of the ``stiffness`` l
 
 Without dynamics (``dynamics = "none"``), the sub-models run once at the static load:
 friction and contact temperature from the ``lubrication`` level (the registry of
-:mod:`femgear.lubrication.levels`), the thermal flank deviation (``thermal``) for
+:mod:`femgear.physics.lubrication.levels`), the thermal flank deviation (``thermal``) for
 ``thermal.flank_temperature_rise`` and the wear depth after ``wear.cycles``.
 
-With dynamics, everything goes through the coupling loop of :mod:`femgear.coupling`:
+With dynamics, everything goes through the coupling loop of :mod:`femgear.system.coupling`:
 ``coupling = "one-way"`` stops after the first dynamic pass, ``"bidirectional"``
 iterates to convergence.
 
 :func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult`;
-:func:`run_scene` binds a scene, runs it and writes the files (:mod:`femgear.io.run`).
+:func:`run_scene` binds a scene, runs it and writes the files (:mod:`femgear.edge.io.run`).
 """
 
 from __future__ import annotations
@@ -28,8 +28,12 @@ from typing import Any
 import numpy as np
 
 from femgear.case import Case, build_case
-from femgear.contact.path import ContactPath, contact_along_path
-from femgear.coupling.loop import (
+from femgear.physics.contact.path import ContactPath, contact_along_path
+from femgear.physics.lubrication.films import level_film
+from femgear.physics.lubrication.levels import friction_along_path
+from femgear.physics.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
+from femgear.results import RunResult, Tribology
+from femgear.system.coupling.loop import (
     CouplingSetup,
     CouplingState,
     line_stiffness,
@@ -37,11 +41,7 @@ from femgear.coupling.loop import (
     ltca_reference,
     run_coupled,
 )
-from femgear.coupling.thermal import ThermalUnits, roll_distances, thermal_units
-from femgear.lubrication.films import level_film
-from femgear.lubrication.levels import friction_along_path
-from femgear.results import RunResult, Tribology
-from femgear.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
+from femgear.system.coupling.thermal import ThermalUnits, roll_distances, thermal_units
 
 
 def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None,
@@ -75,11 +75,11 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
 
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
-    """The :class:`femgear.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
+    """The :class:`femgear.physics.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
     ltca = stiffness.info.get("ltca") if stiffness.level == "ltca" else None
     if ltca is None or not ltca.line_load:
         return None
-    from femgear.ltca.te import analyse_cycle
+    from femgear.physics.ltca.te import analyse_cycle
 
     m, op = case.material, case.scene.operating
     return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, op.torque, n_harmonics)
@@ -95,14 +95,14 @@ def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
         return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
                          tribology.film)
     except ValueError as exc:
-        logging.getLogger("femgear.rating").warning("rating: not computed: %s", exc)
+        logging.getLogger("femgear.physics.rating").warning("rating: not computed: %s", exc)
         return None
 
 
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,
                      wear_checkpoint: Path | None = None) -> Tribology:
     """Friction, thermal deviation and wear once, at the static load: friction at the contact
-    pass's shared line load w(u) (:mod:`femgear.contact.sharing`), wear with the load shared
+    pass's shared line load w(u) (:mod:`femgear.physics.contact.sharing`), wear with the load shared
     along the contact lines by the local pair stiffness (:func:`line_stiffness`), with ``ltca`` as the
     LTCA cycle shares it (:func:`ltca_reference`)."""
     w = np.asarray(contact.line_load, dtype=float)      # load sharing between the pairs in contact
@@ -114,7 +114,7 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         zeta = units.deviation(case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)
     cycles, steps, faces = 0.0, 0, {}
     if case.levels.wear == "archard":
-        from femgear.wear import WearSetup, run_wear
+        from femgear.physics.wear import WearSetup, run_wear
 
         pair = case.pair
         k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
@@ -125,8 +125,8 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / pair.n_helices,
                           c_l=line_stiffness(case, k_mean, stiffness),
                           coefficient=case.wear.coefficient, hardness=case.material.hardness, reference=ref)
-        if case.wear.field == "face" and ref is not None:     # face-resolved (femgear.wear.face); no checkpoint
-            from femgear.wear.face import run_face_wear
+        if case.wear.field == "face" and ref is not None:     # face-resolved (femgear.physics.wear.face); no checkpoint
+            from femgear.physics.wear.face import run_face_wear
 
             face = ltca_face_reference(pair, case.path.u, info, np.zeros(case.path.u.size), n_zeta=case.wear.face_points)
             state = run_face_wear(setup, face, case.wear.cycles)
@@ -168,7 +168,7 @@ class WrittenRun:
 def run_scene(scene, out_dir: str | Path, plots: bool = True,
               progress: Callable[[CouplingState], None] | None = None) -> WrittenRun:
     """Bind ``scene``, run it and write ``results.json`` (and figures) into ``out_dir``."""
-    from femgear.io.run import write_run
+    from femgear.edge.io.run import write_run
 
     out_dir = Path(out_dir)
     result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")

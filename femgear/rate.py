@@ -1,7 +1,7 @@
 """Bind a scene's ``[rating]`` table to the four ISO ratings and femgear's own figures (driver level).
 
 :func:`rate_case` is called by the driver (``femgear run``: :func:`femgear.pipeline.run_case`;
-``femgear info``) and returns the frozen :class:`femgear.rating.suite.PairRating` that the
+``femgear info``) and returns the frozen :class:`femgear.physics.rating.suite.PairRating` that the
 writers only read.  Keys of ``[rating]`` left out take the defaults documented in the schema
 (and docs/rating.md); one log line names them.  Inputs outside a method's range give one
 line each (key and limit) and flag the factor (``PairRating.flags``), printed by ``femgear info``.
@@ -14,14 +14,14 @@ import math
 
 import numpy as np
 
-from femgear.contact.path import ContactPath, pinion_speed, pinion_torque
-from femgear.geometry import GearPair
-from femgear.lubrication.flash import thermal_effusivity
-from femgear.rating.bending import BendingInputs
-from femgear.rating.scuffing import OIL_FACTOR, ScuffingInputs
-from femgear.rating.suite import OwnFigures, PairRating, rate_pair
+from femgear.physics.contact.path import ContactPath, pinion_speed, pinion_torque
+from femgear.physics.geometry import GearPair
+from femgear.physics.lubrication.flash import thermal_effusivity
+from femgear.physics.rating.bending import BendingInputs
+from femgear.physics.rating.scuffing import OIL_FACTOR, ScuffingInputs
+from femgear.physics.rating.suite import OwnFigures, PairRating, rate_pair
 
-log = logging.getLogger("femgear.rating")
+log = logging.getLogger("femgear.physics.rating")
 
 #: R_a of the flank by finishing process [m] (typical values, docs/rating.md)
 FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
@@ -47,10 +47,10 @@ def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperat
                 level: str | None, film=None) -> OwnFigures:
     """femgear's film, λ and contact temperature along the contact pass's path (``temperature_rise``: ΔT of the
     lubrication level ``level`` on the same positions; None: computed with the ``formula`` level; ``film``: the
-    :class:`femgear.lubrication.films.LevelFilm` of the level that ran, else the contact pass's h_min)."""
+    :class:`femgear.physics.lubrication.films.LevelFilm` of the level that ran, else the contact pass's h_min)."""
     if temperature_rise is None or level in (None, "none", "constant"):
         from femgear.case import build_case
-        from femgear.lubrication.levels import lubrication_solver
+        from femgear.physics.lubrication.levels import lubrication_solver
 
         k = contact.kin
         w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
@@ -68,7 +68,7 @@ def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperat
 
 
 def _fillets(scene, pair: GearPair):
-    from femgear.body.fillet import fillet_stress
+    from femgear.physics.body.fillet import fillet_stress
 
     force = pinion_torque(scene) / pair.r1 / pair.n_helices / (pair.b * math.cos(pair.alpha_wt))
     points = (pair.u_start + pair.p_bt, pair.u_end - pair.p_bt)   # outer single contact of pinion, gear

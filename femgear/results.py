@@ -2,7 +2,7 @@
 
 :class:`RunResult` is the one object a run produces: the case, the quasi-static contact
 pass, the mesh stiffness, the tribology along the case's path grid and, with dynamics,
-the coupled result.  The JSON layout written from it (:mod:`femgear.io.run`) is the
+the coupled result.  The JSON layout written from it (:mod:`femgear.edge.io.run`) is the
 documented contract of ``results.json``.
 """
 
@@ -13,12 +13,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.case import Case
-from femgear.contact.path import ContactPath
-from femgear.coupling.loop import CoupledResult
-from femgear.ltca.te import TEAnalysis
-from femgear.lubrication.films import LevelFilm
-from femgear.rating.suite import PairRating
-from femgear.stiffness.tvms import MeshStiffness
+from femgear.physics.contact.path import ContactPath
+from femgear.physics.ltca.te import TEAnalysis
+from femgear.physics.lubrication.films import LevelFilm
+from femgear.physics.rating.suite import PairRating
+from femgear.physics.stiffness.tvms import MeshStiffness
+from femgear.system.coupling.loop import CoupledResult
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,7 @@ class Tribology:
     face_grid: np.ndarray | None = None
     wear_face: np.ndarray | None = None         #: (member, helix, n, m) wear depth, ``wear.field = "face"`` [m]
     thermal_face: np.ndarray | None = None      #: (member, helix, n, m) ζ_T of ``thermal = "fe3d"`` [m]
-    #: the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.lubrication.films`)
+    #: the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.physics.lubrication.films`)
     film: LevelFilm | None = None
 
 

@@ -1,6 +1,6 @@
 """Summary figures of a scene (geometry, quasi-static contact, ISO 6336-2 rating, mesh power loss), as plain dicts.
 
-This module binds a scene to the pure rating functions of :mod:`femgear.rating`
+This module binds a scene to the pure rating functions of :mod:`femgear.physics.rating`
 (``[rating]`` table, operating point, lubrication level) and is used by ``femgear info``
 and by the ``femgear run`` summary.
 """
@@ -12,12 +12,19 @@ from typing import Any
 
 import numpy as np
 
-from femgear.contact.path import ContactPath, pinion_speed, pinion_torque
-from femgear.geometry import GearPair, mesh_frequency
-from femgear.rating import LoadFactors, MaterialLimits, MeshPowerLoss, PittingRating, contact_stress, mesh_power_loss
-from femgear.rating import pitting_rating as _pitting_rating
-from femgear.rating.suite import PairRating
-from femgear.rating.summary import pair_rating_summary
+from femgear.physics.contact.path import ContactPath, pinion_speed, pinion_torque
+from femgear.physics.geometry import GearPair, mesh_frequency
+from femgear.physics.rating import (
+    LoadFactors,
+    MaterialLimits,
+    MeshPowerLoss,
+    PittingRating,
+    contact_stress,
+    mesh_power_loss,
+)
+from femgear.physics.rating import pitting_rating as _pitting_rating
+from femgear.physics.rating.suite import PairRating
+from femgear.physics.rating.summary import pair_rating_summary
 
 #: lubrication levels cheap enough for a summary; heavier ones are summarised with ``formula``
 SUMMARY_FRICTION_LEVELS = ("none", "constant", "formula")
@@ -124,7 +131,7 @@ def path_friction(scene, pair: GearPair, contact: ContactPath) -> tuple[np.ndarr
     """μ along ``contact`` at the oil temperature, of the scene's lubrication level (levels beyond
     ``formula``, FE EHL and TEHL, are summarised with ``formula``; the returned level says which)."""
     from femgear.case import build_case
-    from femgear.lubrication.levels import lubrication_solver
+    from femgear.physics.lubrication.levels import lubrication_solver
 
     level = scene.physics.lubrication
     level = level if level in SUMMARY_FRICTION_LEVELS else "formula"
@@ -138,7 +145,7 @@ def path_friction(scene, pair: GearPair, contact: ContactPath) -> tuple[np.ndarr
 def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshPowerLoss, str]:
     """Mesh power loss on the positions of ``contact`` with μ of the scene's lubrication level
     (:func:`path_friction`); ``femgear run`` carries the level's own μ."""
-    from femgear.contact.path import contact_along_path, zone_grid
+    from femgear.physics.contact.path import contact_along_path, zone_grid
 
     if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
         # the load jumps at B and D must lie on the grid for an exact path integral
@@ -151,10 +158,10 @@ def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshP
 
 
 def flash_summary(scene, pair: GearPair, contact: ContactPath) -> dict[str, Any]:
-    """Blok's maximum flash temperature (:func:`femgear.lubrication.flash.blok_flash_temperature`)
+    """Blok's maximum flash temperature (:func:`femgear.physics.lubrication.flash.blok_flash_temperature`)
     along the path, with the line load of the load sharing and μ of :func:`path_friction`: at the
     start A and the end E of contact (the largest sliding) and its maximum."""
-    from femgear.lubrication.flash import blok_flash_temperature, thermal_effusivity
+    from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
 
     mu, level = path_friction(scene, pair, contact)
     k, m = contact.kin, scene.material
@@ -169,7 +176,7 @@ def flash_summary(scene, pair: GearPair, contact: ContactPath) -> dict[str, Any]
 def stiffness_summary(scene, pair: GearPair) -> dict[str, Any]:
     """ISO 6336-1:2019 method B single and mesh stiffness per unit face width (SI: N/m per m), at the
     scene's load F_t K_A / b (below 100 N/mm the standard reduces c')."""
-    from femgear.stiffness.iso6336 import iso6336_stiffness
+    from femgear.physics.stiffness.iso6336 import iso6336_stiffness
 
     F_t = pinion_torque(scene) / pair.r1
     line_load = F_t * scene.rating.application_factor / (pair.b * pair.n_helices)

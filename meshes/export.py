@@ -2,13 +2,13 @@
 
     python meshes/export.py [SCENE] [--level N] [--h MESH_SIZE] [--out DIR]
 
-femgear meshes on the fly (gmsh through :mod:`femgear.mesh`), so no reference mesh is stored in
+femgear meshes on the fly (gmsh through :mod:`femgear.physics.mesh`), so no reference mesh is stored in
 git.  This writes into ``DIR`` (default ``out/meshes/``), as ``.vtu`` via meshio:
 
 - ``pinion_body.vtu``, ``gear_body.vtu``: the 3-D member bodies the LTCA solves
-  (:func:`femgear.mesh.segment.member_body`: both helices of opposite hand, the groove, the
+  (:func:`femgear.physics.mesh.segment.member_body`: both helices of opposite hand, the groove, the
   stagger, the rack-generated flank and trochoid fillet, the rim down to the bore), built from the
-  scene as :func:`femgear.ltca.analysis.body_options` does, at body resolution ``--level`` (default 1,
+  scene as :func:`femgear.physics.ltca.analysis.body_options` does, at body resolution ``--level`` (default 1,
   the ``ltca`` stiffness level's);
 - ``pinion_section.vtu``, ``gear_section.vtu``: the 2-D transverse sections (three teeth down to
   the bore) of the ``fe`` levels, mesh size ``--h`` (default m_n/4).
@@ -17,7 +17,7 @@ Each file holds the volume (or area) cells with ``region`` = 0 and its named bou
 triangles (lines in 2-D) with ``region`` = the tag of their name; the tag → name table is written
 next to it as ``<name>_regions.json`` (with the facet count of each region), so in ParaView a
 Threshold on ``region`` picks one: the flanks per helix, tooth and side
-(``flank_<left|right>_t<k>_<drive|coast>``, :func:`femgear.mesh.segment.flank_regions`), ``fillet``,
+(``flank_<left|right>_t<k>_<drive|coast>``, :func:`femgear.physics.mesh.segment.flank_regions`), ``fillet``,
 ``tip``, ``bore``, ``rim``, ``end0``/``end1``, ``groove_wall``/``groove_floor``.  The regions partition
 the boundary: every boundary facet is written once.
 """
@@ -41,8 +41,8 @@ def write_regions(path: Path, mesh, regions: dict[str, np.ndarray], aliases: dic
     """
     import meshio
 
-    from femgear.io.atomic import write_text_atomic
-    from femgear.io.paraview import write_vtu
+    from femgear.edge.io.atomic import write_text_atomic
+    from femgear.edge.io.paraview import write_vtu
 
     dim = mesh.p.shape[0]
     cell_type, facet_type = ("tetra", "triangle") if dim == 3 else ("triangle", "line")
@@ -64,7 +64,7 @@ def write_regions(path: Path, mesh, regions: dict[str, np.ndarray], aliases: dic
 def body_regions(body, pair, member: int, spec) -> tuple[dict, dict]:
     """The body's boundary partitioned by name (the flanks per helix, tooth and side) and the aliases of the
     LTCA's loaded flanks."""
-    from femgear.mesh.segment import flank_regions
+    from femgear.physics.mesh.segment import flank_regions
 
     regions = {n: f for n, f in body.boundaries.items() if n not in AGGREGATES}
     regions.update(flank_regions(body, pair, member, spec))
@@ -74,10 +74,10 @@ def body_regions(body, pair, member: int, spec) -> tuple[dict, dict]:
 
 def export(scene_path: str, level: int = 1, h: float | None = None, out: Path | None = None) -> list[Path]:
     """Write the member bodies and the transverse sections of the scene; return the ``.vtu`` paths."""
-    from femgear.geometry import GearPair
-    from femgear.ltca.analysis import body_options
-    from femgear.mesh.section import gear_section
-    from femgear.mesh.segment import default_spec, member_body
+    from femgear.physics.geometry import GearPair
+    from femgear.physics.ltca.analysis import body_options
+    from femgear.physics.mesh.section import gear_section
+    from femgear.physics.mesh.segment import default_spec, member_body
     from femgear.scene import load_scene
 
     scene = load_scene(scene_path)

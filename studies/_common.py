@@ -1,7 +1,7 @@
 """Helpers shared by the paper-comparison studies: one coupled case, a process pool, the paper's tables.
 
 A *case* is a list of scene overrides of ``studies/paper_baseline.toml`` run through the
-bidirectional coupling loop (:func:`femgear.coupling.run_coupled`).  :func:`coupled_case`
+bidirectional coupling loop (:func:`femgear.system.coupling.run_coupled`).  :func:`coupled_case`
 returns a plain, picklable dict (amplitudes, the fields along the path, the excitation
 tables, a few time series) so cases can run in worker processes.
 
@@ -56,9 +56,9 @@ def coupled_case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = Fal
     from dataclasses import asdict
 
     from femgear.case import build_case
-    from femgear.coupling import CouplingSetup, coupling_iterations, run_coupled
-    from femgear.coupling.profile import mesh_deviation
     from femgear.scene import load_scene
+    from femgear.system.coupling import CouplingSetup, coupling_iterations, run_coupled
+    from femgear.system.coupling.profile import mesh_deviation
 
     t0 = time.perf_counter()
     paths = ["numerics.path_points=31"] if coarse else ["numerics.path_points=61"]

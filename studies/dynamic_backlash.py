@@ -5,8 +5,8 @@
 b(t) = b0 + (d_D + d_C)/2: the half-width of the dead zone of the left helix, with d_D,
 d_C the drive- and coast-flank deviations (wear h1 + h2 on the drive flanks only,
 thermal expansion −(ζ_T1 + ζ_T2) on both) averaged over the contact lines at that
-instant (:func:`femgear.coupling.profile.mesh_deviation`; how it enters the dynamics,
-once: :class:`femgear.dynamics.model.MeshDeviation`).  The paper's
+instant (:func:`femgear.system.coupling.profile.mesh_deviation`; how it enters the dynamics,
+once: :class:`femgear.system.dynamics.model.MeshDeviation`).  The paper's
 b(t) = b0 + w1 + w2 − ζ_T1 − ζ_T2 counts the wear fully in the half-backlash and again
 in the mesh deflection; femgear's half-width opens by w/2 (the drive flank moves by w,
 the coast flank not at all).  b0 = ``pair.backlash`` = 50 µm.

@@ -74,7 +74,7 @@ def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml", ecc
 def run(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml", coarse: bool = False,
         stiffness: str = "pem", level: str = "lumped", load_stiffness: float = 0.0) -> dict:
     from femgear.case import build_case
-    from femgear.dynamics import build_model, run_dynamics
+    from femgear.system.dynamics import build_model, run_dynamics
 
     cycles, transient = (60.0, 30.0) if coarse else (100.0, 50.0)
     rows = []
@@ -136,7 +136,7 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "eccentricity" / "eccentri
         axes[i].set_ylabel("[µm]")
         axes[i].set_yscale("log")
         axes[i].legend(fontsize=8)
-    from femgear.plot import save_figure
+    from femgear.edge.plot import save_figure
 
     return save_figure(fig, path)
 

@@ -1,7 +1,7 @@
 """Elliptic point-contact EHL: Hc against Nijenbanning-Venner-Moes (1994) over lambda = R_x/R_y.
 
 For each (M, L) and lambda the nested solve gives Hc on every level (the domain follows the
-Hertz ellipse, stretched cells hy/hx = b/a: :func:`femgear.ehl.point.default_domain`); the table
+Hertz ellipse, stretched cells hy/hx = b/a: :func:`femgear.physics.ehl.point.default_domain`); the table
 shows the finest-level Hc, its change from the level below (grid convergence), the deviation
 from NVM and from Hamrock-Dowson (1977, exact k), the seconds of the solve and those of the
 circular contact (lambda = 1) at the same number of nodes across the contact.
@@ -21,9 +21,9 @@ import json
 import os
 import time
 
-from femgear.contact.film import hamrock_dowson_central, nvm_central
-from femgear.contact.hertz import ellipticity_exact
-from femgear.ehl.point import solve_point
+from femgear.physics.contact.film import hamrock_dowson_central, nvm_central
+from femgear.physics.contact.hertz import ellipticity_exact
+from femgear.physics.ehl.point import solve_point
 
 NVM_RANGE = (1.0 / 16.0, 1.0)
 

@@ -1,14 +1,14 @@
 """Domain convergence of the elliptic point EHL: Hc on enlarged domains (issue 15, helper h15d).
 
 For each (M, L) and lambda = R_x/R_y, Hc is solved on the default domain
-(:func:`femgear.ehl.point.default_domain`) and on domains enlarged k times (inlet and Y
+(:func:`femgear.physics.ehl.point.default_domain`) and on domains enlarged k times (inlet and Y
 half-width x k, ``default_domain(..., enlarge=(k, k))``, X = 0 kept on a node), each on two
 levels (grid convergence), then extrapolated to the unbounded domain from the two largest k
 assuming Hc(k) = Hc_inf + c / k: the pressure of a slender contact decays along the contact
 line like the load of a local rigid line contact, 1/h(Y) ~ 1/Y^2, so the load beyond the
 domain edge, and with it the error of Hc, falls like 1/k (docs/elliptic_regimes.md). The
 table puts the result beside Nijenbanning, Venner & Moes (1994, Wear 176:217;
-:func:`femgear.contact.film.nvm_central`) and Hamrock & Dowson (1977, J. Lubr. Technol.
+:func:`femgear.physics.contact.film.nvm_central`) and Hamrock & Dowson (1977, J. Lubr. Technol.
 99:264, at 2U = 1e-11; :func:`studies.ehl_elliptic.hd_moes`), and reports where the load
 goes: the share of the load upstream of X = -2a, the share outside |Y| <= b and the centre
 pressure P(0, 0) (Hertzian units of the circular contact).
@@ -27,9 +27,9 @@ import time
 
 import numpy as np
 
-from femgear.contact.film import nvm_central
-from femgear.ehl import params as pr
-from femgear.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
 from studies.ehl_elliptic import hd_moes
 
 

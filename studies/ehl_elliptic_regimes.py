@@ -2,11 +2,11 @@
 how much of the film the default domain truncates (issue 15, helper h15c).
 
 For each (M, L) and lambda = R_x/R_y the table prints femgear's Hc (multigrid, default domain
-:func:`femgear.ehl.point.default_domain`), optionally Hc on an enlarged domain (inlet x fx,
+:func:`femgear.physics.ehl.point.default_domain`), optionally Hc on an enlarged domain (inlet x fx,
 Y half-width x fy; Newton, which starts where the multigrid's cold start finds no node inside
 the Hertz ellipse), NVM's Hc and its four asymptotes
 (Nijenbanning, Venner & Moes 1994, Wear 176:217; terms as in
-:func:`femgear.contact.film.nvm_central`):
+:func:`femgear.physics.contact.film.nvm_central`):
 
     H_RI = 145 (1 + 0.796 lam^(14/15))^(-15/7) lam^-1 M^-2      rigid-isoviscous
     H_EI = 3.18 c^(-14/25) lam^(-1/15) M^(-2/15)                 elastic-isoviscous
@@ -30,10 +30,10 @@ import json
 import math
 import os
 
-from femgear.contact.film import nvm_central
-from femgear.ehl import params as pr
-from femgear.ehl.grid import Domain
-from femgear.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.grid import Domain
+from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
 
 
 def nvm_terms(M: float, L: float, lam: float) -> dict:
@@ -107,7 +107,7 @@ def plot(rows: list[dict]) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from femgear.contact.film import rigid_isoviscous_point
+    from femgear.physics.contact.film import rigid_isoviscous_point
     cases = sorted({(r["M"], r["L"]) for r in rows})
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4), squeeze=False)
     for ax, (M, L) in zip(axes[0], cases):

@@ -10,8 +10,8 @@ import argparse
 import json
 import math
 
-from femgear.contact.film import nvm_central
-from femgear.ehl.point import solve_point
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl.point import solve_point
 
 
 def setup() -> argparse.Namespace:

@@ -27,10 +27,10 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import numpy as np
 
-from femgear.contact.film import nvm_central, rigid_isoviscous_point
-from femgear.ehl import params as pr
-from femgear.ehl.grid import Domain
-from femgear.ehl.point import solve_point
+from femgear.physics.contact.film import nvm_central, rigid_isoviscous_point
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.grid import Domain
+from femgear.physics.ehl.point import solve_point
 
 try:
     from studies.ehl_grid_convergence import richardson

@@ -15,10 +15,10 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.contact.path import contact_along_path
-from femgear.contact.sharing import single_contact_bounds
-from femgear.geometry.gear import GearPair
-from femgear.rating import LoadFactors, MaterialLimits, contact_stress, pitting_rating
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.contact.sharing import single_contact_bounds
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.rating import LoadFactors, MaterialLimits, contact_stress, pitting_rating
 from femgear.scene import load_scene
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -8,14 +8,14 @@ studies/temperature_rise.py (a 45 K flank temperature rise raises velocity, slig
 lowers displacement) measure, on the coupled baseline with ``physics.stiffness`` =
 ``pem`` (the paper's energy method) and ``ltca`` (unmodified flanks, as the paper's gear).
 With ``pem`` the wear and thermal deviations enter as contact-line means (drive/coast
-deviation tables, :mod:`femgear.coupling.profile`); with ``ltca`` each coupling pass
+deviation tables, :mod:`femgear.system.coupling.profile`); with ``ltca`` each coupling pass
 re-runs the LTCA on the worn and expanded drive flanks (the compliance is reused;
-:func:`femgear.dynamics.build.with_deviated_tooth_contact`) and the coast flanks take the
+:func:`femgear.system.dynamics.build.with_deviated_tooth_contact`) and the coast flanks take the
 contact-line mean of the thermal expansion.  Amplitudes: half peak-to-peak of the member centres, steady state; Δ % against
 the new gear (wear cases) or against thermal off (45 K).  With ``ltca`` the wear and the
 lubrication load are shared along the contact lines like the LTCA cycles (the wear from the
 unworn cycle, the contact load of each pass from its deviated cycle:
-:func:`femgear.coupling.loop.ltca_reference`).  Then the cost of a coupling pass (median
+:func:`femgear.system.coupling.loop.ltca_reference`).  Then the cost of a coupling pass (median
 wall time of the LTCA re-run, the dynamics including it, the wear, the contact response),
 the passes to convergence and the largest wear depth.  Prints a table and a JSON line;
 writes ``out/ltca_claims/ltca_claims.json``.

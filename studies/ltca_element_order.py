@@ -2,8 +2,8 @@
 
     python studies/ltca_element_order.py [--quick | --ltca | --split [--max-p1-level N] [--max-p2-level N]]
 
-All on the member bodies of the baseline scene (:func:`femgear.mesh.segment.member_body`: both
-helices, the groove, the rim down to the scene's bore, :func:`femgear.ltca.analysis.body_options`).
+All on the member bodies of the baseline scene (:func:`femgear.physics.mesh.segment.member_body`: both
+helices, the groove, the rim down to the scene's bore, :func:`femgear.physics.ltca.analysis.body_options`).
 For the baseline pinion, a 3 × 3 flank grid (hat loads of 1 N): the FE approach at the
 reading depth under the mid-flank, mid-face load (``fe_self``) and its half-space-free bulk
 part, with DOFs and wall time, for P1 at segment levels 0–3 and P2 at levels 0–1
@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _baseline():
-    from femgear.geometry.gear import GearPair
+    from femgear.physics.geometry.gear import GearPair
     from femgear.scene import load_scene
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
@@ -37,8 +37,8 @@ def _baseline():
 
 def _pinion_spec(scene, pair, level: int):
     """The pinion body of the scene at ``level`` (bore, groove and stagger as the LTCA builds it)."""
-    from femgear.ltca.analysis import body_options
-    from femgear.mesh.segment import default_spec
+    from femgear.physics.ltca.analysis import body_options
+    from femgear.physics.mesh.segment import default_spec
 
     body = body_options(scene)
     return default_spec(pair, 1, level, r_bore=body["bore_radius"][0], groove=body["groove_width"],
@@ -46,7 +46,7 @@ def _pinion_spec(scene, pair, level: int):
 
 
 def run(quick: bool = False) -> list[dict]:
-    from femgear.ltca.compliance import member_compliance
+    from femgear.physics.ltca.compliance import member_compliance
 
     scene, pair = _baseline()
     cases = [(1, 0), (1, 1)] + ([] if quick else [(1, 2), (1, 3)]) + [(2, 0)] + ([] if quick else [(2, 1)])
@@ -69,7 +69,7 @@ def run(quick: bool = False) -> list[dict]:
 def run_ltca() -> list[dict]:
     """The LTCA outputs (mean stiffness, LTE p-p and mean; 5 × 7 grid, 64 phases, 200 N m) for P1 at levels 1
     and 3 and P2 at level 0 (the P2 build takes ~12 min on 2 shared cores)."""
-    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
 
     scene, pair = _baseline()
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
@@ -96,10 +96,10 @@ def run_split(max_p1: int = 5, max_p2: int = 1) -> list[dict]:
     """
     import numpy as np
 
-    from femgear.body.elastic3d import Elastic3D
-    from femgear.ltca.compliance import flank_unit_loads, halfspace_reading, reading_points
-    from femgear.ltca.flank import half_thickness, roll_range
-    from femgear.mesh.segment import member_body
+    from femgear.physics.body.elastic3d import Elastic3D
+    from femgear.physics.ltca.compliance import flank_unit_loads, halfspace_reading, reading_points
+    from femgear.physics.ltca.flank import half_thickness, roll_range
+    from femgear.physics.mesh.segment import member_body
 
     scene, pair = _baseline()
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio

@@ -5,7 +5,7 @@
 The baseline (500 rpm, 200 N m) with the LTCA mesh, the 3-D thermal level and the face-resolved wear
 field, at a bulk flank rise ``thermal.flank_temperature_rise = 30`` K and no wear (``wear.cycles = 0``):
 the deviation the LTCA is re-run on is then −ζ_T alone.  Face-resolved: ζ_T(member, helix, u, ζ) of the
-3-D unit solutions (:meth:`femgear.coupling.thermal.ThermalUnits.face`); face-uniform: its face mean ζ_T(u)
+3-D unit solutions (:meth:`femgear.system.coupling.thermal.ThermalUnits.face`); face-uniform: its face mean ζ_T(u)
 (what the loop used before).  Prints per variant the loaded TE p-p, the helix forces' cycle means, the
 load-weighted face centre ζ̄/b of each helix and the load share of the apex half (ζ > b/2), then one
 one-way coupled pass of each (the loop's own path: ``setup.thermal`` with and without its 3-D bodies)
@@ -33,8 +33,8 @@ OVER = ['physics.stiffness="ltca"', 'physics.thermal="fe3d"', 'wear.field="face"
 
 def _setup(coarse: bool, crowning: float = 0.0):
     from femgear.case import build_case
-    from femgear.coupling import CouplingSetup
     from femgear.scene import load_scene
+    from femgear.system.coupling import CouplingSetup
 
     over = OVER + [f"numerics.path_points={31 if coarse else 61}", f"modifications.crowning={crowning}"]
     if coarse:
@@ -56,9 +56,9 @@ def load_profile(res, b: float, n: int = 8) -> dict:
 
 def compare(setup) -> dict:
     """The deviated LTCA cycle on −ζ_T face-resolved and face-uniform, from the loop's own functions."""
-    from femgear.coupling.loop import _removed_deviation, _thermal
     from femgear.errors import ConvergenceError
-    from femgear.ltca.level import deviated_cycle
+    from femgear.physics.ltca.level import deviated_cycle
+    from femgear.system.coupling.loop import _removed_deviation, _thermal
 
     n = setup.kin.u.size
     rise, zeta, face = _thermal(setup, np.zeros(n))
@@ -85,8 +85,8 @@ def compare(setup) -> dict:
 
 def passes(setup) -> dict:
     """One one-way coupled pass with the face-resolved growth and with the face-uniform one (bodies dropped)."""
-    from femgear.coupling import run_coupled
     from femgear.errors import ConvergenceError
+    from femgear.system.coupling import run_coupled
 
     out = {}
     for name, s in (("face-resolved", setup), ("face-uniform", replace(setup, thermal=replace(setup.thermal,
@@ -105,8 +105,8 @@ def passes(setup) -> dict:
 
 def face_cost(setup) -> dict:
     """Seconds of the face field per pass (``ThermalUnits.face`` + the face deviation), medians of 20."""
-    from femgear.coupling.loop import _removed_deviation
-    from femgear.coupling.thermal import roll_distances
+    from femgear.system.coupling.loop import _removed_deviation
+    from femgear.system.coupling.thermal import roll_distances
 
     n, g = setup.kin.u.size, setup.face.grid
     rho, zero, zf = roll_distances(setup.pair, setup.kin.u), np.zeros((2, n)), np.zeros((2, 2, n, g.size))

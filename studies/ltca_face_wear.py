@@ -7,12 +7,12 @@ test-gear modifications of studies/rig_conditions.py (:data:`TEST_GEAR_MODIFICAT
 relief 3 µm over 2.5 mm on both members, lead crowning 5 µm), new and after 1e6 and 3e6 pinion
 revolutions of Archard wear, with the wear depth field ``wear.field = "path"`` (face-uniform h(u),
 the same on both helices: the LTCA's loads averaged over the face) and ``"face"`` (h(ρ, ζ) per member
-and helix from the LTCA's contact-line loads, :mod:`femgear.wear.face`; each coupling pass re-runs
+and helix from the LTCA's contact-line loads, :mod:`femgear.physics.wear.face`; each coupling pass re-runs
 the LTCA on that topography).  Prints per case the largest depth and where it is (member, helix,
 path position from the pitch point, face position), the face-mean depth, the mid-face / face-end
 ratio, the gear's y amplitude and v_y, the loaded TE p-p of the worn flanks, the passes, the wear time
 per pass and the mesh orders the LTCA resolves on the converged worn flanks (the face runs band-limit
-their excitation to these, :func:`femgear.coupling.loop._worn_orders`; the path runs keep the unworn
+their excitation to these, :func:`femgear.system.coupling.loop._worn_orders`; the path runs keep the unworn
 cycle's); then the
 cost of one wear step (load sharing over the LTCA phases + Archard rates, medians of 5) and of a
 pass's wear integration.  Writes ``out/ltca_face_wear/ltca_face_wear.{json,png}`` (depth maps of the
@@ -64,8 +64,8 @@ def _depth_summary(case: dict) -> dict:
 
 def _setup(coarse: bool):
     from femgear.case import build_case
-    from femgear.coupling import CouplingSetup
     from femgear.scene import load_scene
+    from femgear.system.coupling import CouplingSetup
 
     over = TEST_GEAR_MODIFICATIONS + ["wear.cycles=1e6", 'wear.field="face"',
                                       f"numerics.path_points={31 if coarse else 61}"]
@@ -74,10 +74,10 @@ def _setup(coarse: bool):
 
 def worn_orders(setup, case: dict) -> int:
     """Mesh orders the LTCA resolves on the case's converged worn flanks (the ltca level's criterion,
-    :func:`femgear.ltca.level.resolved_orders`); the face runs band-limit their excitation to these, the
+    :func:`femgear.physics.ltca.level.resolved_orders`); the face runs band-limit their excitation to these, the
     path runs keep the unworn cycle's."""
-    from femgear.coupling.loop import _removed_deviation
-    from femgear.ltca.level import resolved_orders
+    from femgear.physics.ltca.level import resolved_orders
+    from femgear.system.coupling.loop import _removed_deviation
 
     wear, zeta = np.asarray(case["wear"]), np.asarray(case["thermal_deviation"])
     face = None if case.get("wear_face") is None else np.asarray(case["wear_face"])
@@ -91,9 +91,9 @@ def step_cost(setup) -> dict:
     against face, on the test gear's unworn LTCA cycle; the steps each takes."""
     from dataclasses import replace
 
-    from femgear.coupling.loop import _references
-    from femgear.wear import WearSetup, WearState, run_wear, wear_rates
-    from femgear.wear.face import FaceWearState, face_rates, run_face_wear
+    from femgear.physics.wear import WearSetup, WearState, run_wear, wear_rates
+    from femgear.physics.wear.face import FaceWearState, face_rates, run_face_wear
+    from femgear.system.coupling.loop import _references
 
     zero = np.zeros((2, setup.kin.u.size))
     ref, _ = _references(setup, setup.ltca, zero, zero)

@@ -38,7 +38,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def setup(scene_path=ROOT / "studies" / "paper_baseline.toml"):
-    from femgear.geometry.gear import GearPair
+    from femgear.physics.geometry.gear import GearPair
     from femgear.scene import load_scene
 
     scene = load_scene(scene_path)
@@ -46,8 +46,8 @@ def setup(scene_path=ROOT / "studies" / "paper_baseline.toml"):
 
 
 def convergence(scene, pair, levels, phases=64):
-    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
-    from femgear.mesh.segment import default_spec
+    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.mesh.segment import default_spec
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
@@ -87,8 +87,8 @@ def body_checks(scene, pair, level=1, phases=64):
     6 h_tooth, all five teeth at ≤ h: the grading's cost in accuracy)."""
     from dataclasses import replace
 
-    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
-    from femgear.mesh.segment import default_spec
+    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.mesh.segment import default_spec
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
@@ -141,7 +141,7 @@ def observed_order(h, f) -> float:
 def discretisation(scene, pair, level):
     """Phases (64 vs 128) and contact points per line (16 vs 32) at one segment level, unmodified and
     with a 5 µm / 0.4 p_bt tip relief: LTE p-p, mean stiffness and LTE harmonics 1–5."""
-    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
@@ -197,7 +197,7 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
     """LTE p-p against load for a linear tip relief designed by ``rule`` (:func:`relief_design`) for the scene
     load, for the relief amount minimising LTE p-p at that load (Tavakoli & Houser, ASME JMTAD 108:86, 1986),
     and unmodified."""
-    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
@@ -230,8 +230,8 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
 
 
 def run(coarse: bool = False) -> dict:
-    from femgear.io.ltca import write_flank_pressure
-    from femgear.stiffness.tvms import mesh_stiffness
+    from femgear.edge.io.ltca import write_flank_pressure
+    from femgear.physics.stiffness.tvms import mesh_stiffness
 
     scene, pair = setup()
     levels = (0, 1) if coarse else (1, 2, 3, 4)
@@ -267,7 +267,7 @@ def _plot(maps, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from femgear.plot import save_figure
+    from femgear.edge.plot import save_figure
 
     maps = [(h, t) for h, t in maps if h is not None]
     fig, axes = plt.subplots(1, len(maps), figsize=(6 * len(maps), 4), squeeze=False)

@@ -4,11 +4,11 @@
 
 On the baseline pair at 200 N·m, for the coarse test model (level 0, 16 phases) and the
 ``ltca`` level's model (level 1, 64 phases): the largest equilibrium error of the LTCA
-load map over the phases (:func:`femgear.wear.load_sharing.reference_loads`, both helices),
+load map over the phases (:func:`femgear.physics.wear.load_sharing.reference_loads`, both helices),
 the grid map's force error (each line scaled to its LTCA load, and the plain interpolation onto
 61 path positions), the passage-mean
 load intensity against the uniform Winkler map (inside the path and at its ends A and E,
-:func:`femgear.wear.load_sharing.load_map`), and the unworn Archard rate of the pinion at
+:func:`femgear.physics.wear.load_sharing.load_map`), and the unworn Archard rate of the pinion at
 its tip (path end E) with a 10 µm × 3 mm linear pinion tip relief against none.  Prints a
 table and a JSON line; writes ``out/ltca_wear_load/ltca_wear_load.json``.
 """
@@ -31,12 +31,12 @@ MODELS = {"level 0 (tests)": ({"level": 0, "order": 1, "n_rho": 5, "n_z": 5, "n_
 
 
 def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
-    from femgear.coupling.loop import ltca_reference
-    from femgear.geometry import kinematics, path_positions
-    from femgear.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.physics.geometry import kinematics, path_positions
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.physics.wear import WearSetup, WearState, wear_rates
+    from femgear.physics.wear.load_sharing import load_map, reference_load_map, reference_loads, trapezoid_weights
     from femgear.scene.schema import FlankModification, Modifications
-    from femgear.wear import WearSetup, WearState, wear_rates
-    from femgear.wear.load_sharing import load_map, reference_load_map, reference_loads, trapezoid_weights
+    from femgear.system.coupling.loop import ltca_reference
 
     F = normal_force(pair, 200.0)
     u = path_positions(pair, 61)
@@ -73,7 +73,7 @@ def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
 
 
 def run() -> dict:
-    from femgear.geometry import GearPair
+    from femgear.physics.geometry import GearPair
     from femgear.scene import load_scene
 
     scene = load_scene(C.BASELINE)

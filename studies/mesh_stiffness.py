@@ -18,10 +18,10 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.geometry.gear import GearPair
-from femgear.plot import save_figure
+from femgear.edge.plot import save_figure
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness import iso6336_stiffness, mesh_stiffness_from_scene
 from femgear.scene import load_scene
-from femgear.stiffness import iso6336_stiffness, mesh_stiffness_from_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -40,7 +40,7 @@ def run(scene, coarse: bool = False) -> dict:
         "fe": mesh_stiffness_from_scene(scene, level="fe", fe_options=fe_opts),
     }
     fe = levels["fe"].info
-    from femgear.stiffness.pem import pair_stiffness_per_width
+    from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
     k_pem = pair_stiffness_per_width(pair, fe["u_fe"], scene.material.youngs_modulus, scene.material.poisson_ratio)
     single = (fe["u_fe"] >= pair.u_end - pair.p_bt - 1e-12) & (fe["u_fe"] <= pair.u_start + pair.p_bt + 1e-12)

@@ -6,7 +6,7 @@ femgear's meshing error of a helix is the drive-flank deviation (wear h1 + h2 mi
 thermal expansion ζ_T1 + ζ_T2, positive = material removed) averaged over the contact
 lines carrying load at each instant of the mesh cycle — the paper's "comprehensive
 equivalent error along the line of action" taken over the real contact lines
-(:func:`femgear.coupling.profile.mesh_deviation`).  The paper instead writes the
+(:func:`femgear.system.coupling.profile.mesh_deviation`).  The paper instead writes the
 error as a Fourier series of M = 3–5 harmonics of the mesh frequency; this study fits
 such a series (least squares, M = ``--harmonics``) to femgear's contact-line mean and
 reports the harmonic amplitudes and the fit residual.  Cases as in
@@ -25,7 +25,7 @@ import time
 
 import numpy as np
 
-from femgear.coupling.profile import harmonic_fit
+from femgear.system.coupling.profile import harmonic_fit
 
 try:
     from studies import _common as C

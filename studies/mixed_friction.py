@@ -3,7 +3,7 @@
     python studies/mixed_friction.py [--coarse] [--workers=2] [--rq=METRES]
 
 The coupled baseline with rough flanks (``roughness.rq``, default 0.45 µm: ground flanks of
-Rq ≈ 0.32 µm each) and the mixed-lubrication split of :mod:`femgear.lubrication.mixed`
+Rq ≈ 0.32 µm each) and the mixed-lubrication split of :mod:`femgear.physics.lubrication.mixed`
 (Greenwood–Tripp asperities, boundary μ_b = 0.1), after 0, 1e6 and 3e6 wear cycles, beside
 the smooth flanks.  Prints μ at the pitch point, its maximum and mean along the path, the
 film parameter λ = h/σ at the pitch point and the largest asperity load share; writes
@@ -39,12 +39,12 @@ def setup(rq: float, cycles: float) -> list[str]:
 
 def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
     from femgear.case import build_case
-    from femgear.contact.hertz import reduced_modulus
-    from femgear.geometry import kinematics
-    from femgear.lubrication.mixed import Roughness, jgp_split
-    from femgear.lubrication.oil import OilLaw
-    from femgear.lubrication.path import solids_of
-    from femgear.lubrication.traction import thermal_central_film
+    from femgear.physics.contact.hertz import reduced_modulus
+    from femgear.physics.geometry import kinematics
+    from femgear.physics.lubrication.mixed import Roughness, jgp_split
+    from femgear.physics.lubrication.oil import OilLaw
+    from femgear.physics.lubrication.path import solids_of
+    from femgear.physics.lubrication.traction import thermal_central_film
     from femgear.scene import load_scene
 
     t0 = time.perf_counter()

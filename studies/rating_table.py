@@ -28,8 +28,8 @@ def setup() -> list[Path]:
 
 
 def rate(path: Path, fillet: bool):
-    from femgear.contact.path import contact_along_path, zone_grid
-    from femgear.geometry import GearPair
+    from femgear.physics.contact.path import contact_along_path, zone_grid
+    from femgear.physics.geometry import GearPair
     from femgear.rate import rate_case
     from femgear.scene import load_scene
 

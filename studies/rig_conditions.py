@@ -10,7 +10,7 @@ behind a 4th-order Butterworth low-pass at 5 kHz; "FFT analysis used a Hanning w
 all reported acceleration amplitudes are peak values (zero-to-peak)"; Table 7 reports the
 "maximum acceleration".  So the headline figure (:func:`rig_measures`, ``pk``) is the
 maximum over time of |a·n_t|, the line-of-action component (n_t = (sin α_wt, cos α_wt, 0),
-the transverse line of action of :func:`femgear.dynamics.mesh.mesh_geometry`) after the
+the transverse line of action of :func:`femgear.system.dynamics.mesh.mesh_geometry`) after the
 5 kHz Butterworth (:func:`studies._common.rig_filter`), over a whole number of mesh periods
 of the steady state, max over the member's two stations; the other reading of §5.1, the
 largest line of the Hanning amplitude spectrum of the same signal (``FFT``), is listed
@@ -90,7 +90,7 @@ def rig_measures(t: np.ndarray, acc: np.ndarray, direction: np.ndarray, mesh_fre
     the time max of |that component|; ``radial`` / ``radial_raw`` the time max of the
     radial magnitude with / without the filter.
     """
-    from femgear.dynamics.response import spectrum
+    from femgear.system.dynamics.response import spectrum
 
     dt = float(t[1] - t[0])
     periods = math.floor(t.size * dt * mesh_frequency + 1e-6)                     # whole mesh periods recorded
@@ -111,8 +111,8 @@ def rig_measures(t: np.ndarray, acc: np.ndarray, direction: np.ndarray, mesh_fre
 def rig_case(overrides: list[str], coarse: bool = False) -> dict:
     """One coupled condition (as :func:`studies._common.coupled_case`) and its :func:`rig_measures`."""
     from femgear.case import build_case
-    from femgear.coupling import CouplingSetup, run_coupled
     from femgear.scene import load_scene
+    from femgear.system.coupling import CouplingSetup, run_coupled
 
     t0 = time.perf_counter()
     paths = ["numerics.path_points=31"] if coarse else ["numerics.path_points=61"]
@@ -127,7 +127,7 @@ def rig_case(overrides: list[str], coarse: bool = False) -> dict:
 
 
 def _resolved_orders(setup_) -> int | None:
-    """The mesh orders kept in the ``ltca`` tables (label "ltca:H" of :func:`femgear.dynamics.build.ltca_table`)."""
+    """The mesh orders kept in the ``ltca`` tables (label "ltca:H" of :func:`femgear.system.dynamics.build.ltca_table`)."""
     label = setup_.model.stiffness.label
     return int(label.split(":")[1]) if label.startswith("ltca:") and label.split(":")[1].isdigit() else None
 

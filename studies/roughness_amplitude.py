@@ -4,7 +4,7 @@
 
 A harmonic waviness A_i cos(2 pi (X - c T)/lambda) on one surface enters the contact
 from the inlet (raised-cosine ramp of 0.5 b) and passes through it
-(:func:`femgear.ehl.transient.solve_line_transient`: BDF2, one cell per step, level 5 =
+(:func:`femgear.physics.ehl.transient.solve_line_transient`: BDF2, one cell per step, level 5 =
 513 nodes on [-4.5, 1.5] b). The deformed amplitude A_d is half the peak-to-peak of the
 film at X = 0 over the last wavelength, after the front has left the domain (Venner,
 Couhier, Lubrecht & Greenwood 1997). Rows:
@@ -35,8 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.ehl.surface import paper_peak, surface_speed
-from femgear.ehl.transient import (
+from femgear.physics.ehl.surface import paper_peak, surface_speed
+from femgear.physics.ehl.transient import (
     amplitude_reduction_fit,
     measure_amplitude_reduction,
     solve_line_transient,

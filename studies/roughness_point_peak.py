@@ -5,7 +5,7 @@
 M = 20, L = 10 (Barus, incompressible), 129^2 nodes on [-4.5, 1.5] x [-3, 3] a (the paper:
 257^2 on -4a..2a; it gives no A_b, l_b or x0, so they are chosen here): a transverse ridge
 A_b = 0.2 H_c(smooth), l_b = 0.25 a on the pinion, pure rolling (c = 1), starting at
-x0 = -2 a; BDF2, one cell per step (:func:`femgear.ehl.transient.solve_point_transient`).
+x0 = -2 a; BDF2, one cell per step (:func:`femgear.physics.ehl.transient.solve_point_transient`).
 Prints the minimum film and the maximum pressure over the passage against the smooth
 values and one JSON line; writes out/roughness/point_peak.{json,png} (centre-line film and
 pressure with the peak at X = -1, -0.5, 0, 0.5, and Hmin, Pmax against the peak position).
@@ -22,10 +22,10 @@ import sys
 import time
 from pathlib import Path
 
-from femgear.ehl import params as pr
-from femgear.ehl.point import default_domain
-from femgear.ehl.surface import paper_peak
-from femgear.ehl.transient import solve_point_transient
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.point import default_domain
+from femgear.physics.ehl.surface import paper_peak
+from femgear.physics.ehl.transient import solve_point_transient
 
 OUT = Path(__file__).resolve().parents[1] / "out" / "roughness"
 M, L, X_START = 20.0, 10.0, -2.0

@@ -51,7 +51,7 @@ def _rows(submodel: str, cases: list[tuple[str, Callable[[], object]]], error: C
 
 
 def stiffness(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.stiffness.tvms import mesh_stiffness_from_scene
+    from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
 
     mn = scene.pair.normal_module
     fe = [2.5, 3.0] if quick else [2.5, 3.0, 4.0]
@@ -65,8 +65,8 @@ def stiffness(scene, quick: bool, repeats: int) -> list[dict]:
 
 
 def thermal(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.body.thermal import flank_deviation_from_scene
-    from femgear.geometry import GearPair, path_positions
+    from femgear.physics.body.thermal import flank_deviation_from_scene
+    from femgear.physics.geometry import GearPair, path_positions
 
     s = load_scene(BASELINE, ["thermal.flank_temperature_rise=30"])
     u = path_positions(GearPair.from_scene(s), 21)
@@ -78,16 +78,16 @@ def thermal(scene, quick: bool, repeats: int) -> list[dict]:
 
 
 def lubrication(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.contact.path import contact_along_path
-    from femgear.ehl.path import ehl_line_solver
-    from femgear.lubrication.map import hertz_level_solver
+    from femgear.physics.contact.path import contact_along_path
+    from femgear.physics.ehl.path import ehl_line_solver
+    from femgear.physics.lubrication.map import hertz_level_solver
 
     c = contact_along_path(scene, n=11)
     k = c.kin
     args = dict(w=np.full(k.u.shape, c.load_per_length), R=k.R, ue=k.ue, srr=np.abs(k.srr),
                 T=np.full(k.u.shape, scene.operating.ambient_temperature))
     levels = [3, 4, 6] if quick else [3, 4, 5, 6, 8]
-    from femgear.tehl.solver import tehl_line_solver
+    from femgear.physics.tehl.solver import tehl_line_solver
 
     cases = [("formula", lambda: hertz_level_solver(scene)(**args)[0]),
              ("tehl (thermal, not a resolution of ehl-line)", lambda: tehl_line_solver(scene)(**args)[0])]
@@ -96,7 +96,7 @@ def lubrication(scene, quick: bool, repeats: int) -> list[dict]:
 
 
 def ehl_point(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.ehl.point import solve_point
+    from femgear.physics.ehl.point import solve_point
 
     levels = [1, 2, 3] if quick else [1, 2, 3, 4]
     cases = [(f"point level {lv} ({(16 * 2**lv + 1)}²)", lambda lv=lv: solve_point(20.0, 10.0, level=lv).Hc)
@@ -106,9 +106,9 @@ def ehl_point(scene, quick: bool, repeats: int) -> list[dict]:
 
 def dynamics(scene, quick: bool, repeats: int) -> list[dict]:
     from femgear.case import build_case
-    from femgear.dynamics import build_model
-    from femgear.dynamics.integrate import simulate
-    from femgear.dynamics.response import analyse
+    from femgear.system.dynamics import build_model
+    from femgear.system.dynamics.integrate import simulate
+    from femgear.system.dynamics.response import analyse
 
     model = build_model(build_case(scene), "lumped")
     keys = [f"{m}.{q}.{a}" for m in ("gear", "pinion") for q in ("displacement", "velocity") for a in "xy"]
@@ -128,7 +128,7 @@ def dynamics(scene, quick: bool, repeats: int) -> list[dict]:
 
 def coupled(scene, quick: bool, repeats: int) -> list[dict]:
     from femgear.case import build_case
-    from femgear.coupling import CouplingSetup, run_coupled
+    from femgear.system.coupling import CouplingSetup, run_coupled
 
     def run(preset):
         s = _preset_scene(preset)

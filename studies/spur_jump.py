@@ -3,7 +3,7 @@
     python studies/spur_jump.py [SCENE] [--torque T] [--backlash B] [--points N]
 
 The spur pair of SCENE (default FZG C14) reduced to its dynamic transmission error
-(:func:`femgear.dynamics.one_mesh.torsional_sweep`) with its PEM mesh stiffness over one
+(:func:`femgear.system.dynamics.one_mesh.torsional_sweep`) with its PEM mesh stiffness over one
 mesh period; prints amplitude / static deflection and the contact-loss fraction for
 both sweep directions, and one JSON line (also ``out/spur_jump.json``).
 """
@@ -16,10 +16,10 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.dynamics.one_mesh import torsional_mode_hand, torsional_sweep
-from femgear.geometry import GearPair
+from femgear.physics.geometry import GearPair
+from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
 from femgear.scene import load_scene
-from femgear.stiffness.tvms import mesh_stiffness_from_scene
+from femgear.system.dynamics.one_mesh import torsional_mode_hand, torsional_sweep
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -3,7 +3,7 @@
     python studies/step_convergence.py [--coarse] [--rpm 100 500]
 
 For each driver speed the baseline model (lumped, PEM stiffness, the formula level's
-μ(u)) runs with its default integrator and step (:func:`femgear.dynamics.run.default_step`)
+μ(u)) runs with its default integrator and step (:func:`femgear.system.dynamics.run.default_step`)
 and with the step halved and quartered; the table prints the largest relative change
 of the member amplitudes (x, y, displacement and velocity) and of the mesh-force
 amplitude.  Target (issue 13): < 1 % between the default and the halved step at every
@@ -32,8 +32,8 @@ def setup(rpm: float):
 
 
 def run(speeds=(100.0, 500.0), coarse: bool = False) -> dict:
-    from femgear.dynamics import build_model, run_dynamics
-    from femgear.dynamics.run import default_method, default_step
+    from femgear.system.dynamics import build_model, run_dynamics
+    from femgear.system.dynamics.run import default_method, default_step
 
     cycles, transient = (40.0, 20.0) if coarse else (100.0, 50.0)
     rows = []
@@ -64,7 +64,7 @@ def main(argv: list[str] | None = None) -> int:
     for r in res["rows"]:
         print(f"{r['rpm']:6.0f} {r['method']:>6s} {r['dt']:9.3g} {r['steps_per_mesh_period']:9.0f} "
               f"{100 * r['change_default_vs_half']:8.3f}% {100 * r['change_half_vs_quarter']:9.3f}%  {r['worst_key']}")
-    from femgear.io.results import write_json
+    from femgear.edge.io.results import write_json
 
     print(write_json(ROOT / "out" / "step_convergence" / "step_convergence.json", res))
     return 0

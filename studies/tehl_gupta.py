@@ -9,7 +9,7 @@ w' = 2π R p_h² / E'.  Inlet start x0 (outlet 1.5 b): −4.5 b on level 4 with 
 cells, −8 b on level 5 with 256 (two EHL cells per thermal cell); the isothermal film from
 −8 b is within 1.5 % of its value from −24 b for p_h ≥ 0.5 GPa and u_e ≤ 10 m/s, from −4.5 b
 it is 12 % short at 0.5 GPa, 10 m/s.  Gupta's factor
-(:func:`femgear.lubrication.traction.gupta_thermal_factor`, L = β_T η0 u_e²/k_f with u_e the
+(:func:`femgear.physics.lubrication.traction.gupta_thermal_factor`, L = β_T η0 u_e²/k_f with u_e the
 mean velocity) is evaluated with S = SRR = (v1 − v2)/u_e and with the slide-to-sum
 convention S = (v1 − v2)/(v1 + v2) = SRR/2 (columns "G" and "G/2", ratios φ/G).  Prints one
 row per case and writes all rows as JSON (default out/tehl_gupta.json, git-ignored).
@@ -24,7 +24,7 @@ Newtonian sliding ones the slowest); on the short inlet Eyring SRR 0.5 and 1 at 
 
 Why 256 thermal cells from −8 b: two EHL cells per thermal cell, no aliasing of the EHL
 pressure slope.  (The inlet back-flow chatter that once made the cell count matter came from
-advecting with the layer shear-rate profile; see femgear.tehl.energy.)
+advecting with the layer shear-rate profile; see femgear.physics.tehl.energy.)
 """
 
 from __future__ import annotations
@@ -41,8 +41,8 @@ import math
 from pathlib import Path
 
 from femgear.errors import ConvergenceError
-from femgear.lubrication.traction import gupta_thermal_factor
-from femgear.tehl import solve_tehl_line
+from femgear.physics.lubrication.traction import gupta_thermal_factor
+from femgear.physics.tehl import solve_tehl_line
 
 ROOT = Path(__file__).resolve().parents[1]
 _spec = importlib.util.spec_from_file_location("_case", ROOT / "tests" / "tehl" / "_case.py")

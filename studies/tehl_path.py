@@ -4,8 +4,8 @@
 
 At ``n`` positions of the path A→E of ``studies/paper_baseline.toml`` (static load
 share per unit length, radii, entrainment speeds and SRR from
-:func:`femgear.contact.path.contact_along_path`) it solves the line-contact TEHL
-(:func:`femgear.tehl.solve_tehl_line`, oil at the ambient temperature) and writes to
+:func:`femgear.physics.contact.path.contact_along_path`) it solves the line-contact TEHL
+(:func:`femgear.physics.tehl.solve_tehl_line`, oil at the ambient temperature) and writes to
 ``out/tehl_path/``: ``tehl_path.png`` (central film, maximum pressure, maximum film
 temperature rise and μ along the path, with the ``formula`` level's μ for comparison),
 ``tehl_path.json`` (all figures) and VTK files of the film temperature at the chosen
@@ -30,10 +30,10 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def main() -> dict:
-    from femgear.contact.path import contact_along_path
-    from femgear.lubrication.path import friction_along_path
+    from femgear.physics.contact.path import contact_along_path
+    from femgear.physics.lubrication.path import friction_along_path
+    from femgear.physics.tehl.path import tehl_along_path, write_thermal_vtk
     from femgear.scene import load_scene
-    from femgear.tehl.path import tehl_along_path, write_thermal_vtk
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=21)

@@ -15,7 +15,7 @@ stated in the output:
   22 GPa^-1, 0.042 1/K) at 80 °C = 353.15 K, steel E = 210 GPa, nu = 0.3.
 
 Hamrock & Dowson (1977): H_c = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 e^(-0.73 k)), k = 1.0339 for
-a circle, groups on the mean speed and E' = E/(1 - nu^2) (:func:`femgear.contact.film.
+a circle, groups on the mean speed and E' = E/(1 - nu^2) (:func:`femgear.physics.contact.film.
 hamrock_dowson_central`), with the Barus alpha of the oil at 80 °C. Prints one table and a JSON line.
 """
 
@@ -31,12 +31,12 @@ from pathlib import Path
 
 from scipy.optimize import brentq
 
-from femgear.contact.film import hamrock_dowson_central
-from femgear.ehl.dimensional import solve_point_dimensional
+from femgear.physics.contact.film import hamrock_dowson_central
+from femgear.physics.ehl.dimensional import solve_point_dimensional
+from femgear.physics.tehl.line import ehl_oil_at
+from femgear.physics.tehl.point import solve_tehl_point
+from femgear.physics.tehl.solver import tehl_setup
 from femgear.scene import load_scene
-from femgear.tehl.line import ehl_oil_at
-from femgear.tehl.point import solve_tehl_point
-from femgear.tehl.solver import tehl_setup
 
 ROOT = Path(__file__).resolve().parents[1]
 F, UE, T = 500.0, 10.0, 353.15

@@ -4,7 +4,7 @@
 
 Scene: studies/paper_baseline.toml with ``modifications.crowning`` = 10 um on both members
 (chosen before any run), ``physics.lubrication = "tehl-point"``; the lubrication level's
-thermal point EHL (:mod:`femgear.tehl.point_level`) at every position of the case's path
+thermal point EHL (:mod:`femgear.physics.tehl.point_level`) at every position of the case's path
 under the line load of the load sharing. Writes out/tehl_point_path.png (central and minimum
 film, maximum pressure, maximum film temperature rise, mu against the position along the
 path) and out/tehl_point_path.json, and prints the paper's claims (Wang et al. 2026, §5:
@@ -31,9 +31,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent / "benchmarks"))
 from tehl_point import crowned_scene
 
 from femgear.case import build_case
-from femgear.contact.crowning import crowned_contact
-from femgear.contact.path import contact_along_path
-from femgear.tehl.point_level import tehl_point_solver
+from femgear.physics.contact.crowning import crowned_contact
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.tehl.point_level import tehl_point_solver
 
 
 def along_path(scene, level: int) -> dict:

@@ -19,11 +19,11 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.body.thermal import analytic_radial_displacement, flank_displacement, gear_thermo_elastic
-from femgear.geometry.gear import GearPair
-from femgear.plot import save_figure
+from femgear.edge.plot import save_figure
+from femgear.physics.body.thermal import analytic_radial_displacement, flank_displacement, gear_thermo_elastic
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.pem import contact_geometry
 from femgear.scene import load_scene
-from femgear.stiffness.pem import contact_geometry
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -87,7 +87,7 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "tooth_thermal.png") -> Pa
 
 
 if __name__ == "__main__":
-    from femgear.body.vtk import write_vtu
+    from femgear.physics.body.vtk import write_vtu
 
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     scene = setup(*args[:1])

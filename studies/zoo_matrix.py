@@ -143,9 +143,9 @@ def hand_figures(path: Path) -> dict:
     single-contact zone (s_B, s_D) of a spur pair (None for helical), the formula film at the pitch point
     and the formula-level contact temperature."""
     from femgear.case import build_case
-    from femgear.contact.path import contact_along_path
-    from femgear.contact.sharing import single_contact_bounds
-    from femgear.lubrication.levels import friction_along_path
+    from femgear.physics.contact.path import contact_along_path
+    from femgear.physics.contact.sharing import single_contact_bounds
+    from femgear.physics.lubrication.levels import friction_along_path
 
     scene = _load(path, ['physics.lubrication="formula"'])
     case = build_case(scene)

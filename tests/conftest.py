@@ -22,6 +22,6 @@ def baseline_scene():
 
 @pytest.fixture(scope="session")
 def baseline_pair(baseline_scene):
-    from femgear.geometry import GearPair
+    from femgear.physics.geometry import GearPair
 
     return GearPair.from_scene(baseline_scene)

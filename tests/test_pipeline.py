@@ -2,10 +2,10 @@
 
 import pytest
 
-from femgear.geometry.gear import GearPair
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
 from femgear.pipeline import run_scene
 from femgear.scene import load_scene
-from femgear.stiffness.tvms import mesh_stiffness_from_scene
 
 
 @pytest.mark.parametrize("level", ["analytic"])

@@ -50,8 +50,8 @@ class _Builder:
 
 def export_scene(scene, source: str = "femgear") -> tuple[Model, list[str]]:
     """The REXS 1.4 model of ``scene``'s pair, and what could not be exported (one line each)."""
-    from femgear.geometry import GearPair
-    from femgear.lubrication.oil import OilLaw
+    from femgear.physics.geometry import GearPair
+    from femgear.physics.lubrication.oil import OilLaw
 
     pair = GearPair.from_scene(scene)
     law = OilLaw.from_scene(scene)

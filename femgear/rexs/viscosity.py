@@ -4,7 +4,7 @@ Ubbelohde–Walther, as standardised in ASTM D341 (viscosity–temperature chart
 products): log10 log10(ν + 0.7) = A − B log10 T, ν in mm²/s, T in K, through the two points.  Its
 temperature slope gives femgear's temperature–viscosity coefficient β_T = −d ln η / dT at the
 reference temperature, with η = ν ρ and ρ(T) = ρ0 (1 − ε (T − T0)) (femgear's density law,
-:mod:`femgear.lubrication.oil`).  Units: SI (ν in m²/s) at the interface.
+:mod:`femgear.physics.lubrication.oil`).  Units: SI (ν in m²/s) at the interface.
 """
 
 from __future__ import annotations

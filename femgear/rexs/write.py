@@ -1,7 +1,7 @@
 """Text of a REXS model: XML (``.rexs``) and JSON (``.rexsj``), REXS 1.4 layout.
 
 Numbers are written with Python's shortest round-trip representation, so a value read back is
-the same double.  The caller writes the text to disk (atomically, :mod:`femgear.io.atomic`).
+the same double.  The caller writes the text to disk (atomically, :mod:`femgear.edge.io.atomic`).
 """
 
 from __future__ import annotations

@@ -1,38 +1,21 @@
-"""Fidelity levels per sub-model, cheapest first, and which of them exist today.
+"""Fidelity levels per sub-model, read from the registries of :mod:`femgear.levels`.
 
-A scene's ``[physics]`` table names one level per sub-model.  Levels listed in
-:data:`LEVELS` but not in :data:`AVAILABLE` are part of the design and rejected with a
-"not available yet" message; anything else is an unknown level.  When a sub-model's
-level lands, add it to :data:`AVAILABLE` (one edit, here).
+A scene's ``[physics]`` table names one level per sub-model. Names a registry lists as
+``planned`` are part of the design and rejected with a "not available yet" message;
+anything else unregistered is an unknown level. A new level is one registration in its
+sub-model's registry (``femgear/levels/<submodel>.py``).
 """
 
 from __future__ import annotations
 
-LEVELS: dict[str, tuple[str, ...]] = {
-    "stiffness": ("constant", "iso6336", "pem", "fe", "ltca"),
-    "lubrication": ("none", "constant", "formula", "ehl-line", "ehl-point", "tehl", "tehl-point"),
-    "thermal": ("none", "analytic", "fe", "fe3d"),
-    "wear": ("none", "archard"),
-    "dynamics": ("none", "lumped", "timoshenko"),
-    "coupling": ("one-way", "bidirectional"),
-}
+from femgear.levels import REGISTRIES
 
-AVAILABLE: dict[str, frozenset[str]] = {
-    "stiffness": frozenset({"constant", "iso6336", "pem", "fe", "ltca"}),
-    "lubrication": frozenset({"none", "constant", "formula", "ehl-line", "tehl", "tehl-point"}),
-    "thermal": frozenset({"none", "analytic", "fe", "fe3d"}),
-    "wear": frozenset({"none", "archard"}),
-    "dynamics": frozenset({"none", "lumped", "timoshenko"}),
-    "coupling": frozenset({"one-way", "bidirectional"}),
-}
+#: every name of the design per sub-model, cheapest first (registered, then planned)
+LEVELS: dict[str, tuple[str, ...]] = {sub: reg.names() + reg.planned for sub, reg in REGISTRIES.items()}
+#: the levels that run today
+AVAILABLE: dict[str, frozenset[str]] = {sub: frozenset(reg.names()) for sub, reg in REGISTRIES.items()}
 
 
 def check_level(submodel: str, level: str) -> str | None:
     """Return an error message for ``physics.<submodel> = level``, or None if it is usable."""
-    known = LEVELS[submodel]
-    if level not in known:
-        return f"unknown level {level!r}; choose one of {', '.join(known)}"
-    if level not in AVAILABLE[submodel]:
-        have = ", ".join(lv for lv in known if lv in AVAILABLE[submodel])
-        return f"level {level!r} is not available yet (available now: {have})"
-    return None
+    return REGISTRIES[submodel].problem(level)

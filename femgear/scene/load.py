@@ -74,9 +74,9 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     warnings, one line per key (``warn=False`` skips them).  The inputs as typed are checked in
     engineering terms first (:mod:`femgear.scene.ranges`), before any derived geometry, so that a
     unit slip is blamed on the key the user typed; then the gear's feasibility
-    (:mod:`femgear.geometry`) and the operating point (:mod:`femgear.scene.plausibility`).
+    (:mod:`femgear.physics.geometry`) and the operating point (:mod:`femgear.scene.plausibility`).
     """
-    from femgear.geometry import GearPair  # the feasibility checks are geometry's
+    from femgear.physics.geometry import GearPair  # the feasibility checks are geometry's
 
     raw = expand_preset(apply_overrides(data, overrides))
     try:
@@ -88,16 +88,16 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
     if scene.physics.lubrication in ("tehl", "tehl-point"):
-        from femgear.tehl.solver import check_tehl_range
+        from femgear.physics.tehl.solver import check_tehl_range
 
         check_tehl_range(scene, pair)
     if scene.physics.lubrication == "tehl-point":
-        from femgear.contact.crowning import check_point_range
-        from femgear.geometry import kinematics, path_positions
+        from femgear.physics.contact.crowning import check_point_range
+        from femgear.physics.geometry import kinematics, path_positions
 
         check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
     if warn:
-        from femgear.contact.path import contact_along_path
+        from femgear.physics.contact.path import contact_along_path
 
         plausibility_warnings(scene, pair, float(contact_along_path(scene, pair=pair).hertz_pressure.max()),
                               earlier=range_warnings)

@@ -2,7 +2,7 @@
 
 Every key is documented here, with its unit.  Angles are the one exception to SI in
 the file (``*_deg`` keys, degrees, as engineers write them); they are converted to
-radians once, by :mod:`femgear.geometry`.  Unknown keys are errors, so a typo never
+radians once, by :mod:`femgear.physics.geometry`.  Unknown keys are errors, so a typo never
 goes unnoticed.
 
 Models are grouped by lifetime (ROSS habit): the gear pair, material and oil stay
@@ -45,7 +45,7 @@ class Pair(_Frozen):
     single-helical pair is one helix of width ``face_width``; a spur pair has
     ``helix_angle_deg = 0``.  Consistency (kind vs helix angle, thrust bearings of a
     single helix, basic rack vs coefficients, tip diameters and centre distance vs
-    profile shifts) is checked by :mod:`femgear.geometry.scene_pair`.
+    profile shifts) is checked by :mod:`femgear.physics.geometry.scene_pair`.
     """
 
     kind: Literal["double-helical", "single-helical", "spur"] = Field(
@@ -169,7 +169,7 @@ class RoughnessPeak(_Frozen):
 
     Heights count towards the other flank (a peak thins the film: h = h0 + g + v − R; the paper's
     eq. 23 writes + R_r, which with its eq. 22 would be a dent).  Film term of the EHL solvers
-    (:mod:`femgear.ehl.surface`, :mod:`femgear.ehl.transient`).
+    (:mod:`femgear.physics.ehl.surface`, :mod:`femgear.physics.ehl.transient`).
     """
 
     amplitude: Pos = Field(description="peak height A_b [m]")
@@ -184,7 +184,7 @@ class RoughnessPeak(_Frozen):
 
 class SyntheticSurface(_Frozen):
     """``[roughness.synthetic]``: a seeded Gaussian random surface on one flank (FFT filtering,
-    :func:`femgear.ehl.surface.random_surface`) for deterministic rough EHL.  Independent of
+    :func:`femgear.physics.ehl.surface.random_surface`) for deterministic rough EHL.  Independent of
     ``roughness.rq``, which feeds the statistical (Greenwood–Tripp) mixed-lubrication model.
     """
 
@@ -236,7 +236,7 @@ class Wear(_Frozen):
     field: Literal["path", "face"] = Field(
         "path", description="wear depth field with physics.stiffness = \"ltca\": \"path\" (face-uniform h(u), the same "
                             "on both helices) or \"face\" (h(ρ, ζ) per member and helix from the LTCA's contact-line "
-                            "loads, femgear.wear.face; needs the ltca stiffness and an overlap ratio ε_β ≤ 1)")
+                            "loads, femgear.physics.wear.face; needs the ltca stiffness and an overlap ratio ε_β ≤ 1)")
     face_points: int = Field(21, ge=3, le=201, description="face positions ζ of the face-resolved wear grid [-]")
 
 

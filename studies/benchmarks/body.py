@@ -19,13 +19,13 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.body.compliance import fe_pair_stiffness_per_width
-from femgear.body.thermal import flank_deviation
-from femgear.geometry.gear import GearPair
 from femgear.perf import measure
+from femgear.physics.body.compliance import fe_pair_stiffness_per_width
+from femgear.physics.body.thermal import flank_deviation
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness import iso6336_stiffness
+from femgear.physics.stiffness.pem import pair_stiffness_per_width
 from femgear.scene import load_scene
-from femgear.stiffness import iso6336_stiffness
-from femgear.stiffness.pem import pair_stiffness_per_width
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -28,10 +28,10 @@ SCENE = ROOT / "studies" / "paper_baseline.toml"
 
 _NEW = """
 import json, sys, time
-import femgear.dynamics.run as R
+import femgear.system.dynamics.run as R
 R.STEPS_PER_MODE_PERIOD = int(sys.argv[1])
 from femgear.case import build_case
-from femgear.coupling import CouplingSetup, run_coupled
+from femgear.system.coupling import CouplingSetup, run_coupled
 from femgear.scene import load_scene
 t = time.perf_counter()
 r = run_coupled(CouplingSetup.from_case(build_case(load_scene(sys.argv[2], ['numerics.path_points=61']))))
@@ -39,7 +39,7 @@ print(json.dumps({"seconds": time.perf_counter() - t, "iterations": r.state.iter
 """
 _OLD = """
 import json, sys, time
-from femgear.coupling import CouplingSetup, run_coupled
+from femgear.system.coupling import CouplingSetup, run_coupled
 from femgear.scene import load_scene
 t = time.perf_counter()
 r = run_coupled(CouplingSetup.from_scene(load_scene(sys.argv[2])))

@@ -57,9 +57,9 @@ def one(kind: str, scene_path: str, level: int) -> dict:
 
     sets = [f"numerics.body_level={level}"]
     if kind == "size":
-        from femgear.geometry.gear import GearPair
-        from femgear.ltca.analysis import body_options
-        from femgear.mesh.segment import body_size, default_spec
+        from femgear.physics.geometry.gear import GearPair
+        from femgear.physics.ltca.analysis import body_options
+        from femgear.physics.mesh.segment import body_size, default_spec
 
         scene = load_scene(scene_path, sets)
         pair, body = GearPair.from_scene(scene), body_options(scene)
@@ -73,7 +73,7 @@ def one(kind: str, scene_path: str, level: int) -> dict:
             out["flank_dz_mn"] = pair.b / spec.layers / pair.m_n
         return out
     if kind in ("ltca", "fe"):
-        from femgear.stiffness.tvms import mesh_stiffness_from_scene
+        from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
 
         scene = load_scene(scene_path, sets)
         t0 = time.perf_counter()
@@ -87,7 +87,7 @@ def one(kind: str, scene_path: str, level: int) -> dict:
             out["dofs"] = [int(n) for n in ms.info["ndofs"]]
         return {**out, **_usage()}
     if kind == "fidelity":
-        from femgear.cli import main as cli
+        from femgear.edge.cli import main as cli
 
         t0 = time.perf_counter()
         with tempfile.TemporaryDirectory() as out_dir:

@@ -3,7 +3,7 @@
     python studies/benchmarks/coupled.py [SCENE] [--quick]
 
 Rows (median of 3 repeats, one with ``--quick``):
-- ``run_coupled``: :func:`femgear.coupling.run_coupled` on the baseline scene with its
+- ``run_coupled``: :func:`femgear.system.coupling.run_coupled` on the baseline scene with its
   defaults (PEM stiffness, formula lubrication, analytic thermal, Archard wear, lumped
   dynamics, 100 mesh periods with 50 dropped, 61 path positions × 128 phases, tolerance
   1e-6 on the dynamic mesh force and μ), in this process (imports done);
@@ -36,14 +36,14 @@ PAPER_S = 120 * 60.0
 
 def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml", overrides: tuple[str, ...] = ()):
     from femgear.case import build_case
-    from femgear.coupling import CouplingSetup
     from femgear.scene import load_scene
+    from femgear.system.coupling import CouplingSetup
 
     return CouplingSetup.from_case(build_case(load_scene(scene_path, list(overrides))))
 
 
 def _time_coupled(scene_path, overrides, repeats) -> dict:
-    from femgear.coupling import run_coupled
+    from femgear.system.coupling import run_coupled
 
     times, res = [], None
     for _ in range(repeats):

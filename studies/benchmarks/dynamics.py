@@ -35,15 +35,15 @@ OVERRIDES = ["errors.profile_error=1e-6", "pinion.eccentricity=20e-6", "gear.ecc
 
 def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml"):
     from femgear.case import build_case
-    from femgear.dynamics import build_model
     from femgear.scene import load_scene
+    from femgear.system.dynamics import build_model
 
     return build_model(build_case(load_scene(scene_path, OVERRIDES)), "lumped", stiffness="contact-line")
 
 
 def _amplitudes(model, periods, dt, method, record_every=1):
-    from femgear.dynamics import simulate
-    from femgear.dynamics.response import analyse
+    from femgear.system.dynamics import simulate
+    from femgear.system.dynamics.response import analyse
 
     sim = simulate(model, periods * model.mesh_period, dt, method, record_every=record_every)
     return analyse(sim, transient_cycles=periods / 2).amplitudes, sim
@@ -55,7 +55,7 @@ def max_error(model, periods, dt, method, reference=None) -> tuple[float, float]
     Each method's amplitudes come from its own samples (extremes refined by a parabola), so
     the error includes what a user sees: integration and sampling together.
     """
-    from femgear.dynamics.integrate import expo_step
+    from femgear.system.dynamics.integrate import expo_step
 
     if method == "expo":
         dt = expo_step(model, dt)[0]
@@ -65,7 +65,7 @@ def max_error(model, periods, dt, method, reference=None) -> tuple[float, float]
 
 
 def converged_step(model, method, periods, start, reference, tol=5e-3) -> tuple[float, list]:
-    from femgear.dynamics import stability_limit
+    from femgear.system.dynamics import stability_limit
 
     dt, history = start, []
     limit = stability_limit(model) if method == "rk4" else float("inf")
@@ -82,8 +82,8 @@ def converged_step(model, method, periods, start, reference, tol=5e-3) -> tuple[
 
 def time_run(model, method, dt, periods, repeats) -> tuple[float, float]:
     """Median wall time per 100 mesh periods of the integration loop, and the one-off set-up [s]."""
-    from femgear.dynamics import simulate
-    from femgear.dynamics.expo import clear_propagator_cache
+    from femgear.system.dynamics import simulate
+    from femgear.system.dynamics.expo import clear_propagator_cache
 
     clear_propagator_cache()                   # measure expo's set-up once, from scratch
     wall, setup = [], 0.0

@@ -10,7 +10,7 @@ and the default step's accuracy against a converged small step, computed in the 
    (``studies/paper_baseline.toml``) and the marine pair (``studies/zoo/marine.toml``).
    Acceptance: t(100 rpm) ≤ 2 × t(500 rpm) on each scene.
 2. Accuracy: the scene's dynamic model (``build_model``, the lubrication level's static μ(u))
-   run by :func:`femgear.dynamics.run_dynamics` with its default step against ``expo`` over the
+   run by :func:`femgear.system.dynamics.run_dynamics` with its default step against ``expo`` over the
    same 100 mesh periods (50 dropped) at 2× and 4× the recording steps per mesh period and 2×
    the stiffness sub-steps, recorded throughout; the 4× run is the reference, and its change
    from the 2× run is printed as the reference's own error.  Keys: gear v_y (acceptance: within
@@ -46,8 +46,8 @@ KEYS = ["gear.velocity.y", "dte_rms", "mesh_force.L.amplitude", "mesh_force.R.am
 def setup(scene: str, rpm: float):
     """The scene's dynamic model at ``rpm``."""
     from femgear.case import build_case
-    from femgear.dynamics import build_model
     from femgear.scene import load_scene
+    from femgear.system.dynamics import build_model
 
     return build_model(build_case(load_scene(SCENES[scene], [f"operating.speed_rpm={rpm!r}"])))
 
@@ -68,10 +68,10 @@ def job_seconds(scene: str, rpm: float) -> dict:
 
 def accuracy(scene: str, rpm: float) -> dict:
     """Default run against expo at 2× and 4× the recording steps (2× the sub-steps), same periods."""
-    from femgear.dynamics import run_dynamics, simulate
-    from femgear.dynamics.expo import default_substeps
-    from femgear.dynamics.response import analyse
-    from femgear.dynamics.run import step_plan
+    from femgear.system.dynamics import run_dynamics, simulate
+    from femgear.system.dynamics.expo import default_substeps
+    from femgear.system.dynamics.response import analyse
+    from femgear.system.dynamics.run import step_plan
 
     model = setup(scene, rpm)
     per, per_t = step_plan(model)
@@ -154,7 +154,7 @@ def main(argv: list[str] | None = None) -> int:
     args = p.parse_args(argv)
     res = run(tuple(args.scenes), tuple(args.speeds), args.repeats, not args.no_jobs, not args.no_accuracy)
     _table(res)
-    from femgear.io.results import write_json
+    from femgear.edge.io.results import write_json
 
     print(write_json(ROOT / "out" / "benchmarks" / "dynamics_speed.json", res))
     print(json.dumps(res, default=float))

@@ -38,15 +38,15 @@ import time
 
 import numpy as np
 
-from femgear.contact.film import nvm_central
-from femgear.ehl import params as pr
-from femgear.ehl.dimensional import EHLOil, solve_line_dimensional
-from femgear.ehl.grid import Grid
-from femgear.ehl.level import Level
-from femgear.ehl.line import line_level
-from femgear.ehl.point import default_domain, solve_point
-from femgear.ehl.rheology import Rheology
 from femgear.perf import measure
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
+from femgear.physics.ehl.grid import Grid
+from femgear.physics.ehl.level import Level
+from femgear.physics.ehl.line import line_level
+from femgear.physics.ehl.point import default_domain, solve_point
+from femgear.physics.ehl.rheology import Rheology
 
 CASES = ((20.0, 10.0), (200.0, 10.0))
 

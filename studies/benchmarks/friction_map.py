@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.lubrication.map import FrictionMap, envelope_axes, hertz_level_solver
+from femgear.physics.lubrication.map import FrictionMap, envelope_axes, hertz_level_solver
 from femgear.scene import load_scene
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -25,8 +25,8 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def run(level: int = 1, phases: int = 64, repeat: int = 3, order: int = 1) -> dict:
-    from femgear.geometry.gear import GearPair
-    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.geometry.gear import GearPair
+    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene import load_scene
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
@@ -55,7 +55,7 @@ def run(level: int = 1, phases: int = 64, repeat: int = 3, order: int = 1) -> di
         times.append(time.perf_counter() - t0)
     out["cycle_s_median"] = statistics.median(times)
     out["cycle_s_all"] = times
-    from femgear.ltca.level import resolved_orders
+    from femgear.physics.ltca.level import resolved_orders
 
     t0 = time.perf_counter()
     out["resolved_orders"] = resolved_orders(model, force, scene.modifications)[0]

@@ -4,17 +4,17 @@
 
 1. At a mid-path contact of the paper baseline (w' = 84.3 kN/m, R = 12.3 mm, u_e = 1.09 m/s,
    oil at 313 K) and SRR 0, 0.3, 1.0: wall time of the isothermal FE line EHL
-   (:func:`femgear.ehl.dimensional.solve_line_dimensional`) and of the TEHL solve
-   (:func:`femgear.tehl.solve_tehl_line`, which includes its isothermal start) per grid level,
+   (:func:`femgear.physics.ehl.dimensional.solve_line_dimensional`) and of the TEHL solve
+   (:func:`femgear.physics.tehl.solve_tehl_line`, which includes its isothermal start) per grid level,
    timed in alternation (iso, TEHL, iso, TEHL, ...: a shared machine's load hits both
    alike), medians and the median of the per-pair ratios (issue 16 target: ≤ 2×); beside
    it the TEHL loop on the fine grid alone (``coarse=False``, the loop before the nested
    iteration) and the differences of the two answers (h_c, h_min, μ, peak rise).
 2. Point contact at the seed paper's benchmark condition (500 N, 10 m/s, 80 °C, R = 20 mm
-   assumed): isothermal FE point EHL vs :func:`femgear.tehl.point.solve_tehl_point` at grid
+   assumed): isothermal FE point EHL vs :func:`femgear.physics.tehl.point.solve_tehl_point` at grid
    level ``--point-level`` (2 = 65 x 65), SRR 0 and 0.3.
 3. A friction/temperature map of TEHL solves over the baseline envelope
-   (:func:`femgear.tehl.solver.tehl_map`, level 4): build time, and its interpolation error
+   (:func:`femgear.physics.tehl.solver.tehl_map`, level 4): build time, and its interpolation error
    against ``--samples`` fresh TEHL solves at random points; the time of one map query.
 Prints tables and one JSON line.
 """
@@ -61,8 +61,8 @@ def _pairs(iso, tehl, repeats):
 
 def _line_rows(levels, repeats, setup, oil):
     """Part 1: the line TEHL against the isothermal solve, nested and on the fine grid alone."""
-    from femgear.ehl.dimensional import solve_line_dimensional
-    from femgear.tehl import solve_tehl_line
+    from femgear.physics.ehl.dimensional import solve_line_dimensional
+    from femgear.physics.tehl import solve_tehl_line
 
     rows = []
     print(f"{'level':>5} {'SRR':>5} {'iso [s]':>8} {'tehl [s]':>8} {'ratio':>6} {'fine-only':>9} {'its':>4} "
@@ -88,9 +88,9 @@ def _line_rows(levels, repeats, setup, oil):
 
 
 def main() -> dict:
+    from femgear.physics.tehl.line import ehl_oil_at
+    from femgear.physics.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes, tehl_setup
     from femgear.scene import load_scene
-    from femgear.tehl.line import ehl_oil_at
-    from femgear.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes, tehl_setup
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--levels", default="4,5,6")
@@ -109,8 +109,8 @@ def main() -> dict:
     if args.line_only:
         print(json.dumps({"solve": rows}))
         return {"solve": rows}
-    from femgear.ehl.dimensional import solve_point_dimensional
-    from femgear.tehl.point import solve_tehl_point
+    from femgear.physics.ehl.dimensional import solve_point_dimensional
+    from femgear.physics.tehl.point import solve_tehl_point
 
     plev = 1 if args.quick else args.point_level
     poil = ehl_oil_at(setup["oil"], 353.0)

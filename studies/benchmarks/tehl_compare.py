@@ -53,11 +53,11 @@ def main() -> dict:
     sys.path.insert(0, tmp.name)
     from femgear_base.tehl import solve_tehl_line as base_tehl_line
 
-    from femgear.ehl.dimensional import solve_line_dimensional
+    from femgear.physics.ehl.dimensional import solve_line_dimensional
+    from femgear.physics.tehl import solve_tehl_line
+    from femgear.physics.tehl.line import ehl_oil_at
+    from femgear.physics.tehl.solver import tehl_setup
     from femgear.scene import load_scene
-    from femgear.tehl import solve_tehl_line
-    from femgear.tehl.line import ehl_oil_at
-    from femgear.tehl.solver import tehl_setup
 
     setup = tehl_setup(load_scene(ROOT / "studies" / "paper_baseline.toml"))
     oil = ehl_oil_at(setup["oil"], T0)

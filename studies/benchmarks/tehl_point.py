@@ -4,9 +4,9 @@
 
 The paper baseline (studies/paper_baseline.toml) with a lead crowning C_beta = 10 um on both
 members (chosen before any run; ``--crowning``) and ``physics.lubrication = "tehl-point"``:
-the scene's lubrication solver (:func:`femgear.lubrication.levels.lubrication_solver`) at
+the scene's lubrication solver (:func:`femgear.physics.lubrication.levels.lubrication_solver`) at
 every position of the case's path (``numerics.path_points`` + the pitch point) under the
-line load of the load sharing, as :func:`femgear.lubrication.levels.static_friction` does for
+line load of the load sharing, as :func:`femgear.physics.lubrication.levels.static_friction` does for
 the dynamics. Prints the wall time of the whole path (target <= 60 s, >= 21 positions), the
 grid level, and its accuracy: mu, dT, h_c against grid level +1 at ``--check`` positions
 (ends and pitch point). One JSON line at the end.
@@ -27,10 +27,10 @@ from pathlib import Path
 import numpy as np
 
 from femgear.case import build_case
-from femgear.contact.path import contact_along_path
-from femgear.lubrication.levels import friction_along_path, lubrication_solver
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.lubrication.levels import friction_along_path, lubrication_solver
+from femgear.physics.tehl.point_level import POINT_LEVEL, tehl_point_solver
 from femgear.scene import scene_from_dict
-from femgear.tehl.point_level import POINT_LEVEL, tehl_point_solver
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -70,7 +70,7 @@ def test_no_import_cycles():
 def test_graph_sees_known_edges():
     """The graph is not vacuous: it finds the dynamics → stiffness and cli → cli.common edges."""
     _, edges = import_graph()
-    assert any(m.startswith("femgear.cli.common") for m in edges["femgear.cli.common"] | edges["femgear.cli.run"])
+    assert any(m.startswith("femgear.edge.cli.common") for m in edges["femgear.edge.cli.common"] | edges["femgear.edge.cli.run"])
     assert len(sum((list(v) for v in edges.values()), [])) > 100
 
 

@@ -5,10 +5,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.body.compliance import ToothFE, fe_pair_stiffness_per_width
-from femgear.geometry.gear import GearPair
-from femgear.mesh.section import gear_section
-from femgear.stiffness.pem import pair_stiffness_per_width
+from femgear.physics.body.compliance import ToothFE, fe_pair_stiffness_per_width
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.mesh.section import gear_section
+from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
 BASELINE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
 
@@ -40,7 +40,7 @@ def test_graded_far_field_keeps_the_compliance_with_fewer_dof(pair):
 
 def test_section_size_in_module_units():
     """Similar gears (all lengths × 2) get the same 2-D mesh: the sizes follow the module."""
-    from femgear.body.compliance import section_size
+    from femgear.physics.body.compliance import section_size
     from femgear.scene import load_scene
 
     a = GearPair.from_scene(load_scene(BASELINE))

@@ -11,7 +11,7 @@ def test_wide_face_3d_compliance_matches_plane_strain(tmp_path, monkeypatch):
     """Mid-face approach of the left helix under a uniform line load on both helices (b = 10 m_n per helix,
     β = 1°: the V body loaded like a 20 m_n wide spur gear), the 3-D FE read at depth d (bending, shear,
     foundation and the compression of the top layer d; same-helix plus cross-helix reading) against the 2-D
-    section-averaged deflection of :class:`femgear.body.compliance.ToothFE` on the same body (a whole gear
+    section-averaged deflection of :class:`femgear.physics.body.compliance.ToothFE` on the same body (a whole gear
     clamped at r_f − 3 m_n), at the three inner profile grid rows.
 
     Measured (P1): level 1 3.2 %, 8.6 %, 11.2 %; level 2 1.7 %, 7.1 %, 8.9 % — the 3-D body is stiffer and the
@@ -20,10 +20,10 @@ def test_wide_face_3d_compliance_matches_plane_strain(tmp_path, monkeypatch):
     softened the body and hid part of that bias; one helix loaded alone reads 4.4 / 9.7 / 12.3 % at level 1.)
     With a finer far field (grade 0.25, h_far 6 h_tooth) level 1 moves by < 0.3 %.  Band 12 % at level 1."""
     monkeypatch.setenv("FEMGEAR_CACHE", str(tmp_path))
-    from femgear.body.compliance import ToothFE
-    from femgear.geometry.gear import GearPair
-    from femgear.ltca.compliance import member_compliance
-    from femgear.mesh.segment import bore_radius, default_spec
+    from femgear.physics.body.compliance import ToothFE
+    from femgear.physics.geometry.gear import GearPair
+    from femgear.physics.ltca.compliance import member_compliance
+    from femgear.physics.mesh.segment import bore_radius, default_spec
 
     pair = GearPair.from_parameters(z1=31, z2=34, m_n=3e-3, alpha_n=math.radians(20), beta=math.radians(1.0),
                                     b=30e-3, x1=0.0, x2=0.0)

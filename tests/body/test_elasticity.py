@@ -5,10 +5,10 @@ import math
 import numpy as np
 import pytest
 
-from femgear.body.elastic import ElasticProblem, rigid_body_modes
-from femgear.body.forms import lame, thermal_modulus
-from femgear.geometry.gear import GearPair
-from femgear.mesh.section import gear_section
+from femgear.physics.body.elastic import ElasticProblem, rigid_body_modes
+from femgear.physics.body.forms import lame, thermal_modulus
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.mesh.section import gear_section
 
 E, NU = 210e9, 0.3
 
@@ -52,7 +52,7 @@ def test_cantilever_matches_timoshenko_beam():
     """Tooth-like beam (L/h = 3): tip deflection vs PL³/(3EI) + PL/(κGA), κ = 5/6, within 3 %."""
     from skfem import FacetBasis, MeshTri
 
-    from femgear.body.forms import traction
+    from femgear.physics.body.forms import traction
 
     L, c = 9e-3, 1.5e-3
     mesh = MeshTri.init_tensor(np.linspace(0, L, 61), np.linspace(-c, c, 21)).with_boundaries(

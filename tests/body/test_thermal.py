@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from femgear.body.thermal import (
+from femgear.physics.body.thermal import (
     analytic_radial_displacement,
     disk_radial_displacement,
     disk_temperature,
@@ -15,9 +15,9 @@ from femgear.body.thermal import (
     solve_temperature,
     thermo_elastic,
 )
-from femgear.geometry.gear import GearPair
-from femgear.mesh.section import annulus, gear_section
-from femgear.stiffness.pem import contact_geometry
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.mesh.section import annulus, gear_section
+from femgear.physics.stiffness.pem import contact_geometry
 
 LAM, E, NU = 1.16e-5, 210e9, 0.3
 
@@ -132,7 +132,7 @@ def test_scene_entry_point():
     a flank-only rise gives what the explicit call with the scene's values gives."""
     from pathlib import Path
 
-    from femgear.body.thermal import flank_deviation_from_scene
+    from femgear.physics.body.thermal import flank_deviation_from_scene
     from femgear.scene import load_scene
 
     path = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"

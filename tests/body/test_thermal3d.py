@@ -6,13 +6,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.body.thermal import flank_deviation
-from femgear.body.thermal3d import thermal_units_3d
 from femgear.errors import SceneError
-from femgear.geometry.gear import GearPair
-from femgear.ltca.separation import tabulated_deviation
+from femgear.physics.body.thermal import flank_deviation
+from femgear.physics.body.thermal3d import thermal_units_3d
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.ltca.separation import tabulated_deviation
+from femgear.physics.stiffness.pem import contact_geometry
 from femgear.scene import load_scene
-from femgear.stiffness.pem import contact_geometry
 
 LAM, E, NU = 1.16e-5, 210e9, 0.3
 BASELINE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"

@@ -8,9 +8,9 @@ import pytest
 
 def test_vtu_round_trip(tmp_path):
     pv = pytest.importorskip("pyvista")
-    from femgear.body.thermal import solve_temperature, thermo_elastic
-    from femgear.body.vtk import write_vtu
-    from femgear.mesh.section import annulus
+    from femgear.physics.body.thermal import solve_temperature, thermo_elastic
+    from femgear.physics.body.vtk import write_vtu
+    from femgear.physics.mesh.section import annulus
 
     mesh = annulus(0.01, 0.03, 4e-3)
     temp = solve_temperature(mesh, 46.0, {"inner": 10.0, "outer": 10.0})

@@ -1,7 +1,7 @@
 """The bad-input matrix of issue 17: every expected failure ends in ONE line on stderr that
 names the key or argument, exit 2 (input) or 1 (solver), no traceback, nothing lost.
 
-Each case runs the real CLI entry point (:func:`femgear.cli.main`) in-process; a few run
+Each case runs the real CLI entry point (:func:`femgear.edge.cli.main`) in-process; a few run
 as subprocesses to check what a shell sees.
 """
 
@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from femgear.cli import main
+from femgear.edge.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = str(ROOT / "studies" / "paper_baseline.toml")
@@ -130,12 +130,12 @@ def _never(*args, **kwargs):
 
 @pytest.mark.parametrize("command", [["run", BASE], ["dynamics", BASE], ["ehl", "line", "--M", "10", "--L", "10"]])
 def test_unwritable_out_is_refused_before_any_computation(command, tmp_path, capsys, monkeypatch):
-    import femgear.dynamics
     import femgear.pipeline
+    import femgear.system.dynamics
 
     monkeypatch.setattr(femgear.pipeline, "run_case", _never)
-    monkeypatch.setattr(femgear.dynamics, "run_dynamics", _never)
-    monkeypatch.setitem(sys.modules, "femgear.ehl.line", None)   # the EHL solver is not even imported
+    monkeypatch.setattr(femgear.system.dynamics, "run_dynamics", _never)
+    monkeypatch.setitem(sys.modules, "femgear.physics.ehl.line", None)   # the EHL solver is not even imported
     blocker = tmp_path / "file"
     blocker.write_text("")
     for out in (str(blocker / "sub"), "/proc/femgear-cannot-write"):

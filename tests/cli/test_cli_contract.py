@@ -7,7 +7,7 @@ import sys
 
 import pytest
 
-from femgear.cli import main
+from femgear.edge.cli import main
 
 
 def test_info_json_last_line(baseline_path, capsys):
@@ -38,7 +38,7 @@ def test_run_writes_results_and_png(baseline_path, tmp_path, capsys):
 )
 def test_user_errors_are_one_line_without_traceback(baseline_path, override, key):
     proc = subprocess.run(
-        [sys.executable, "-m", "femgear.cli", "info", str(baseline_path), "--set", override],
+        [sys.executable, "-m", "femgear.edge.cli", "info", str(baseline_path), "--set", override],
         capture_output=True, text=True, env={**os.environ, "PYTHONWARNINGS": "ignore"},
     )
     assert proc.returncode == 2

@@ -39,8 +39,8 @@ def test_ltca_tool_on_the_baseline_with_a_tip_relief_at_three_torques(tmp_path, 
     """Tip relief 10 µm over 2.5 mm, 100/200/300 N m (level-1 bodies, 32 phases; ≈ 25 s cached): TE curves,
     harmonics, load maps and one ParaView set per torque are written; results.json's TE p-p and harmonics equal
     ``LTCAResult.lte_peak_to_peak``/``harmonics`` (what studies/ltca_study.py prints) to 1e-9."""
-    from femgear.geometry import GearPair
-    from femgear.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.geometry import GearPair
+    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene import load_scene
 
     out = tmp_path / "ltca"

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from femgear.contact import (
+from femgear.physics.contact import (
     dowson_higginson_minimum,
     dowson_toyoda_central,
     hamrock_dowson_central,

@@ -6,7 +6,13 @@ import pytest
 from scipy import integrate
 from scipy.special import ellipe, ellipk
 
-from femgear.contact import ellipticity_exact, ellipticity_hamrock_brewe, hertz_line, hertz_point, reduced_modulus
+from femgear.physics.contact import (
+    ellipticity_exact,
+    ellipticity_hamrock_brewe,
+    hertz_line,
+    hertz_point,
+    reduced_modulus,
+)
 
 E_STEEL = reduced_modulus(210e9, 0.3)
 

@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 from scipy.integrate import trapezoid
 
-from femgear.contact.path import contact_along_path
-from femgear.contact.sharing import load_sharing, single_contact_bounds
-from femgear.geometry.gear import GearPair
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.contact.sharing import load_sharing, single_contact_bounds
+from femgear.physics.geometry.gear import GearPair
 from femgear.scene import load_scene
 
 STUDIES = Path(__file__).resolve().parents[2] / "studies"
@@ -82,7 +82,7 @@ def test_spur_uniform_stiffness_zones():
 def test_spur_pem_sharing_follows_stiffness():
     """With PEM stiffness the pair near the pitch point carries more than half in the double zone's
     middle only if stiffer; shares of the two pairs in contact sum to one."""
-    from femgear.stiffness.pem import pair_stiffness_per_width
+    from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
     p = _spur()
     k = lambda x: pair_stiffness_per_width(p, x, 206e9, 0.3)  # noqa: E731
@@ -96,10 +96,10 @@ def test_spur_pem_sharing_follows_stiffness():
 @pytest.mark.parametrize("kind", ["spur", "single-helical"])
 def test_time_mean_force_balance(kind):
     """(b/(p_bt cos β_b)) ∫ w̄ du = F_n: the time mean of the load carried equals the force (PEM stiffness)."""
-    from femgear.stiffness.pem import pair_stiffness_per_width
+    from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
     beta = 0.0 if kind == "spur" else math.radians(17)
-    from femgear.stiffness.tvms import tabulated
+    from femgear.physics.stiffness.tvms import tabulated
 
     p = _spur(beta=beta, kind=kind, b=0.025)
     grid = np.linspace(p.u_start, p.u_end, 81)

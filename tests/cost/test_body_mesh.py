@@ -6,8 +6,15 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from femgear.geometry import GearPair
-from femgear.mesh.segment import body_size, coarse_layers, default_spec, groove_layers, member_body, mesh_revision
+from femgear.physics.geometry import GearPair
+from femgear.physics.mesh.segment import (
+    body_size,
+    coarse_layers,
+    default_spec,
+    groove_layers,
+    member_body,
+    mesh_revision,
+)
 
 
 def _boundary_area(mesh, facets) -> float:

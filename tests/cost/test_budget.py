@@ -59,7 +59,7 @@ def test_progress_lines_after_the_first_seconds(caplog, monkeypatch):
 
 def test_gmsh_leaves_ctrl_c_to_python(baseline_pair):
     """gmsh's initialize() set SIGINT to SIG_DFL for good: Ctrl-C then killed femgear without a word."""
-    from femgear.mesh.section import gear_section
+    from femgear.physics.mesh.section import gear_section
 
     before = signal.getsignal(signal.SIGINT)
     gear_section(baseline_pair, 1, baseline_pair.m_n / 2.5, n_teeth=3)
@@ -74,7 +74,7 @@ def _env(tmp_path: Path, **extra) -> dict:
 
 def test_ltca_over_the_budget_refuses_in_one_line_naming_the_level_that_fits(tmp_path, baseline_pair):
     """A memory budget between the level-0 and level-1 bodies: exit 2 before any body is built, one line."""
-    from femgear.ltca.level import body_estimates
+    from femgear.physics.ltca.level import body_estimates
 
     need = [max(e.memory_bytes for e in body_estimates(baseline_pair, 206e9, 0.3, k, bore_radius=(0.02, 0.02),
                                                        cached=False)) for k in (0, 1)]
@@ -154,12 +154,12 @@ def _raise_scene_error():
 
 def test_ctrl_c_kills_the_forked_stage_at_once(tmp_path):
     """The parent takes SIGINT while its child computes (here: sleeps 60 s), kills it and exits 130."""
-    code = ("import sys, time\nfrom femgear.cli import main\nimport femgear.cli\n"
+    code = ("import sys, time\nfrom femgear.edge.cli import main\nimport femgear.edge.cli\n"
             "from femgear.perf import interruptible\n"
             "def job(args):\n    print('child started', file=sys.stderr, flush=True)\n"
             "    interruptible(time.sleep, 60)\n"
             "import argparse\nns = argparse.Namespace(func=job, debug=False)\n"
-            "sys.exit(femgear.cli._dispatch(ns))\n")
+            "sys.exit(femgear.edge.cli._dispatch(ns))\n")
     proc = subprocess.Popen([sys.executable, "-c", code], env=_env(tmp_path), stderr=subprocess.PIPE, text=True)
     assert "child started" in proc.stderr.readline()
     time.sleep(0.5)

@@ -4,11 +4,11 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.coupling import CouplingSetup, coupling_iterations, run_coupled
-from femgear.coupling.profile import mesh_deviation, phase_table
 from femgear.errors import ConvergenceError
-from femgear.geometry import path_positions
+from femgear.physics.geometry import path_positions
 from femgear.scene import load_scene
+from femgear.system.coupling import CouplingSetup, coupling_iterations, run_coupled
+from femgear.system.coupling.profile import mesh_deviation, phase_table
 
 FAST = ['physics.dynamics="lumped"', "numerics.dynamics_cycles=40", "numerics.transient_cycles=20"]
 
@@ -36,7 +36,7 @@ def test_tables_are_the_contact_line_mean(baseline_pair):
 def test_spur_tables_are_the_mean_over_the_pairs_in_contact(baseline_path):
     """Spur pair (zero line extent): at phase φ the pairs sit at u_A + (φ + k) p_bt; the table of
     h(u) is the mean of h over them (found by the zoo: a spur scene with a thermal level failed)."""
-    from femgear.geometry import GearPair
+    from femgear.physics.geometry import GearPair
 
     p = GearPair.from_scene(load_scene(baseline_path, ['pair.kind="spur"', "pair.helix_angle_deg=0.0"]))
     u = path_positions(p, 201)
@@ -108,7 +108,7 @@ def test_excitation_table_is_exact_for_piecewise_linear_deviations(baseline_pair
 
 def test_harmonic_fit_recovers_a_trigonometric_polynomial():
     """Identity: a table that is a trigonometric polynomial of degree ≤ m is fitted exactly."""
-    from femgear.coupling.profile import harmonic_fit
+    from femgear.system.coupling.profile import harmonic_fit
 
     phi = np.arange(64) / 64
     e = 0.3 + np.cos(2 * np.pi * phi) + 0.2 * np.sin(2 * np.pi * 3 * phi)

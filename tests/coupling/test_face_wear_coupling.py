@@ -18,8 +18,8 @@ def test_the_coupling_loop_carries_a_face_resolved_wear_field():
     from dataclasses import replace
 
     from femgear.case import build_case
-    from femgear.coupling import CouplingSetup, run_coupled
     from femgear.scene import load_scene
+    from femgear.system.coupling import CouplingSetup, run_coupled
 
     runs = {}
     for field in ("path", "face"):

@@ -19,7 +19,7 @@ def test_non_positive_scene_values_refused(baseline_path, override, key):
 
 def test_non_positive_values_refused_by_the_assembly(baseline_scene):
     """Scenes built around the loader (model_copy) are checked again by build_model."""
-    from femgear.dynamics import build_model
+    from femgear.system.dynamics import build_model
 
     bad = baseline_scene.model_copy(update={"pinion": baseline_scene.pinion.model_copy(update={"mass": -1.0})})
     with pytest.raises(SceneError, match="pinion.mass"):
@@ -30,14 +30,14 @@ def test_non_positive_values_refused_by_the_assembly(baseline_scene):
 
 
 def test_bad_mesh_stiffness_refused():
-    from femgear.dynamics import StiffnessTable
+    from femgear.system.dynamics import StiffnessTable
 
     with pytest.raises(ValueError, match="positive"):
         StiffnessTable(np.array([1e8, -1.0]), np.array([1e8, 1e8]))
 
 
 def test_step_above_the_rk4_stability_limit_refused(lumped):
-    from femgear.dynamics import simulate, stability_limit
+    from femgear.system.dynamics import simulate, stability_limit
 
     limit = stability_limit(lumped)
     assert 1e-5 < limit < 1e-3
@@ -47,7 +47,7 @@ def test_step_above_the_rk4_stability_limit_refused(lumped):
 
 
 def test_bad_integrator_arguments(lumped):
-    from femgear.dynamics import simulate
+    from femgear.system.dynamics import simulate
 
     with pytest.raises(ValueError, match="method"):
         simulate(lumped, 1e-3, 1e-5, "euler")

@@ -2,7 +2,14 @@
 
 import numpy as np
 
-from femgear.excitation import Eccentricity, ProfileError, RandomError, Unbalance, contact_indicator, gap_function
+from femgear.physics.excitation import (
+    Eccentricity,
+    ProfileError,
+    RandomError,
+    Unbalance,
+    contact_indicator,
+    gap_function,
+)
 
 
 def _fd(f, t, h=1e-7):

@@ -4,15 +4,15 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.dynamics import MeshDeviation, build_model, simulate, with_deviation
-from femgear.dynamics.integrate import expo_step
-from femgear.dynamics.response import analyse
 from femgear.scene import load_scene
+from femgear.system.dynamics import MeshDeviation, build_model, simulate, with_deviation
+from femgear.system.dynamics.integrate import expo_step
+from femgear.system.dynamics.response import analyse
 
 
 def energy(model, q, v):
     """Kinetic + structural + mesh potential − work potential of the constant torques [J]."""
-    from femgear.excitation import gap_function
+    from femgear.physics.excitation import gap_function
 
     kin = 0.5 * np.einsum("ti,ij,tj->t", v, model.M, v)
     pot = 0.5 * np.einsum("ti,ij,tj->t", q, model.K, q)

@@ -4,10 +4,10 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.dynamics import build_model
-from femgear.dynamics.modal import modal_analysis
-from femgear.dynamics.sweep import peak_frequency, speed_sweep
 from femgear.scene import load_scene
+from femgear.system.dynamics import build_model
+from femgear.system.dynamics.modal import modal_analysis
+from femgear.system.dynamics.sweep import peak_frequency, speed_sweep
 
 
 def test_modal_energy_fractions(lumped, timoshenko):

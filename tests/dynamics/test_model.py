@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.dynamics.layout import BODIES, dof
-from femgear.geometry import kinematics
+from femgear.physics.geometry import kinematics
+from femgear.system.dynamics.layout import BODIES, dof
 
 
 @pytest.mark.parametrize("which", ["lumped", "timoshenko"])
@@ -24,7 +24,7 @@ def test_matrices_symmetric_positive(which, request):
 
 def test_mesh_vector_matches_the_deflection_formula(lumped):
     """g_s = the notes' δ_s with β_b, ψ = α_wt and the tilt arm r_w (layout docstring)."""
-    from femgear.dynamics.mesh import mesh_geometry
+    from femgear.system.dynamics.mesh import mesh_geometry
 
     pair = lumped.pair
     geo = mesh_geometry(pair, 0.01)
@@ -40,7 +40,7 @@ def test_mesh_vector_matches_the_deflection_formula(lumped):
 
 def test_action_equals_reaction(lumped):
     """Mesh forces sum to zero force and zero moment about any point (in the full space)."""
-    from femgear.dynamics.mesh import mesh_geometry
+    from femgear.system.dynamics.mesh import mesh_geometry
 
     geo = mesh_geometry(lumped.pair, lumped.half_spacing)
     for s in range(2):
@@ -61,7 +61,7 @@ def test_rigid_rotation_leaves_mesh_undeformed_and_gives_the_sliding_speed(lumpe
     for side in range(2):
         qdot[dof(BODIES[side], "rz")] = lumped.omega[0]
         qdot[dof(BODIES[2 + side], "rz")] = lumped.omega[1]
-    from femgear.dynamics.mesh import mesh_geometry
+    from femgear.system.dynamics.mesh import mesh_geometry
 
     geo = mesh_geometry(pair, lumped.half_spacing)
     assert np.allclose(geo.g @ qdot, 0.0, atol=1e-12)
@@ -73,7 +73,7 @@ def test_rigid_rotation_leaves_mesh_undeformed_and_gives_the_sliding_speed(lumpe
 
 
 def test_static_mesh_force_carries_the_torque(baseline_scene):
-    from femgear.dynamics import build_model
+    from femgear.system.dynamics import build_model
 
     m = build_model(build_case(baseline_scene), "lumped", stiffness="constant", friction=0.0)
     q0 = m.static_state()
@@ -86,7 +86,7 @@ def test_static_mesh_force_carries_the_torque(baseline_scene):
 
 
 def test_contact_line_stiffness_mean_and_stagger(baseline_pair):
-    from femgear.dynamics.mesh import constant_stiffness, contact_line_stiffness
+    from femgear.system.dynamics.mesh import constant_stiffness, contact_line_stiffness
 
     k = contact_line_stiffness(baseline_pair, 2e10, stagger=0.5, samples=512)
     kc = constant_stiffness(baseline_pair, 2e10)
@@ -97,7 +97,7 @@ def test_contact_line_stiffness_mean_and_stagger(baseline_pair):
 
 
 def test_external_tvms_table_plugs_in(baseline_scene):
-    from femgear.dynamics import build_model
+    from femgear.system.dynamics import build_model
 
     class Ripple:                                             # any callable phase -> (k_L, k_R)
         level = "test"
@@ -115,9 +115,9 @@ def test_eccentricity_is_absorbed_by_the_free_rotation_but_not_by_a_power_loop(b
     """Eccentricity is a shaft-order transmission error: with prescribed torques the gear train
     follows it by a rigid relative rotation (mesh force unchanged); a torsional power loop resists
     that rotation and the shaft-order mesh force ≈ k_loop/r_b2² · e appears."""
-    from femgear.dynamics import build_model, simulate
-    from femgear.dynamics.response import analyse
     from femgear.scene import load_scene
+    from femgear.system.dynamics import build_model, simulate
+    from femgear.system.dynamics.response import analyse
 
     amp = {}
     for kloop in (0.0, 1e4):
@@ -134,9 +134,9 @@ def test_eccentricity_is_absorbed_by_the_free_rotation_but_not_by_a_power_loop(b
 def test_stagger_drives_axial_shuttling(baseline_path):
     """Apex-aligned helices: axial mesh forces cancel, no axial motion.  Half-pitch stagger: the
     left/right stiffness ripples are out of phase and the pinion shuttles axially (notes §5)."""
-    from femgear.dynamics import build_model, simulate
-    from femgear.dynamics.response import analyse
     from femgear.scene import load_scene
+    from femgear.system.dynamics import build_model, simulate
+    from femgear.system.dynamics.response import analyse
 
     z = {}
     for stagger in (0.0, 0.5):
@@ -149,8 +149,8 @@ def test_stagger_drives_axial_shuttling(baseline_path):
 
 
 def test_timoshenko_level_runs_and_carries_the_torque(timoshenko, baseline_scene):
-    from femgear.dynamics import simulate, stability_limit
-    from femgear.dynamics.response import analyse
+    from femgear.system.dynamics import simulate, stability_limit
+    from femgear.system.dynamics.response import analyse
 
     assert stability_limit(timoshenko) > 1e-5                     # the paper's step is admissible
     res = analyse(simulate(timoshenko, 20 * timoshenko.mesh_period, 1e-5, "rk4"), transient_cycles=10)
@@ -178,7 +178,7 @@ def test_rayleigh_damping_leaves_the_free_rotation_undamped(lumped):
 def test_ltca_excitation_enters_as_the_drive_flank_deviation(baseline_scene):
     """An ``ltca`` stiffness carries e_s = LTE − F_s/k_s: the model's drive threshold moves by
     e_s(φ) (N = k_s (G q − b − e_s)), and coupling deviations add to it, not replace it."""
-    from femgear.dynamics import MeshDeviation, build_model, with_deviation
+    from femgear.system.dynamics import MeshDeviation, build_model, with_deviation
 
     n = 64
     ph = np.arange(n) / n
@@ -190,7 +190,7 @@ def test_ltca_excitation_enters_as_the_drive_flank_deviation(baseline_scene):
         info = {"excitation": {"e_left": e, "e_right": e, "k_secant_left": k, "k_secant_right": k}}
 
         def __call__(self, phase):
-            from femgear.dynamics.mesh import periodic_interp
+            from femgear.system.dynamics.mesh import periodic_interp
 
             kk = periodic_interp(k, np.asarray(phase))
             return kk, kk

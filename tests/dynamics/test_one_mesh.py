@@ -7,7 +7,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.dynamics.one_mesh import (
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.tvms import mesh_stiffness, mesh_stiffness_from_scene
+from femgear.scene import load_scene
+from femgear.system.dynamics.one_mesh import (
     MemberData,
     build_one_mesh,
     natural_frequencies,
@@ -16,9 +19,6 @@ from femgear.dynamics.one_mesh import (
     torsional_mode_hand,
     torsional_sweep,
 )
-from femgear.geometry.gear import GearPair
-from femgear.scene import load_scene
-from femgear.stiffness.tvms import mesh_stiffness, mesh_stiffness_from_scene
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 
@@ -130,7 +130,7 @@ def test_simulation_refuses_unstable_step(fzg):
 def test_model_from_an_fzg_case():
     """The FZG C14 scene's case binds to the 12-DOF model; its static mesh force is F_bn."""
     from femgear.case import build_case
-    from femgear.dynamics.one_mesh import one_mesh_from_case, simulate_case
+    from femgear.system.dynamics.one_mesh import one_mesh_from_case, simulate_case
 
     case = build_case(load_scene(FZG, ["numerics.dynamics_cycles=12", "numerics.transient_cycles=8",
                                        "numerics.steps_per_mesh_period=120"]))

@@ -8,7 +8,7 @@ import sys
 import numpy as np
 
 from femgear.case import build_case
-from femgear.dynamics.response import half_peak_to_peak, spectrum
+from femgear.system.dynamics.response import half_peak_to_peak, spectrum
 
 
 def test_spectrum_and_amplitude_of_a_sine():
@@ -27,9 +27,9 @@ def test_friction_dissipates_power_on_average(baseline_scene):
     the mean |sliding speed| over the helix's contact lines computed independently from the
     kinematics (v_s = ω1 ρ1 − ω2 ρ2); the tanh regularisation and the 64-point line quadrature
     of the tables are the only differences (< 1e-3)."""
-    from femgear.dynamics import build_model
-    from femgear.dynamics.layout import BODIES, dof
-    from femgear.geometry import contact_lines, kinematics
+    from femgear.physics.geometry import contact_lines, kinematics
+    from femgear.system.dynamics import build_model
+    from femgear.system.dynamics.layout import BODIES, dof
 
     m = build_model(build_case(baseline_scene), "lumped", stiffness="contact-line", friction=0.05)
     qdot = np.zeros(24)
@@ -53,8 +53,8 @@ def test_friction_dissipates_power_on_average(baseline_scene):
 
 
 def test_run_dynamics_writes_results_and_plots(lumped, tmp_path):
-    from femgear.dynamics.run import run_dynamics
-    from femgear.io.dynamics import write_dynamics
+    from femgear.edge.io.dynamics import write_dynamics
+    from femgear.system.dynamics.run import run_dynamics
 
     r = run_dynamics(lumped, method="rk4", dt=2e-5, cycles=20, transient_cycles=10)
     files = write_dynamics(r, tmp_path)
@@ -66,20 +66,20 @@ def test_run_dynamics_writes_results_and_plots(lumped, tmp_path):
 
 
 def test_cli_prints_json_last(baseline_path, tmp_path):
-    out = subprocess.run([sys.executable, "-m", "femgear.cli", "dynamics", str(baseline_path), "--stiffness",
+    out = subprocess.run([sys.executable, "-m", "femgear.edge.cli", "dynamics", str(baseline_path), "--stiffness",
                           "contact-line", "--cycles", "12", "--transient", "6", "--dt", "2e-4", "--no-plots", "--out", str(tmp_path),
                           "--json"], capture_output=True, text=True, check=True,
                          env={**os.environ, "OPENBLAS_NUM_THREADS": "1"}).stdout
     payload = json.loads(out.strip().splitlines()[-1])
     assert payload["level"] == "lumped" and payload["method"] == "expo"
-    bad = subprocess.run([sys.executable, "-m", "femgear.cli", "dynamics", str(baseline_path), "--set",
+    bad = subprocess.run([sys.executable, "-m", "femgear.edge.cli", "dynamics", str(baseline_path), "--set",
                           "pinion.mass=-1"], capture_output=True, text=True)
     assert bad.returncode == 2 and "pinion.mass" in bad.stderr
 
 
 def test_formula_friction_along_the_path(baseline_scene):
     """μ(u) from the friction package (U-shaped, zero at the pitch point) folded into the tables."""
-    from femgear.dynamics import build_model
+    from femgear.system.dynamics import build_model
 
     m = build_model(build_case(baseline_scene), "lumped", stiffness="contact-line")   # the formula level's μ(u)
     c = build_model(build_case(baseline_scene), "lumped", stiffness="contact-line", friction=0.05)
@@ -89,7 +89,7 @@ def test_formula_friction_along_the_path(baseline_scene):
 
 
 def test_cli_kahraman_singh_json(baseline_path, tmp_path):
-    out = subprocess.run([sys.executable, "-m", "femgear.cli", "dynamics", str(baseline_path), "--kahraman-singh",
+    out = subprocess.run([sys.executable, "-m", "femgear.edge.cli", "dynamics", str(baseline_path), "--kahraman-singh",
                           "--no-plots", "--json", "--out", str(tmp_path)], capture_output=True, text=True, check=True)
     payload = json.loads(out.stdout.strip().splitlines()[-1])
     gap = np.array(payload["amplitude_down"]) - np.array(payload["amplitude_up"])
@@ -97,7 +97,7 @@ def test_cli_kahraman_singh_json(baseline_path, tmp_path):
 
 
 def test_hermite_amplitude_of_a_coarsely_sampled_sine():
-    from femgear.dynamics.response import hermite_half_peak_to_peak
+    from femgear.system.dynamics.response import hermite_half_peak_to_peak
 
     w = 2 * np.pi / 8                                          # 8 samples per period, arbitrary phase
     for phase in np.linspace(0, 1, 5):
@@ -109,7 +109,7 @@ def test_hermite_amplitude_of_a_coarsely_sampled_sine():
 def test_hermite_extremes_are_exact_on_each_cubic():
     """Identity: the amplitude is that of the piecewise cubic Hermite interpolant itself (its
     extremes found analytically), checked against a dense evaluation of the same cubics."""
-    from femgear.dynamics.response import hermite_half_peak_to_peak
+    from femgear.system.dynamics.response import hermite_half_peak_to_peak
 
     rng = np.random.default_rng(0)
     X, D = rng.normal(size=(40, 3)), rng.normal(size=(40, 3))

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from femgear.dynamics.sdof import kahraman_singh_sweep
+from femgear.system.dynamics.sdof import kahraman_singh_sweep
 
 
 def test_up_and_down_sweeps_differ_with_contact_loss_near_resonance():

@@ -9,12 +9,12 @@ import pytest
 from scipy.linalg import expm
 
 from femgear.case import build_case
-from femgear.dynamics import build_model, run_dynamics, simulate
-from femgear.dynamics.expo import _substeps, band_exact_staircase, clear_propagator_cache, default_substeps
-from femgear.dynamics.modal import mesh_mode_limit
-from femgear.dynamics.response import analyse
-from femgear.dynamics.run import STEPS_PER_MODE_PERIOD, step_plan
 from femgear.scene import load_scene
+from femgear.system.dynamics import build_model, run_dynamics, simulate
+from femgear.system.dynamics.expo import _substeps, band_exact_staircase, clear_propagator_cache, default_substeps
+from femgear.system.dynamics.modal import mesh_mode_limit
+from femgear.system.dynamics.response import analyse
+from femgear.system.dynamics.run import STEPS_PER_MODE_PERIOD, step_plan
 
 
 def _model(baseline_path, rpm):

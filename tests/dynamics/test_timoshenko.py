@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.linalg import eigh
 
-from femgear.dynamics.timoshenko import ShaftSection, beam_element_local, guyan, shaft_element
+from femgear.system.dynamics.timoshenko import ShaftSection, beam_element_local, guyan, shaft_element
 
 STEEL = dict(youngs_modulus=210e9, poisson_ratio=0.3, density=7850.0)
 

@@ -6,13 +6,13 @@ import math
 
 import pytest
 
-from femgear.cli import main
-from femgear.contact.film import nvm_central
-from femgear.ehl import accuracy as acc
-from femgear.ehl.grid import Domain
-from femgear.ehl.line import solve_line
-from femgear.ehl.point import solve_point
+from femgear.edge.cli import main
 from femgear.errors import SceneError
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl import accuracy as acc
+from femgear.physics.ehl.grid import Domain
+from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.point import solve_point
 
 
 def test_richardson_recovers_a_second_order_sequence():

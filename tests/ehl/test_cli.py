@@ -2,7 +2,7 @@
 
 import json
 
-from femgear.cli import main
+from femgear.edge.cli import main
 
 
 def _last_json(capsys):

@@ -2,9 +2,9 @@
 
 import pytest
 
-from femgear.contact.film import moes_to_h, nvm_central
-from femgear.contact.hertz import hertz_point
-from femgear.ehl.dimensional import EHLOil, solve_line_dimensional, solve_point_dimensional
+from femgear.physics.contact.film import moes_to_h, nvm_central
+from femgear.physics.contact.hertz import hertz_point
+from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional, solve_point_dimensional
 
 F, R, UM, E = 500.0, 0.02, 2.0, 2.2e11
 OIL = EHLOil(eta0=0.08, alpha=22e-9)  # seed paper table 2 oil

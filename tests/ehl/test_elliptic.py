@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from femgear.contact.film import nvm_central
-from femgear.ehl.elastic import PointDeflection, cell_influence
-from femgear.ehl.grid import Domain, Grid
-from femgear.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl.elastic import PointDeflection, cell_influence
+from femgear.physics.ehl.grid import Domain, Grid
+from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
 
 
 def _quad(dx, dy, hx, hy):

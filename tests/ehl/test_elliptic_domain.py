@@ -9,10 +9,10 @@ inlet lowers Hc (docs/elliptic_regimes.md): the tests below pin the measured mec
 import numpy as np
 import pytest
 
-from femgear.contact.film import nvm_central
-from femgear.ehl import params as pr
-from femgear.ehl.grid import Grid
-from femgear.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.grid import Grid
+from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
 
 
 def _dom(M, L, lam, k):

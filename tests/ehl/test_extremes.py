@@ -14,11 +14,11 @@
 import numpy as np
 import pytest
 
-from femgear.contact.film import moes_line_central, nvm_central
-from femgear.ehl.grid import Domain
-from femgear.ehl.line import solve_line
-from femgear.ehl.point import solve_point
 from femgear.errors import ConvergenceError
+from femgear.physics.contact.film import moes_line_central, nvm_central
+from femgear.physics.ehl.grid import Domain
+from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.point import solve_point
 
 REGRESSION_REL = 0.02
 

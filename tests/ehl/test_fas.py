@@ -4,14 +4,14 @@ load balance, convergence factor on a linear model, warm starts, failure with hi
 import numpy as np
 import pytest
 
-from femgear.contact.film import nvm_central
-from femgear.ehl import params as pr
-from femgear.ehl.fas import FAS, FasOptions
-from femgear.ehl.fas_point import solve_point_fas
-from femgear.ehl.fd import FDLevel, inject, prolong_bilinear, restrict_full_weighting
-from femgear.ehl.grid import Grid
-from femgear.ehl.point import default_domain, fas_suits, solve_point
 from femgear.errors import ConvergenceError
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.fas import FAS, FasOptions
+from femgear.physics.ehl.fas_point import solve_point_fas
+from femgear.physics.ehl.fd import FDLevel, inject, prolong_bilinear, restrict_full_weighting
+from femgear.physics.ehl.grid import Grid
+from femgear.physics.ehl.point import default_domain, fas_suits, solve_point
 
 
 @pytest.fixture(scope="module")

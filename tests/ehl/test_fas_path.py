@@ -5,8 +5,8 @@ cold solves well within their error estimates, and the predictor does the work."
 import numpy as np
 import pytest
 
-from femgear.ehl.fas_point import FasPoint, _PointPath
-from femgear.ehl.point import default_domain, solve_point
+from femgear.physics.ehl.fas_point import FasPoint, _PointPath
+from femgear.physics.ehl.point import default_domain, solve_point
 
 
 def _loads(n: int) -> np.ndarray:

@@ -3,10 +3,10 @@
 import numpy as np
 import pytest
 
-from femgear.ehl import params as pr
-from femgear.ehl.grid import Domain, Grid
-from femgear.ehl.level import Level
-from femgear.ehl.rheology import Rheology
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.grid import Domain, Grid
+from femgear.physics.ehl.level import Level
+from femgear.physics.ehl.rheology import Rheology
 
 
 @pytest.mark.parametrize("kwargs", [

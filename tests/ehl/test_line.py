@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from femgear.contact.film import dowson_higginson_minimum, moes_line_central
-from femgear.ehl.line import solve_line
+from femgear.physics.contact.film import dowson_higginson_minimum, moes_line_central
+from femgear.physics.ehl.line import solve_line
 
 TWO_U = 1.0e-11  # Dowson-Higginson is not a function of (M, L) alone: fix U
 
@@ -58,6 +58,6 @@ def test_warm_start_gives_the_cold_answer_with_fewer_iterations():
 
 
 def solve_point_result():
-    from femgear.ehl.point import solve_point
+    from femgear.physics.ehl.point import solve_point
 
     return solve_point(20.0, 10.0, level=0, coarse_level=0)

@@ -5,13 +5,13 @@ and the history carries ``max_dp`` / ``max_dp_at`` per iteration."""
 import numpy as np
 import pytest
 
-from femgear.ehl import params as pr
-from femgear.ehl.grid import Grid, prolongation
-from femgear.ehl.level import Level
-from femgear.ehl.newton import History, _stall_reason, newton_dense, newton_krylov
-from femgear.ehl.point import default_domain, solve_point
-from femgear.ehl.rheology import Rheology
 from femgear.errors import ConvergenceError
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.grid import Grid, prolongation
+from femgear.physics.ehl.level import Level
+from femgear.physics.ehl.newton import History, _stall_reason, newton_dense, newton_krylov
+from femgear.physics.ehl.point import default_domain, solve_point
+from femgear.physics.ehl.rheology import Rheology
 
 
 def test_stall_reason_reports_damped_steps_and_their_node():

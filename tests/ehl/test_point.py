@@ -7,8 +7,8 @@ M 10-200, L 5-10 (project notes, sec. 2); the acceptance band is 4 %.
 import numpy as np
 import pytest
 
-from femgear.contact.film import nvm_central
-from femgear.ehl.point import solve_point
+from femgear.physics.contact.film import nvm_central
+from femgear.physics.ehl.point import solve_point
 
 
 @pytest.fixture(scope="module")

@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from femgear.contact.film import rigid_isoviscous_point
-from femgear.ehl.point import solve_point
+from femgear.physics.contact.film import rigid_isoviscous_point
+from femgear.physics.ehl.point import solve_point
 
 ROOT = Path(__file__).resolve().parents[2]
 if str(ROOT) not in sys.path:

@@ -13,9 +13,10 @@ from functools import partial
 import numpy as np
 import pytest
 
-from femgear.ehl.line import solve_line
-from femgear.ehl.surface import paper_peak
-from femgear.ehl.transient import (
+from femgear.errors import ArgumentError
+from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.surface import paper_peak
+from femgear.physics.ehl.transient import (
     amplitude_reduction_fit,
     entering_waviness,
     measure_amplitude_reduction,
@@ -23,7 +24,6 @@ from femgear.ehl.transient import (
     solve_line_transient,
     wavelength_for,
 )
-from femgear.errors import ArgumentError
 
 
 def test_smooth_surface_stays_at_the_steady_solution():
@@ -91,7 +91,7 @@ def test_bad_arguments():
 def test_point_peak_passage_converges():
     """The paper's peak entering a circular contact (65^2): every step converges, the film
     and pressure stay finite, and the peak thins the film once it is inside (X > -0.5)."""
-    from femgear.ehl.transient import solve_point_transient
+    from femgear.physics.ehl.transient import solve_point_transient
 
     feature = partial(paper_peak, amplitude=0.1, half_width=0.3, x0=-1.5)
     r = solve_point_transient(20.0, 10.0, feature, T_end=1.5, level=2)

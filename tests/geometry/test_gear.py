@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from femgear.errors import SceneError
-from femgear.geometry import GearPair, inv, inv_inverse
+from femgear.physics.geometry import GearPair, inv, inv_inverse
 
 
 def khk_helical():

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from femgear.geometry import contact_lines, double_helical_contact, kinematics, mesh_frequency, path_positions
+from femgear.physics.geometry import contact_lines, double_helical_contact, kinematics, mesh_frequency, path_positions
 
 
 def test_sliding_vanishes_at_the_pitch_point_and_changes_sign(baseline_pair):
@@ -68,7 +68,7 @@ def test_half_pitch_stagger_shifts_the_right_helix(baseline_pair):
 
 
 def test_spur_limit_has_whole_face_lines():
-    from femgear.geometry import GearPair
+    from femgear.physics.geometry import GearPair
 
     p = GearPair.from_parameters(z1=16, z2=24, m_n=4.5e-3, alpha_n=math.radians(20), beta=0.0, b=0.014,
                                  x1=0.1817, x2=0.1715)

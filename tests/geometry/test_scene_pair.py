@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from femgear.errors import SceneError
-from femgear.geometry import GearPair
+from femgear.physics.geometry import GearPair
 from femgear.scene import load_scene
 
 STUDIES = Path(__file__).resolve().parents[2] / "studies"

@@ -7,7 +7,7 @@ import stat
 
 import pytest
 
-from femgear.io.atomic import atomic_write, write_bytes_atomic, write_text_atomic
+from femgear.edge.io.atomic import atomic_write, write_bytes_atomic, write_text_atomic
 
 
 def _mode(path):

@@ -9,9 +9,9 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from femgear.io.paraview_run import face_mesh
+from femgear.edge.io.paraview_run import face_mesh
+from femgear.physics.wear.face import face_mean
 from femgear.results import Tribology
-from femgear.wear.face import face_mean
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = ROOT / "studies" / "paper_baseline.toml"
@@ -44,7 +44,7 @@ def test_face_mesh_carries_the_fields_on_both_helices_of_both_members(tmp_path, 
     import meshio
 
     from femgear.case import build_case
-    from femgear.io.paraview import write_vtu
+    from femgear.edge.io.paraview import write_vtu
 
     case = build_case(baseline_scene)
     n, grid = case.path.u.size, np.linspace(0.0, case.pair.b, 7)
@@ -77,7 +77,7 @@ def test_main_job_writes_flank_face_vtu_with_fe3d_and_face_wear(tmp_path):
     its ζ_T's face mean results.json's ζ_T (to the interpolation of the units' 9-point ζ grid: < 1e-3)."""
     import meshio
 
-    from femgear.cli import main
+    from femgear.edge.cli import main
 
     out = tmp_path / "run"
     over = ["numerics.path_points=31", "numerics.dynamics_cycles=20", "numerics.transient_cycles=10",

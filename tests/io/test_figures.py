@@ -8,10 +8,10 @@ import stat
 import numpy as np
 import pytest
 
-from femgear.cli.report import key_figures
-from femgear.dynamics.plot import _smooth_orbit, plot_mesh_force, plot_phase_planes, plot_time_histories
-from femgear.dynamics.response import Response
-from femgear.plot.coupled import plot_convergence, plot_coupled_path
+from femgear.edge.cli.report import key_figures
+from femgear.edge.plot.coupled import plot_convergence, plot_coupled_path
+from femgear.system.dynamics.plot import _smooth_orbit, plot_mesh_force, plot_phase_planes, plot_time_histories
+from femgear.system.dynamics.response import Response
 
 
 def _png(path) -> bool:
@@ -87,6 +87,6 @@ def test_key_figures_flag_a_run_that_did_not_converge():
 @pytest.mark.parametrize("key,unit", [("hertz_pressure", "Pa"), ("working_pressure_angle_deg", "deg"),
                                       ("eps_alpha", ""), ("mesh_frequency", "Hz")])
 def test_info_units(key, unit):
-    from femgear.cli.info import unit_of
+    from femgear.edge.cli.info import unit_of
 
     assert unit_of(key) == unit

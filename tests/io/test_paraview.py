@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.io.paraview import flank_surface, involute_points
+from femgear.edge.io.paraview import flank_surface, involute_points
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = ROOT / "studies" / "paper_baseline.toml"
@@ -38,7 +38,7 @@ def test_helicoid_turns_by_the_base_helix_lead():
 @pytest.fixture(scope="module")
 def main_job(tmp_path_factory):
     """The main job with wear on (so every flank field exists), written by the CLI."""
-    from femgear.cli import main
+    from femgear.edge.cli import main
 
     out = tmp_path_factory.mktemp("pv") / "run"
     assert main(["-q", "run", str(BASE), "--out", str(out), "--no-plots", "--set", "wear.cycles=1e5",
@@ -108,7 +108,7 @@ def test_body_pvd_with_fe_thermal(tmp_path):
     """thermal = "fe": body.pvd holds both gear sections with finite temperature, displacement, stress."""
     import meshio
 
-    from femgear.cli import main
+    from femgear.edge.cli import main
 
     out = tmp_path / "fe"
     assert main(["-q", "run", str(BASE), "--out", str(out), "--no-plots", "--set", 'physics.preset="fast"',

@@ -9,7 +9,7 @@ from femgear.scene.schema import Modifications
 def test_a_load_on_one_helix_deflects_the_other_through_the_body(coarse_model, baseline_pair):
     """The cross kernel (right helix read, left loaded) is largest where the helices meet (the apex, ζ = b)
     and falls off towards the outer ends; in the contact operator it couples points of different helices."""
-    from femgear.ltca.contact import bulk_matrix, phase_points
+    from femgear.physics.ltca.contact import bulk_matrix, phase_points
 
     for member in (1, 2):
         k = coarse_model.kernels[member]
@@ -32,7 +32,7 @@ def test_staggered_grooved_body_loads_both_helices(baseline_pair, baseline_force
     """A staggered body (groove 5 mm, stagger 0.3) has its own right-helix kernels; loads still sum to the
     force, unmodified flanks still give zero unloaded TE, and a cycle run with another stagger is refused (≈ 18 s)."""
     monkeypatch.setenv("FEMGEAR_CACHE", str(tmp_path))
-    from femgear.ltca.analysis import build_model, mesh_cycle
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle
 
     model = build_model(baseline_pair, 210e9, 0.3, level=0, n_rho=3, n_z=3, n_teeth=3, groove_width=5e-3,
                         stagger=0.3)
@@ -47,8 +47,8 @@ def test_staggered_grooved_body_loads_both_helices(baseline_pair, baseline_force
 
 
 def test_cache_key_holds_the_body_geometry(baseline_pair):
-    from femgear.ltca.compliance import _key
-    from femgear.mesh.segment import default_spec
+    from femgear.physics.ltca.compliance import _key
+    from femgear.physics.mesh.segment import default_spec
 
     keys = {_key(baseline_pair, 1, default_spec(baseline_pair, 1, 0, **kw), 210e9, 0.3, 1, 5, 5, 1e-3)
             for kw in ({}, {"r_bore": 0.02}, {"groove": 5e-3}, {"groove": 5e-3, "stagger": 0.3})}
@@ -58,7 +58,7 @@ def test_cache_key_holds_the_body_geometry(baseline_pair):
 def test_sparse_lu_and_sa_cg_give_the_same_displacements():
     import skfem
 
-    from femgear.body.elastic3d import Elastic3D, auto_solver, cholmod_available
+    from femgear.physics.body.elastic3d import Elastic3D, auto_solver, cholmod_available
 
     mesh = skfem.MeshTet.init_tensor(np.linspace(0, 0.04, 9), np.linspace(0, 0.01, 4), np.linspace(0, 0.01, 4))
     mesh = mesh.with_boundaries({"bore": lambda x: x[0] < 1e-9})
@@ -84,7 +84,7 @@ def test_direct_p1_assembly_equals_scikit_fem():
     """The chunked constant-strain P1 assembly reproduces scikit-fem's form on a distorted mesh."""
     import skfem
 
-    from femgear.body.elastic3d import _elasticity_form, assemble_p1
+    from femgear.physics.body.elastic3d import _elasticity_form, assemble_p1
 
     mesh = skfem.MeshTet.init_tensor(np.linspace(0, 0.02, 5), np.linspace(0, 0.01, 4), np.linspace(0, 0.01, 3))
     p = mesh.p + 1e-4 * np.sin(mesh.p * 400.0)          # non-affine nodes: every element different
@@ -100,7 +100,7 @@ def test_an_unsettled_hertz_width_fixed_point_raises_with_its_history(coarse_mod
     ConvergenceError carrying the load change of every pass (decreasing: a linear fixed point), and with
     the default pass limit the same phase converges."""
     from femgear.errors import ConvergenceError
-    from femgear.ltca.contact import phase_points, solve_phase
+    from femgear.physics.ltca.contact import phase_points, solve_phase
 
     pts = phase_points(baseline_pair, 0.3, 0.0, 8)
     eps = np.zeros(pts.size)

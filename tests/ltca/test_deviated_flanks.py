@@ -10,12 +10,12 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from femgear.geometry import path_positions
+from femgear.physics.geometry import path_positions
 
 
 @pytest.fixture(scope="module")
 def unworn(coarse_model, baseline_force):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
     from femgear.scene.schema import Modifications
 
     mods = Modifications(tip_relief=3e-6, tip_relief_length=2.5e-3, crowning=5e-6)
@@ -28,7 +28,7 @@ def unworn(coarse_model, baseline_force):
 
 def test_path_deviation_reads_each_member_at_its_roll_distance(baseline_pair):
     """Pinion: ρ₁ = u; gear: ρ₂ = T₁T₂ − u; the same on both helices, uniform over the face."""
-    from femgear.ltca.separation import path_deviation
+    from femgear.physics.ltca.separation import path_deviation
 
     p = baseline_pair
     u = path_positions(p, 41)
@@ -46,8 +46,8 @@ def test_path_deviation_reads_each_member_at_its_roll_distance(baseline_pair):
 
 
 def test_uniform_removal_moves_the_te_by_its_depth_and_keeps_the_loads(unworn, baseline_pair):
-    from femgear.ltca.level import deviated_cycle
-    from femgear.ltca.separation import path_deviation
+    from femgear.physics.ltca.level import deviated_cycle
+    from femgear.physics.ltca.separation import path_deviation
 
     u = path_positions(baseline_pair, 41)
     depth = 2e-6 + 1e-6                        # pinion 2 µm, gear 1 µm
@@ -66,9 +66,9 @@ def test_a_worn_cycle_excites_the_drive_flanks_once_and_keeps_the_stiffness(unwo
     """with_deviated_tooth_contact: e'_s = LTE − F_s/k_s,0 on the drive flanks (here e_s + depth), the unworn
     coast flanks and the unworn stiffness table (the integrators' propagators stay valid)."""
     from femgear.case import build_case
-    from femgear.dynamics.build import build_model, with_deviated_tooth_contact
-    from femgear.ltca.level import deviated_cycle
-    from femgear.ltca.separation import path_deviation
+    from femgear.physics.ltca.level import deviated_cycle
+    from femgear.physics.ltca.separation import path_deviation
+    from femgear.system.dynamics.build import build_model, with_deviated_tooth_contact
 
     class Source:
         info = unworn
@@ -90,8 +90,8 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
     from types import SimpleNamespace
 
     from femgear.case import build_case
-    from femgear.coupling.loop import _deviated_model
-    from femgear.dynamics.build import build_model
+    from femgear.system.coupling.loop import _deviated_model
+    from femgear.system.dynamics.build import build_model
 
     class Source:
         info = unworn

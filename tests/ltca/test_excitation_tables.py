@@ -7,7 +7,7 @@ import pytest
 
 
 def test_band_limited_reproduces_a_trigonometric_polynomial_and_adds_no_orders():
-    from femgear.dynamics.build import band_limited
+    from femgear.system.dynamics.build import band_limited
 
     def f(ph):
         return 3.0 + 0.5 * np.cos(2 * np.pi * ph + 0.3) + 0.1 * np.sin(2 * np.pi * 7 * ph) + 0.01 * np.cos(2 * np.pi * 20 * ph)
@@ -25,10 +25,10 @@ def test_band_limited_reproduces_a_trigonometric_polynomial_and_adds_no_orders()
 
 def test_resolved_orders_and_band_limited_ltca_tables(coarse_model, baseline_force):
     """The tables keep the LTCA's harmonics up to the resolved order H and nothing above; e_s likewise."""
-    from femgear.dynamics.build import ltca_table, tooth_contact_deviation
-    from femgear.ltca.analysis import mesh_cycle
-    from femgear.ltca.level import RESOLUTION_TOLERANCE, resolved_orders
+    from femgear.physics.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.level import RESOLUTION_TOLERANCE, resolved_orders
     from femgear.scene.schema import Modifications
+    from femgear.system.dynamics.build import ltca_table, tooth_contact_deviation
 
     mods = Modifications(tip_relief=3e-6, tip_relief_length=2.5e-3, crowning=5e-6)
     H, change = resolved_orders(coarse_model, baseline_force, mods, n_line=8, n_phases=32)
@@ -80,8 +80,8 @@ def test_observed_order_recovers_the_order_of_a_power_law():
 def test_too_few_resolved_orders_refine_the_contact_lines(coarse_model, baseline_pair, baseline_force, monkeypatch):
     """Fewer than MIN_RESOLVED_ORDERS resolved orders double the points per contact line (the rig's test gear at
     150 N m resolved 1 order with 16 points and 18 with 32); the cycle and its resolution check use the finer lines."""
-    import femgear.ltca.analysis as analysis
-    import femgear.ltca.level as level
+    import femgear.physics.ltca.analysis as analysis
+    import femgear.physics.ltca.level as level
     from femgear.scene.schema import Modifications
 
     mods = Modifications(tip_relief=3e-6, tip_relief_length=2.5e-3, crowning=5e-6)

@@ -1,6 +1,6 @@
 """Face-resolved thermal growth in the LTCA re-run (``thermal = "fe3d"`` with ``wear.field = "face"``).
 
-The 3-D unit solutions (:mod:`femgear.body.thermal3d`) vary over the face: a flank rise grows the
+The 3-D unit solutions (:mod:`femgear.physics.body.thermal3d`) vary over the face: a flank rise grows the
 flank less at the free outer end (ζ = 0) and more at the apex (ζ = b) than mid-face (README: −11 %,
 +5 % at body level 2).  With the face-resolved wear field the coupling re-runs the LTCA on
 wear − ζ_T(member, helix, u, ζ) instead of a face-uniform ζ_T(u).
@@ -11,12 +11,12 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from femgear.body.thermal3d import Thermal3DUnits
-from femgear.coupling.loop import _removed_deviation, _thermal
-from femgear.coupling.thermal import ThermalUnits, roll_distances
-from femgear.geometry import path_positions
-from femgear.ltca.flank import roll_range
-from femgear.wear.face import face_mean
+from femgear.physics.body.thermal3d import Thermal3DUnits
+from femgear.physics.geometry import path_positions
+from femgear.physics.ltca.flank import roll_range
+from femgear.physics.wear.face import face_mean
+from femgear.system.coupling.loop import _removed_deviation, _thermal
+from femgear.system.coupling.thermal import ThermalUnits, roll_distances
 
 N_ZETA = 21
 
@@ -50,7 +50,7 @@ def test_face_field_mean_is_the_face_uniform_deviation(baseline_pair):
 @pytest.fixture(scope="module")
 def units_3d(baseline_scene, baseline_pair, grid):
     """Baseline pinion and gear at body level 0 on a 7 × 5 grid (≈ 10 s, not cached)."""
-    from femgear.body.thermal3d import thermal_units_3d
+    from femgear.physics.body.thermal3d import thermal_units_3d
 
     m = baseline_scene.material
     bodies = tuple(thermal_units_3d(baseline_pair, j, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio,
@@ -79,7 +79,7 @@ def test_face_resolved_growth_loads_the_apex_more(units_3d, coarse_model, baseli
     moves towards ζ = b on both helices.  The field is first checked to have that shape (apex above the
     outer end by > 5 %), then the load centre of the re-run LTCA cycle to lie nearer the apex than with the
     face-uniform growth (measured: apex/outer end 1.13 mid-path; load centre 0.525 b → 0.553 b)."""
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     p = baseline_pair
     face_grid = SimpleNamespace(grid=np.linspace(0.0, p.b, N_ZETA))

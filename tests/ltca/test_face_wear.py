@@ -1,4 +1,4 @@
-"""Face-resolved Archard wear from the LTCA's contact-line loads (:mod:`femgear.wear.face`).
+"""Face-resolved Archard wear from the LTCA's contact-line loads (:mod:`femgear.physics.wear.face`).
 
 Validation against the face-uniform path model (same loads, same Archard form), against the LTCA's
 own point loads (independent of the path grid and of the face interpolation) and against Archard's
@@ -11,9 +11,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from femgear.geometry import kinematics, path_positions
-from femgear.wear import WearSetup, WearState, run_wear, wear_rates
-from femgear.wear.face import (
+from femgear.physics.geometry import kinematics, path_positions
+from femgear.physics.wear import WearSetup, WearState, run_wear, wear_rates
+from femgear.physics.wear.face import (
     FaceReference,
     FaceWearState,
     along_lines,
@@ -39,8 +39,8 @@ def base(baseline_scene, baseline_pair, grid):
 
 def _analysis(model, force, pair, u, mods=None):
     """(LTCA cycle, FaceReference) of a coarse cycle: 32 phases, 8 points per line."""
-    from femgear.coupling.loop import ltca_face_reference
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
+    from femgear.system.coupling.loop import ltca_face_reference
 
     res = mesh_cycle(model, force, mods, n_phases=32, stagger=0.0, n_line=8)
     info = {"ltca": res, "options": {"stagger": 0.0}, "modifications": mods}
@@ -78,7 +78,7 @@ def test_unmodified_face_mean_equals_the_path_wear_and_the_face_is_nearly_unifor
     alike; over the inner 60 % of the face the depth varies by std/mean 0.3–11 % at interior u (regression
     band 0.15).  After 1e6 and 3e6 cycles (same stepping rule) the face mean is within 0.9 % / 0.5 % of
     the path depth inside the path (1.3 % / 0.5 % everywhere; band 2 %); since the path model shares the load
-    with the exact line quadrature (:func:`femgear.geometry.lines.line_weights`, which also loads the grid node
+    with the exact line quadrature (:func:`femgear.physics.geometry.lines.line_weights`, which also loads the grid node
     just beyond each line end) the gear's face mean is 2.0 % off at 1e6 cycles (band 2.5 %)."""
     res, face = plain
     setup = replace(base, reference=face.ref)
@@ -177,7 +177,7 @@ def test_the_face_wear_volume_is_archards(coarse_model, baseline_force, baseline
 def test_the_face_field_is_read_back_along_the_lines_and_fed_to_the_ltca(plain, baseline_pair, grid):
     """along_lines interpolates the face grid exactly for a field linear in ζ; face_deviation puts the pinion's
     field at ρ₁ = u and the gear's at ρ₂ = T₁T₂ − u on the named helix only."""
-    from femgear.ltca.separation import face_deviation
+    from femgear.physics.ltca.separation import face_deviation
 
     res, face = plain
     p, z = baseline_pair, face.grid
@@ -206,8 +206,8 @@ def test_a_coupling_pass_reruns_the_ltca_on_the_face_field(plain, coarse_model, 
     deviation of the same mean leaves both helices alike.  The thermal growth enters uniform over the face."""
     from types import SimpleNamespace
 
-    from femgear.coupling.loop import _removed_deviation
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
+    from femgear.system.coupling.loop import _removed_deviation
 
     _, face = plain
     p, z = baseline_pair, face.grid

@@ -10,7 +10,7 @@ from femgear.scene.schema import FlankModification, Modifications
 
 
 def test_unmodified_flanks_give_zero_unloaded_te(coarse_model, baseline_force):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(), n_phases=16)
     assert np.all(r.nlte_left == 0.0) and np.all(r.nlte_right == 0.0)
@@ -18,7 +18,7 @@ def test_unmodified_flanks_give_zero_unloaded_te(coarse_model, baseline_force):
 
 
 def test_loads_sum_to_the_normal_force_at_every_phase(coarse_model, baseline_force):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     mods = Modifications(tip_relief=10e-6, tip_relief_length=3e-3, crowning=5e-6)
     r = mesh_cycle(coarse_model, baseline_force, mods, n_phases=16)
@@ -28,8 +28,8 @@ def test_loads_sum_to_the_normal_force_at_every_phase(coarse_model, baseline_for
 
 def test_tip_relief_unloaded_te_matches_the_contact_line_minimum(coarse_model, baseline_pair):
     """NLTE(φ) = min over lines of the pinion tip relief at the line's lowest path position (relief rises with u)."""
-    from femgear.geometry.kinematics import contact_lines
-    from femgear.ltca.analysis import _nlte
+    from femgear.physics.geometry.kinematics import contact_lines
+    from femgear.physics.ltca.analysis import _nlte
 
     pair = baseline_pair
     L, Ca = 0.8 * pair.p_bt, 20e-6
@@ -43,14 +43,14 @@ def test_tip_relief_unloaded_te_matches_the_contact_line_minimum(coarse_model, b
 
 
 def test_symmetric_helices_share_the_load_equally(coarse_model, baseline_force):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(crowning=4e-6), n_phases=8)
     assert np.allclose(r.force_left, r.force_right, rtol=1e-9)
 
 
 def test_helix_slope_deviation_shifts_load_to_the_other_helix(coarse_model, baseline_force):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(helix_slope_deviation_left=10e-6), n_phases=8)
     assert np.all(r.force_right > 1.05 * r.force_left)
@@ -58,7 +58,7 @@ def test_helix_slope_deviation_shifts_load_to_the_other_helix(coarse_model, base
 
 def test_secant_and_tangent_stiffness_are_positive_and_tangent_stiffer(coarse_model, baseline_force):
     """Hertz contact hardens: dF/dδ ≥ F/δ for unmodified flanks (NLTE = 0)."""
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     r = mesh_cycle(coarse_model, baseline_force, None, n_phases=8)
     ks = r.k_secant_left + r.k_secant_right
@@ -67,7 +67,7 @@ def test_secant_and_tangent_stiffness_are_positive_and_tangent_stiffer(coarse_mo
 
 
 def test_flank_normals_are_parallel_along_a_contact_line(baseline_pair):
-    from femgear.ltca.flank import contact_line_slope, flank_normals, roll_range
+    from femgear.physics.ltca.flank import contact_line_slope, flank_normals, roll_range
 
     pair = baseline_pair
     for member in (1, 2):
@@ -81,7 +81,7 @@ def test_flank_normals_are_parallel_along_a_contact_line(baseline_pair):
 
 def test_contact_solver_two_springs():
     """Two points, diagonal compliance c1, c2, gap ε2 on the second: exact split with complementarity."""
-    from femgear.ltca.contact import solve_contact
+    from femgear.physics.ltca.contact import solve_contact
 
     c1, c2, e2, F = 1e-9, 2e-9, 3e-6, 5000.0
     sol = solve_contact(np.diag([c1, c2]), np.array([0.0, e2]), F)
@@ -93,7 +93,7 @@ def test_contact_solver_two_springs():
 
 
 def test_modification_keys_are_validated(baseline_pair):
-    from femgear.ltca.separation import check_modification
+    from femgear.physics.ltca.separation import check_modification
 
     with pytest.raises(ValueError, match="tip_relief_length"):
         FlankModification(tip_relief=10e-6)
@@ -104,7 +104,7 @@ def test_modification_keys_are_validated(baseline_pair):
 
 
 def test_crowning_and_end_relief_amounts(baseline_pair):
-    from femgear.ltca.separation import member_deviation
+    from femgear.physics.ltca.separation import member_deviation
 
     pair = baseline_pair
     z = np.array([0.0, pair.b / 2, pair.b])
@@ -127,7 +127,7 @@ def test_regression_kernel_asymmetry_band_and_positive_self_terms(coarse_model):
 
 def test_excitation_reproduces_the_helix_loads(coarse_model, baseline_force):
     """Dynamics input: k_s (LTE − e_s) = F_s per helix and phase (the mesh law at the operating point)."""
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(tip_relief=5e-6, tip_relief_length=3e-3), n_phases=8)
     ex = r.excitation()
@@ -137,7 +137,7 @@ def test_excitation_reproduces_the_helix_loads(coarse_model, baseline_force):
 
 
 def test_line_loads_sum_to_the_helix_loads(coarse_model, baseline_force):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     r = mesh_cycle(coarse_model, baseline_force, None, n_phases=4)
     for i in range(4):
@@ -148,9 +148,9 @@ def test_line_loads_sum_to_the_helix_loads(coarse_model, baseline_force):
 
 def test_tabulated_wear_on_one_helix_shifts_load_away(coarse_model, baseline_force, baseline_pair):
     """A uniform 5 µm wear depth on the left pinion flank: a helix-wide gap, the right helix carries more."""
-    from femgear.ltca.analysis import mesh_cycle
-    from femgear.ltca.flank import roll_range
-    from femgear.ltca.separation import tabulated_deviation
+    from femgear.physics.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.flank import roll_range
+    from femgear.physics.ltca.separation import tabulated_deviation
 
     r0, r1 = roll_range(baseline_pair, 1)
     wear = tabulated_deviation({("left", 1): ([r0, r1], [0.0, baseline_pair.b], np.full((2, 2), 5e-6))})

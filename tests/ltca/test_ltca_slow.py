@@ -11,7 +11,7 @@ def test_ltca_level_mean_stiffness_against_iso_and_pem(baseline_scene):
     ISO's c′ holds such a body) and −28.5 % vs the sliced PEM (uncoupled slices, a stiff Hertz term, no rim
     below its foundation).  The one-helix segment clamped at r_f − 3 m_n read +21.5 % / −13.7 %.
     Validation band against ISO: ±10 %; regression band against PEM: 0.6–0.9 × PEM (docs/ltca.md)."""
-    from femgear.stiffness.tvms import mesh_stiffness_from_scene
+    from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
 
     ltca = mesh_stiffness_from_scene(baseline_scene, level="ltca", n_positions=64)
     iso = mesh_stiffness_from_scene(baseline_scene, level="iso6336", n_positions=16)

@@ -1,4 +1,4 @@
-"""The LTCA tool's analysis (femgear.ltca.te, .maps, .tool) on the coarse baseline model (fast)."""
+"""The LTCA tool's analysis (femgear.physics.ltca.te, .maps, .tool) on the coarse baseline model (fast)."""
 
 import dataclasses
 import math
@@ -15,7 +15,7 @@ TORQUES = (100.0, 200.0, 300.0)
 
 @pytest.fixture(scope="module")
 def tool(coarse_model, baseline_pair):
-    from femgear.ltca.tool import LTCAOptions, run_ltca
+    from femgear.physics.ltca.tool import LTCAOptions, run_ltca
 
     opts = LTCAOptions(n_phases=16, n_line=8, n_harmonics=5)
     return run_ltca(baseline_pair, 210e9, 0.3, RELIEF, TORQUES, 200.0, "pinion", {}, harris_torques=(50.0, 200.0),
@@ -24,7 +24,7 @@ def tool(coarse_model, baseline_pair):
 
 @pytest.fixture(scope="module")
 def plain(coarse_model, baseline_pair):
-    from femgear.ltca.tool import LTCAOptions, run_ltca
+    from femgear.physics.ltca.tool import LTCAOptions, run_ltca
 
     return run_ltca(baseline_pair, 210e9, 0.3, Modifications(), (200.0,), 200.0, "pinion", {},
                     options=LTCAOptions(n_phases=16, n_line=8, n_harmonics=5), model=coarse_model)
@@ -34,7 +34,7 @@ def test_te_and_harmonics_equal_the_study_functions(tool, coarse_model, baseline
     """TE p-p and mesh-order amplitudes are those of ``LTCAResult.lte_peak_to_peak``/``harmonics`` that the study
     scripts print (studies/ltca_study.py), to 1e-9 of the p-p, at each torque; the refined check is the 2×-points
     cycle's."""
-    from femgear.ltca.analysis import mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import mesh_cycle, normal_force
 
     for a, t in zip(tool.analyses, TORQUES, strict=True):
         r = mesh_cycle(coarse_model, normal_force(baseline_pair, t), RELIEF, n_phases=16, n_line=8)
@@ -60,7 +60,7 @@ def test_harmonics_are_the_amplitudes_of_a_least_squares_fourier_fit(tool):
 def test_unmodified_flanks_zero_unloaded_te_and_loads_balance(plain, coarse_model, baseline_pair, baseline_force):
     """Unmodified: unloaded TE zero at every phase; the loaded TE p-p is the LTCA's own (test_ltca's cycle); the
     helices' loads sum to the applied normal force at every phase; a symmetric body shares it equally."""
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     a = plain.analyses[0]
     assert np.all(a.nlte == 0.0) and a.nlte_peak_to_peak == 0.0
@@ -86,7 +86,7 @@ def test_helix_alone_te_carries_its_share_and_is_symmetric(plain):
 def test_peak_pressure_is_hertz_at_the_located_point_and_edges_are_flagged(plain, baseline_pair):
     """The peak equals √(w E′/(2πR)) of the point it names; unmodified flanks: the peak is an edge contact (a contact
     line's end at the tip or a face end), above the largest pressure away from the edges."""
-    from femgear.ltca.halfspace import reduced_modulus
+    from femgear.physics.ltca.halfspace import reduced_modulus
 
     a = plain.analyses[0]
     p = a.pressure
@@ -99,7 +99,7 @@ def test_peak_pressure_is_hertz_at_the_located_point_and_edges_are_flagged(plain
 
 
 def test_harris_map_matches_single_cycles(tool, coarse_model, baseline_pair):
-    from femgear.ltca.analysis import mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import mesh_cycle, normal_force
 
     h = tool.harris
     assert h.torque.tolist() == [50.0, 200.0] and h.design_torque == 200.0
@@ -111,7 +111,7 @@ def test_harris_map_matches_single_cycles(tool, coarse_model, baseline_pair):
 @pytest.mark.parametrize("torques, text", [((), "no torque"), ((-5.0,), "positive"), ((float("nan"),), "positive"),
                                            ((1e6,), "nominal contact stress"), ((1.0,) * 51, "at most")])
 def test_bad_torques_are_refused_naming_the_key(baseline_pair, torques, text):
-    from femgear.ltca.te import check_torques
+    from femgear.physics.ltca.te import check_torques
 
     with pytest.raises(ArgumentError, match=text) as err:
         check_torques(torques, baseline_pair, 210e9, 0.3)
@@ -122,7 +122,7 @@ def test_bad_torques_are_refused_naming_the_key(baseline_pair, torques, text):
 def test_a_helix_losing_contact_at_the_design_load_is_refused(coarse_model, baseline_pair):
     """A 200 µm helix slope deviation on the left helix opens it far more than the flanks deflect (≈ 5 µm): the
     left helix carries nothing, and the tool stops naming the key."""
-    from femgear.ltca.tool import LTCAOptions, run_ltca
+    from femgear.physics.ltca.tool import LTCAOptions, run_ltca
 
     mods = Modifications(helix_slope_deviation_left=200e-6)
     with pytest.raises(SceneError, match="left helix loses contact") as err:
@@ -138,10 +138,10 @@ def test_both_members_are_turned_into_mesh_along_a_contact_line(scene):
     baseline, the marine pair (m_n 6 mm, 29/97) and the FZG C spur pair (profile-shifted), geometry only."""
     from pathlib import Path
 
-    from femgear.geometry import GearPair
-    from femgear.ltca.flank import flank_normals, flank_points
-    from femgear.ltca.maps import to_mesh
-    from femgear.mesh.segment import frame_of
+    from femgear.physics.geometry import GearPair
+    from femgear.physics.ltca.flank import flank_normals, flank_points
+    from femgear.physics.ltca.maps import to_mesh
+    from femgear.physics.mesh.segment import frame_of
     from femgear.scene import load_scene
 
     pair = GearPair.from_scene(load_scene(Path(__file__).resolve().parents[2] / "studies" / scene))
@@ -178,7 +178,7 @@ def test_maps_of_both_members_read_back_and_integrate_to_the_helix_loads(tool, b
 
     import meshio
 
-    from femgear.io.ltca import write_maps
+    from femgear.edge.io.ltca import write_maps
 
     pair = baseline_pair
     for a, m in zip(tool.analyses, tool.maps, strict=True):
@@ -205,9 +205,9 @@ def test_main_job_summary_and_key_figures_carry_the_loaded_te(coarse_model, base
     """A quasi-static run whose stiffness carries an LTCA cycle (the coarse one): ``results.json``'s summary holds
     ``transmission_error`` with the cycle's loaded TE p-p and harmonics, units, and the key figures show it."""
     from femgear.case import build_case
-    from femgear.cli.report import key_figures
-    from femgear.io.run import run_summary
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.edge.cli.report import key_figures
+    from femgear.edge.io.run import run_summary
+    from femgear.physics.ltca.analysis import mesh_cycle
     from femgear.pipeline import run_case, transmission_error
 
     scene = baseline_scene.model_copy(update={"physics": baseline_scene.physics.model_copy(update={

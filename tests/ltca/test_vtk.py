@@ -1,4 +1,4 @@
-"""The LTCA pressure map on the 3-D pinion flanks of both helices (femgear.ltca.vtk)."""
+"""The LTCA pressure map on the 3-D pinion flanks of both helices (femgear.physics.ltca.vtk)."""
 
 import math
 from pathlib import Path
@@ -13,14 +13,14 @@ ROOT = Path(__file__).resolve().parents[2]
 
 @pytest.fixture(scope="module")
 def symmetric_cycle(coarse_model, baseline_force):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     return mesh_cycle(coarse_model, baseline_force, Modifications(crowning=4e-6), n_phases=8)
 
 
 def test_symmetric_pair_has_the_same_pressure_map_on_both_helices(symmetric_cycle, baseline_pair):
     """Both helices' maps are equal, and each integrates to its helix's cycle-mean LTCA load."""
-    from femgear.ltca.vtk import flank_pressure_map
+    from femgear.physics.ltca.vtk import flank_pressure_map
 
     fmap = flank_pressure_map(symmetric_cycle, baseline_pair, 210e9, 0.3)
     assert fmap.p_max[0].max() > 1e8
@@ -36,8 +36,8 @@ def test_symmetric_pair_has_the_same_pressure_map_on_both_helices(symmetric_cycl
 
 def test_helix_slope_deviation_moves_the_map_load_to_the_other_helix(coarse_model, baseline_force, baseline_pair,
                                                                      symmetric_cycle):
-    from femgear.ltca.analysis import mesh_cycle
-    from femgear.ltca.vtk import flank_pressure_map
+    from femgear.physics.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.vtk import flank_pressure_map
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(crowning=4e-6, helix_slope_deviation_left=10e-6),
                    n_phases=8)
@@ -54,7 +54,7 @@ def test_pressure_map_vtk_lies_on_the_3d_flanks_of_both_helices(symmetric_cycle,
     z → 2b + g − z (no stagger), with the same pressures."""
     import meshio
 
-    from femgear.io.ltca import write_flank_pressure
+    from femgear.edge.io.ltca import write_flank_pressure
 
     path = write_flank_pressure(tmp_path / "p.vtu", symmetric_cycle, baseline_pair, 210e9, 0.3)
     m = meshio.read(path)
@@ -72,8 +72,8 @@ def test_pressure_map_vtk_lies_on_the_3d_flanks_of_both_helices(symmetric_cycle,
 def test_right_helix_mapping_lies_on_the_staggered_body_flank(baseline_pair):
     """The right helix's (ρ, ζ) → 3-D map of the pressure map (and of the kernels' reading points) lands on the
     nodes of the body's ``loaded_flank_right`` for a grooved, staggered body."""
-    from femgear.ltca.flank import flank_points
-    from femgear.mesh.segment import default_spec, frame_of, member_body
+    from femgear.physics.ltca.flank import flank_points
+    from femgear.physics.mesh.segment import default_spec, frame_of, member_body
 
     pair = baseline_pair
     spec = default_spec(pair, 1, 0, n_teeth=3, groove=8e-3, stagger=0.3)
@@ -96,7 +96,7 @@ def test_the_main_job_writes_the_pressure_map_with_the_ltca_level(symmetric_cycl
 
     import meshio
 
-    from femgear.io.paraview_run import write_run_paraview
+    from femgear.edge.io.paraview_run import write_run_paraview
     from femgear.pipeline import build_case, run_case
     from femgear.scene import load_scene
 
@@ -122,9 +122,9 @@ def test_edge_contacts_are_flagged_not_shown_as_hertz_pressures(coarse_model, ba
     single-/double-contact variation), and the .vtu carries the flag."""
     import meshio
 
-    from femgear.io.ltca import write_flank_pressure
-    from femgear.ltca.analysis import mesh_cycle
-    from femgear.ltca.vtk import flank_pressure_map
+    from femgear.edge.io.ltca import write_flank_pressure
+    from femgear.physics.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.vtk import flank_pressure_map
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(), n_phases=64)
     fmap = flank_pressure_map(r, baseline_pair, 210e9, 0.3)

@@ -13,9 +13,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from femgear.geometry import kinematics, path_positions
-from femgear.geometry.lines import line_weights
-from femgear.wear.load_sharing import load_map, reference_load_map, reference_loads
+from femgear.physics.geometry import kinematics, path_positions
+from femgear.physics.geometry.lines import line_weights
+from femgear.physics.wear.load_sharing import load_map, reference_load_map, reference_loads
 
 C_L = 1.5e10        #: a Winkler line stiffness of the order of the baseline's [N/m²]
 
@@ -26,14 +26,14 @@ def grid(baseline_pair):
 
 
 def _cycle(model, force, mods=None, extra=None):
-    from femgear.ltca.analysis import mesh_cycle
+    from femgear.physics.ltca.analysis import mesh_cycle
 
     return mesh_cycle(model, force, mods, n_phases=16, stagger=0.0, n_line=8, extra=extra)
 
 
 def _reference(pair, u, res, deviation=None, mods=None, extra=None):
     """The coupling's reference of an LTCA cycle: its loads and secant stiffness w'/(δ − ε) on the grid."""
-    from femgear.coupling.loop import ltca_reference
+    from femgear.system.coupling.loop import ltca_reference
 
     dev = np.zeros(u.size) if deviation is None else deviation
     return ltca_reference(pair, u, {"ltca": res, "options": {"stagger": 0.0}, "modifications": mods}, dev, extra)
@@ -89,8 +89,8 @@ def test_a_pinion_tip_relief_lowers_the_wear_rate_at_the_pinion_tip(coarse_model
                                                                        baseline_scene, plain, grid):
     """Pinion tip (path end E, u → u_E): a 10 µm linear relief over 3 mm opens the gap there, the LTCA
     unloads it and the Archard rate falls; the gear's tip (start A) is untouched and keeps its rate."""
+    from femgear.physics.wear import WearSetup, WearState, wear_rates
     from femgear.scene.schema import FlankModification, Modifications
-    from femgear.wear import WearSetup, WearState, wear_rates
 
     p, u = baseline_pair, grid
     mods = Modifications(pinion=FlankModification(tip_relief=10e-6, tip_relief_length=3e-3), gear=FlankModification())
@@ -110,7 +110,7 @@ def test_the_blended_reference_reproduces_each_analysis_at_its_deviation(coarse_
                                                                           baseline_pair, plain, grid):
     """A path from an unworn analysis to one on worn flanks: at its start the unworn loads, at its end
     the worn LTCA's loads (both scaled to the same force), in between a blend in equilibrium."""
-    from femgear.ltca.separation import path_deviation
+    from femgear.physics.ltca.separation import path_deviation
 
     p, u = baseline_pair, grid
     wear = 3e-6 * ((u - p.u_pitch) / np.ptp(u)) ** 2 * 4
@@ -143,8 +143,8 @@ def test_a_coupling_pass_shares_the_wear_and_the_contact_load_like_its_ltca_cycl
     integration starts from the unworn cycle (at h = Σζ_T), or with ``"pass"`` blends towards the deviated one."""
     from types import SimpleNamespace
 
-    from femgear.coupling.loop import _references
-    from femgear.ltca.separation import path_deviation
+    from femgear.physics.ltca.separation import path_deviation
+    from femgear.system.coupling.loop import _references
 
     p, u = baseline_pair, grid
     wear = np.array([2e-6 * ((u - p.u_pitch) / np.ptp(u)) ** 2, np.zeros(u.size)])

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.contact.path import contact_along_path
-from femgear.lubrication.films import level_film
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.lubrication.films import level_film
 from femgear.scene import load_scene
 
 
@@ -62,8 +62,8 @@ def test_a_run_reports_the_film_of_its_level_and_lambda(baseline_path, tmp_path)
 def test_the_point_film_reuses_the_runs_last_solves(baseline_path, monkeypatch):
     """tehl-point: the film of the run's last pass comes from that pass's solves (no second set of point
     solves); at other inputs it is solved afresh."""
-    import femgear.tehl.point_level as pl
-    from femgear.lubrication.levels import lubrication_solver
+    import femgear.physics.tehl.point_level as pl
+    from femgear.physics.lubrication.levels import lubrication_solver
 
     case = _case(baseline_path, 'physics.lubrication="tehl-point"', "modifications.crowning=10e-6",
                  "numerics.path_points=3")

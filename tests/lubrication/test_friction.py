@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from femgear.contact.path import contact_along_path
-from femgear.lubrication import (
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.lubrication import (
     OilLaw,
     Solids,
     abel_matrix,
@@ -16,7 +16,7 @@ from femgear.lubrication import (
     gupta_thermal_factor,
     hertz_traction,
 )
-from femgear.lubrication.path import friction_along_path
+from femgear.physics.lubrication.path import friction_along_path
 
 OIL = OilLaw(eta0=0.08, alpha=22e-9, beta_t=0.042, T0=313.0)
 STEEL = Solids(B1=math.sqrt(46 * 7850 * 470), B2=math.sqrt(46 * 7850 * 470), k_oil=0.14)
@@ -100,7 +100,7 @@ def test_friction_along_the_baseline_path_is_u_shaped_with_its_minimum_at_the_pi
 def test_gupta_factor_is_floored_and_flagged_outside_its_fit():
     """Beyond its fit Gupta's numerator turns negative (a negative film): the factor is
     floored and the points are reported; inside the fit it is untouched."""
-    from femgear.lubrication.traction import GUPTA_FLOOR, gupta_out_of_range, gupta_thermal_factor
+    from femgear.physics.lubrication.traction import GUPTA_FLOOR, gupta_out_of_range, gupta_thermal_factor
 
     args = dict(E_red=2.3e11, srr=0.3, eta0=0.08, beta_t=0.03, k_f=0.13)
     p_h = np.array([0.5e9, 5e9])

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from femgear.lubrication.map import FrictionMap, envelope_axes, hertz_level_solver
+from femgear.physics.lubrication.map import FrictionMap, envelope_axes, hertz_level_solver
 
 AXES = dict(w=np.geomspace(1e4, 1e5, 3), R=np.geomspace(0.01, 0.02, 2), ue=np.geomspace(0.5, 2.0, 3),
             srr=np.linspace(0, 0.6, 4), T=np.linspace(313, 353, 2))

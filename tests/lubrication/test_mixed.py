@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from femgear.lubrication.mixed import Roughness, gt_function, jgp_split, mixed_line_friction
-from femgear.lubrication.oil import OilLaw
-from femgear.lubrication.traction import Solids, line_contact_friction, thermal_central_film
+from femgear.physics.lubrication.mixed import Roughness, gt_function, jgp_split, mixed_line_friction
+from femgear.physics.lubrication.oil import OilLaw
+from femgear.physics.lubrication.traction import Solids, line_contact_friction, thermal_central_film
 
 OIL = OilLaw(eta0=0.08, alpha=2.2e-8, beta_t=0.03, T0=313.0, rho0=870.0, expansion=6.5e-4)
 SOLIDS = Solids(B1=1.2e4, B2=1.2e4, k_oil=0.13)

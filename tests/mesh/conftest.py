@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from femgear.geometry.gear import GearPair
+from femgear.physics.geometry.gear import GearPair
 
 
 @pytest.fixture(scope="module")

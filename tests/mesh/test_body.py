@@ -1,4 +1,4 @@
-"""3-D member bodies: both helices, the groove, the stagger, the rim down to the bore (femgear.mesh.segment)."""
+"""3-D member bodies: both helices, the groove, the stagger, the rim down to the bore (femgear.physics.mesh.segment)."""
 
 import math
 
@@ -7,14 +7,14 @@ import pytest
 
 
 def _spec(pair, **kw):
-    from femgear.mesh.segment import default_spec
+    from femgear.physics.mesh.segment import default_spec
 
     return default_spec(pair, 1, 0, n_teeth=3, r_bore=0.02, **kw)
 
 
 def _section(pair, spec, member=1):
-    from femgear.mesh.section import gear_section
-    from femgear.mesh.segment import groove_radius
+    from femgear.physics.mesh.section import gear_section
+    from femgear.physics.mesh.segment import groove_radius
 
     rf, ra = pair.rf1, pair.ra1
     return gear_section(pair, member, spec.h, n_teeth=spec.n_teeth, bore_radius=0.02, refine_at=(0.0, 0.5 * (rf + ra)),
@@ -25,7 +25,7 @@ def _section(pair, spec, member=1):
 def test_body_volume_regions_and_opposite_hands(pair, volume):
     """Volume = section area × 2b + the area under the groove floor × g; the named regions partition the
     boundary; the helices turn opposite ways; the loaded flanks of the two helices are mirror images."""
-    from femgear.mesh.segment import groove_radius, helix_frame, member_body
+    from femgear.physics.mesh.segment import groove_radius, helix_frame, member_body
 
     g = 6e-3
     spec = _spec(pair, groove=g)
@@ -54,7 +54,7 @@ def test_body_volume_regions_and_opposite_hands(pair, volume):
 
 
 def test_stagger_turns_the_right_helix_and_needs_a_groove(pair):
-    from femgear.mesh.segment import default_spec, helix_frame, member_body
+    from femgear.physics.mesh.segment import default_spec, helix_frame, member_body
 
     for member, sign in ((1, -1), (2, 1)):
         spec = default_spec(pair, member, 0, n_teeth=3, groove=5e-3, stagger=0.25)
@@ -82,7 +82,7 @@ def test_section_ring_is_graded_coarse_far_from_the_loaded_tooth(pair):
 def test_tips_turn_by_the_helix_angle_opposite_ways_on_the_two_helices(pair):
     """The tip of the middle tooth turns by hand · b tan β / r_ref across a helix (r_ref = z m_t / 2), back across
     the other one (replaces the test of the former gmsh twist-extruded helix halves)."""
-    from femgear.mesh.segment import HAND, member_body
+    from femgear.physics.mesh.segment import HAND, member_body
 
     g = 4e-3
     for member in (1, 2):

@@ -21,9 +21,9 @@ def test_export_writes_the_member_bodies_with_named_regions(tmp_path):
     helices per tooth and side, ...) carry facets and partition each body's boundary."""
     import meshio
 
-    from femgear.geometry import GearPair
-    from femgear.ltca.analysis import body_options
-    from femgear.mesh.segment import default_spec, member_body
+    from femgear.physics.geometry import GearPair
+    from femgear.physics.ltca.analysis import body_options
+    from femgear.physics.mesh.segment import default_spec, member_body
     from femgear.scene import load_scene
 
     written = _export_module().main([str(ROOT / "studies" / "paper_baseline.toml"), "--level", "0",
@@ -60,7 +60,7 @@ def test_export_writes_the_member_bodies_with_named_regions(tmp_path):
 
 def test_flank_regions_split_the_flank_per_helix_tooth_and_side(pair):
     """The flank of a staggered, grooved body: the per-tooth regions partition it, mirror-symmetric in number."""
-    from femgear.mesh.segment import default_spec, flank_regions, member_body
+    from femgear.physics.mesh.segment import default_spec, flank_regions, member_body
 
     spec = default_spec(pair, 2, 0, n_teeth=3, r_bore=0.02, groove=4e-3, stagger=0.3)
     body = member_body(pair, 2, spec)

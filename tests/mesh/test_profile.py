@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from femgear.errors import SceneError
-from femgear.geometry.gear import GearPair
-from femgear.geometry.profile import _envelope, involute_half_angle, tooth_profile
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.geometry.profile import _envelope, involute_half_angle, tooth_profile
 
 
 def _pair(**kw):

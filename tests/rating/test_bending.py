@@ -13,10 +13,10 @@ import math
 import numpy as np
 import pytest
 
-from femgear.geometry.gear import GearPair
-from femgear.geometry.profile import tooth_profile
-from femgear.rating.bending import BendingInputs, bending_rating, root_geometry
-from femgear.stiffness.pem import load_point
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.geometry.profile import tooth_profile
+from femgear.physics.rating.bending import BendingInputs, bending_rating, root_geometry
+from femgear.physics.stiffness.pem import load_point
 
 MPA = 1e6
 
@@ -137,7 +137,7 @@ def test_fe_fillet_stress_beside_sigma_F0():
     """FZG C at 200 N m: the 2-D FE section's max principal fillet stress is 0.95 σ_F0 for both members
     (a 5 % lower FE value is expected: ISO's Y_S is an envelope fit of photo-elastic data); the maximum
     sits near the 30° tangent (within 10°).  Band 0.85–1.05: validation against the standard's figure."""
-    from femgear.body.fillet import fillet_stress
+    from femgear.physics.body.fillet import fillet_stress
 
     p = GearPair.from_parameters(z1=16, z2=24, m_n=4.5e-3, alpha_n=math.radians(20), beta=0.0, b=0.014,
                                  x1=0.1817, x2=0.1715, kind="spur")

@@ -14,9 +14,9 @@ import math
 
 import pytest
 
-from femgear.geometry.gear import GearPair
-from femgear.rating import LoadFactors, MaterialLimits, contact_stress, pitting_rating
-from femgear.rating.contact_stress import contact_ratio_factor, single_pair_factors
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.rating import LoadFactors, MaterialLimits, contact_stress, pitting_rating
+from femgear.physics.rating.contact_stress import contact_ratio_factor, single_pair_factors
 
 MPA = 1e6
 
@@ -67,7 +67,7 @@ def test_tr_example_1_permissible_and_safety(tr):
 
 def test_spur_sigma_H0_is_hertz_at_pitch_point_times_Z_eps():
     """Spur: σ_H0 / Z_ε is the Hertz pressure of the whole normal force on b at the pitch point (identity)."""
-    from femgear.contact.hertz import hertz_line, reduced_modulus
+    from femgear.physics.contact.hertz import hertz_line, reduced_modulus
 
     p = GearPair.from_parameters(z1=16, z2=24, m_n=4.5e-3, alpha_n=math.radians(20), beta=0.0, b=0.014,
                                  x1=0.1817, x2=0.1715, kind="spur")

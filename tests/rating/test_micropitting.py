@@ -11,10 +11,10 @@ import math
 import numpy as np
 import pytest
 
-from femgear.contact.film import dowson_higginson_minimum
-from femgear.geometry.gear import GearPair
-from femgear.rating.micropitting import FZG_C, local_film, micropitting_rating, reference_film_thickness
-from femgear.rating.scuffing import ScuffingInputs, flash_path, fzg_torque
+from femgear.physics.contact.film import dowson_higginson_minimum
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.rating.micropitting import FZG_C, local_film, micropitting_rating, reference_film_thickness
+from femgear.physics.rating.scuffing import ScuffingInputs, flash_path, fzg_torque
 
 ALPHA = 15e-9
 
@@ -31,7 +31,7 @@ def _inputs(**kw):
 
 def test_isothermal_film_is_dowson_higginson():
     """With a temperature-independent viscosity (S_GF = 1) h_Y = 1.6 ρ G^0.6 U^0.7 W^-0.13 (Dowson & Higginson
-    1961) equals their 1977 form 2.65 G^0.54 U^0.7 W^-0.13 (femgear.contact.film) within 3 % at G ≈ 3400."""
+    1961) equals their 1977 form 2.65 G^0.54 U^0.7 W^-0.13 (femgear.physics.contact.film) within 3 % at G ≈ 3400."""
     p = GearPair(**FZG_C)
     u, h, lam, _ = local_film(p, 200.0, 2175.0, _inputs(), lambda T: 0.0118, ALPHA)
     E_r = 206e9 / 0.91

@@ -5,11 +5,11 @@ import math
 import numpy as np
 import pytest
 
-from femgear.contact.path import zone_grid
-from femgear.contact.sharing import load_sharing
-from femgear.geometry import kinematics
-from femgear.geometry.gear import GearPair
-from femgear.rating import mesh_power_loss, ohlendorf_loss_factor
+from femgear.physics.contact.path import zone_grid
+from femgear.physics.contact.sharing import load_sharing
+from femgear.physics.geometry import kinematics
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.rating import mesh_power_loss, ohlendorf_loss_factor
 
 
 def _pair(**kw):

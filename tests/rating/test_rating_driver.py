@@ -9,10 +9,10 @@ from pathlib import Path
 
 import pytest
 
-from femgear.contact.path import contact_along_path
-from femgear.geometry import GearPair
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.geometry import GearPair
+from femgear.physics.rating.suite import PairRating
 from femgear.rate import rate_case
-from femgear.rating.suite import PairRating
 from femgear.scene import load_scene
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -29,13 +29,13 @@ def _rate(overrides=()):
 
 def test_defaults_are_said_in_one_line(caplog):
     """One log line (INFO, ``-v``) and the ``defaults`` of the result, which ``femgear info`` prints on one line."""
-    with caplog.at_level(logging.INFO, logger="femgear.rating"):
+    with caplog.at_level(logging.INFO, logger="femgear.physics.rating"):
         r = _rate()
     lines = [rec.getMessage() for rec in caplog.records if "defaults used" in rec.getMessage()]
     assert len(lines) == 1 and "rating.scuffing_load_stage=12.0" in lines[0]
     assert "rating.micropitting_load_stage=8.0" in r.defaults
     caplog.clear()
-    with caplog.at_level(logging.INFO, logger="femgear.rating"):
+    with caplog.at_level(logging.INFO, logger="femgear.physics.rating"):
         r = _rate(ALL_KEYS)
     assert not any("defaults used" in rec.getMessage() for rec in caplog.records) and r.defaults == ()
 
@@ -52,7 +52,7 @@ def test_inputs_reach_the_factors():
 
 
 def test_out_of_range_warns_with_key_and_limit(caplog):
-    with caplog.at_level(logging.INFO, logger="femgear.rating"):
+    with caplog.at_level(logging.INFO, logger="femgear.physics.rating"):
         r = _rate(ALL_KEYS + ["rating.root_roughness_rz=[5e-5, 1e-5]"])
     msg = [rec.getMessage() for rec in caplog.records if "flagged" in rec.getMessage()]
     assert len(msg) == 1 and "rating.root_roughness_rz" in msg[0] and "40 µm" in msg[0]
@@ -89,7 +89,7 @@ def test_info_prints_all_safety_factors(scene):
 @pytest.mark.slow
 def test_run_carries_the_rating_and_the_writer_only_reads_it(tmp_path, monkeypatch):
     from femgear.case import build_case
-    from femgear.io.run import write_run
+    from femgear.edge.io.run import write_run
     from femgear.pipeline import run_case
 
     result = run_case(build_case(load_scene(FZG, ALL_KEYS)))

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from femgear.contact.path import contact_along_path
-from femgear.geometry import GearPair
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.geometry import GearPair
 from femgear.scene import load_scene
 from femgear.summary import scene_power_loss, scene_rating
 

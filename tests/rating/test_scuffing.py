@@ -16,8 +16,8 @@ import math
 import numpy as np
 import pytest
 
-from femgear.geometry.gear import GearPair
-from femgear.rating.scuffing import (
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.rating.scuffing import (
     FZG_A_TORQUE,
     ScuffingInputs,
     flash_path,

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import pytest
 
-from femgear.cli import main
+from femgear.edge.cli import main
 
 TWO_STAGE = """<?xml version="1.0" encoding="UTF-8"?>
 <model applicationId="hand" applicationVersion="1" date="2026-11-27T00:00:00+00:00" version="1.4">

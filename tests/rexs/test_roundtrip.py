@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from femgear.geometry import GearPair
+from femgear.physics.geometry import GearPair
 from femgear.rexs.database import id_problems
 from femgear.rexs.importer import scene_from_rexs
 from femgear.rexs.read import read_model

@@ -13,7 +13,7 @@ from femgear.scene import load_scene
 
 def test_burst_speed_is_the_ring_hoop_stress_at_tabor_yield(baseline_path):
     """v_burst = √(H / 3ρ): 505 m/s for H = 6 GPa, ρ = 7850 kg/m³; the tip speed just below passes."""
-    from femgear.geometry import GearPair
+    from femgear.physics.geometry import GearPair
 
     scene = load_scene(baseline_path)
     pair = GearPair.from_scene(scene)

@@ -48,7 +48,7 @@ SLIPS = [
 @pytest.mark.parametrize("scene", [BASE, MARINE], ids=["baseline", "marine"])
 @pytest.mark.parametrize("override,key,words", SLIPS, ids=[s[1] for s in SLIPS])
 def test_unit_slips_are_refused_on_the_key_typed(scene, override, key, words, monkeypatch):
-    import femgear.geometry as geometry
+    import femgear.physics.geometry as geometry
 
     def no_geometry(*args, **kwargs):  # the check must come first
         raise AssertionError("geometry was derived before the input ranges were checked")
@@ -111,7 +111,7 @@ def test_iso1328_tolerances_match_the_standards_formulas():
 def test_nominal_contact_stress_is_isos_sigma_h0_without_z_eps_z_beta():
     """The torque check's σ_H0 against femgear's ISO 6336-2 σ_H0 on the baseline (x = 0: same Z_H),
     divided by Z_ε Z_β that the check leaves out."""
-    from femgear.geometry import GearPair
+    from femgear.physics.geometry import GearPair
     from femgear.summary import rating_summary, scene_rating
 
     scene = load_scene(BASE)

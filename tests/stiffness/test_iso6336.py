@@ -4,8 +4,8 @@ import math
 
 import pytest
 
-from femgear.geometry.gear import GearPair
-from femgear.stiffness.iso6336 import iso6336_stiffness, virtual_teeth
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.iso6336 import iso6336_stiffness, virtual_teeth
 
 
 @pytest.fixture(scope="module")

@@ -5,15 +5,15 @@ import math
 import numpy as np
 import pytest
 
-from femgear.stiffness.iso6336 import iso6336_stiffness
-from femgear.stiffness.pem import (
+from femgear.physics.stiffness.iso6336 import iso6336_stiffness
+from femgear.physics.stiffness.pem import (
     SAINSOT,
     hertz_compliance,
     pair_stiffness_per_width,
     sainsot_coefficient,
     tooth_compliance,
 )
-from femgear.stiffness.tvms import mesh_stiffness
+from femgear.physics.stiffness.tvms import mesh_stiffness
 
 
 def test_sainsot_polynomial_exact():
@@ -42,7 +42,7 @@ def test_bending_grows_towards_the_tip(baseline_pair):
 
 
 def test_pair_stiffness_symmetric_for_equal_gears():
-    from femgear.geometry.gear import GearPair
+    from femgear.physics.geometry.gear import GearPair
 
     p = GearPair.from_parameters(z1=30, z2=30, m_n=3e-3, alpha_n=math.radians(20), beta=math.radians(20),
                                  b=0.02, x1=0.0, x2=0.0)
@@ -77,7 +77,7 @@ def test_pem_mean_vs_iso_c_gamma_alpha(baseline_pair):
 
 def test_one_mesh_kinds_have_no_right_helix():
     """Spur and single-helical pairs have one mesh: k_right = 0; the spur PEM is independent of n_slices."""
-    from femgear.geometry.gear import GearPair
+    from femgear.physics.geometry.gear import GearPair
 
     base = dict(z1=16, z2=24, m_n=4.5e-3, alpha_n=math.radians(20), b=0.014, x1=0.1817, x2=0.1715)
     spur = GearPair.from_parameters(beta=0.0, kind="spur", **base)

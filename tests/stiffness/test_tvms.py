@@ -5,9 +5,9 @@ import math
 import numpy as np
 import pytest
 
-from femgear.geometry import double_helical_contact
-from femgear.geometry.gear import GearPair
-from femgear.stiffness.tvms import MeshStiffness, helix_stiffness, mesh_stiffness
+from femgear.physics.geometry import double_helical_contact
+from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness, mesh_stiffness
 
 
 def test_constant_unit_stiffness_gives_contact_length(baseline_pair):
@@ -58,7 +58,7 @@ def test_interpolation_periodic(baseline_pair):
 
 
 def test_levels_and_bad_arguments(baseline_pair, baseline_scene):
-    from femgear.stiffness import mesh_stiffness_from_scene
+    from femgear.physics.stiffness import mesh_stiffness_from_scene
 
     iso = mesh_stiffness(baseline_pair, "iso6336", n_positions=8)
     assert iso.ripple() == 0 and iso.mean > 0

@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
+from femgear.edge.sweep import parse_sweep, run_sweep
 from femgear.errors import SceneError
-from femgear.sweep import parse_sweep, run_sweep
 
 RIG = Path(__file__).resolve().parents[2] / "studies" / "rig15_sweep.toml"
 

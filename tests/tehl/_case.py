@@ -3,10 +3,10 @@ contact near the middle of the baseline path."""
 
 from pathlib import Path
 
-from femgear.contact.hertz import reduced_modulus
-from femgear.lubrication.oil import OilLaw
+from femgear.physics.contact.hertz import reduced_modulus
+from femgear.physics.lubrication.oil import OilLaw
+from femgear.physics.tehl.solver import thermal_props
 from femgear.scene import load_scene
-from femgear.tehl.solver import thermal_props
 
 SCENE = load_scene(Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml")
 OIL = OilLaw.from_scene(SCENE)

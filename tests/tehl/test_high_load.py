@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from femgear.errors import ConvergenceError
-from femgear.tehl import solve_tehl_line
+from femgear.physics.tehl import solve_tehl_line
 
 _spec = importlib.util.spec_from_file_location("_case", Path(__file__).with_name("_case.py"))
 case = importlib.util.module_from_spec(_spec)
@@ -37,7 +37,7 @@ def test_eyring_srr_one_converges(ph):
     """Measured: 1 GPa ΔT 244 K, μ 0.0095, φ 0.580, 24 iterations; 1.5 GPa ΔT 283 K,
     μ 0.0089, φ 0.575, 30 iterations.  μ < 0.01 is physical here: the film is 240-280 K
     hotter and the Eyring stress caps the shear at ~11 MPa.  (These stalled while the
-    energy equation advected with the layer shear-rate profile; see femgear.tehl.energy.)"""
+    energy equation advected with the layer shear-rate profile; see femgear.physics.tehl.energy.)"""
     r = _solve(ph, 1.0)
     assert r.dT_max > 0 and 0.005 < r.mu < 0.1 and abs(r.heat["balance_error"]) < 1e-6
     assert r.hc < r.hc_isothermal

@@ -6,11 +6,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.contact.path import contact_along_path
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.tehl.path import tehl_along_path, write_thermal_vtk
+from femgear.physics.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes
 from femgear.scene import load_scene
 from femgear.scene.levels import check_level
-from femgear.tehl.path import tehl_along_path, write_thermal_vtk
-from femgear.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes
 
 BASELINE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
 
@@ -22,7 +22,7 @@ def scene():
 
 def test_level_is_available_and_selected(scene):
     from femgear.case import build_case
-    from femgear.lubrication.levels import lubrication_solver
+    from femgear.physics.lubrication.levels import lubrication_solver
 
     assert check_level("lubrication", "tehl") is None
     solve = lubrication_solver(build_case(scene), repeated=True)
@@ -57,7 +57,7 @@ def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, tmp_path):
 def test_static_pass_reports_tehl_figures(scene):
     """The lubrication registry's ``tehl`` level (direct solves) equals the TEHL path solver."""
     from femgear.case import build_case
-    from femgear.lubrication.levels import friction_along_path
+    from femgear.physics.lubrication.levels import friction_along_path
 
     case = build_case(scene.model_copy(update={"numerics": scene.numerics.model_copy(update={"path_points": 3})}))
     contact = contact_along_path(scene, n=3)

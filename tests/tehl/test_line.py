@@ -8,16 +8,16 @@ import numpy as np
 import pytest
 import scipy.sparse.linalg
 
-from femgear.ehl import params as pr
-from femgear.ehl.dimensional import solve_line_dimensional
-from femgear.ehl.level import Level
-from femgear.ehl.rheology import Rheology
-from femgear.lubrication.flash import blok_flash_temperature
-from femgear.lubrication.traction import gupta_thermal_factor
-from femgear.tehl import solve_tehl_line
-from femgear.tehl.energy import jaeger_matrix
-from femgear.tehl.line import ehl_oil_at
-from femgear.tehl.rheology import ThermalRheology
+from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.dimensional import solve_line_dimensional
+from femgear.physics.ehl.level import Level
+from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.lubrication.flash import blok_flash_temperature
+from femgear.physics.lubrication.traction import gupta_thermal_factor
+from femgear.physics.tehl import solve_tehl_line
+from femgear.physics.tehl.energy import jaeger_matrix
+from femgear.physics.tehl.line import ehl_oil_at
+from femgear.physics.tehl.rheology import ThermalRheology
 
 _spec = importlib.util.spec_from_file_location("_case", Path(__file__).with_name("_case.py"))
 case = importlib.util.module_from_spec(_spec)
@@ -130,7 +130,7 @@ def test_energy_split_jaeger_solve_equals_the_direct_solve(monkeypatch):
     """The 192-cell energy solve (sparse LU of the film with the Jaeger operators cut to a
     band, Richardson sweeps with their far field) gives the temperatures and wall fluxes of
     the direct sparse solve of the whole matrix (to 1e-7 K, 1e-8 relative)."""
-    import femgear.tehl.energy as energy
+    import femgear.physics.tehl.energy as energy
 
     seen = []
     solve = energy.linear_solve

@@ -6,9 +6,9 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.ehl.dimensional import solve_point_dimensional
-from femgear.tehl.line import ehl_oil_at
-from femgear.tehl.point import solve_tehl_point
+from femgear.physics.ehl.dimensional import solve_point_dimensional
+from femgear.physics.tehl.line import ehl_oil_at
+from femgear.physics.tehl.point import solve_tehl_point
 
 _spec = importlib.util.spec_from_file_location("_case", Path(__file__).with_name("_case.py"))
 case = importlib.util.module_from_spec(_spec)

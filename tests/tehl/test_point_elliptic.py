@@ -9,12 +9,12 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.contact.crowning import CrownedContact, crowned_contact
-from femgear.contact.path import contact_along_path
 from femgear.errors import SceneError
-from femgear.lubrication.levels import lubrication_solver
+from femgear.physics.contact.crowning import CrownedContact, crowned_contact
+from femgear.physics.contact.path import contact_along_path
+from femgear.physics.lubrication.levels import lubrication_solver
+from femgear.physics.tehl.point import solve_tehl_point
 from femgear.scene import scene_from_dict
-from femgear.tehl.point import solve_tehl_point
 
 from ._case import E_RED, OIL, PROPS, TAU0
 
@@ -82,10 +82,10 @@ def test_elliptic_thermal_film_thicker_than_circular():
 def test_a_contact_the_point_solver_cannot_hold_is_solved_as_a_line_contact(monkeypatch, caplog):
     """The R_x/R_y → 0 limit: where the point solve raises, the contact gets the line TEHL of the same load
     per unit length on R_x, and a warning names it."""
-    import femgear.tehl.point_level as pl
+    import femgear.physics.tehl.point_level as pl
     from femgear.errors import ConvergenceError
-    from femgear.tehl.line import solve_tehl_line
-    from femgear.tehl.solver import tehl_setup
+    from femgear.physics.tehl.line import solve_tehl_line
+    from femgear.physics.tehl.solver import tehl_setup
 
     scene = _scene(10e-6)
 
@@ -94,7 +94,7 @@ def test_a_contact_the_point_solver_cannot_hold_is_solved_as_a_line_contact(monk
 
     monkeypatch.setattr(pl, "solve_tehl_point", fail)
     w, R, ue, srr, T = 9.0e4, 0.0123, 1.0, 0.3, 313.0
-    with caplog.at_level("WARNING", logger="femgear.tehl"):
+    with caplog.at_level("WARNING", logger="femgear.physics.tehl"):
         mu, dT = pl.tehl_point_solver(scene)(w=w, R=R, ue=ue, srr=srr, T=T)
     Rx, _ = crowned_contact(scene).radii(R)
     line = solve_tehl_line(w, float(Rx), ue, srr, T, level=scene.numerics.ehl_level, **tehl_setup(scene))
@@ -118,8 +118,8 @@ def test_the_tehl_levels_are_refused_above_their_speed_range():
 def test_tehl_is_refused_where_its_map_leaves_the_line_solvers_range():
     """The wind stage's map corner reaches Moes M = 346 at L = 4.3, where the line solve does not start: refused
     before computing, pointing to the direct ehl-line; the FZG C pair's corner (127) is accepted."""
+    from femgear.physics.tehl.solver import map_corner_moes
     from femgear.scene import load_scene
-    from femgear.tehl.solver import map_corner_moes
 
     zoo = BASE.parents[0] / "zoo"
     with pytest.raises(SceneError, match=r"Moes M = 346.*\"ehl-line\""):

@@ -5,8 +5,8 @@ a feature that moves with its flank is refused with the key that asks for it."""
 import pytest
 
 from femgear.errors import SceneError
+from femgear.physics.tehl.point import solve_tehl_point
 from femgear.scene.schema import SurfaceRoughness
-from femgear.tehl.point import solve_tehl_point
 
 from ._case import E_RED, OIL, PROPS, TAU0
 

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from femgear.lubrication.traction import gupta_thermal_factor
-from femgear.tehl import solve_tehl_line
+from femgear.physics.lubrication.traction import gupta_thermal_factor
+from femgear.physics.tehl import solve_tehl_line
 
 _spec = importlib.util.spec_from_file_location("_case", Path(__file__).with_name("_case.py"))
 case = importlib.util.module_from_spec(_spec)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from femgear.errors import ConvergenceError
-from femgear.tehl import solve_tehl_line
+from femgear.physics.tehl import solve_tehl_line
 
 _spec = importlib.util.spec_from_file_location("_case", Path(__file__).with_name("_case.py"))
 case = importlib.util.module_from_spec(_spec)

@@ -1,7 +1,7 @@
 """Load sharing over the contact lines for any overlap ratio (issue 25): spur to ε_β = 4.
 
 The force balance is checked against an integral written independently of
-:mod:`femgear.geometry.lines`: each contact line of :func:`femgear.geometry.contact_lines`
+:mod:`femgear.physics.geometry.lines`: each contact line of :func:`femgear.physics.geometry.contact_lines`
 integrates the linear interpolant of the grid loads exactly (trapezoid on the grid nodes
 inside the line plus its two ends), dl = du / sin β_b, summed over all lines of the helix.
 With several lines covering one u (ε_β > 1) every line carries its own load; the old
@@ -15,10 +15,10 @@ import math
 import numpy as np
 import pytest
 
-from femgear.contact.sharing import load_sharing, spur_sharing
-from femgear.geometry import GearPair, contact_lines, path_positions
-from femgear.geometry.lines import line_weights
-from femgear.wear.load_sharing import distribute, load_map
+from femgear.physics.contact.sharing import load_sharing, spur_sharing
+from femgear.physics.geometry import GearPair, contact_lines, path_positions
+from femgear.physics.geometry.lines import line_weights
+from femgear.physics.wear.load_sharing import distribute, load_map
 
 EPS_BETA = [0.0, 0.5, 0.93, 1.0, 1.5, 2.65, 4.0]
 FORCE = 2.0e4   # N, one helix
@@ -78,7 +78,7 @@ def test_the_spur_limit_balances_the_pairs_in_contact():
 @pytest.mark.parametrize("eps_beta", EPS_BETA)
 def test_the_coupled_load_map_equals_the_static_sharing_for_any_overlap(eps_beta):
     """The coupling's load map (Winkler layer, uniform stiffness, no deviation) and the static contact-line
-    sharing of :mod:`femgear.contact.sharing` are two discretisations of the same ISO 6336 load w' = F/L(φ):
+    sharing of :mod:`femgear.physics.contact.sharing` are two discretisations of the same ISO 6336 load w' = F/L(φ):
     their phase-mean load at the pitch point agrees within 2 % for every overlap (it was ε_β times too high
     for ε_β > 1), and never exceeds the force over the shortest contact length."""
     pair = _pair(eps_beta)

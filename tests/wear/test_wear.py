@@ -6,8 +6,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from femgear.geometry import kinematics, path_positions
-from femgear.wear import WearSetup, WearState, load_map, run_wear, wear_rates, wear_steps
+from femgear.physics.geometry import kinematics, path_positions
+from femgear.physics.wear import WearSetup, WearState, load_map, run_wear, wear_rates, wear_steps
 
 
 @pytest.fixture(scope="module")
@@ -72,7 +72,7 @@ def test_interrupted_run_resumes_from_its_checkpoint(setup, tmp_path):
     steps = wear_steps(setup, 1e6)
     for _ in range(3):      # "interrupt" after three update steps, saving as run_wear does
         state = next(steps)
-    from femgear.wear.archard import save_state
+    from femgear.physics.wear.archard import save_state
 
     save_state(state, ck, setup.kin.u)
     resumed = run_wear(setup, 1e6, checkpoint=ck)
@@ -102,7 +102,7 @@ def test_load_follows_the_local_pair_stiffness():
     """Identity of the Winkler layer: without deviations the load per unit length is
     proportional to the local stiffness c_l(u) and sums to the force; a uniform c_l gives
     the uniform ISO distribution."""
-    from femgear.wear.load_sharing import distribute
+    from femgear.physics.wear.load_sharing import distribute
 
     u = np.linspace(0.0, 1e-2, 21)
     du = np.full((1, u.size), u[1] - u[0])

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from femgear.cli import main
+from femgear.edge.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 _SPEC = importlib.util.spec_from_file_location("zoo_hand_figures", Path(__file__).with_name("hand_figures.py"))

@@ -1,7 +1,0 @@
-"""``python -m femgear.cli``: the same as the ``femgear`` command."""
-
-import sys
-
-from femgear.cli import main
-
-sys.exit(main())

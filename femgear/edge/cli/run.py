@@ -1,0 +1,58 @@
+"""``femgear run SCENE``: run a scene and write its outputs.
+
+The output folder is created and checked writable before anything is computed; a
+``meta.name`` cannot place it outside ``out/``.  Prints the files written and a table
+of key figures (or, with ``--json``, one JSON summary line).
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+from femgear.edge.cli.common import add_scene_arguments, emit_json, load_scene_arg
+
+
+def register(sub) -> None:
+    p = sub.add_parser("run", help="run what the scene's [physics] asks and write results")
+    add_scene_arguments(p)
+    p.add_argument("--out", type=Path, default=None, help="output folder (default: out/<meta.name>)")
+    p.add_argument("--no-plots", action="store_true", help="skip PNG figures")
+    p.add_argument("--no-vtk", action="store_true", help="skip the ParaView (.pvd/.vtu) output")
+    p.add_argument("--json", action="store_true", help="print one JSON summary as the last line")
+    p.set_defaults(func=_run)
+
+
+def _run(args: argparse.Namespace) -> int:
+    from femgear.edge.cli.report import CouplingProgress, key_figures, print_key_figures
+    from femgear.edge.io.paths import child_path, prepare_output_dir
+    from femgear.pipeline import run_scene
+
+    scene = load_scene_arg(args)
+    if args.out is None:
+        out = prepare_output_dir(child_path("out", scene.meta.name, "meta.name"), "meta.name")
+    else:
+        out = prepare_output_dir(args.out, "--out")
+    t0 = time.perf_counter()
+    with CouplingProgress(enabled=not (args.quiet or args.json)) as progress:
+        written = run_scene(scene, out, plots=not args.no_plots, progress=progress)
+    files = dict(written.files)
+    if not args.no_plots:
+        from femgear.edge.plot.coupled import run_figures
+
+        files.update(run_figures(written.result, out))
+    if not args.no_vtk:
+        from femgear.edge.io.paraview_run import write_run_paraview
+
+        files.update(write_run_paraview(written.result, out))
+    seconds = time.perf_counter() - t0
+    if args.json:
+        summary = dict(written.summary)
+        summary["outputs"] = {k: str(v) for k, v in files.items()}
+        emit_json(summary)
+    else:
+        for name, path in files.items():
+            print(f"{name}: {path}")
+        print_key_figures(key_figures(written.summary, seconds), title=f"{scene.meta.name}: key figures")
+    return 0

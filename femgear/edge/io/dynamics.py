@@ -1,0 +1,63 @@
+"""Results files of a dynamic run: ``dynamics.json`` (summary) and ``dynamics.npz`` (time histories)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from femgear.edge.io.atomic import write_bytes_atomic
+from femgear.edge.io.results import write_json
+from femgear.system.dynamics.run import DynamicsRun
+
+
+def dynamics_summary(run: DynamicsRun) -> dict[str, Any]:
+    """The JSON summary of a run: settings, amplitudes (half peak-to-peak, SI), modes, timings."""
+    m, sim, modal = run.model, run.simulation, run.modal
+    return {
+        "level": m.level,
+        "method": sim.method,
+        "dt": sim.dt,
+        "steps": sim.steps,
+        "seconds": sim.seconds,
+        "mesh_frequency": m.mesh_frequency,
+        "stiffness": m.stiffness.label,
+        "mean_mesh_stiffness": list(m.stiffness.mean),
+        "friction_coefficient": m.mu,
+        "rayleigh": list(m.rayleigh),
+        "mesh_damping": m.mesh_damping.tolist(),
+        "natural_frequencies_hz": list(m.flexible_modes_hz),
+        "amplitudes": dict(run.amplitudes),
+        "modes": [{"frequency_hz": float(f), "dominant": modal.dominant_group(i),
+                   "mesh_energy": float(modal.energy["mesh"][i])} for i, f in enumerate(modal.frequencies)],
+    }
+
+
+def _save_npz(path: Path, **arrays: np.ndarray) -> Path:
+    """``np.savez_compressed`` through :func:`femgear.edge.io.atomic.write_bytes_atomic` (fsync, rename, 0644)."""
+    import io
+
+    buf = io.BytesIO()
+    np.savez_compressed(buf, **arrays)
+    return write_bytes_atomic(path, buf.getvalue())
+
+
+def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True) -> dict[str, Path]:
+    """Write ``dynamics.json``, ``dynamics.npz`` (and the PNG figures) into ``folder``."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    res = run.response
+    files = {
+        "json": write_json(folder / "dynamics.json", dynamics_summary(run)),
+        "npz": _save_npz(folder / "dynamics.npz", t=res.t, displacement=res.displacement, velocity=res.velocity,
+                         delta=res.delta, mesh_force=res.mesh_force, bearing_acceleration=res.bearing_acceleration),
+    }
+    if plots:
+        from femgear.system.dynamics import plot
+
+        files["time_histories"] = plot.plot_time_histories(res, folder / "dynamics_time.png")
+        files["mesh_force"] = plot.plot_mesh_force(res, folder / "dynamics_mesh_force.png")
+        files["phase_planes"] = plot.plot_phase_planes(res, folder / "dynamics_phase.png")
+        files["spectra"] = plot.plot_spectra(res, folder / "dynamics_spectra.png")
+    return files

@@ -1,0 +1,194 @@
+"""The main job's ParaView output (layout and geometry: :mod:`femgear.edge.io.paraview`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from femgear.edge.io.paraview import Frame, flank_surface, write_collection
+from femgear.results import RunResult
+
+N_FACE = 9          # points across the face width of one helix
+N_RING = 72         # points around a pitch circle
+MAX_FRAMES = 50     # time steps of the mesh cycle written
+
+
+def _inv(alpha: float) -> float:
+    return float(np.tan(alpha) - alpha)
+
+
+def flank_frames(result: RunResult) -> list[Frame]:
+    """One surface per member (both helices) with the fields along the path."""
+    import meshio
+
+    from femgear.edge.io.run import along_path
+
+    case, pair = result.case, result.case.pair
+    fields = along_path(result)
+    b, s = pair.b, pair.b + case.scene.pair.groove_width
+    shared = {k: fields[k] for k in ("hertz_pressure", "film_central", "film_minimum", "load_per_length",
+                                     "sliding_speed", "friction_coefficient", "temperature_rise") if k in fields}
+    frames = []
+    members = (("pinion", pair.rb1, fields["radius_pinion"], (0.0, 0.0), -_inv(pair.alpha_wt), +1.0),
+               ("gear", pair.rb2, fields["radius_gear"], (pair.a_w, 0.0), np.pi - _inv(pair.alpha_wt), -1.0))
+    for part, (name, rb, r, centre, angle0, hand) in enumerate(members):
+        data = dict(shared)
+        for key, label in (("wear", "wear_depth"), ("thermal_deviation", "thermal_deviation")):
+            if f"{key}_{name}" in fields:
+                data[label] = fields[f"{key}_{name}"]
+        points, quads, point_data = [], [], {k: [] for k in data}
+        for sigma, zc in ((+1.0, -s / 2), (-1.0, +s / 2)):      # left, right helix
+            z = np.linspace(zc - b / 2, zc + b / 2, N_FACE)
+            twist = hand * sigma * np.tan(pair.beta_b) / rb
+            pts, q = flank_surface(rb, r, centre, angle0, +1.0, z, zc, twist)
+            quads.append(q + sum(len(p) for p in points))
+            points.append(pts)
+            for k, v in data.items():
+                point_data[k].append(np.tile(np.asarray(v, dtype=float), N_FACE))
+        mesh = meshio.Mesh(np.concatenate(points), [("quad", np.concatenate(quads))],
+                           point_data={k: np.concatenate(v) for k, v in point_data.items()})
+        frames.append(Frame(time=0.0, part=part, name=f"flank_{name}", mesh=mesh))
+    return frames
+
+
+def dynamics_frames(result: RunResult) -> list[Frame]:
+    """The last mesh cycle: pitch circles of the four helix halves with their displacement."""
+    import meshio
+
+    from femgear.system.dynamics.layout import BODIES, point_jacobian
+
+    pair = result.case.pair
+    res = result.coupled.state.dynamics.response
+    t = res.t
+    period = 1.0 / res.mesh_frequency
+    idx = np.flatnonzero(t >= t[-1] - period)
+    idx = idx[np.linspace(0, len(idx) - 1, min(len(idx), MAX_FRAMES)).round().astype(int)]
+    half = 0.5 * (pair.b + result.case.scene.pair.groove_width)
+    angle = np.linspace(0.0, 2.0 * np.pi, N_RING, endpoint=False)
+    rings = []
+    for body in BODIES:
+        radius, cx = (pair.rw1, 0.0) if body.startswith("pinion") else (pair.rw2, pair.a_w)
+        zc = -half if body.endswith("_L") else half
+        offsets = np.column_stack([radius * np.cos(angle), radius * np.sin(angle), np.zeros(N_RING)])
+        rings.append((offsets + [cx, 0.0, zc], np.stack([point_jacobian(o) for o in offsets])))
+    points = np.concatenate([p for p, _ in rings])
+    seg = np.column_stack([np.arange(N_RING), (np.arange(N_RING) + 1) % N_RING])
+    lines = np.concatenate([seg + k * N_RING for k in range(len(BODIES))])
+    mean = res.displacement[idx].mean(axis=0)
+    frames = []
+    for i in idx:
+        u = np.concatenate([J @ res.displacement[i, 6 * k: 6 * k + 6] for k, (_, J) in enumerate(rings)])
+        w = np.concatenate([J @ (res.displacement[i] - mean)[6 * k: 6 * k + 6] for k, (_, J) in enumerate(rings)])
+        force = np.repeat([res.mesh_force[i, 0], res.mesh_force[i, 1]] * 2, N_RING)
+        mesh = meshio.Mesh(points, [("line", lines)],
+                           point_data={"displacement": u, "vibration": w, "mesh_force": force})
+        frames.append(Frame(time=float(t[i] - t[idx[0]]), part=0, name="response", mesh=mesh))
+    return frames
+
+
+def body_frames(result: RunResult) -> list[Frame]:
+    """``thermal = "fe"``: the FE gear sections of both members at the run's temperature rises.
+
+    The coupling keeps only the flank deviation (unit responses, the problem is linear);
+    the fields are solved once more here, at the converged flank rise and the scene's
+    shaft rise: ``temperature_rise`` [K] and ``displacement`` [m] at the vertices (the P2
+    fields' nodal values), ``von_mises`` [Pa] per triangle.  The gear's section is
+    shifted by the centre distance along x.
+    """
+    import meshio
+
+    from femgear.physics.body.thermal import gear_thermo_elastic
+
+    case, m = result.case, result.case.material
+    frames = []
+    for part, (member, bore) in enumerate(((1, case.bore_radii[0]), (2, case.bore_radii[1]))):
+        fe = gear_thermo_elastic(case.pair, member, result.tribology.flank_temperature_rise,
+                                 case.thermal.shaft_temperature_rise, m.thermal_expansion, m.youngs_modulus,
+                                 m.poisson_ratio, m.conductivity, bore, case.thermal.mesh_size)
+        p = fe.mesh.p
+        points = np.column_stack([p[0] + (case.pair.a_w if member == 2 else 0.0), p[1], np.zeros(p.shape[1])])
+        u = fe.u[fe.basis_u.nodal_dofs]
+        mesh = meshio.Mesh(points, [("triangle", fe.mesh.t.T)],
+                           point_data={"temperature_rise": fe.T[fe.basis_T.nodal_dofs[0]],
+                                       "displacement": np.column_stack([u[0], u[1], np.zeros(p.shape[1])])},
+                           cell_data={"von_mises": [fe.von_mises(m.youngs_modulus, m.poisson_ratio,
+                                                                  m.thermal_expansion)]})
+        frames.append(Frame(time=0.0, part=part, name=("body_pinion", "body_gear")[part], mesh=mesh))
+    return frames
+
+
+def face_mesh(result: RunResult):
+    """The face-resolved fields (``wear.field = "face"``: ``wear_depth``; ``thermal = "fe3d"``:
+    ``thermal_deviation``, both [m]) on the 3-D loaded flanks of tooth 0 of both members, both helices,
+    as a meshio quad mesh (None without face fields).
+
+    Each member's body frame (:func:`femgear.physics.ltca.vtk.helix_flank_quads`: the LTCA's member bodies) turned
+    into its meshing position, the gear's axis at (a_w, 0) (:func:`femgear.physics.ltca.maps.to_mesh`); a flank point at path position u_k has
+    roll distance ρ₁ = u_k (pinion) or ρ₂ = T₁T₂ − u_k (gear), face coordinate ζ_m of the run's face grid.
+    Point data also ``member`` (1, 2), ``helix`` (0 left, 1 right), ``u``, ``rho``, ``zeta`` [m]."""
+    import meshio
+
+    from femgear.physics.ltca.maps import to_mesh
+    from femgear.physics.ltca.vtk import helix_flank_quads
+    from femgear.system.coupling.thermal import roll_distances
+
+    t, case = result.tribology, result.case
+    if t.face_grid is None:
+        return None
+    pair, grid = case.pair, np.asarray(t.face_grid, float)
+    u = case.path.u
+    rho = roll_distances(pair, u)
+    fields = {k: v for k, v in (("wear_depth", t.wear_face), ("thermal_deviation", t.thermal_face)) if v is not None}
+    points, quads, data = [], [], {k: [] for k in (*fields, "member", "helix", "u", "rho", "zeta")}
+    U, Z = np.meshgrid(u, grid, indexing="ij")
+    for j in (0, 1):
+        pts, q = helix_flank_quads(pair, j + 1, rho[j], grid, case.groove_width, case.stagger)
+        pts = to_mesh(pair, j + 1, pts)
+        quads.append(q + sum(len(p) for p in points))
+        points.append(pts)
+        for k, v in fields.items():
+            data[k].append(np.asarray(v[j], float).reshape(-1))
+        data["member"].append(np.full(len(pts), j + 1, np.int32))
+        data["helix"].append(np.repeat(np.array([0, 1], np.int32), U.size))
+        data["u"].append(np.tile(U.ravel(), 2))
+        data["rho"].append(np.tile(np.repeat(rho[j], grid.size), 2))
+        data["zeta"].append(np.tile(Z.ravel(), 2))
+    return meshio.Mesh(np.concatenate(points), [("quad", np.concatenate(quads))],
+                       point_data={k: np.concatenate(v) for k, v in data.items()})
+
+
+def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path]:
+    """Write ``flanks.pvd``, with dynamics ``dynamics.pvd``, with ``thermal = "fe"`` ``body.pvd``, and with
+    ``stiffness = "ltca"`` the LTCA's pressure and load maps on the 3-D loaded flanks of both members, both
+    helices, each turned into its meshing position, ``ltca_pressure.vtu`` (:func:`femgear.physics.ltca.maps.load_maps`;
+    the LTCA cycle of the stiffness level: new flanks with the scene's modifications; ``w_worst`` at the phase
+    of the largest pressure), and with face-resolved fields (``wear.field = "face"``, ``thermal = "fe3d"``)
+    ``flank_face.vtu`` (:func:`face_mesh`)."""
+    out_dir = Path(out_dir)
+    files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
+    ltca = result.stiffness.info.get("ltca") if result.stiffness is not None else None
+    if ltca is not None and ltca.line_load:
+        from femgear.edge.io.ltca import write_maps_vtu
+        from femgear.physics.ltca.maps import load_maps
+        from femgear.physics.ltca.te import pressure_peak
+
+        m, case, te = result.case.material, result.case, result.transmission_error
+        worst = te.worst_phase if te is not None else pressure_peak(ltca, case.pair, m.youngs_modulus,
+                                                                    m.poisson_ratio)[1]
+        maps = load_maps(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, case.scene.operating.torque, worst,
+                         case.groove_width, case.stagger)
+        files["ltca_pressure_vtu"] = write_maps_vtu(out_dir / "ltca_pressure.vtu", maps)
+    face = face_mesh(result)
+    if face is not None:
+        from femgear.edge.io.paraview import write_vtu
+
+        files["flank_face_vtu"] = write_vtu(out_dir / "flank_face.vtu", face)
+    if result.case.levels.thermal == "fe":
+        files["body_pvd"] = write_collection(out_dir, "body", body_frames(result))
+    if result.coupled is not None and result.coupled.state.dynamics is not None:
+        files["dynamics_pvd"] = write_collection(out_dir, "dynamics", dynamics_frames(result))
+    return files
+
+
+__all__ = ["body_frames", "dynamics_frames", "face_mesh", "flank_frames", "write_run_paraview"]

@@ -1,0 +1,180 @@
+"""``results.json`` of a run: the documented JSON layout, written from a :class:`RunResult`.
+
+Layout (the contract; keys are added, never renamed without a README note):
+
+- ``summary``: ``scene`` (name), ``geometry``, ``contact`` (pitch point and path
+  extremes), ``rating`` (ISO 6336-2 pitting), ``safety_factors``, ``bending``, ``scuffing``,
+  ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
+  and statically mean_per_helix, seconds), ``friction`` (mu_pitch/min/max/mean,
+  max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
+  gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
+  with ``stiffness = "ltca"`` ``transmission_error`` (:func:`femgear.edge.io.ltca.te_summary`: loaded TE
+  p-p, harmonics, stiffness mean/ripple, load share, peak pressure and its edge flag, unloaded TE;
+  ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
+  TE p-p of the last coupling pass's worn and expanded flanks),
+  with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`) and
+  ``coupling`` (mode, converged, iterations, seconds, history), ``outputs`` (files);
+- ``scene``: the validated scene;
+- ``along_path``: arrays over the ONE path grid of the case (s, radii, speeds, Hertz,
+  films, and the tribology fields: load_per_length, friction_coefficient,
+  temperature_rise, thermal_deviation_pinion/gear, wear_pinion/gear); ``film_central``,
+  ``film_minimum`` (and ``film_pressure_max``, thermal levels ``film_temperature_rise``) are those of
+  the lubrication level that ran (``summary.film``: level, method, pitch and minimum values), the
+  formula films stay as ``film_*_formula``; ``specific_film`` λ = h_min / R_a (R_a the mean of both
+  flanks, ``rating.roughness_ra`` or its default by ``rating.finishing``);
+- ``mesh_stiffness`` (phase, k_left, k_right) and, with dynamics,
+  ``mesh_force_per_phase`` (left, right); with ``ltca`` ``transmission_error_per_phase``
+  (:func:`femgear.edge.io.ltca.te_curves`: phase, lte, nlte, force_left/right, k_total).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from femgear.edge.io.results import write_json
+from femgear.results import RunResult, Tribology
+from femgear.summary import scene_summary
+
+
+def _friction_summary(mu: np.ndarray, dT: np.ndarray, s: np.ndarray) -> dict[str, float]:
+    return {"mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)), "mu_max": float(np.max(mu)),
+            "mu_mean": float(np.mean(mu)), "max_temperature_rise": float(np.max(dT))}
+
+
+def _thermal_summary(rise: float, zeta: np.ndarray, s: np.ndarray) -> dict[str, float]:
+    return {"flank_temperature_rise": float(rise), "deviation_pitch_pinion": float(np.interp(0.0, s, zeta[0])),
+            "deviation_pitch_gear": float(np.interp(0.0, s, zeta[1])), "max_deviation": float(np.max(np.abs(zeta)))}
+
+
+def tribology_summary(t: Tribology, s: np.ndarray, static: bool) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    if t.friction_coefficient is not None:
+        out["friction"] = _friction_summary(t.friction_coefficient, t.temperature_rise, s)
+    if t.thermal_deviation is not None:
+        out["thermal"] = _thermal_summary(t.flank_temperature_rise, t.thermal_deviation, s)
+    if t.wear is not None:
+        out["wear"] = {"cycles": t.wear_cycles, "max_depth_pinion": float(t.wear[0].max()),
+                       "max_depth_gear": float(t.wear[1].max()), **({"steps": t.wear_steps} if static else {})}
+    return out
+
+
+def along_path(result: RunResult) -> dict[str, np.ndarray]:
+    c, k, t = result.contact, result.case.path, result.tribology
+    fields = {
+        "s": k.s, "radius_pinion": k.r1, "radius_gear": k.r2, "R": k.R, "v1": k.v1, "v2": k.v2,
+        "entrainment_speed": k.ue, "sliding_speed": k.vs, "slide_to_roll": k.srr,
+        "hertz_pressure": c.hertz_pressure, "hertz_half_width": c.hertz_half_width,
+        "film_central": c.film_central, "film_minimum": c.film_minimum, "load_per_length": t.load_per_length,
+    }
+    if t.film is not None:      # the film of the level that ran replaces the formula film, which stays as *_formula
+        fields.update(film_central_formula=c.film_central, film_minimum_formula=c.film_minimum,
+                      film_central=t.film.central, film_minimum=t.film.minimum, film_pressure_max=t.film.pressure_max)
+        if t.film.temperature_rise is not None:
+            fields["film_temperature_rise"] = t.film.temperature_rise
+    if t.friction_coefficient is not None:
+        fields.update(friction_coefficient=t.friction_coefficient, temperature_rise=t.temperature_rise)
+    if t.thermal_deviation is not None:
+        fields.update(thermal_deviation_pinion=t.thermal_deviation[0], thermal_deviation_gear=t.thermal_deviation[1])
+    if t.wear is not None:
+        fields.update(wear_pinion=t.wear[0], wear_gear=t.wear[1])
+    own = None if result.rating is None else result.rating.own
+    if own is not None and own.specific_film.shape == k.u.shape:     # λ = h_min / R_a of the film that ran
+        fields["specific_film"] = own.specific_film
+    return fields
+
+
+def run_summary(result: RunResult) -> dict[str, Any]:
+    """The ``summary`` object of ``results.json`` (without ``outputs``)."""
+    case, ms = result.case, result.stiffness
+    summary = scene_summary(case.scene, case.pair, result.contact, ratings=result.rating)
+    summary["physics"] = case.levels.model_dump()
+    summary["stiffness"] = {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()}
+    static = result.coupled is None
+    if static:
+        summary["stiffness"].update(mean_per_helix=[ms.mean_left, ms.mean_right], seconds=ms.seconds)
+    else:
+        from femgear.edge.io.dynamics import dynamics_summary
+
+        co = result.coupled
+        h = co.history
+        summary["dynamics"] = dynamics_summary(co.state.dynamics)
+        summary["coupling"] = {"mode": case.levels.coupling, "converged": co.converged,
+                               "iterations": co.state.iteration, "seconds": co.seconds,
+                               "history": {"iteration": h.iteration, "mesh_force_change": h.mesh_force_change,
+                                           "mu_change": h.mu_change, "seconds": h.seconds}}
+    summary.update(tribology_summary(result.tribology, case.path.s, static))
+    if result.transmission_error is not None:
+        summary["transmission_error"] = _te_summary(result)
+    if result.tribology.film is not None:
+        summary["film"] = film_summary(result.tribology.film, case.path.s, result.contact.pitch_index)
+    return summary
+
+
+def _te_summary(result: RunResult) -> dict[str, Any]:
+    from femgear.edge.io.ltca import UNITS, te_summary
+
+    out = te_summary(result.transmission_error, math.cos(result.case.pair.beta_b))
+    out["resolved_orders"] = result.stiffness.info.get("resolved_orders")
+    if result.coupled is not None and math.isfinite(result.coupled.state.lte_peak_to_peak):
+        out["lte_peak_to_peak_deviated"] = result.coupled.state.lte_peak_to_peak
+    out["units"] = {k: UNITS[k] for k in out if k in UNITS} | {"lte_peak_to_peak_deviated": "m"}
+    return out
+
+
+def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
+    """The film of the lubrication level that ran, labelled with it."""
+    i = int(np.argmin(film.minimum))
+    return {"level": film.level, "method": film.method, "central_pitch": float(film.central[pitch]),
+            "minimum": float(film.minimum[i]), "minimum_position": float(s[i]),
+            "pressure_max": float(np.max(film.pressure_max))}
+
+
+def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tuple[dict[str, Any], dict[str, Path]]:
+    """Write ``results.json`` (+ dynamics files and figures); returns (summary, files)."""
+    out_dir = Path(out_dir)
+    files: dict[str, Path] = {}
+    if result.coupled is not None:
+        from femgear.edge.io.dynamics import write_dynamics
+
+        dyn = write_dynamics(result.coupled.state.dynamics, out_dir, plots)
+        files.update({f"dynamics_{k}": v for k, v in dyn.items()})
+    if plots:
+        files.update(_figures(result, out_dir))
+    summary = run_summary(result)
+    files["results"] = out_dir / "results.json"
+    summary["outputs"] = {k: str(v) for k, v in files.items()}
+    ms = result.stiffness
+    payload: dict[str, Any] = {
+        "summary": summary, "scene": result.case.scene.model_dump(), "along_path": along_path(result),
+        "mesh_stiffness": {"phase": ms.phase, "k_left": ms.k_left, "k_right": ms.k_right},
+    }
+    if result.coupled is not None:
+        force = result.coupled.state.mesh_force
+        payload["mesh_force_per_phase"] = {"left": force[0], "right": force[1]}
+    if result.transmission_error is not None:
+        from femgear.edge.io.ltca import te_curves
+
+        payload["transmission_error_per_phase"] = te_curves(result.transmission_error)
+    write_json(files["results"], payload)
+    return summary, files
+
+
+def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
+    from femgear.edge.plot.path import plot_contact_path, plot_friction_path
+
+    name, t = result.case.name, result.tribology
+    files = {"contact_path_png": plot_contact_path(result.contact, out_dir / "contact_path.png", title=name)}
+    if t.friction_coefficient is not None:
+        files["friction_path_png"] = plot_friction_path(
+            result.case.path.s, t.friction_coefficient, t.temperature_rise, out_dir / "friction_path.png",
+            title=f"{name}: lubrication = {result.case.levels.lubrication}")
+    if result.rating is not None:
+        from femgear.edge.plot.rating import plot_rating_path
+
+        files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
+                                                    out_dir / "rating_path.png", title=f"{name}: ISO ratings")
+    return files

@@ -1,0 +1,101 @@
+"""Plots of the coupled results: the fields along the path and the convergence history."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from femgear.edge.plot import save_figure
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def plot_coupled_path(s: np.ndarray, load_per_length: np.ndarray, path: str | Path,
+                      mu: np.ndarray | None = None, temperature_rise: np.ndarray | None = None,
+                      thermal_deviation: np.ndarray | None = None, wear: np.ndarray | None = None,
+                      wear_cycles: float = 0.0, title: str = "") -> Path:
+    """Load per length, μ and ΔT, thermal deviation and wear of both members against the path position.
+
+    ``thermal_deviation`` and ``wear`` are (2, n) arrays (pinion, gear) [m]; None leaves a panel out.
+    """
+    plt = _pyplot()
+    panels = [("load", True), ("friction", mu is not None), ("thermal", thermal_deviation is not None),
+              ("wear", wear is not None)]
+    panels = [name for name, on in panels if on]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(7, 2.4 * len(panels) + 0.6), sharex=True, squeeze=False)
+    s_mm = np.asarray(s) * 1e3
+    for ax, name in zip(axes[:, 0], panels):
+        if name == "load":
+            ax.plot(s_mm, np.asarray(load_per_length) / 1e3, "k-")
+            ax.set_ylabel("load per length w' [N/mm]")
+        elif name == "friction":
+            ax.plot(s_mm, mu, "C0-")
+            ax.set_ylabel("μ [-]", color="C0")
+            if temperature_rise is not None:
+                twin = ax.twinx()
+                twin.plot(s_mm, temperature_rise, "C3--")
+                twin.set_ylabel("ΔT contact [K]", color="C3")
+        elif name == "thermal":
+            _members(ax, s_mm, thermal_deviation, "thermal deviation ζ_T [µm]")
+        else:
+            _members(ax, s_mm, wear, f"wear depth [µm]\nafter {wear_cycles:g} cycles")
+        ax.axvline(0, color="0.6", lw=0.8, ls=":")
+        ax.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel("distance from the pitch point along the line of action [mm]")
+    if title:
+        fig.suptitle(title)
+    return save_figure(fig, path)
+
+
+def _members(ax, s_mm, values, label) -> None:
+    values = np.asarray(values)
+    ax.plot(s_mm, values[0] * 1e6, "C0-", lw=2.0, alpha=0.7, label="pinion")
+    ax.plot(s_mm, values[1] * 1e6, "C1--", lw=1.2, label="gear")
+    ax.set_ylabel(label)
+    ax.legend(fontsize=8)
+
+
+def plot_convergence(iteration, mesh_force_change, mu_change, path: str | Path, tol: float = 1e-6,
+                     title: str = "") -> Path:
+    """Change of the dynamic mesh force (relative) and of μ (absolute) per coupling pass, log scale."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for values, style, label in ((mesh_force_change, "o-", "mesh force (relative)"), (mu_change, "s--", "μ (absolute)")):
+        pts = [(i, v) for i, v in zip(iteration, values) if v is not None and v > 0]
+        if pts:
+            ax.semilogy(*zip(*pts), style, label=label)
+    ax.axhline(tol, color="0.5", ls=":", label=f"tolerance {tol:g}")
+    ax.set_xlabel("coupling pass")
+    ax.set_ylabel("change from the previous pass")
+    ax.legend()
+    ax.grid(alpha=0.3, which="both")
+    if title:
+        ax.set_title(title)
+    return save_figure(fig, path)
+
+
+def run_figures(result, out_dir: str | Path) -> dict[str, Path]:
+    """``tribology_path.png`` (and with coupling ``convergence.png``) of a :class:`femgear.results.RunResult`."""
+    out_dir = Path(out_dir)
+    t, case = result.tribology, result.case
+    files = {"tribology_path_png": plot_coupled_path(
+        case.path.s, t.load_per_length, out_dir / "tribology_path.png", mu=t.friction_coefficient,
+        temperature_rise=t.temperature_rise, thermal_deviation=t.thermal_deviation, wear=t.wear,
+        wear_cycles=t.wear_cycles, title=f"{case.name}: along the path of contact")}
+    if result.coupled is not None:
+        h = result.coupled.history
+        files["convergence_png"] = plot_convergence(
+            h.iteration, h.mesh_force_change, h.mu_change, out_dir / "convergence.png",
+            title=f"{case.name}: {case.levels.coupling} coupling")
+    return files
+
+
+__all__ = ["plot_convergence", "plot_coupled_path", "run_figures"]

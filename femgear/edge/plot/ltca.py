@@ -1,0 +1,111 @@
+"""Figures of the LTCA tool: TE curves, TE harmonics, the Harris map, the load over the flank at the worst phase."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from femgear.edge.plot import save_figure
+from femgear.physics.ltca.maps import LoadMaps
+from femgear.physics.ltca.te import HarrisMap, TEAnalysis
+
+
+def _plt():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def plot_te_curves(analyses: Sequence[TEAnalysis], path: str | Path, title: str = "") -> Path:
+    """Loaded TE over one mesh period per torque: both helices together (solid), each helix alone (dashed,
+    dotted) and the unloaded TE (thin grey), along the normal line of action [µm]."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    for k, a in enumerate(analyses):
+        c = f"C{k % 10}"
+        ph = np.append(a.phase, 1.0)
+        loop = lambda y: np.append(y, y[0]) * 1e6  # noqa: E731
+        ax.plot(ph, loop(a.lte), "-", color=c, lw=1.8, label=f"{a.torque:g} N m: both helices "
+                f"(p-p {a.peak_to_peak * 1e6:.3f} µm)")
+        if a.lte_left is not None:
+            ax.plot(ph, loop(a.lte_left), "--", color=c, lw=1.0, label="  left helix alone")
+            ax.plot(ph, loop(a.lte_right), ":", color=c, lw=1.2, label="  right helix alone")
+        ax.plot(ph, loop(a.nlte), "-", color="0.6", lw=0.8)
+    ax.plot([], [], "-", color="0.6", lw=0.8, label="unloaded TE")
+    ax.set_xlabel("mesh phase [base pitches]")
+    ax.set_ylabel("transmission error, normal [µm]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=2 if len(analyses) > 2 else 1)
+    ax.set_title(title or "loaded transmission error (LTCA)")
+    return save_figure(fig, path)
+
+
+def plot_harmonics(analyses: Sequence[TEAnalysis], path: str | Path, title: str = "") -> Path:
+    """Loaded TE amplitudes at the mesh orders, grouped bars per torque [µm]."""
+    plt = _plt()
+    n = analyses[0].harmonics.size
+    width = 0.8 / len(analyses)
+    fig, ax = plt.subplots(figsize=(7, 4))
+    orders = np.arange(1, n + 1)
+    for k, a in enumerate(analyses):
+        x = orders - 0.4 + (k + 0.5) * width
+        ax.bar(x, a.harmonics * 1e6, width, label=f"{a.torque:g} N m")
+        if a.harmonics_refined is not None:
+            ax.plot(x, a.harmonics_refined * 1e6, "k_", ms=8)
+    if analyses[0].harmonics_refined is not None:
+        ax.plot([], [], "k_", ms=8, label="2× points per line")
+    ax.set_xticks(orders)
+    ax.set_xlabel("mesh order")
+    ax.set_ylabel("loaded TE amplitude [µm]")
+    ax.grid(alpha=0.3, axis="y")
+    ax.legend(fontsize=8)
+    ax.set_title(title or "loaded TE harmonics (LTCA)")
+    return save_figure(fig, path)
+
+
+def plot_harris(h: HarrisMap, path: str | Path, title: str = "") -> Path:
+    """Harris map: loaded TE peak-to-peak against torque, with the modification and unmodified [µm]."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    ax.plot(h.torque, h.peak_to_peak * 1e6, "o-", label="with the scene's modification")
+    ax.plot(h.torque, h.peak_to_peak_unmodified * 1e6, "s--", label="unmodified")
+    ax.axvline(h.design_torque, color="k", lw=0.8, ls=":", label="design torque")
+    ax.set_xlabel("driver torque [N m]")
+    ax.set_ylabel("loaded TE peak-to-peak [µm]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(title or "Harris map (LTCA)")
+    return save_figure(fig, path)
+
+
+def plot_load_distribution(maps: LoadMaps, path: str | Path, title: str = "") -> Path:
+    """Load per unit length over the pinion's flank of each helix at the phase of the largest pressure
+    (roll distance ρ₁ against face coordinate ζ) [N/mm]; loaded edge nodes marked (edge contact)."""
+    plt = _plt()
+    m = maps.members[0].fields
+    shape = (2, maps.rho.size, maps.zeta.size)
+    w = m["w_worst"].reshape(shape) / 1e3
+    edge = m["edge_contact"].reshape(shape).astype(bool) & (w > 0)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
+    vmax = max(float(w.max()), 1e-12)
+    for h, ax in enumerate(axes):
+        pc = ax.pcolormesh(maps.zeta * 1e3, maps.rho * 1e3, w[h], shading="nearest", cmap="viridis", vmin=0, vmax=vmax)
+        i, k = np.nonzero(edge[h])
+        ax.plot(maps.zeta[k] * 1e3, maps.rho[i] * 1e3, "rx", ms=4, label="edge contact" if i.size else None)
+        ax.set_xlabel("face coordinate ζ [mm] (groove / apex end at right)")
+        ax.set_title(("left", "right")[h] + " helix")
+        if i.size:
+            ax.legend(fontsize=7, loc="upper left")
+    axes[0].set_ylabel("pinion roll distance ρ₁ [mm] (tip at top)")
+    fig.colorbar(pc, ax=axes[1], label="load per length [N/mm]")
+    fig.suptitle(title or f"load over the flank at phase {maps.worst_phase:.3f} (largest pressure), "
+                 f"{maps.torque:g} N m")
+    return save_figure(fig, path)
+
+
+__all__ = ["plot_harmonics", "plot_harris", "plot_load_distribution", "plot_te_curves"]

@@ -1,0 +1,324 @@
+"""3-D linear elasticity on a tetrahedral skfem mesh, solved many times with one pyamg hierarchy.
+
+:class:`Elastic3D` assembles K once (P1 or P2 vector tetrahedra, isotropic σ = 2μ ε +
+λ tr ε I), clamps the named ``clamped`` region and builds one smoothed-aggregation
+hierarchy with the six rigid-body modes as near-null space and a ``splu`` coarse
+solver (notes/stack.md: the default ``pinv`` coarse solver is 30× slower with rigid
+modes).  Every load case is then one preconditioned CG solve.
+
+Two solvers (``solver``):
+
+- ``"amg"``: the SA-CG solve costs one to two seconds per load case at 50–100 k DOF here
+  (measured by ``studies/benchmarks/ltca.py``).  Non-convergence raises
+  :class:`femgear.errors.ConvergenceError` with the residual history.
+- ``"lu"``: one sparse factorisation (scipy's SuperLU) with the minimum-degree ordering of
+  Kᵀ + K and symmetric mode (no pivoting off the diagonal: K is SPD), then every block of
+  load cases is two triangular solves.  With the default COLAMD column ordering SuperLU had not
+  finished a 65 k-DOF P1 tet matrix after 5 min; with MMD on Kᵀ + K a 58 k-DOF P1 member body
+  factors in 26 s (83 M entries in L + U, ≈ 1 GB) and 63 load cases take 5 s together, against
+  82 s of SA-CG (2 cores under load, 23 Nov 2026).  The factor's fill grows fast with P2, where
+  the AMG stays.  A solution whose relative residual exceeds 1e-8 raises ConvergenceError.
+- ``"cholmod"``: a supernodal sparse Cholesky factor (CHOLMOD with a METIS ordering, through the
+  ``cholespy`` wheel, which carries its own reference BLAS), then block solves of all load cases.
+  Far less fill than SuperLU's minimum degree: the marine pinion body (102 k DOF) factors in 25 s
+  within the memory its assembly needs, where SuperLU needs several GB (``docs/cost.md``).
+  ``"auto"``: ``cholmod`` when ``cholespy`` is installed, else ``lu`` for P1 up to
+  :data:`LU_MAX_DOFS` free DOF (memory: ≈ 1 GB at 58 k DOF, a few GB at 140 k), else ``amg``.
+
+Assembly.  P1 stiffness matrices are assembled directly (constant strain per tetrahedron,
+exact: K_(a i)(b j) = V [μ δ_ij ∇φ_a·∇φ_b + μ ∂_j φ_a ∂_i φ_b + λ ∂_i φ_a ∂_j φ_b]) in chunks
+of :data:`ASSEMBLY_CHUNK` elements; P2 by scikit-fem over element chunks.  Chunks keep the
+assembly's transient memory bounded (scikit-fem over the whole marine pinion body peaked at
+1.5 GB for a 0.4 GB result), so the peak stays linear in the DOF.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from femgear.errors import ConvergenceError
+
+LU_MAX_DOFS = 160_000  #: ``solver="auto"`` without cholespy: the sparse LU up to this many free DOF (P1 only), SA-CG above
+ASSEMBLY_CHUNK = 40_000  #: elements per assembly chunk
+SOLVE_CHUNK = 16         #: load cases per block solve (a progress step)
+SOLVERS = ("amg", "lu", "cholmod", "auto")
+
+
+def cholmod_available() -> bool:
+    """True when the ``cholespy`` wheel (CHOLMOD) can be imported."""
+    try:
+        import cholespy  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def auto_solver(order: int, ndofs: int) -> str:
+    """The solver ``"auto"`` picks for ``ndofs`` free DOF of order ``order``."""
+    if cholmod_available():
+        return "cholmod"
+    return "lu" if order == 1 and ndofs <= LU_MAX_DOFS else "amg"
+
+
+def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: str = "auto") -> tuple[float, float]:
+    """(peak resident memory [B], wall time [s]) expected for meshing, assembling, factoring (or the SA
+    hierarchy) and ``n_loads`` solves of a body with ``dofs`` unknowns and ``tets`` elements.
+
+    Fitted to measurements on the shared 2-core machine (``python studies/benchmarks/cost.py``, docs/cost.md):
+    the process and the mesh ≈ 0.3 GB + 5 kB per DOF (basis, matrix, load vectors); CHOLMOD's factor
+    ≈ 110 n^(4/3) B (METIS fill of these swept bodies); SuperLU's (minimum degree) ≈ 420 n^(4/3) B;
+    SA-AMG ≈ 3 kB per DOF.  Times: ≈ 80 µs per DOF to mesh and assemble, the factor ≈ 40 s (n/1e5)^1.5,
+    0.3 µs per DOF and load case to solve; SA-CG ≈ 13 µs per DOF and load case.  Checked against the CPU
+    times of the cold LTCA (both members and the mesh cycle): baseline level 1 / 3 and marine level 1
+    measured 23 / 82 / 120 s, modelled 23 / 65 / 120 s.
+    """
+    solver = auto_solver(order, dofs) if solver == "auto" else solver
+    n = float(max(dofs, 1))
+    memory = 0.3e9 + 5.0e3 * n + 8.0 * n * n_loads
+    seconds = 8.0e-5 * n + 1e-5 * tets
+    if solver == "cholmod":
+        memory += 110.0 * n ** (4 / 3)
+        seconds += 40.0 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
+    elif solver == "lu":
+        memory += 420.0 * n ** (4 / 3)
+        seconds += 60.0 * (n / 1e5) ** 1.6 + 5e-7 * n * n_loads
+    else:
+        memory += 3.0e3 * n
+        seconds += 1.3e-5 * n * n_loads * (2.0 if order == 2 else 1.0)
+    return memory, seconds
+
+
+def _elasticity_form(lam: float, mu: float):
+    from skfem import BilinearForm
+    from skfem.helpers import ddot, eye, sym_grad, trace
+
+    @BilinearForm
+    def form(u, v, w):
+        eps = sym_grad(u)
+        return ddot(2.0 * mu * eps + lam * eye(trace(eps), 3), sym_grad(v))
+
+    return form
+
+
+def assemble_p1(mesh, element_dofs: np.ndarray, n: int, lam: float, mu: float, chunk: int = ASSEMBLY_CHUNK):
+    """Stiffness matrix (n × n CSR) of P1 vector tetrahedra, local DOF 3a + i = component i of vertex a.
+
+    Constant strain per element (exact, module docstring); ``element_dofs`` (12, n_elements) maps the
+    local DOF to the global ones (scikit-fem's numbering).
+    """
+    from scipy.sparse import coo_matrix
+
+    K = None
+    eye3 = np.eye(3)
+    for lo in range(0, mesh.t.shape[1], chunk):
+        t = mesh.t[:, lo:lo + chunk]
+        x = mesh.p[:, t]                                           # (3, 4, ne)
+        J = np.transpose(x[:, 1:] - x[:, :1], (2, 0, 1))           # (ne, 3 coords, 3 edges)
+        Jinv = np.linalg.inv(J)
+        vol = np.abs(np.linalg.det(J)) / 6.0
+        g = np.concatenate([-Jinv.sum(axis=1, keepdims=True), Jinv], axis=1)   # (ne, 4 vertices, 3): ∇φ_a
+        dots = np.einsum("eak,ebk->eab", g, g)
+        Ke = (mu * dots[:, :, None, :, None] * eye3[None, None, :, None, :]
+              + mu * np.einsum("eaj,ebi->eaibj", g, g) + lam * np.einsum("eai,ebj->eaibj", g, g))
+        Ke = (Ke * vol[:, None, None, None, None]).reshape(-1, 12, 12)
+        dofs = element_dofs[:, lo:lo + chunk].T                    # (ne, 12)
+        rows = np.broadcast_to(dofs[:, :, None], Ke.shape).ravel()
+        cols = np.broadcast_to(dofs[:, None, :], Ke.shape).ravel()
+        part = coo_matrix((Ke.ravel(), (rows, cols)), shape=(n, n)).tocsr()
+        K = part if K is None else K + part
+    return K
+
+
+def rigid_body_modes_3d(basis) -> np.ndarray:
+    """Three translations and three rotations (about x, y, z) as DOF vectors, shape (N, 6)."""
+    ix, iy, iz = basis.split_indices()
+    x, y, z = basis.doflocs
+    B = np.zeros((basis.N, 6))
+    B[ix, 0] = B[iy, 1] = B[iz, 2] = 1.0
+    B[iy, 3], B[iz, 3] = -z[iy], y[iz]           # rotation about x
+    B[iz, 4], B[ix, 4] = -x[iz], z[ix]           # about y
+    B[ix, 5], B[iy, 5] = -y[ix], x[iy]           # about z
+    return B
+
+
+@dataclass(frozen=True)
+class SolveStats:
+    """Cost of an :class:`Elastic3D` model (seconds, counts)."""
+
+    ndofs: int
+    assembly_seconds: float
+    setup_seconds: float
+    solve_seconds: float
+    solves: int
+    iterations: int        #: CG iterations of all solves together
+    factor_nnz: int = 0    #: entries of L + U (``lu``; 0 for ``amg``): ≈ 12 bytes each in memory
+
+
+class Elastic3D:
+    """K u = f on a ``MeshTet`` with P``order`` vector elements, ``clamped`` region fixed.
+
+    ``clamped`` None: no region is clamped; ``fixed`` (DOF indices) are held at zero besides it
+    (e.g. a statically determinate support of a free body, :mod:`femgear.physics.body.thermal3d`).
+    """
+
+    def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, order: int = 2,
+                 clamped: str | None = "bore", tol: float = 1e-8, maxiter: int = 500, solver: str = "amg",
+                 fixed=None):
+        from skfem import Basis, ElementTetP1, ElementTetP2, ElementVector
+
+        if order not in (1, 2):
+            raise ValueError(f"order must be 1 or 2, got {order!r}")
+        if solver not in SOLVERS:
+            raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
+        if solver == "cholmod" and not cholmod_available():
+            raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
+        if clamped is not None and clamped not in mesh.boundaries:
+            raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
+        t0 = time.perf_counter()
+        self.mesh, self.order, self.tol, self.maxiter = mesh, order, tol, maxiter
+        self.E, self.nu = youngs_modulus, poisson_ratio
+        elem = ElementVector(ElementTetP2() if order == 2 else ElementTetP1())
+        intorder = 2 * (order - 1) if order == 2 else 1
+        self.basis = Basis(mesh, elem, intorder=intorder)
+        lam = youngs_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio))
+        mu = youngs_modulus / (2 * (1 + poisson_ratio))
+        if order == 1:
+            K = assemble_p1(mesh, self.basis.element_dofs, self.basis.N, lam, mu)
+        else:
+            K = _assemble_chunks(mesh, elem, intorder, _elasticity_form(lam, mu))
+        held = [np.asarray(fixed if fixed is not None else [], dtype=np.int64)]
+        if clamped is not None:
+            held.append(self.basis.get_dofs(mesh.boundaries[clamped]).flatten())
+        self.free = np.setdiff1d(np.arange(self.basis.N), np.concatenate(held))
+        self.K = K[self.free][:, self.free].tocsr()
+        self.assembly_seconds = time.perf_counter() - t0
+        self.solver = solver if solver != "auto" else auto_solver(order, self.free.size)
+        self._ml = None
+        self.setup_seconds = 0.0
+        self.solve_seconds = 0.0
+        self.solves = 0
+        self.iterations = 0
+
+    def _hierarchy(self):
+        import pyamg
+
+        t0 = time.perf_counter()
+        B = rigid_body_modes_3d(self.basis)[self.free]
+        self._ml = pyamg.smoothed_aggregation_solver(self.K, B=B, coarse_solver="splu", max_coarse=500)
+        self.setup_seconds = time.perf_counter() - t0
+
+    def _factor(self):
+        t0 = time.perf_counter()
+        if self.solver == "cholmod":
+            self._ml = _CholmodFactor(self.K)
+        else:
+            import scipy.sparse.linalg as sla
+
+            self._ml = sla.splu(self.K.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                                options={"SymmetricMode": True})
+        self.setup_seconds = time.perf_counter() - t0
+
+    def solve_many(self, F: np.ndarray, case: str = "3-D elasticity", progress=None) -> np.ndarray:
+        """Displacements (basis.N, m) for the load vectors F (basis.N, m) [N]: block solves of
+        :data:`SOLVE_CHUNK` load cases with one factor (``lu``, ``cholmod``), one SA-CG solve each with
+        ``amg``.  ``progress``: called with the number of load cases done after each block."""
+        F = np.asarray(F, float)
+        m = F.shape[1]
+        U = np.zeros((self.basis.N, m))
+        if self.solver == "amg":
+            for j in range(m):
+                U[:, j] = self.solve(F[:, j], case=f"{case}, load {j}")
+                if progress is not None:
+                    progress(j + 1)
+            return U
+        if self._ml is None:
+            self._factor()
+        for lo in range(0, m, SOLVE_CHUNK):
+            t0 = time.perf_counter()
+            rhs = F[self.free, lo:lo + SOLVE_CHUNK]
+            x = self._ml.solve(rhs)
+            res = np.linalg.norm(self.K @ x - rhs, axis=0) / np.maximum(np.linalg.norm(rhs, axis=0), 1e-300)
+            if not np.all(np.isfinite(x)) or res.max() > 1e-8:
+                raise ConvergenceError(case, f"sparse {self.solver} solution has relative residual {res.max():.3g}",
+                                       {"residual": res.tolist()})
+            U[self.free, lo:lo + SOLVE_CHUNK] = x
+            self.solve_seconds += time.perf_counter() - t0
+            self.solves += rhs.shape[1]
+            if progress is not None:
+                progress(min(m, lo + SOLVE_CHUNK))
+        return U
+
+    def solve(self, f: np.ndarray, case: str = "3-D elasticity") -> np.ndarray:
+        """Displacement DOF vector (length ``basis.N``) for the load vector ``f`` [N]."""
+        if self.solver in ("lu", "cholmod"):
+            return self.solve_many(np.asarray(f, float)[:, None], case)[:, 0]
+        if self._ml is None:
+            self._hierarchy()
+        t0 = time.perf_counter()
+        rhs = f[self.free]
+        hist: list[float] = []
+        x0 = np.zeros_like(rhs)
+        x = self._ml.solve(rhs, x0=x0, tol=self.tol, accel="cg", maxiter=self.maxiter, residuals=hist)
+        res = hist[-1] / max(hist[0], 1e-300) if hist else 0.0
+        if not np.all(np.isfinite(x)) or res > 10 * self.tol:
+            raise ConvergenceError(case, f"SA-CG did not reach tol={self.tol:g} (relative residual {res:.3g})",
+                                   {"residual": hist})
+        u = np.zeros(self.basis.N)
+        u[self.free] = x
+        self.solve_seconds += time.perf_counter() - t0
+        self.solves += 1
+        self.iterations += len(hist) - 1
+        return u
+
+    def probe_matrices(self, points: np.ndarray) -> list:
+        """Sparse point-evaluation matrices (x, y, z component) at ``points`` (3, n): u_c = M_c @ u."""
+        from scipy.sparse import csr_matrix
+
+        mats = []
+        for idx, (_, b) in zip(self.basis.split_indices(), self.basis.split(np.zeros(self.basis.N))):
+            P = b.probes(points).tocoo()
+            mats.append(csr_matrix((P.data, (P.row, idx[P.col])), shape=(points.shape[1], self.basis.N)))
+        return mats
+
+    def probe(self, u: np.ndarray, points: np.ndarray) -> np.ndarray:
+        """Displacement vectors at ``points`` (3, n) → (3, n) [m]."""
+        comps = self.basis.split(u)
+        return np.vstack([b.probes(points) @ c for c, b in comps])
+
+    def stats(self) -> SolveStats:
+        nnz = int(self._ml.L.nnz + self._ml.U.nnz) if self.solver == "lu" and self._ml is not None else 0
+        return SolveStats(self.basis.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
+                          self.solves, self.iterations, nnz)
+
+
+def _assemble_chunks(mesh, elem, intorder: int, form, chunk: int = ASSEMBLY_CHUNK):
+    """``form`` assembled by scikit-fem over chunks of elements and summed (bounded transient memory)."""
+    from skfem import Basis
+
+    K = None
+    n_el = mesh.t.shape[1]
+    for lo in range(0, n_el, chunk):
+        part = form.assemble(Basis(mesh, elem, intorder=intorder, elements=np.arange(lo, min(n_el, lo + chunk))))
+        K = part.tocsr() if K is None else K + part.tocsr()
+    return K
+
+
+class _CholmodFactor:
+    """CHOLMOD's Cholesky factor of an SPD matrix (cholespy); ``solve`` takes one or a block of right-hand sides."""
+
+    def __init__(self, K):
+        from cholespy import CholeskySolverD, MatrixType
+
+        C = K.tocoo()
+        self.n = K.shape[0]
+        self._s = CholeskySolverD(self.n, C.row.astype(np.int32), C.col.astype(np.int32),
+                                  np.ascontiguousarray(C.data, dtype=np.float64), MatrixType.COO)
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        b = np.ascontiguousarray(rhs, dtype=np.float64)
+        x = np.zeros_like(b)
+        self._s.solve(b, x)
+        return x

@@ -1,0 +1,54 @@
+"""The ``ehl-line`` lubrication level: FE line-contact EHL at positions of the path.
+
+At each contact the isothermal FE line solution (:func:`solve_line_dimensional`,
+Roelands viscosity and Dowson–Higginson density at the inlet viscosity η(0, T_bulk))
+gives the pressure and film fields; the sliding traction is the Ree–Eyring shear
+τ0 asinh(η(p, T) γ̇/τ0), γ̇ = |v1 − v2|/h, integrated over them, and the contact
+temperature rise is Blok's flash temperature for that μ.  μ = ∫τ dx / w'.  (The thermal
+film and its feedback on the viscosity are the ``tehl`` level.)  Consecutive positions (or
+map points) are warm-started from the previous solution with the LU factors kept
+(:func:`femgear.physics.ehl.line.solve_line`'s ``start`` and ``reuse``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from femgear.errors import SceneError
+from femgear.physics.contact.hertz import reduced_modulus
+from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
+from femgear.physics.lubrication.flash import blok_flash_temperature
+from femgear.physics.lubrication.oil import OilLaw
+from femgear.physics.lubrication.path import solids_of
+from femgear.physics.lubrication.traction import shear_stress
+
+
+def ehl_line_solver(scene, level: int | None = None):
+    """The ``ehl-line`` contact solver of a scene in the map signature (w, R, ue, srr, T) -> (μ, ΔT)."""
+    oil = OilLaw.from_scene(scene)
+    solids = solids_of(scene)
+    E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
+    level = scene.numerics.ehl_level if level is None else level
+    tau0 = scene.oil.eyring_stress
+
+    def solve(w, R, ue, srr, T):
+        w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr, T)))
+        mu, dT = np.empty(w.shape), np.empty(w.shape)
+        prev, reuse = None, {}  # warm start from the previous position / map point
+        for i in np.ndindex(w.shape):
+            ehl = EHLOil(eta0=float(oil.viscosity(0.0, T[i])), alpha=oil.alpha, viscosity="roelands", compressible=True)
+            try:
+                r = solve_line_dimensional(w[i], R[i], ue[i], E_red, ehl, level=level, start=prev, reuse=reuse)
+            except SceneError as exc:       # the solver's own range (a light, slow contact's long inlet)
+                raise SceneError("physics.lubrication", f'"ehl-line": {exc.message}; use "formula" or "tehl"') \
+                    from None
+            prev = r.result
+            vs = abs(srr[i]) * ue[i]
+            tau = shear_stress(oil.viscosity(r.p, T[i]), vs / r.h, "eyring", tau0)
+            mu[i] = np.trapezoid(tau, r.x) / w[i]
+            b = np.sqrt(8 * w[i] * R[i] / (np.pi * E_red))
+            dT[i] = blok_flash_temperature(mu[i], w[i], vs, b, ue[i] * (1 + srr[i] / 2), ue[i] * (1 - srr[i] / 2),
+                                           solids.B1, solids.B2)
+        return mu, dT
+
+    return solve

@@ -1,0 +1,151 @@
+"""The gear pair of a scene: kind, basic rack, face widths, tip diameters and centre distance.
+
+Every inconsistency is a :class:`SceneError` naming the scene key at fault, so that the
+CLI prints one line:
+
+- ``pair.kind = "spur"`` needs ``helix_angle_deg = 0``; the helical kinds need β > 0;
+- ``pair.kind = "single-helical"`` needs ``pinion/gear.axial_stiffness`` (its axial mesh
+  force F_a = F_t tan β_w is carried by the thrust bearings; a double-helical pair
+  balances it between its two helices, a spur pair has none);
+- ``pair.basic_rack`` (ISO 53 A–D) sets h_aP, h_fP, ρ_fP; a coefficient given beside it
+  must agree with it;
+- ``pinion/gear.tip_diameter`` derives the profile shift (d_a = d + 2 m_n (h_aP + x + k),
+  ISO 21771 §5.4, with the tip alteration k of the centre distance) or is checked
+  against a given ``profile_shift`` (to 0.2 % of m_n on the diameter);
+- ``pair.centre_distance`` fixes x1 + x2 by inv α_wt = inv α_t + 2 tan α_n (x1 + x2)/(z1 + z2)
+  and is checked against given shifts (to 1e-3 in x1 + x2, about 1e-3 m_n on a_w).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+from femgear.errors import SceneError
+from femgear.physics.geometry.involute import inv
+
+#: ISO 53:1998 basic-rack profiles: (h_aP, h_fP, ρ_fP) / m_n, α_P = 20°
+BASIC_RACKS = {"A": (1.0, 1.25, 0.38), "B": (1.0, 1.25, 0.30), "C": (1.0, 1.25, 0.25), "D": (1.0, 1.40, 0.39)}
+_MEMBERS = ("pinion", "gear")
+TIP_TOLERANCE = 2e-3      #: tip-diameter mismatch allowed, in units of m_n
+SHIFT_TOLERANCE = 1e-3    #: x1 + x2 mismatch allowed against the centre distance
+
+
+def _check_kind(scene) -> None:
+    p = scene.pair
+    if p.kind == "spur" and p.helix_angle_deg != 0:
+        raise SceneError("pair.helix_angle_deg",
+                         f"a spur pair has no helix: set 0, or set pair.kind to 'single-helical' or "
+                         f"'double-helical' (got {p.helix_angle_deg:g}°)")
+    if p.kind != "spur" and p.helix_angle_deg <= 0:
+        raise SceneError("pair.helix_angle_deg",
+                         f"a {p.kind} pair needs a helix angle > 0 (for straight teeth set pair.kind = 'spur')")
+    if p.kind == "single-helical":
+        for name in _MEMBERS:
+            if getattr(scene, name).axial_stiffness is None:
+                raise SceneError(f"{name}.axial_stiffness",
+                                 "a single-helical pair needs the axial (thrust) bearing stiffness of each member: "
+                                 "its axial mesh force is not balanced by a second helix")
+    if p.kind != "double-helical" and scene.physics.dynamics == "timoshenko":
+        raise SceneError("physics.dynamics",
+                         f"the timoshenko level joins two helix halves by shaft elements; a {p.kind} pair has one "
+                         "mesh in the mid-plane: use physics.dynamics = 'lumped'")
+
+
+def rack_coefficients(pair_table) -> tuple[float, float, float]:
+    """(h_aP, h_fP, ρ_fP) of ``[pair]``: the ISO 53 preset if named, checked against given coefficients."""
+    given = (pair_table.addendum_coeff, pair_table.dedendum_coeff, pair_table.root_radius_coeff)
+    if pair_table.basic_rack is None:
+        return given
+    preset = BASIC_RACKS[pair_table.basic_rack]
+    keys = ("addendum_coeff", "dedendum_coeff", "root_radius_coeff")
+    for key, value, ref in zip(keys, given, preset, strict=True):
+        if key in pair_table.model_fields_set and abs(value - ref) > 1e-12:
+            raise SceneError(f"pair.{key}", f"{value:g} contradicts pair.basic_rack = {pair_table.basic_rack!r} "
+                                            f"({ref:g}); give one of them")
+    if "normal_pressure_angle_deg" in pair_table.model_fields_set and pair_table.normal_pressure_angle_deg != 20:
+        raise SceneError("pair.normal_pressure_angle_deg", f"ISO 53 racks have α_n = 20° (pair.basic_rack = "
+                                                           f"{pair_table.basic_rack!r})")
+    return preset
+
+
+def shift_sum_of_centre_distance(base, a_w: float) -> float:
+    """x1 + x2 giving the working centre distance a_w (ISO 21771 eq. for inv α_wt)."""
+    cos_wt = base.a * math.cos(base.alpha_t) / a_w
+    if not 0 < cos_wt < 1:
+        raise SceneError("pair.centre_distance", f"a_w = {a_w * 1e3:.4f} mm is impossible for this pair "
+                                                  f"(reference centre distance {base.a * 1e3:.4f} mm)")
+    return (inv(math.acos(cos_wt)) - inv(base.alpha_t)) * (base.z1 + base.z2) / (2 * math.tan(base.alpha_n))
+
+
+def _shift_from_tip(pair, member: int, d_a: float) -> float:
+    r = pair.r1 if member == 1 else pair.r2
+    return (d_a / 2 - r) / pair.m_n - pair.h_aP - pair.k_tip
+
+
+def _with(pair, **kw):
+    return replace(pair, **kw)
+
+
+def _resolve_shifts(scene, pair):
+    """Apply tip diameters and centre distance to ``pair`` (built with the given shifts)."""
+    members = [getattr(scene, n) for n in _MEMBERS]
+    given = [("profile_shift" in m.model_fields_set) for m in members]
+    a_w = scene.pair.centre_distance
+    if a_w is not None:
+        total = shift_sum_of_centre_distance(pair, a_w)
+        if all(given):
+            if abs(pair.x1 + pair.x2 - total) > SHIFT_TOLERANCE:
+                raise SceneError("pair.centre_distance",
+                                 f"a_w = {a_w * 1e3:.4f} mm needs x1 + x2 = {total:.4f}, the profile shifts give "
+                                 f"{pair.x1 + pair.x2:.4f} (a_w = {pair.a_w * 1e3:.4f} mm)")
+        elif given[0] or given[1]:
+            pair = _with(pair, x2=total - pair.x1) if given[0] else _with(pair, x1=total - pair.x2)
+        elif members[0].tip_diameter is None and members[1].tip_diameter is None:
+            raise SceneError("pinion.profile_shift", "pair.centre_distance fixes only x1 + x2: give "
+                                                     "pinion.profile_shift or the tip diameters")
+        else:
+            pair = _with(pair, x1=total / 2, x2=total / 2)
+    for _ in range(50):  # fixed point: the tip alteration k depends on x1 + x2 (without a_w)
+        before = (pair.x1, pair.x2)
+        for i, m in enumerate(members):
+            if m.tip_diameter is not None and not given[i]:
+                x = _shift_from_tip(pair, i + 1, m.tip_diameter)
+                pair = _with(pair, **{f"x{i + 1}": x})
+                if a_w is not None:  # the other shift follows from the sum
+                    j = 2 - i
+                    if not given[1 - i] and members[1 - i].tip_diameter is None:
+                        pair = _with(pair, **{f"x{j}": total - x})
+        if max(abs(pair.x1 - before[0]), abs(pair.x2 - before[1])) < 1e-12:
+            break
+    if a_w is not None and abs(pair.x1 + pair.x2 - total) > SHIFT_TOLERANCE:
+        raise SceneError("pair.centre_distance",
+                         f"a_w = {a_w * 1e3:.4f} mm needs x1 + x2 = {total:.4f}; the tip diameters give "
+                         f"{pair.x1 + pair.x2:.4f}")
+    for i, m in enumerate(members):
+        ra = pair.ra1 if i == 0 else pair.ra2
+        if m.tip_diameter is not None and abs(2 * ra - m.tip_diameter) > TIP_TOLERANCE * pair.m_n:
+            x = pair.x1 if i == 0 else pair.x2
+            raise SceneError(f"{_MEMBERS[i]}.tip_diameter",
+                             f"d_a = {m.tip_diameter * 1e3:.4f} mm does not match profile shift x = {x:.4f} "
+                             f"(which gives d_a = {2 * ra * 1e3:.4f} mm); correct one of them or omit one")
+    return pair
+
+
+def pair_from_scene(scene, cls):
+    """The checked gear pair (an instance of ``cls``, :class:`femgear.physics.geometry.GearPair`) of a validated scene.
+
+    ``cls`` is passed in (not imported) so that ``gear`` → ``scene_pair`` stays one-way."""
+    _check_kind(scene)
+    p = scene.pair
+    h_aP, h_fP, rho_fP = rack_coefficients(p)
+    widths = [getattr(scene, n).face_width or p.face_width for n in _MEMBERS]
+    pair = cls(
+        z1=scene.pinion.teeth, z2=scene.gear.teeth, m_n=p.normal_module,
+        alpha_n=math.radians(p.normal_pressure_angle_deg), beta=math.radians(p.helix_angle_deg),
+        b=min(widths), x1=scene.pinion.profile_shift, x2=scene.gear.profile_shift,
+        h_aP=h_aP, h_fP=h_fP, rho_fP=rho_fP, kind=p.kind,
+    )
+    pair = _resolve_shifts(scene, pair)
+    pair.check()
+    return pair

@@ -1,0 +1,208 @@
+"""Time-varying mesh stiffness (TVMS) of a double-helical pair, per helix.
+
+Convention (what the dynamics model consumes):
+
+- ``phase`` is the mesh position in transverse base pitches; one mesh period is
+  phase ∈ [0, 1).  Phase 0 is the instant used by
+  :func:`femgear.physics.geometry.contact_lines`: the front (ζ = b) of a contact line enters
+  the path at A.  At constant speed, phase = f_mesh · t.
+- ``k_left``/``k_right`` are the stiffnesses of the left/right helix *along the normal
+  line of action* [N/m]: F_n = k δ_n with δ_n the approach of the flanks measured
+  normal to the teeth (δ_n = δ_t cos β_b for a transverse approach δ_t).
+- The right helix is the left one shifted by ``stagger`` base pitches:
+  k_right(φ) = k_left(φ + stagger), as in :func:`femgear.physics.geometry.double_helical_contact`.
+- A single-helical or spur pair (``pair.kind``) has one mesh: ``k_left``; ``k_right`` is 0.
+
+Slicing (notes §5; Ajmi & Velex 2005 for its limits): each helix is cut into N
+transverse slices of width Δb; slice j at ζ_j = (j + ½)Δb is a spur pair whose teeth
+sit at u = u_A − b tan β_b + (φ mod 1) p_bt + k p_bt + ζ_j tan β_b.  Slices are
+uncoupled, so the ripple is an upper bound and the mean a lower bound of a 3-D model.
+A slice's transverse stiffness k_t = Σ_pairs k'(u) Δb projects to the normal line
+of action as k_n = k_t / cos²β_b (F_t = F_n cos β_b, δ_n = δ_t cos β_b).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from femgear.physics.geometry.gear import GearPair
+
+LEVELS = ("constant", "iso6336", "pem", "fe", "ltca")
+
+
+@dataclass(frozen=True)
+class MeshStiffness:
+    """Mesh stiffness of both helices over one mesh period (normal line of action, N/m)."""
+
+    level: str
+    phase: np.ndarray      #: sample phases in [0, 1) [base pitches]
+    k_left: np.ndarray     #: [N/m]
+    k_right: np.ndarray    #: [N/m]
+    stagger: float         #: right helix offset [base pitches]
+    n_slices: int
+    seconds: float         #: wall time to compute [s]
+    info: dict = field(default_factory=dict)
+
+    @property
+    def k_total(self) -> np.ndarray:
+        return self.k_left + self.k_right
+
+    @property
+    def mean_left(self) -> float:
+        return float(np.mean(self.k_left))
+
+    @property
+    def mean_right(self) -> float:
+        return float(np.mean(self.k_right))
+
+    @property
+    def mean(self) -> float:
+        """Mean of the summed (left + right) stiffness [N/m]."""
+        return float(np.mean(self.k_total))
+
+    def ripple(self, helix: str = "total") -> float:
+        """Peak-to-peak over mean of the left, right or total stiffness [-]."""
+        k = {"left": self.k_left, "right": self.k_right, "total": self.k_total}[helix]
+        if not np.any(k):
+            return 0.0   # the absent right helix of a single-helical or spur pair
+        return float((k.max() - k.min()) / k.mean())
+
+    def at(self, phase, helix: str = "total"):
+        """Periodic linear interpolation at ``phase`` [base pitches] for 'left', 'right' or 'total'."""
+        k = {"left": self.k_left, "right": self.k_right, "total": self.k_total}[helix]
+        ph = np.asarray(phase, float) % 1.0
+        xp = np.concatenate([self.phase, [self.phase[0] + 1.0]])
+        fp = np.concatenate([k, [k[0]]])
+        return np.interp(ph, xp, fp)
+
+    def __call__(self, phase):
+        """(k_left, k_right) at ``phase`` [base pitches]."""
+        return self.at(phase, "left"), self.at(phase, "right")
+
+
+def helix_stiffness(pair: GearPair, k_unit: Callable[[np.ndarray], np.ndarray], phases: np.ndarray,
+                    n_slices: int = 100, offset: float = 0.0) -> np.ndarray:
+    """Normal stiffness [N/m] of one helix at ``phases`` from the pair stiffness per width ``k_unit(u)``.
+
+    ``k_unit`` maps transverse path positions u [m] to the transverse stiffness of one
+    tooth pair per unit face width [N/m per m].
+    """
+    if n_slices < 1:
+        raise ValueError(f"n_slices must be ≥ 1, got {n_slices}")
+    tb = math.tan(pair.beta_b)
+    db = pair.b / n_slices
+    zeta = (np.arange(n_slices) + 0.5) * db
+    span = pair.b * tb
+    k_max = int(math.ceil((pair.g_alpha + span) / pair.p_bt)) + 2
+    kk = np.arange(-1, k_max + 1)
+    shift = ((np.asarray(phases, float) + offset) % 1.0) * pair.p_bt
+    u = (pair.u_start - span + shift[:, None, None] + kk[None, :, None] * pair.p_bt
+         + zeta[None, None, :] * tb)
+    inside = (u >= pair.u_start) & (u <= pair.u_end)
+    k = np.zeros(u.shape)
+    k[inside] = k_unit(u[inside])
+    return k.sum(axis=(1, 2)) * db / math.cos(pair.beta_b) ** 2
+
+
+def tabulated(pair: GearPair, u_samples: np.ndarray, k_samples: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
+    """k'(u) by cubic interpolation of samples along the path (used by the FE level)."""
+    from scipy.interpolate import CubicSpline
+
+    spline = CubicSpline(u_samples, k_samples)
+    return lambda u: spline(np.clip(u, u_samples[0], u_samples[-1]))
+
+
+def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, stagger: float = 0.0,
+                   n_slices: int = 100, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
+                   bore_radius: tuple[float, float] = (0.0, 0.0), plane: str = "strain",
+                   constant_per_width: float = 2.0e10, fe_options: dict | None = None,
+                   ltca_options: dict | None = None) -> MeshStiffness:
+    """Mesh stiffness of both helices of ``pair`` at ``n_positions`` phases of one mesh period.
+
+    Levels: ``constant`` (``constant_per_width`` [N/m per m] × b per helix), ``iso6336``
+    (c_γα b, constant; ISO's value is read as a transverse stiffness per unit face width
+    and projected like the sliced levels), ``pem`` (sliced potential energy method),
+    ``fe`` (sliced, tooth compliance from the 2-D FE of :mod:`femgear.physics.body.compliance`
+    at ``fe_options['n_fe']`` path positions, Hertz as in PEM), ``ltca`` (secant stiffness
+    per helix from the loaded tooth contact analysis of :mod:`femgear.physics.ltca` at
+    ``ltca_options['force']``; its TE tables are in ``info``).
+    """
+    if level not in LEVELS:
+        raise ValueError(f"level must be one of {', '.join(LEVELS)}, got {level!r}")
+    if n_positions < 2:
+        raise ValueError(f"n_positions must be ≥ 2, got {n_positions}")
+    if not 0.0 <= stagger < 1.0:
+        raise ValueError(f"stagger must be in [0, 1) base pitches, got {stagger}")
+    if level == "ltca":      # loaded tooth contact analysis on 3-D FE teeth (femgear.physics.ltca.level)
+        from femgear.physics.ltca.level import ltca_cycle
+
+        if not ltca_options or "force" not in ltca_options:
+            raise ValueError("level 'ltca' needs ltca_options={'force': normal force [N], ...}")
+        t0 = time.perf_counter()
+        res, info = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
+                               poisson_ratio=poisson_ratio, **ltca_options)
+        return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger, 0,
+                             time.perf_counter() - t0, info)
+    t0 = time.perf_counter()
+    phases = np.arange(n_positions) / n_positions
+    info: dict = {}
+    if level in ("constant", "iso6336"):
+        if level == "constant":
+            k = constant_per_width * pair.b
+        else:
+            from femgear.physics.stiffness.iso6336 import iso6336_stiffness
+
+            iso = iso6336_stiffness(pair, youngs_modulus=youngs_modulus)
+            k = iso.k("c_gamma_alpha") / math.cos(pair.beta_b) ** 2
+            info["iso"] = iso
+        kl = np.full(n_positions, k)
+        kr = kl.copy() if pair.n_helices == 2 else np.zeros(n_positions)
+        return MeshStiffness(level, phases, kl, kr, stagger, 0, time.perf_counter() - t0, info)
+    u_grid = np.linspace(pair.u_start, pair.u_end, 161)
+    if level == "pem":
+        from femgear.physics.stiffness.pem import pair_stiffness_per_width
+
+        k_grid = pair_stiffness_per_width(pair, u_grid, youngs_modulus, poisson_ratio, bore_radius, plane)
+    else:
+        from femgear.physics.body.compliance import fe_pair_stiffness_per_width
+
+        opts = dict(fe_options or {})
+        n_fe = opts.pop("n_fe", 9)
+        u_fe = np.linspace(pair.u_start, pair.u_end, n_fe)
+        k_fe, fe_info = fe_pair_stiffness_per_width(pair, u_fe, youngs_modulus, poisson_ratio,
+                                                    bore_radius=bore_radius, **opts)
+        info.update(fe_info, u_fe=u_fe, k_fe=k_fe)
+        k_grid = tabulated(pair, u_fe, k_fe)(u_grid)
+    info.update(u=u_grid, k_pair_per_width=k_grid)
+    k_unit = tabulated(pair, u_grid, k_grid)
+    n_slices = 1 if pair.beta_b == 0 else n_slices     # spur: every slice sees the same position
+    kl = helix_stiffness(pair, k_unit, phases, n_slices)
+    kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
+    return MeshStiffness(level, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)
+
+
+def mesh_stiffness_from_scene(scene, level: str | None = None, **kw) -> MeshStiffness:
+    """:func:`mesh_stiffness` with the pair, level, stagger, material, bores and ``[stiffness]`` knobs of a scene."""
+    from femgear.physics.geometry.gear import GearPair as _GP
+
+    pair = _GP.from_scene(scene)
+    st = scene.stiffness
+    fe_options = dict(kw.pop("fe_options", None) or {})
+    if st.fe_mesh_size is not None:
+        fe_options.setdefault("h", st.fe_mesh_size)
+    fe_options.setdefault("level", scene.numerics.body_level)
+    args = dict(n_positions=st.n_positions, stagger=scene.pair.stagger, n_slices=st.n_slices,
+                youngs_modulus=scene.material.youngs_modulus, poisson_ratio=scene.material.poisson_ratio,
+                bore_radius=(scene.pinion.bore_radius, scene.gear.bore_radius),
+                constant_per_width=st.mesh_stiffness_per_width, fe_options=fe_options or None)
+    if (level or scene.physics.stiffness) == "ltca":
+        from femgear.physics.ltca.level import ltca_options_from_scene
+
+        args["ltca_options"] = {**ltca_options_from_scene(scene), **(kw.pop("ltca_options", None) or {})}
+    args.update(kw)
+    return mesh_stiffness(pair, level or scene.physics.stiffness, **args)

@@ -1,0 +1,82 @@
+"""TEHL along the path of contact of a scene: h_c, p_max, max ΔT and μ per position
+(the seed paper's Fig. 16 analogue), and VTK of the thermal fields.
+
+Positions, load per length, radii, entrainment speeds and SRR come from
+:func:`femgear.physics.contact.path.contact_along_path` (or any ``load_per_length`` array, e.g.
+the coupling's dynamic w̄').  pyvista is imported only when VTK is written.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from femgear.errors import ConvergenceError
+from femgear.physics.tehl.line import TEHLResult, solve_tehl_line
+from femgear.physics.tehl.solver import tehl_setup
+
+
+@dataclass(frozen=True)
+class TEHLPath:
+    s: np.ndarray            #: path coordinate [m] (0 at the pitch point)
+    srr: np.ndarray
+    hc: np.ndarray           #: [m]
+    pmax: np.ndarray         #: [Pa]
+    dT_max: np.ndarray       #: [K]
+    dT_surface: np.ndarray   #: [K]
+    mu: np.ndarray
+    mu_poiseuille: np.ndarray
+    seconds: float
+    results: list = field(repr=False, default_factory=list)
+
+
+def tehl_along_path(scene, contact=None, n: int | None = None, level: int | None = None,
+                    load_per_length=None, T_bulk: float | None = None, **options) -> TEHLPath:
+    """TEHL at the positions of ``contact`` (default :func:`contact_along_path` with ``n``)."""
+    from femgear.physics.contact.path import contact_along_path
+
+    contact = contact or contact_along_path(scene, n=n)
+    k = contact.kin
+    w = np.broadcast_to(contact.load_per_length if load_per_length is None else load_per_length, k.R.shape)
+    T = scene.operating.ambient_temperature if T_bulk is None else T_bulk
+    level = scene.numerics.ehl_level if level is None else level
+    setup = {**tehl_setup(scene), **options}
+    results: list[TEHLResult] = []
+    for i in range(k.R.size):
+        try:
+            results.append(solve_tehl_line(float(w[i]), float(k.R[i]), float(k.ue[i]), float(k.srr[i]), T,
+                                           level=level, **setup))
+        except ConvergenceError as exc:
+            raise ConvergenceError(f"tehl path position {i} (s = {k.s[i]:.4g} m)", str(exc), exc.history) from exc
+
+    def arr(name):
+        return np.array([getattr(r, name) for r in results])
+
+    return TEHLPath(s=np.asarray(k.s), srr=np.asarray(k.srr), hc=arr("hc"), pmax=arr("pmax"), dT_max=arr("dT_max"),
+                    dT_surface=arr("dT_surface"), mu=arr("mu"), mu_poiseuille=arr("mu_poiseuille"),
+                    seconds=float(sum(r.seconds for r in results)), results=results)
+
+
+def write_thermal_vtk(result: TEHLResult, path: Path | str) -> Path:
+    """Film temperature field of one contact as a structured (x, ζ = z/h) VTK grid, with
+    the physical z as point data and the surface temperatures as field data."""
+    import pyvista as pv
+
+    T = result.T_film                                    # (nt, nz) cell values
+    nt, nz = T.shape
+    dx = result.x_cells[1] - result.x_cells[0]
+    xf = np.r_[result.x_cells - dx / 2, result.x_cells[-1] + dx / 2]
+    zeta = np.linspace(0.0, 1.0, nz + 1)
+    grid = pv.RectilinearGrid(xf / result.b, zeta, np.array([0.0]))
+    grid.cell_data["temperature"] = T.ravel(order="F")
+    h_f = np.interp(xf, result.x, result.h)
+    grid.point_data["z"] = (h_f[:, None] * zeta[None, :]).ravel(order="F")
+    grid.point_data["pressure"] = np.repeat(np.interp(xf, result.x, result.p)[:, None], nz + 1, 1).ravel(order="F")
+    grid.field_data["surface_temperature_1"] = result.T_surface1
+    grid.field_data["surface_temperature_2"] = result.T_surface2
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    grid.save(str(path))
+    return path

@@ -1,0 +1,95 @@
+"""The ``tehl-point`` lubrication level: thermal EHL of the crowned flanks' elliptic contacts.
+
+At each path position the pair's contact is an ellipse (:mod:`femgear.physics.contact.crowning`:
+R_x across the contact line from the profile radius and the crowning, R_y along it from
+the lead crowning ``modifications.crowning``; the load of one tooth pair from the line
+load of the load sharing times its mean contact-line length). The contact is solved by
+:func:`femgear.physics.tehl.point.solve_tehl_point` (isothermal nested start, then the strip-wise
+energy loop) in the map signature of every lubrication level
+(:mod:`femgear.physics.lubrication.levels`): ``solver(w=, R=, ue=, srr=, T=) -> (mu, dT)``, μ the
+sliding (Couette) friction, dT the largest film temperature rise.  The scene's stationary
+roughness (``[roughness.peak]`` fixed at x0, the paper's model; ``[roughness.synthetic]``)
+enters each contact's film (:func:`femgear.physics.tehl.point.rough_levels`).
+
+Frame: X along the entrainment, normal to the contact line, Y along it. The rolling
+velocity of a helical pair lies in the transverse plane, at beta_b to X; the solver takes
+the entrainment speed of the path (its transverse rolling speed) along X and neglects the
+component along the contact line, i.e. along the major axis of the slender ellipse. By
+Chittenden et al.'s (1985) oblique-entrainment fit (recalled, /work/shared/notes/
+ehl_extensions.md) the film follows the radius in the flow direction, 1/R_e = cos^2 th/R_x
++ sin^2 th/R_y ~ cos^2 th/R_x for a slender ellipse (th = beta_b), and h_c ~ R^0.46 at fixed
+speed and load (Hamrock-Dowson), so solving with R_x instead of R_e gives h_c lower by a
+factor ~ (cos^2 beta_b)^0.46: 0.89 at beta_b = 28 deg (the paper's pair; 1 for spur gears).
+Reported, not modelled.
+
+``POINT_LEVEL`` is the grid level used by default (16 2^k intervals along X, stretched in
+Y): level 1 (33 x ~33 nodes) meets the path speed target (studies/benchmarks/tehl_point.py
+reports its time and its difference from level 2).  Where the point solver fails (a heavily
+loaded slender ellipse: the paper's pair with 10 µm crowning under the LTCA's line-end loads,
+M ≈ 5000–5500 at R_x/R_y ≈ 0.0045, where the Newton trials on level 1 and on level 2 lose the
+film), that contact is solved as a line contact of the same load per unit length on R_x (the
+R_x/R_y → 0 limit), with one warning line naming it.
+"""
+
+from __future__ import annotations
+
+import logging
+
+import numpy as np
+
+from femgear.errors import ConvergenceError
+from femgear.physics.contact.crowning import crowned_contact
+from femgear.physics.tehl.point import solve_tehl_point
+from femgear.physics.tehl.solver import tehl_setup
+
+POINT_LEVEL = 1
+log = logging.getLogger("femgear.physics.tehl")
+
+
+def tehl_point_solver(scene, level: int | None = None, pair=None, details: list | None = None, **options):
+    """Direct thermal point-EHL solves (one per query point) in the map signature.
+
+    ``details``: a list that receives each :class:`femgear.physics.tehl.point.TEHLPointResult`
+    (films, pressure, temperature for studies); ``solve.last`` holds the inputs and results of the
+    latest call (the film of the run's last pass, :func:`femgear.physics.lubrication.films.level_film`).
+    An uncrowned pair raises SceneError naming ``modifications.crowning``."""
+    geo = crowned_contact(scene, pair)
+    rough = scene.roughness if (scene.roughness.peak or scene.roughness.synthetic) else None
+    setup = {**tehl_setup(scene), "roughness": rough, **options}
+    level = POINT_LEVEL if level is None else level
+
+    def solve(w, R, ue, srr, T):
+        w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
+                                                 for a in (w, R, ue, srr, T)))
+        Rx, Ry = geo.radii(R)
+        F = geo.load(w)
+        mu, dT = np.empty(w.shape), np.empty(w.shape)
+        results = []
+        for i in np.ndindex(w.shape):
+            args = (float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]))
+            try:
+                r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **setup)
+            except ConvergenceError as exc:
+                r = _line_contact(float(w[i]), args, scene, exc)
+            mu[i], dT[i] = r.mu, r.dT_max
+            results.append(r)
+        if details is not None:
+            details.extend(results)
+        solve.last = ((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), results)
+        return mu, dT
+
+    solve.last = None   #: ((w, R, ue, srr, T), results) of the latest call: its films, without solving again
+
+    return solve
+
+
+def _line_contact(w: float, args: tuple, scene, exc: ConvergenceError):
+    """The line-contact TEHL solve of a contact the point solver could not hold (R_x/R_y → 0 limit: the
+    same load per unit length on the radius R_x across the line), logged as a warning naming the contact."""
+    from femgear.physics.tehl.line import solve_tehl_line
+
+    F, Rx, ue, srr, T = args
+    log.warning("tehl-point: the point solver failed at F = %.4g N, R_x = %.4g m (%s); this contact is solved "
+                "as a line contact (physics.lubrication = \"tehl\" there)", F, Rx,
+                str(exc).split(": ", 1)[-1].split(" (last:")[0][:100])
+    return solve_tehl_line(w, Rx, ue, srr, T, level=scene.numerics.ehl_level, **tehl_setup(scene))

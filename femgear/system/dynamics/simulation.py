@@ -1,0 +1,43 @@
+"""The recorded result of a time integration and the helpers all integrators share."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from femgear.system.dynamics.model import GearRotorModel
+
+
+@dataclass(frozen=True)
+class Simulation:
+    """Recorded time history (reduced coordinates)."""
+
+    model: GearRotorModel
+    method: str
+    dt: float
+    t: np.ndarray        #: recorded times [s]
+    q: np.ndarray        #: (n_rec, n) displacements
+    v: np.ndarray        #: (n_rec, n) velocities
+    seconds: float       #: wall time of the integration loop [s]
+    steps: int
+    info: dict = field(default_factory=dict, compare=False)
+
+
+def inputs(model: GearRotorModel, t: np.ndarray):
+    ph = model.mesh_phase(t)
+    kL, kR = model.stiffness(ph)
+    e, ed = model.errors(t)
+    f = model.external_force(t)
+    if model.mu > 0 and model.friction is not None:
+        A, B = model.friction(ph)
+    else:
+        A = B = np.zeros((2,) + t.shape)
+    return kL, kR, e, ed, f, A, B
+
+
+def record_plan(steps: int, dt: float, record_every: int, record_from: float) -> np.ndarray:
+    idx = np.arange(0, steps + 1, record_every)
+    return idx[idx * dt >= record_from - 1e-12 * dt]
+
+
