@@ -1,7 +1,7 @@
 """Elliptic point-contact EHL: Hc against Nijenbanning-Venner-Moes (1994) over lambda = R_x/R_y.
 
 For each (M, L) and lambda the nested solve gives Hc on every level (the domain follows the
-Hertz ellipse, stretched cells hy/hx = b/a: :func:`femgear.physics.ehl.point.default_domain`); the table
+Hertz ellipse, stretched cells hy/hx = b/a: :func:`femgear.physics.ehl.core.domain.default_domain`); the table
 shows the finest-level Hc, its change from the level below (grid convergence), the deviation
 from NVM and from Hamrock-Dowson (1977, exact k), the seconds of the solve and those of the
 circular contact (lambda = 1) at the same number of nodes across the contact.

@@ -1,7 +1,7 @@
 """Domain convergence of the elliptic point EHL: Hc on enlarged domains (issue 15, helper h15d).
 
 For each (M, L) and lambda = R_x/R_y, Hc is solved on the default domain
-(:func:`femgear.physics.ehl.point.default_domain`) and on domains enlarged k times (inlet and Y
+(:func:`femgear.physics.ehl.core.domain.default_domain`) and on domains enlarged k times (inlet and Y
 half-width x k, ``default_domain(..., enlarge=(k, k))``, X = 0 kept on a node), each on two
 levels (grid convergence), then extrapolated to the unbounded domain from the two largest k
 assuming Hc(k) = Hc_inf + c / k: the pressure of a slender contact decays along the contact
@@ -28,8 +28,9 @@ import time
 import numpy as np
 
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain, hertz_ellipse
+from femgear.physics.ehl.point import solve_point
 from studies.ehl_elliptic import hd_moes
 
 

@@ -2,7 +2,7 @@
 how much of the film the default domain truncates (issue 15, helper h15c).
 
 For each (M, L) and lambda = R_x/R_y the table prints femgear's Hc (multigrid, default domain
-:func:`femgear.physics.ehl.point.default_domain`), optionally Hc on an enlarged domain (inlet x fx,
+:func:`femgear.physics.ehl.core.domain.default_domain`), optionally Hc on an enlarged domain (inlet x fx,
 Y half-width x fy; Newton, which starts where the multigrid's cold start finds no node inside
 the Hertz ellipse), NVM's Hc and its four asymptotes
 (Nijenbanning, Venner & Moes 1994, Wear 176:217; terms as in
@@ -31,9 +31,10 @@ import math
 import os
 
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.grid import Domain
-from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain, hertz_ellipse
+from femgear.physics.ehl.core.grid import Domain
+from femgear.physics.ehl.point import solve_point
 
 
 def nvm_terms(M: float, L: float, lam: float) -> dict:

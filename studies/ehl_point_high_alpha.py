@@ -6,13 +6,13 @@ For each case and finest level (2 = 65^2, 3 = 129^2, 4 = 257^2) one nested Newto
 solve (``solve_point(M, L, level=k, method='newton')``, Barus, incompressible: the defaults;
 alpha_bar = 19.8 and 33.8, beyond the range of ``method='auto'``'s multigrid), or with
 ``--method fas`` the multigrid with the HIGH_ALPHA cycles (on 257^2 with the spike
-elimination of :mod:`femgear.physics.ehl.eliminate`; a solve whose multigrid fails falls back to
+elimination of :mod:`femgear.physics.ehl.fd.eliminate`; a solve whose multigrid fails falls back to
 Newton, printed as ``fallback``): wall time, peak traced memory,
-Hc, Hmin (Moes units), their Richardson estimates (:mod:`femgear.physics.ehl.accuracy`), the
+Hc, Hmin (Moes units), their Richardson estimates (:mod:`femgear.physics.ehl.core.accuracy`), the
 artificial-diffusion factor the finest level needed, and the NVM central film
 (Nijenbanning, Venner & Moes 1994; :func:`femgear.physics.contact.film.nvm_central`; the NVM
 formula has no minimum film) beside them. A solve that fails prints its error, whose
-message says why (:func:`femgear.physics.ehl.newton._stall_reason`: the median damping of the
+message says why (:func:`femgear.physics.ehl.fe.newton._stall_reason`: the median damping of the
 last Newton steps and the node of the largest Newton component). One run per cell (the
 257^2 solves take minutes), timed with tracemalloc on (it slows allocation-heavy code, so
 the seconds are an upper bound); the last line is JSON.
@@ -32,7 +32,7 @@ import tracemalloc
 
 from femgear.errors import ConvergenceError
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.core import params as pr
 from femgear.physics.ehl.point import solve_point
 
 

@@ -28,8 +28,8 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np
 
 from femgear.physics.contact.film import nvm_central, rigid_isoviscous_point
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.grid import Domain
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.grid import Domain
 from femgear.physics.ehl.point import solve_point
 
 try:

@@ -35,7 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.physics.ehl.surface import paper_peak, surface_speed
+from femgear.physics.ehl.core.surface import paper_peak, surface_speed
 from femgear.physics.ehl.transient import (
     amplitude_reduction_fit,
     measure_amplitude_reduction,

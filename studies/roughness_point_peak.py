@@ -22,9 +22,9 @@ import sys
 import time
 from pathlib import Path
 
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.point import default_domain
-from femgear.physics.ehl.surface import paper_peak
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.core.surface import paper_peak
 from femgear.physics.ehl.transient import solve_point_transient
 
 OUT = Path(__file__).resolve().parents[1] / "out" / "roughness"

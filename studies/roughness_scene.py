@@ -10,7 +10,7 @@ at level 6, as the ``ehl-line`` level solves it) the film is solved smooth and w
 peak fixed at x0 in the contact (the paper's model: ``moving = false``), and, at the pitch
 point, with the synthetic surface and with the peak carried through the contact by its
 flank (``moving = true``, transient, c = 1 +- SRR/2). The peak is given in metres and
-converted per position with the local R and b (:func:`femgear.physics.ehl.surface.scene_features`).
+converted per position with the local R and b (:func:`femgear.physics.ehl.core.surface.scene_features`).
 
 Prints a table of h_min and p_max with and without roughness and one JSON line; writes
 out/roughness/roughness_scene.{json,png}. This is the path-level effect of the scene keys;
@@ -32,9 +32,9 @@ import numpy as np
 
 from femgear.physics.contact.hertz import reduced_modulus
 from femgear.physics.contact.path import contact_along_path
+from femgear.physics.ehl.core.surface import scene_features, surface_speed
 from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
-from femgear.physics.ehl.line import X0_DEFAULT
-from femgear.physics.ehl.surface import scene_features, surface_speed
+from femgear.physics.ehl.fe.line import X0_DEFAULT
 from femgear.physics.ehl.transient import solve_line_transient
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.scene.load import read_toml, scene_from_dict

@@ -135,7 +135,7 @@ def test_unwritable_out_is_refused_before_any_computation(command, tmp_path, cap
 
     monkeypatch.setattr(femgear.pipeline, "run_case", _never)
     monkeypatch.setattr(femgear.system.dynamics, "run_dynamics", _never)
-    monkeypatch.setitem(sys.modules, "femgear.physics.ehl.line", None)   # the EHL solver is not even imported
+    monkeypatch.setitem(sys.modules, "femgear.physics.ehl.fe.line", None)   # the EHL solver is not even imported
     blocker = tmp_path / "file"
     blocker.write_text("")
     for out in (str(blocker / "sub"), "/proc/femgear-cannot-write"):

@@ -55,11 +55,11 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from femgear.errors import ConvergenceError
-from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.rheology import ROELANDS_P0
 from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.newton import newton_dense
-from femgear.physics.ehl.rheology import ROELANDS_P0
+from femgear.physics.ehl.fe.level import Level
+from femgear.physics.ehl.fe.newton import newton_dense
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.tehl.energy import EnergyState, ThermalProps, jaeger_matrix, solve_energy
 from femgear.physics.tehl.loop import thermal_loop

@@ -6,8 +6,8 @@ from __future__ import annotations
 import numpy as np
 
 from femgear.errors import ConvergenceError
-from femgear.physics.ehl import accuracy as acc
-from femgear.physics.ehl.results import EHLResult, centre_values
+from femgear.physics.ehl.core import accuracy as acc
+from femgear.physics.ehl.core.results import EHLResult, centre_values
 
 
 def assemble(kind: str, M: float, L: float, x, y, P2: np.ndarray, H2: np.ndarray, *, H0: float,

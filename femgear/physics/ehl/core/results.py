@@ -15,7 +15,7 @@ class EHLResult:
     Fields are on the node grid: point contacts ``P``/``H`` of shape (ny, nx) with
     coordinates ``x`` (nx,) and ``y`` (ny,); line contacts shape (nx,), ``y`` empty.
     ``error_estimate`` holds the relative Richardson estimates of Hc and Hmin from the
-    nested levels (:mod:`femgear.physics.ehl.accuracy`), ``tol`` the tolerance they are held
+    nested levels (:mod:`femgear.physics.ehl.core.accuracy`), ``tol`` the tolerance they are held
     to and ``flags`` every reason not to trust the result at that tolerance.
     ``Hc``/``Hmin`` are in Moes units (H_Moes = (h/R_x)(2U)^(-1/2)); ``Hc_hertz`` etc. in
     Hertzian units (H = h R / a^2). ``history`` holds per-level Newton histories.

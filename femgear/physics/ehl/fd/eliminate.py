@@ -16,11 +16,11 @@ sweep) and the coarse-grid correction (the coarser grid cannot carry the spike) 
 The local equations are the NCP form of the FD Reynolds equation of :mod:`fd`,
 F_i = min(P_i, c_i (f_i - L_i)), i in S, with c_i = 1 / |dL_i/dP_i| (the diagonal of
 the local Jacobian, elastic part included) frozen at the start. The local Jacobian is
-exact: the sparse stencil derivatives of :func:`fdnewton.jacobian_blocks` (rows S,
+exact: the sparse stencil derivatives of :func:`femgear.physics.ehl.fd.newton.jacobian_blocks` (rows S,
 columns S) plus dL_S/dH times the dense S-block of the influence matrix (the deflection
 at every node of the stencils of S caused by a unit P at each node of S); semi-smooth
 Newton with backtracking on |F_S|, P projected onto P >= 0 and a positive film (as the
-coarsest-grid solver :class:`fdnewton.CoarseNewton`). The film of a trial is computed on
+coarsest-grid solver :class:`femgear.physics.ehl.fd.newton.CoarseNewton`). The film of a trial is computed on
 the whole grid (DC-FFT), so the local solve sees the exact deflection.
 
 Measured at (20, 20), alpha_bar 19.8, on 257^2 (2100 nodes in S for radius 6): the
@@ -33,8 +33,8 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg as sla
 
-from femgear.physics.ehl.fd import FDLevel
-from femgear.physics.ehl.fdnewton import jacobian_blocks
+from femgear.physics.ehl.fd.newton import jacobian_blocks
+from femgear.physics.ehl.fd.operator import FDLevel
 
 # chord steps are kept while each reduces |F_S| by this factor; a slower one refactorises
 # (measured at (20, 20) on 257^2 from the interpolated 129^2 solution: chord steps at a

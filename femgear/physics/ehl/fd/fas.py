@@ -3,10 +3,10 @@
 Full Approximation Scheme (Brandt 1977, Math. Comp. 31:333; Brandt 1984, GMD-Studien 85)
 as applied to EHL by Lubrecht (1987, thesis, Twente) and Venner & Lubrecht (2000,
 "Multilevel Methods in Lubrication", Tribology Series 37, ch. 3 and 7), on the FD
-discretisation of :mod:`femgear.physics.ehl.fd`:
+discretisation of :mod:`femgear.physics.ehl.fd.operator`:
 
 * smoothing: zebra line relaxation, Gauss-Seidel / distributive by eps/h^2
-  (:mod:`femgear.physics.ehl.relax`), ``pre`` sweeps before and ``post`` after the coarse-grid
+  (:mod:`femgear.physics.ehl.fd.relax`), ``pre`` sweeps before and ``post`` after the coarse-grid
   correction; the film by DC-FFT on every level (no multi-integration needed);
 * coarse-grid correction: the solution injected, the residual restricted by full
   weighting (zero at cavitated nodes), the coarse right-hand side
@@ -14,7 +14,7 @@ discretisation of :mod:`femgear.physics.ehl.fd`:
   prolonged bilinearly and P projected onto P >= 0; H0 is a global unknown, taken from
   the coarse grid;
 * coarsest grid: solved exactly, load balance included, by dense semi-smooth Newton
-  (:mod:`femgear.physics.ehl.fdnewton`) instead of Venner's H0 relaxation with a factor 0.05-0.1;
+  (:mod:`femgear.physics.ehl.fd.newton`) instead of Venner's H0 relaxation with a factor 0.05-0.1;
 * FMG: the coarsest grid solved from the start, then on each finer grid the cubic
   interpolation of the coarser solution followed by V (gamma = 1) or W (gamma = 2)
   cycles until the films change by less than ``film_tol`` per cycle and the load error
@@ -22,10 +22,10 @@ discretisation of :mod:`femgear.physics.ehl.fd`:
   continues with W-cycles (measured: (10, 10) on 257^2 sat in a period-2 limit cycle of
   its V-cycles at the pressure spike, dP ~ 4e-3 on 8 nodes and Hmin +-1e-4, and fell back
   to Newton; W-cycles converge, 8 cycles in all). The central and minimum films of every
-  FMG level feed the Richardson error estimate (:mod:`femgear.physics.ehl.accuracy`).
+  FMG level feed the Richardson error estimate (:mod:`femgear.physics.ehl.core.accuracy`).
 
 Every cycle appends the rms complementarity residual and the relative load error of its
-level to the history (:class:`femgear.physics.ehl.newton.History`); a level that does not reach
+level to the history (:class:`femgear.physics.ehl.core.history.History`); a level that does not reach
 its tolerances within ``max_cycles``, or whose residual grows or stalls, raises
 :class:`ConvergenceError` with that history.
 
@@ -34,10 +34,10 @@ Measured (2-core Xeon, shared; ``studies/benchmarks/ehl.py``): (20, 10) converge
 cycle), 257^2 in 4 / 4 / 3 / 5 (``relax_fine``: the Gauss-Seidel factor 0.6; with 0.8
 the line sweeps diverge at the outlet constriction and the cycles took 14). Warm starts
 along a path (``warm=`` of :meth:`FAS.solve_level`): one or two V-cycles per grid from the
-secant prediction of :mod:`fas_point`. From alpha_bar ~13
+secant prediction of :mod:`femgear.physics.ehl.fd.point`. From alpha_bar ~13
 ((50, 10), (20, 20), (200, 10)) the standard cycles stall on the coarse grids, which is why
 ``solve_point(method='auto')`` keeps the Newton solver there; beyond alpha_bar 17 the
-options HIGH_ALPHA of :mod:`fas_point` (a larger per-sweep cap, sweeps after each FMG
+options HIGH_ALPHA of :mod:`femgear.physics.ehl.fd.point` (a larger per-sweep cap, sweeps after each FMG
 interpolation; on 257^2 the correction kept off the outlet spike, the spike nodes
 eliminated by exact local solves, :mod:`eliminate`) converge (20, 20) and (100, 20) on
 129^2 and 257^2.
@@ -51,11 +51,11 @@ import numpy as np
 from scipy import ndimage
 
 from femgear.errors import ConvergenceError
-from femgear.physics.ehl.eliminate import SpikeElimination
-from femgear.physics.ehl.fd import FDLevel, inject, prolong_bilinear, prolong_cubic, restrict_full_weighting
-from femgear.physics.ehl.fdnewton import CoarseNewton
-from femgear.physics.ehl.newton import History
-from femgear.physics.ehl.relax import RelaxOptions, sweep
+from femgear.physics.ehl.core.history import History
+from femgear.physics.ehl.fd.eliminate import SpikeElimination
+from femgear.physics.ehl.fd.newton import CoarseNewton
+from femgear.physics.ehl.fd.operator import FDLevel, inject, prolong_bilinear, prolong_cubic, restrict_full_weighting
+from femgear.physics.ehl.fd.relax import RelaxOptions, sweep
 
 # the contraction credited to a warm cycle: its residual ratio clipped to [0.1, 0.5] (0.5:
 # the largest film contraction per V-cycle measured on the FMG levels of (20, 10), 0.28-0.45;
@@ -93,7 +93,7 @@ class FasOptions:
     # omega_gs 0.5 the sweeps smooth monotonically, and omega_gs 0.6 takes 5 cycles
     relax_fine: RelaxOptions = field(default_factory=lambda: RelaxOptions(omega_dist=0.7, omega_gs=0.6))
     # strongly piezoviscous contacts (all off by default; the preset HIGH_ALPHA of
-    # fas_point, measured there): relaxation sweeps on each FMG level after the cubic
+    # fd.point, measured there): relaxation sweeps on each FMG level after the cubic
     # interpolation, before its first cycle (:meth:`FAS.presmooth`); on levels finer than
     # SPIKE_GUARD_NX the coarse-grid correction left out within ``spike_guard`` nodes of
     # the outlet spike (:func:`_steep`) and the relaxation ``relax_top``; the switch to
@@ -242,7 +242,7 @@ class FAS:
         than ``film_tol`` per cycle and the load error is below ``load_tol`` (not
         ``final``: the coarse tolerances); raises when the residual stalls or grows.
 
-        ``warm = (tol, load_tol)``: from a predicted state (a path, :mod:`fas_point`),
+        ``warm = (tol, load_tol)``: from a predicted state (a path, :mod:`femgear.physics.ehl.fd.point`),
         ``warm_sweeps`` cycles until the algebraic error of the films is bounded by
         ``tol``: a cycle contracting the error by q leaves at most change * q / (1 - q)
         (the a-posteriori bound of the contraction mapping theorem), the change counted

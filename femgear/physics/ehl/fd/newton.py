@@ -5,7 +5,7 @@ Unknowns x = (P at the interior nodes, H0); equations
 
     F = ( min(P_i, c_i (f_i - L_i(P, H0))),   (hx hy sum P - g) / g )
 
-(the NCP form of the cavitation condition, as in :mod:`femgear.physics.ehl.level`; c_i a row
+(the NCP form of the cavitation condition, as in :mod:`femgear.physics.ehl.fe.level`; c_i a row
 scaling frozen at the start). The Jacobian is exact: the 5-point Poiseuille stencil with
 the derivatives of eps = rho H^3 / (eta lam_bar) through P and H, the upwinded wedge, and
 the film's dependence on P through the dense influence matrix. The load row fixes H0
@@ -21,7 +21,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 
 from femgear.errors import ConvergenceError
-from femgear.physics.ehl.fd import FDLevel
+from femgear.physics.ehl.fd.operator import FDLevel
 
 MAX_DP = 1.0
 MAX_LOG_ETA = 4.0

@@ -12,22 +12,22 @@ wedge term D_X upwinded (first order, (Q_ij - Q_(i-1,j)) / hx, Venner & Lubrecht
 standard scheme; ``wedge='second'`` takes the second-order upstream difference
 (3 Q_ij - 4 Q_(i-1,j) + Q_(i-2,j)) / (2 hx) used with defect correction in their ch. 8).
 H = H0 + X^2/2 + lambda Y^2/2 + sum K P (piecewise-constant cell influence coefficients,
-the DC-FFT of :mod:`femgear.physics.ehl.elastic`), load hx hy sum P = 2 pi / 3. Cavitation is
+the DC-FFT of :mod:`femgear.physics.ehl.core.elastic`), load hx hy sum P = 2 pi / 3. Cavitation is
 the complementarity P >= 0, f - L >= 0, P (f - L) = 0. ``f`` and the load target are the
 FAS right-hand sides (0 and the load on the finest grid).
 
 Arrays are (ny, nx) with the boundary rows and columns at P = 0; operators return the
 interior (ny - 2, nx - 2) block. The spacings hx, hy enter every stencil separately; the
-deflection kernel is that of hx x hy cells (:mod:`femgear.physics.ehl.elastic`).
+deflection kernel is that of hx x hy cells (:mod:`femgear.physics.ehl.core.elastic`).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from femgear.physics.ehl.elastic import point_deflection
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.core.elastic import point_deflection
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.core.rheology import Rheology
 
 
 class FDLevel:

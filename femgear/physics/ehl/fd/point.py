@@ -1,6 +1,6 @@
 """Point-contact EHL by full multigrid (the ``method='fas'`` of :func:`solve_point`).
 
-Grid levels of :class:`femgear.physics.ehl.grid.Grid` (``16 * 2**k`` intervals along X, the same
+Grid levels of :class:`femgear.physics.ehl.core.grid.Grid` (``16 * 2**k`` intervals along X, the same
 nodes as the Newton solver's levels) from the coarsest multigrid grid (17^2; 33^2 when
 alpha_bar > ``COARSE_33_ALPHA``) to the finest; the FD discretisation of :mod:`fd` with
 the second-order upstream wedge on every level but the coarsest (first-order upwind
@@ -19,7 +19,7 @@ estimate, at a quarter of the cost of a finest-grid cycle each).
 
 Each level is cycled until the central and minimum films change by less than
 ``film_tol`` per cycle and the load error is below ``load_tol``; the per-level films feed
-:func:`femgear.physics.ehl.accuracy.error_estimate`, and with ``tol`` the FMG stops at the first
+:func:`femgear.physics.ehl.core.accuracy.error_estimate`, and with ``tol`` the FMG stops at the first
 level whose estimate meets it.
 """
 
@@ -33,15 +33,15 @@ from scipy.interpolate import RegularGridInterpolator
 
 from femgear.errors import ConvergenceError
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import accuracy as acc
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.fas import FAS, FasOptions
-from femgear.physics.ehl.fd import FDLevel, inject, prolong_cubic
-from femgear.physics.ehl.fdnewton import CoarseNewton
-from femgear.physics.ehl.grid import Domain, Grid
-from femgear.physics.ehl.relax import RelaxOptions
-from femgear.physics.ehl.results import EHLResult
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.core import accuracy as acc
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.grid import Domain, Grid
+from femgear.physics.ehl.core.results import EHLResult
+from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.fd.fas import FAS, FasOptions
+from femgear.physics.ehl.fd.newton import CoarseNewton
+from femgear.physics.ehl.fd.operator import FDLevel, inject, prolong_cubic
+from femgear.physics.ehl.fd.relax import RelaxOptions
 
 ALPHA_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
 # the coarsest grid (17^2) takes the first-order upwind wedge (a coarse-grid approximation
@@ -66,7 +66,7 @@ WARM_COARSE = 5.0
 # after each interpolation (FasOptions.fmg_sweeps); 10 coarse Newton steps per cycle (3 left
 # the load error at 1e-2); on 257^2 the coarse-grid correction kept off the outlet spike
 # (spike_guard 4, fas._steep) and the spike eliminated by an exact local Newton solve within
-# 6 nodes of it after each cycle (eliminate; Cai & Li 2011, femgear.physics.ehl.eliminate), the
+# 6 nodes of it after each cycle (eliminate; Cai & Li 2011, femgear.physics.ehl.fd.eliminate), the
 # 129^2 level of those cycles keeping the guarded nodes fixed (freeze_guard), the
 # correction damped by 0.7 (top_damping), omega 0.3 there, no W-cycles, no stall test (the
 # residual falls unevenly). Result on 257^2: (20, 20) in 13 cycles (with the guard alone
@@ -229,7 +229,7 @@ def solve_point_fas(M: float, L: float, *, level: int, ratio: float, dom: Domain
                     reuse: dict | None = None) -> EHLResult:
     """The multigrid solve behind ``solve_point(method='fas')``; raises ConvergenceError
     (with the per-cycle residual and load-error history) when it fails."""
-    from femgear.physics.ehl.assemble import assemble
+    from femgear.physics.ehl.core.assemble import assemble
 
     fp = FasPoint(M, L, ratio=ratio, dom=dom, rheology=rheology, rigid=rigid, case=case, opts=opts)
     P, H0, k, per_level = fp.solve(level, tol, t0, start, fallback_start, reuse)

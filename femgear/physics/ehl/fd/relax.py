@@ -1,4 +1,4 @@
-"""Line relaxation of the FD EHL equations (:mod:`femgear.physics.ehl.fd`), zebra-ordered, vectorised.
+"""Line relaxation of the FD EHL equations (:mod:`femgear.physics.ehl.fd.operator`), zebra-ordered, vectorised.
 
 Venner & Lubrecht (2000, "Multilevel Methods in Lubrication", sec. 7.3; Venner 1991,
 thesis, Twente): where the Poiseuille coefficient dominates (eps/h^2 >= ``XI_SWITCH``)
@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 
-from femgear.physics.ehl.fd import FDLevel
+from femgear.physics.ehl.fd.operator import FDLevel
 
 MAX_LOG_ETA = 4.0
 XI_SWITCH = 0.3  # eps / h^2 below which a node is relaxed distributively (Venner & Lubrecht)

@@ -18,10 +18,10 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from femgear.physics.ehl.elastic import line_kernel, line_kernel_interior, point_deflection
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.reynolds import Linearization, ReynoldsFE
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.core.elastic import line_kernel, line_kernel_interior, point_deflection
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.fe.reynolds import Linearization, ReynoldsFE
 
 
 class Level:

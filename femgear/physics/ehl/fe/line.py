@@ -15,15 +15,16 @@ import numpy as np
 
 from femgear.errors import ConvergenceError, SceneError
 from femgear.physics.contact.film import moes_line_central
-from femgear.physics.ehl import accuracy as acc
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.grid import prolongation_1d
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.newton import RESIDUAL_TOL, History, newton_dense
-from femgear.physics.ehl.point import CONTINUATION, _result
-from femgear.physics.ehl.results import EHLResult
-from femgear.physics.ehl.rheology import Rheology
-from femgear.physics.ehl.surface import apply_surface, evaluate
+from femgear.physics.ehl.core import accuracy as acc
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.grid import prolongation_1d
+from femgear.physics.ehl.core.history import History
+from femgear.physics.ehl.core.results import EHLResult
+from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.core.surface import apply_surface, evaluate
+from femgear.physics.ehl.fe.level import Level
+from femgear.physics.ehl.fe.newton import RESIDUAL_TOL, newton_dense
+from femgear.physics.ehl.fe.point import CONTINUATION, _result
 
 X0_DEFAULT = -4.5
 DEFAULT_LEVEL = 6  # 1025 nodes
@@ -68,14 +69,14 @@ def solve_line(M: float, L: float, *, level: int | None = None, coarse_level: in
     coarse levels (so the result still carries a two-level error estimate); when Newton
     fails from it, the cold start is used. ``reuse``: a dict the caller keeps across a
     sequence of solves; the LU factors of each level's Jacobian are kept there and
-    reused as GMRES preconditioners (:func:`femgear.physics.ehl.newton.newton_dense`), and the
+    reused as GMRES preconditioners (:func:`femgear.physics.ehl.fe.newton.newton_dense`), and the
     last two solutions on each level: when they end at ``start``, the warm start is the
     secant prediction of :class:`_PathHistory` (fewer Newton iterations); a finest-level
     Newton that fails from the prediction is restarted from the prolonged coarse level.
     A warm solve stops at the scaled residuals :data:`WARM_RESIDUAL_TOL` (finest level)
     and :data:`COARSE_WARM_RESIDUAL_TOL` (the level below, which feeds the error estimate).
 
-    ``surface``: stationary roughness R(X) in Hertzian units (:mod:`femgear.physics.ehl.surface`),
+    ``surface``: stationary roughness R(X) in Hertzian units (:mod:`femgear.physics.ehl.core.surface`),
     a callable f(X) or nodal values on the finest grid; the film is H0 + X^2/2 + D - R.
     None (default) leaves the smooth solve untouched.
     """

@@ -19,7 +19,6 @@ history and raise :class:`femgear.errors.ConvergenceError` on failure; no NaN re
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg as sla
@@ -27,9 +26,10 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from femgear.errors import ConvergenceError
-from femgear.physics.ehl.grid import prolongation
-from femgear.physics.ehl.krylov import gmres_right
-from femgear.physics.ehl.level import Level
+from femgear.physics.ehl.core.grid import prolongation
+from femgear.physics.ehl.core.history import History
+from femgear.physics.ehl.fe.krylov import gmres_right
+from femgear.physics.ehl.fe.level import Level
 
 MAX_DP = 1.0
 RESIDUAL_TOL = 1e-10  # scaled residual norm accepted as converged after a full step
@@ -43,32 +43,6 @@ LOCAL_RADIUS = 2  # elastic kernel kept in the local (smoother) Jacobian
 # that a solve does not depend on the machine's load (it did: results varied by ~1e-10 and a
 # thermal loop once failed on one run and passed on the next).
 REBUILD_KRYLOV, REBUILD_MIN, REBUILD_GROWTH = 30, 8, 2.0
-
-
-@dataclass
-class History:
-    """Per Newton iteration: scaled residual norm, relative load error, step, Krylov its,
-    level size, and the largest pressure component |dP| of the Newton direction before
-    damping with the node where it occurs (``max_dp``, ``max_dp_at`` = [X, Y]): a solve
-    whose steps are cut by the |dP| cap says there where its linear model fails. Multigrid
-    cycles with spike elimination (:mod:`femgear.physics.ehl.eliminate`) add ``eliminated``: the
-    local residual |F_S| left by each elimination."""
-
-    residual: list = field(default_factory=list)
-    load_error: list = field(default_factory=list)
-    step: list = field(default_factory=list)
-    krylov: list = field(default_factory=list)
-    level: list = field(default_factory=list)
-    max_dp: list = field(default_factory=list)
-    max_dp_at: list = field(default_factory=list)
-    eliminated: list = field(default_factory=list)
-
-    def as_dict(self) -> dict:
-        return {k: list(v) for k, v in self.__dict__.items() if isinstance(v, list)}
-
-    def extend(self, other: History) -> None:
-        for k, v in other.as_dict().items():
-            getattr(self, k).extend(v)
 
 
 def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case: str):
@@ -183,7 +157,7 @@ def newton_dense(level: Level, PI: np.ndarray, H0: float, *, max_iter: int = 60,
 
     With ``reuse`` (a dict kept by the caller across the solves of a sequence), the LU
     factors of the last Jacobian of the same size are kept and the Newton system is
-    solved by right-preconditioned GMRES (:mod:`femgear.physics.ehl.krylov`) on the exact
+    solved by right-preconditioned GMRES (:mod:`femgear.physics.ehl.fe.krylov`) on the exact
     Jacobian preconditioned by them; the Jacobian is
     factorised again only when GMRES needs more than :data:`DENSE_REUSE_KRYLOV`
     iterations. A Newton step then costs O(n^2) instead of O(n^3)."""
@@ -223,7 +197,7 @@ def _dense_forcing(F: np.ndarray) -> float:
 
 
 def _reused_lu_direction(level: Level, lin, s, act, Kd, lu, F):
-    """Right-preconditioned GMRES (:func:`femgear.physics.ehl.krylov.gmres_right`) on the exact
+    """Right-preconditioned GMRES (:func:`femgear.physics.ehl.fe.krylov.gmres_right`) on the exact
     (row-scaled) dense-level Jacobian with ``lu`` as preconditioner; (dx, iterations) or
     (None, iterations) when it needs more than DENSE_REUSE_KRYLOV. The Jacobian is applied
     on full-length vectors (the boundary rows are dropped after the product): no sparse

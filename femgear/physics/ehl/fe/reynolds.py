@@ -38,7 +38,7 @@ Assembly.  The grid is uniform, so every element has the same reference tables (
 values and gradients at the 2 x 2 (Q1) or 2 (P1) Gauss points, scikit-fem's intorder-2
 rule and node/point order): the element matrices are einsum products of the
 quadrature-point coefficients with constant tables, summed into a CSR pattern fixed at
-construction (:class:`femgear.physics.ehl.stencil.UniformElements`); the same Q1/P1 Galerkin
+construction (:class:`femgear.physics.ehl.fe.stencil.UniformElements`); the same Q1/P1 Galerkin
 matrices as scikit-fem's assembly (tested to round-off), about ten times faster, which
 matters because the operator is rebuilt at every Newton trial.
 """
@@ -50,9 +50,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.rheology import Rheology
-from femgear.physics.ehl.stencil import UniformElements
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.fe.stencil import UniformElements
 
 BETA_SELF = 2.0 / np.pi**2 * 4.0 * np.log1p(np.sqrt(2.0))  # K_00 / h for the point kernel
 
