@@ -5,7 +5,7 @@
 Unit responses ζ_n per kelvin along the normal line of action (ΔT_f = 1 K with the shaft at 0, and
 ΔT_s = 1 K with the flank at 0) at the path positions of the 2-D level, for pinion and gear:
 ``analytic`` (free hollow disc), ``fe`` (3-tooth plane-stress section, P2) and, as a bracket for the
-3-D constraint, the same section in plane strain; then the 3-D body (:mod:`femgear.physics.body.thermal3d`)
+3-D constraint, the same section in plane strain; then the 3-D body (:mod:`femgear.physics.ltca.thermal`)
 at mid-face of the left helix, near its outer end (ζ = 0), at the groove/apex end (ζ = b) and its
 face mean (what ``physics.thermal = "fe3d"`` passes to the coupling loop), with the difference to
 the 2-D ``fe`` in %.  Cost (cold seconds, DOF, peak RSS) and the mesh convergence over the body
@@ -27,8 +27,8 @@ import numpy as np
 
 from femgear.edge.plot import save_figure
 from femgear.physics.body.thermal import flank_deviation, flank_displacement, solve_temperature, thermo_elastic
-from femgear.physics.body.thermal3d import thermal_units_3d
 from femgear.physics.geometry.gear import GearPair
+from femgear.physics.ltca.thermal import thermal_units_3d
 from femgear.physics.mesh.section import gear_section
 from femgear.physics.stiffness.pem import contact_geometry
 from femgear.scene import load_scene

@@ -17,7 +17,7 @@ Layers of ``femgear`` (low → high; ARCHITECTURE.md says why):
 base (errors, docfields, perf) · physics (the leaves: arrays, numbers, typed objects) · levels
 (one registry per sub-model: the only place that dispatches on a level name) · input (scene,
 rexs) · case (the Case, built once per run) · system (dynamics, coupling) · driver (results,
-rate, pipeline, summary) · edge (plot, io, sweep, cli; ``__main__``).
+rate, pipeline, summary) · edge (plot, io, run, sweep, cli; ``__main__``).
 
 The physics leaves form a DAG, read from what they compute:
 geometry (the gear) and excitation (errors, backlash) use no other leaf; mesh (gmsh sections
@@ -66,7 +66,7 @@ ORDER: dict[str, list[list[str]]] = {
                         ["lubrication", "wear"], ["ehl", "rating"], ["tehl", "ltca"]],
     "femgear.physics.ehl": [["core"], ["fe", "fd"], ["*"]],
     "femgear.system": [["dynamics"], ["coupling"]],
-    "femgear.edge": [["plot"], ["io"], ["sweep"], ["cli"]],
+    "femgear.edge": [["plot"], ["io"], ["run"], ["sweep"], ["cli"]],
 }
 
 # Upward edges other helpers of issue 27 are removing, as (importer, imported) module pairs.

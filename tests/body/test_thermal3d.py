@@ -8,9 +8,9 @@ import pytest
 
 from femgear.errors import SceneError
 from femgear.physics.body.thermal import flank_deviation
-from femgear.physics.body.thermal3d import thermal_units_3d
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.ltca.separation import tabulated_deviation
+from femgear.physics.ltca.thermal import thermal_units_3d
 from femgear.physics.stiffness.pem import contact_geometry
 from femgear.scene import load_scene
 
