@@ -1,4 +1,4 @@
-"""The scene's [roughness] keys reach the EHL film along the gear path (studies/roughness_scene.py)."""
+"""The scene's [roughness] keys reach the EHL film along the gear path (studies/ehl/roughness_scene.py)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The cheap part of the zoo matrix (``studies/zoo_matrix.py``): every cell of every zoo scene is either a
+"""The cheap part of the zoo matrix (``studies/validation/zoo_matrix.py``): every cell of every zoo scene is either a
 valid scene or refused up front with one line naming a key; the force-balance invariant the full matrix
 checks holds on the cheapest real run.  The runs of all cells: ``make test-slow`` / the study itself."""
 

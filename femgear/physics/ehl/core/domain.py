@@ -44,7 +44,7 @@ def default_domain(ratio: float = 1.0, H_hertz: float | None = None,
     the default inlet) keeps X = 0 on a node of every level (12 of the 16 level-0 intervals
     upstream), so that Hc is read at the centre on every level.
 
-    ``enlarge`` = (fx, fy), for domain-convergence studies (studies/ehl_elliptic_domain.py):
+    ``enlarge`` = (fx, fy), for domain-convergence studies (studies/ehl/ehl_elliptic_domain.py):
     the inlet times fx and the Y half-width times fy; the outlet is lengthened to the next
     length that keeps X = 0 on a level-0 node (a domain that moves the centre off the nodes
     reads Hc beside the centre: -1.7 % at (20, 10), lambda = 0.1, inlet x2), and the cells
@@ -79,7 +79,7 @@ def check_inlet(dom: Domain, expected: float, ratio: float) -> str | None:
 
 # the rigid film of a slender contact spreads along the contact line to |Y| ~ sqrt(2 H / lambda);
 # beyond this fraction of the domain's half-width the default domain truncates it and Hc is off
-# (studies/ehl_elliptic_regimes.py, studies/ehl_elliptic_domain.py: (20, 0) at lambda 0.1
+# (studies/ehl/ehl_elliptic_regimes.py, studies/ehl/ehl_elliptic_domain.py: (20, 0) at lambda 0.1
 # (ratio 0.34) 13 % low, (20, 10) at lambda 0.05 / 0.02 (0.52 / 0.81) 11 / 38 % low, but at
 # lambda 0.12-0.1 (0.43) 13-17 % HIGH (the enlarged inlet and sides take load off the centre);
 # (100, 10) (<= 0.28) unaffected)
