@@ -45,19 +45,19 @@ KEYS = (("gear", "displacement", "y"), ("gear", "velocity", "y"), ("gear", "disp
 
 def run(coarse: bool = False, workers: int = 2) -> dict:
     jobs = [ov + [f'physics.stiffness="{lv}"'] for lv in LEVELS for ov in CASES.values()]
-    cases = C.run_cases(jobs, coarse=coarse, workers=workers, series=False)
+    cases = C.run_cases(jobs, coarse=coarse, workers=workers, timed=True)
     out = {"coarse": coarse, "levels": {}}
     for i, lv in enumerate(LEVELS):
         rows = {}
         for j, name in enumerate(CASES):
-            c = cases[i * len(CASES) + j]
+            c, timings = cases[i * len(CASES) + j]
             rows[name] = {f"{m}.{q}.{ax}": C.amplitude(c, m, q, ax) for m, q, ax in KEYS}
-            rows[name]["converged"] = c["converged"]
-            rows[name]["lte_um"] = 1e6 * c["lte_peak_to_peak"]     # loaded TE p-p of the deviated flanks (ltca)
-            rows[name]["passes"] = len(c["history"].get("iteration", [])) - 1
-            rows[name]["wear_max_um"] = 1e6 * float(np.max(c["wear"])) if np.any(c["wear"]) else 0.0
-            rows[name]["pass_seconds"] = {k: float(np.median([t[k] for t in c["pass_timings"]]))
-                                          for k in ("ltca", "dynamics", "wear", "contact")} if c["pass_timings"] else {}
+            rows[name]["converged"] = c.coupled.converged
+            rows[name]["lte_um"] = 1e6 * c.coupled.state.lte_peak_to_peak     # loaded TE p-p of the deviated flanks (ltca)
+            rows[name]["passes"] = len(c.coupled.history.iteration) - 1
+            rows[name]["wear_max_um"] = 1e6 * float(np.max(C.wear(c)))
+            rows[name]["pass_seconds"] = {k: float(np.median([t[k] for t in timings]))
+                                          for k in ("ltca", "dynamics", "wear", "contact")} if timings else {}
         for name, r in rows.items():         # wear against the new gear, 45 K against thermal off
             base = rows["thermal off" if name == "45 K" else "new"]
             r["change_percent"] = {k: 100 * (r[k] / base[k] - 1) for k in (f"{m}.{q}.{ax}" for m, q, ax in KEYS)}

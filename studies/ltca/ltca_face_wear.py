@@ -50,15 +50,15 @@ def _cases() -> list[tuple[str, list[str]]]:
     return out
 
 
-def _depth_summary(case: dict) -> dict:
+def _depth_summary(case) -> dict:
     """Largest depth and where, face mean, mid/end ratio of the face field (the path field: uniform)."""
-    u = np.asarray(case["u"]) - case["u_pitch"]
-    wear = np.asarray(case["wear"])
-    if case.get("wear_face") is None:
+    u = case.case.path.u - case.case.pair.u_pitch
+    wear = C.wear(case)
+    if case.tribology.wear_face is None:
         j, k = np.unravel_index(np.argmax(wear), wear.shape)
         return {"max_um": 1e6 * wear[j, k], "member": ("pinion", "gear")[j], "helix": "both",
                 "u_mm": 1e3 * u[k], "zeta_mm": None, "face_mean_max_um": 1e6 * wear.max(), "mid_to_end": 1.0}
-    face, z = np.asarray(case["wear_face"]), np.asarray(case["face_grid"])
+    face, z = case.tribology.wear_face, case.tribology.face_grid
     j, s, k, m = np.unravel_index(np.argmax(face), face.shape)
     mid = np.argmin(np.abs(z - z[-1] / 2))
     col = face[j, s, k]
@@ -77,15 +77,14 @@ def _setup(coarse: bool):
     return CouplingSetup.from_case(build_case(load_scene(C.BASELINE, over)), n_phase=64 if coarse else 128)
 
 
-def worn_orders(setup, case: dict) -> int:
+def worn_orders(setup, case) -> int:
     """Mesh orders the LTCA resolves on the case's converged worn flanks (the ltca level's criterion,
     :func:`femgear.physics.ltca.level.resolved_orders`); the face runs band-limit their excitation to these, the
     path runs keep the unworn cycle's."""
     from femgear.physics.ltca.level import resolved_orders
     from femgear.system.coupling.loop import _removed_deviation
 
-    wear, zeta = np.asarray(case["wear"]), np.asarray(case["thermal_deviation"])
-    face = None if case.get("wear_face") is None else np.asarray(case["wear_face"])
+    wear, zeta, face = C.wear(case), C.thermal_deviation(case), case.tribology.wear_face
     o, info = setup.ltca["options"], setup.ltca
     return resolved_orders(info["model"], info["force"], info["modifications"], o["stagger"], o["n_line"],
                            _removed_deviation(setup, wear, zeta, face))[0]
@@ -127,13 +126,14 @@ def step_cost(setup) -> dict:
 
 def run(coarse: bool = False, workers: int = 2) -> dict:
     names, jobs = zip(*_cases())
-    cases = C.run_cases(list(jobs), coarse=coarse, workers=workers, series=False)
+    runs = C.run_cases(list(jobs), coarse=coarse, workers=workers, timed=True)
+    cases = [c for c, _ in runs]
     rows = {}
-    for name, c in zip(names, cases):
+    for name, (c, timings) in zip(names, runs):
         rows[name] = {"gear_y_um": C.amplitude(c, "gear", "displacement", "y"),
-                      "gear_vy": C.amplitude(c, "gear", "velocity", "y"), "lte_um": 1e6 * c["lte_peak_to_peak"],
-                      "passes": len(c["history"].get("iteration", [])) - 1, "converged": c["converged"],
-                      "wear_seconds": float(np.median([t["wear"] for t in c["pass_timings"]])) if c["pass_timings"]
+                      "gear_vy": C.amplitude(c, "gear", "velocity", "y"), "lte_um": 1e6 * c.coupled.state.lte_peak_to_peak,
+                      "passes": len(c.coupled.history.iteration) - 1, "converged": c.coupled.converged,
+                      "wear_seconds": float(np.median([t["wear"] for t in timings])) if timings
                       else 0.0, **_depth_summary(c)}
     new = rows["new"]
     setup = _setup(coarse)
@@ -151,10 +151,10 @@ def _plot(cases: dict):
     fig, axes = C.figure(len(CYCLES), 3, (13, 4 * len(CYCLES)))
     for row, n in enumerate(CYCLES):
         face, path = cases[f"face {n:.0e}"], cases[f"path {n:.0e}"]
-        u = 1e3 * (np.asarray(face["u"]) - face["u_pitch"])
-        z = 1e3 * np.asarray(face["face_grid"])
-        maps = [np.asarray(face["wear_face"])[0, 0], np.asarray(face["wear_face"])[0, 1],
-                np.repeat(np.asarray(path["wear"])[0][:, None], z.size, axis=1)]
+        u = 1e3 * (face.case.path.u - face.case.pair.u_pitch)
+        z = 1e3 * face.tribology.face_grid
+        maps = [face.tribology.wear_face[0, 0], face.tribology.wear_face[0, 1],
+                np.repeat(C.wear(path)[0][:, None], z.size, axis=1)]
         top = 1e6 * max(m.max() for m in maps)
         for ax, m, title in zip(axes[row], maps, ("face, left helix", "face, right helix", "path, both helices")):
             im = ax.pcolormesh(z, u, 1e6 * m, vmin=0, vmax=top, shading="gouraud", cmap="viridis")

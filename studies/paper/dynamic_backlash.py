@@ -53,17 +53,18 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
     cases = C.flank_cases(coarse, workers)
     rows = {}
     for label, c in cases.items():
-        b = c["b0"] + 0.5 * (c["drive_deviation"][0] + c["coast_deviation"][0])
+        drive, coast = C.deviation_tables(c)
+        b = c.case.backlash + 0.5 * (drive[0] + coast[0])
         d = np.diff(b)
         rows[label] = {"b_um": b * 1e6, "mean_um": float(b.mean() * 1e6), "min_um": float(b.min() * 1e6),
-                       "max_um": float(b.max() * 1e6), "crosses_b0": bool(b.min() < c["b0"] < b.max()),
+                       "max_um": float(b.max() * 1e6), "crosses_b0": bool(b.min() < c.case.backlash < b.max()),
                        "monotonic": bool(np.all(d >= 0) or np.all(d <= 0)),
-                       "max_wear_um": float(c["wear"].max() * 1e6),
-                       "max_thermal_um": float(c["thermal_deviation"].max() * 1e6)}
-    b0 = next(iter(cases.values()))["b0"]
+                       "max_wear_um": float(C.wear(c).max() * 1e6),
+                       "max_thermal_um": float(C.thermal_deviation(c).max() * 1e6)}
+    b0 = next(iter(cases.values())).case.backlash
     # the flank rise at which the mean thermal closing balances the mean wear opening (Δb is linear
     # in the deviation and the analytic ζ_T in the rise): derived from the two single cases, not run
-    dw, dt = (0.5 * (cases[k]["drive_deviation"][0] + cases[k]["coast_deviation"][0]) for k in ("wear", "thermal"))
+    dw, dt = (0.5 * sum(t[0] for t in C.deviation_tables(cases[k])) for k in ("wear", "thermal"))
     scale = -dw.mean() / dt.mean()
     b = b0 + dw + scale * dt
     rows["balanced"] = {"b_um": b * 1e6, "mean_um": float(b.mean() * 1e6), "min_um": float(b.min() * 1e6),

@@ -46,14 +46,15 @@ def run(coarse: bool = False, workers: int = 2, harmonics: int = 5) -> dict:
     cases = C.flank_cases(coarse, workers)
     rows = {}
     for label, c in cases.items():
-        e = np.asarray(c["drive_deviation"][0])
+        drive = C.deviation_tables(c)[0]
+        e = np.asarray(drive[0])
         fit, amps = harmonic_fit(e, harmonics)
         fluct = e - e.mean()
         rows[label] = {"e_um": e * 1e6, "fit_um": fit * 1e6, "mean_um": float(e.mean() * 1e6),
                        "peak_to_peak_um": float(np.ptp(e) * 1e6), "rms_fluctuation_um": float(np.sqrt(np.mean(fluct**2)) * 1e6),
                        "harmonic_amplitudes_um": amps * 1e6,
                        "fit_residual_rms_um": float(np.sqrt(np.mean((e - fit) ** 2)) * 1e6),
-                       "right_equals_left": bool(np.allclose(c["drive_deviation"][1], c["drive_deviation"][0]))}
+                       "right_equals_left": bool(np.allclose(drive[1], drive[0]))}
     n = len(next(iter(rows.values()))["e_um"])
     return {"rows": rows, "phase": np.arange(n) / n, "harmonics": harmonics, "coarse": coarse,
             "seconds": time.perf_counter() - t0}

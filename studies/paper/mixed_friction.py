@@ -54,7 +54,7 @@ def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
     t0 = time.perf_counter()
     labels = ["smooth"] + [f"{c:.0e} cycles" for c in CYCLES]
     jobs = [setup(0.0, 0.0)] + [setup(rq, c) for c in CYCLES]
-    cases = C.run_cases(jobs, coarse=coarse, workers=workers, series=False)
+    cases = C.run_cases(jobs, coarse=coarse, workers=workers)
     scene = load_scene(C.BASELINE, [f"roughness.rq={rq!r}"])
     case = build_case(scene)
     oil, solids = OilLaw.from_scene(scene), solids_of(scene)
@@ -62,10 +62,10 @@ def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
     rough = Roughness(rq, scene.roughness.eta_beta_sigma, scene.roughness.sigma_over_beta)
     rows = []
     for label, c in zip(labels, cases):
-        u, mu = np.asarray(c["u"]), np.asarray(c["mu"])
-        i = int(np.argmin(np.abs(u - c["u_pitch"])))
+        u, mu = np.asarray(c.case.path.u), np.asarray(c.tribology.friction_coefficient)
+        i = int(np.argmin(np.abs(u - c.case.pair.u_pitch)))
         kin = kinematics(case.pair, u, case.operating.pinion_speed)
-        w = np.asarray(c["load_per_length"])
+        w = np.asarray(c.tribology.load_per_length)
         lam = share = float("nan")
         if label != "smooth":
             def film(wf, Ef):
@@ -74,7 +74,7 @@ def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
             s = jgp_split(w[i], kin.R[i], film, E, rough)
             lam, share = float(s.film_parameter[0]), float(s.asperity_fraction[0])
         rows.append({"case": label, "mu_pitch": float(mu[i]), "mu_max": float(mu.max()), "mu_mean": float(mu.mean()),
-                     "lambda_pitch": lam, "asperity_share_pitch": share, "u": u, "mu": mu, "s": u - c["u_pitch"]})
+                     "lambda_pitch": lam, "asperity_share_pitch": share, "u": u, "mu": mu, "s": u - c.case.pair.u_pitch})
     return {"rows": rows, "rq": rq, "coarse": coarse, "seconds": time.perf_counter() - t0}
 
 

@@ -113,26 +113,19 @@ def rig_measures(t: np.ndarray, acc: np.ndarray, direction: np.ndarray, mesh_fre
 
 
 def rig_case(overrides: list[str], coarse: bool = False) -> dict:
-    """One coupled condition (as :func:`studies._common.coupled_case`) and its :func:`rig_measures`."""
-    from femgear.case import build_case
-    from femgear.scene import load_scene
-    from femgear.system.coupling import CouplingSetup, run_coupled
-
-    t0 = time.perf_counter()
-    paths = ["numerics.path_points=31"] if coarse else ["numerics.path_points=61"]
-    scene = load_scene(C.BASELINE, paths + list(overrides) + (list(C.COARSE) if coarse else []))
-    setup_ = CouplingSetup.from_case(build_case(scene), n_phase=64 if coarse else 128)
-    res = run_coupled(setup_, one_way=coarse)
-    r = res.state.dynamics.response
-    a = setup_.model.pair.alpha_wt
+    """One coupled condition through the pipeline (:func:`studies._common.run`) and its :func:`rig_measures`."""
+    result = C.run(overrides, coarse=coarse)
+    dyn = result.coupled.state.dynamics
+    r = dyn.response
+    a = result.case.pair.alpha_wt
     out = rig_measures(r.t, r.bearing_acceleration, np.array([math.sin(a), math.cos(a), 0.0]), r.mesh_frequency)
-    return {**out, "converged": res.converged, "iterations": len(res.history.iteration) - 1,
-            "resolved_orders": _resolved_orders(setup_), "seconds": time.perf_counter() - t0}
+    return {**out, "converged": result.coupled.converged, "iterations": len(result.coupled.history.iteration) - 1,
+            "resolved_orders": _resolved_orders(dyn.model), "seconds": result.seconds}
 
 
-def _resolved_orders(setup_) -> int | None:
+def _resolved_orders(model) -> int | None:
     """The mesh orders kept in the ``ltca`` tables (label "ltca:H" of :func:`femgear.system.dynamics.build.ltca_table`)."""
-    label = setup_.model.stiffness.label
+    label = model.stiffness.label
     return int(label.split(":")[1]) if label.startswith("ltca:") and label.split(":")[1].isdigit() else None
 
 

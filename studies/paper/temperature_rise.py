@@ -53,10 +53,10 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
     cases = C.run_cases([setup(r) for r in RISES.values()], coarse=coarse, workers=workers)
     rows = []
     for label, c in zip(RISES, cases):
-        row = {"case": label, "flank_temperature_rise_K": c["flank_temperature_rise"],
-               "max_thermal_deviation_um": float(np.abs(c["thermal_deviation"]).max() * 1e6),
-               "mesh_force_amplitude_N": c["amplitudes"]["mesh_force.L.amplitude"],
-               "mesh_force_mean_N": c["amplitudes"]["mesh_force.L.mean"], "seconds": c["seconds"]}
+        row = {"case": label, "flank_temperature_rise_K": c.tribology.flank_temperature_rise,
+               "max_thermal_deviation_um": float(np.abs(C.thermal_deviation(c)).max() * 1e6),
+               "mesh_force_amplitude_N": c.coupled.state.amplitudes["mesh_force.L.amplitude"],
+               "mesh_force_mean_N": c.coupled.state.amplitudes["mesh_force.L.mean"], "seconds": c.seconds}
         row.update({f"{m}.{q}.{ax}": C.amplitude(c, m, q, ax) for m, q, ax in C.AMPLITUDE_KEYS})
         rows.append(row)
     return {"rows": rows, "cases": cases, "coarse": coarse, "seconds": time.perf_counter() - t0}
@@ -78,9 +78,9 @@ def table(res: dict) -> str:
 
 def plot(res: dict) -> list:
     fig, ax = C.figure(2, 1, (9, 7))
-    ref = res["cases"][0]["series"]
+    ref = C.series(res["cases"][0])
     for label, c in zip(RISES, res["cases"]):
-        s = c["series"]
+        s = C.series(c)
         ax[0][0].plot(s["t"] * 1e3, s["mesh_force"], lw=0.8, label=label)
         n = min(len(s["t"]), len(ref["t"]))
         ax[1][0].plot(s["t"][:n] * 1e3, s["mesh_force"][:n] - ref["mesh_force"][:n], lw=0.8, label=label)
@@ -92,7 +92,7 @@ def plot(res: dict) -> list:
     paths = [C.save(fig, "temperature_rise", "mesh_force.png")]
     fig, ax = C.figure(1, 2)
     for label, c in zip(RISES, res["cases"]):
-        s = c["series"]
+        s = C.series(c)
         for j in range(2):                 # x, y
             ax[0][j].plot(s["gear.displacement"][:, j] * 1e6, s["gear.velocity"][:, j] * 1e3, lw=0.6, label=label)
     for j, axis in enumerate("xy"):

@@ -59,9 +59,9 @@ def run(coarse: bool = False, workers: int = 2, cycles: tuple[float, ...] = CYCL
     cases = C.run_cases([setup(n) for n in cycles], coarse=coarse, workers=workers)
     rows = []
     for n, c in zip(cycles, cases):
-        row = {"cycles": n, "max_wear_pinion_um": float(c["wear"][0].max() * 1e6),
-               "max_wear_gear_um": float(c["wear"][1].max() * 1e6), "mu_mean": float(np.mean(c["mu"])),
-               "seconds": c["seconds"]}
+        row = {"cycles": n, "max_wear_pinion_um": float(C.wear(c)[0].max() * 1e6),
+               "max_wear_gear_um": float(C.wear(c)[1].max() * 1e6), "mu_mean": float(np.mean(c.tribology.friction_coefficient)),
+               "seconds": c.seconds}
         row.update({f"{m}.{q}.{ax}": C.amplitude(c, m, q, ax) for m, q, ax in C.AMPLITUDE_KEYS})
         rows.append(row)
     ref = rows[-1]
@@ -107,17 +107,17 @@ def plot(res: dict) -> list:
     fig, ax = C.figure(1, 2)
     for c, r in zip(cases, rows):
         for j in range(2):                 # pinion, gear
-            ax[0][j].plot(c["u"] * 1e3, c["wear"][j] * 1e6, label=f"{r['cycles']:.0e} cycles")
+            ax[0][j].plot(c.case.path.u * 1e3, C.wear(c)[j] * 1e6, label=f"{r['cycles']:.0e} cycles")
     for j, name in enumerate(("pinion", "gear")):
-        ax[0][j].axvline(cases[0]["u_pitch"] * 1e3, color="k", lw=0.5)
+        ax[0][j].axvline(cases[0].case.pair.u_pitch * 1e3, color="k", lw=0.5)
         ax[0][j].set(title=f"{name}: wear depth along the path (Fig. 15)", xlabel="path position u [mm]",
                      ylabel="wear depth [µm]")
         ax[0][j].legend(fontsize=7)
     paths.append(C.save(fig, "wear_cycles", "wear_depth.png"))
     fig, ax = C.figure(1, 2)
     for c, r in zip(cases, rows):
-        ax[0][0].plot(c["u"] * 1e3, c["mu"], label=f"{r['cycles']:.0e}")
-        ax[0][1].plot(c["u"] * 1e3, c["temperature_rise"], label=f"{r['cycles']:.0e}")
+        ax[0][0].plot(c.case.path.u * 1e3, c.tribology.friction_coefficient, label=f"{r['cycles']:.0e}")
+        ax[0][1].plot(c.case.path.u * 1e3, c.tribology.temperature_rise, label=f"{r['cycles']:.0e}")
     ax[0][0].set(title="friction coefficient along the path (Fig. 16)", xlabel="u [mm]", ylabel="μ [-]")
     ax[0][1].set(title="contact temperature rise", xlabel="u [mm]", ylabel="ΔT [K]")
     for a in ax[0]:
