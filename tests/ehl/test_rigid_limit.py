@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from studies import ehl_rigid_limit as study  # noqa: E402
+from studies.ehl import ehl_rigid_limit as study  # noqa: E402
 
 
 def test_brewe_hamrock_taylor_coefficient():

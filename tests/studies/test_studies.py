@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from studies import _common as C
-from studies import dynamic_backlash, meshing_error, rig_conditions, temperature_rise, wear_cycles
+from studies.paper import dynamic_backlash, meshing_error, rig_conditions, temperature_rise, wear_cycles
 
 
 def _finite_amplitudes(row: dict) -> bool:

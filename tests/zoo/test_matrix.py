@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from studies import zoo_matrix as zm
+from studies.validation import zoo_matrix as zm
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = zm.scenes()
