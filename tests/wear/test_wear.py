@@ -92,9 +92,9 @@ def test_run_with_archard_wear_reports_depths(baseline_path, tmp_path):
 
     scene = load_scene(baseline_path, ['physics.wear="archard"', "wear.cycles=2e5", 'physics.dynamics="none"',
                                        'physics.coupling="one-way"'])
-    summary = run_scene(scene, tmp_path, plots=False).summary
-    assert summary["wear"]["cycles"] == pytest.approx(2e5)
-    assert 0 < summary["wear"]["max_depth_pinion"] < 1e-5
+    t = run_scene(scene, tmp_path, plots=False).result.tribology
+    assert t.wear_cycles == pytest.approx(2e5)
+    assert 0 < t.wear[0].max() < 1e-5
     assert (tmp_path / "wear_checkpoint.npz").exists()
 
 
