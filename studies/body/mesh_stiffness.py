@@ -106,9 +106,10 @@ def summary(res: dict) -> dict:
             "pem_mean_transverse_over_iso_c_gamma_alpha": pem_t / k_iso_t}
 
 
-if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    res = run(setup(*args[:1]), coarse="--coarse" in sys.argv)
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    args = [a for a in argv if not a.startswith("--")]
+    res = run(setup(*args[:1]), coarse="--coarse" in argv)
     out = plot(res)
     s = summary(res)
     print(f"{'level':>8} {'seconds':>8} {'mean L [N/m]':>13} {'mean L+R':>11} {'ripple L':>9} {'ripple L+R':>10}")
@@ -120,3 +121,8 @@ if __name__ == "__main__":
         print(f"  {x:+7.3f}: {100 * d:+6.2f} %")
     print(f"PEM mean (transverse) / ISO c_γα b = {s['pem_mean_transverse_over_iso_c_gamma_alpha']:.3f};  plot: {out}")
     print(json.dumps(s))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -86,12 +86,13 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "tooth_thermal.png") -> Pa
     return save_figure(fig, path)
 
 
-if __name__ == "__main__":
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
     from femgear.physics.body.vtk import write_vtu
 
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    args = [a for a in argv if not a.startswith("--")]
     scene = setup(*args[:1])
-    res = run(scene, coarse="--coarse" in sys.argv)
+    res = run(scene, coarse="--coarse" in argv)
     png = plot(res)
     mat = scene.material
     vtu = write_vtu(res["last_pinion"], ROOT / "out" / "tooth_thermal_pinion.vtu", mat.youngs_modulus,
@@ -108,3 +109,8 @@ if __name__ == "__main__":
         js[name] = {"pitch_analytic_um": (m["analytic"][:, ip] * 1e6).tolist(),
                     "pitch_fe_um": (m["fe"][:, ip] * 1e6).tolist(), "fe_seconds": m["fe_seconds"].tolist()}
     print(json.dumps(js))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -100,6 +100,11 @@ def print_member(name, d2, r3, units, level):
                   f"{(r['mid'][i] / fe[i] - 1) * 100:10.2f} {(r['face_mean'][i] / fe[i] - 1) * 100:12.2f}")
 
 
+def setup(scene_path=ROOT / "studies" / "paper_baseline.toml"):
+    """The scene of the study (default: the paper's pair)."""
+    return load_scene(scene_path)
+
+
 def run(scene, levels=(0, 1, 2), groove=0.0) -> dict:
     pair = GearPair.from_scene(scene)
     u = np.linspace(pair.u_start, pair.u_end, 21)
@@ -172,7 +177,7 @@ def main(argv=None) -> int:
     ap.add_argument("--groove", type=float, default=0.0)
     a = ap.parse_args(argv)
     levels = tuple(int(x) for x in a.levels.split(","))
-    res = run(load_scene(a.scene), levels, a.groove)
+    res = run(setup(a.scene), levels, a.groove)
     conv = convergence(res, levels) if len(levels) > 1 else {}
     print(f"figure: {plot(res, levels[-1])}")
     summary = {"levels": list(levels), "convergence": conv}

@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import sys
 import time
 
 from femgear.physics.contact.film import hamrock_dowson_central, nvm_central
@@ -28,14 +29,15 @@ from femgear.physics.ehl.point import solve_point
 NVM_RANGE = (1.0 / 16.0, 1.0)
 
 
-def setup() -> argparse.Namespace:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The cases, ratios, level and method of the command line ``argv`` (defaults: the documented table)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--level", type=int, default=3)
     ap.add_argument("--cases", nargs="*", default=["20,10", "100,10"])
     ap.add_argument("--ratios", nargs="*", type=float, default=[0.5, 0.2, 0.1, 0.05, 0.02])
     ap.add_argument("--method", default="auto", choices=("auto", "fas", "newton"),
                     help="point solver (auto: the multigrid inside its range, Newton elsewhere)")
-    return ap.parse_args()
+    return ap.parse_args(argv)
 
 
 def hd_moes(M: float, L: float, ratio: float) -> float:
@@ -61,8 +63,8 @@ def one(M: float, L: float, ratio: float, level: int, method: str = "auto") -> d
             "method": r.levels[-1].get("method", "newton")}
 
 
-def main() -> None:
-    args = setup()
+def run(args: argparse.Namespace) -> list[dict]:
+    """Every (M, L) of ``args.cases``: the circular contact, then each ratio (a failed case is a row with its error)."""
     rows = []
     print(f"{'M':>5} {'L':>4} {'lam':>6} {'Hc':>7} {'NVM':>7} {'dNVM%':>7} {'HD':>7} {'dHD%':>7} "
           f"{'grid%':>6} {'s':>6} {'s(lam=1)':>8} range")
@@ -83,11 +85,18 @@ def main() -> None:
                   f"{row['hd']:7.4f} {100 * row['dev_hd']:7.2f} {100 * row['grid_change']:6.2f} "
                   f"{row['seconds']:6.1f} {circ['seconds']:8.1f} {'in' if row['in_nvm_range'] else 'OUT'}",
                   flush=True)
+    return rows
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    rows = run(args)
     os.makedirs("out", exist_ok=True)
     with open("out/ehl_elliptic.json", "w") as f:
         json.dump(rows, f, indent=1)
     print(json.dumps({"study": "ehl_elliptic", "level": args.level, "cases": len(rows)}))
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

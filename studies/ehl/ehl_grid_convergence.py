@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 
 from femgear.physics.contact.film import nvm_central
 from femgear.physics.ehl.point import solve_point
@@ -63,5 +64,11 @@ def run(args: argparse.Namespace) -> list[dict]:
     return table
 
 
-if __name__ == "__main__":
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
     print(json.dumps({"study": "ehl_grid_convergence", "cases": run(setup())}, separators=(",", ":")))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -31,7 +31,9 @@ OUT = Path(__file__).resolve().parents[2] / "out" / "roughness"
 M, L, X_START = 20.0, 10.0, -2.0
 
 
-def run(level: int = 3) -> dict:
+def setup(level: int = 3) -> dict:
+    """The paper's single peak (amplitude 20 % of the smooth central film, half-width 0.25 a) starting at
+    X_START, and the time steps of the snapshots at X = -1, -0.5, 0, 0.5 on grid ``level``."""
     dom = default_domain()
     h = (dom.x1 - dom.x0) / (16 * 2**level)
     Hc = 0.4965  # smooth central film at (20, 10), 129^2, Hertzian units (measured; only a scale)
@@ -40,8 +42,13 @@ def run(level: int = 3) -> dict:
     def feature(X, Y):
         return paper_peak(X, Y, amplitude=A, half_width=lb, x0=X_START)
 
-    at = (-1.0, -0.5, 0.0, 0.5)
-    snaps = tuple(int(round((p - X_START) / h)) for p in at)
+    snaps = tuple(int(round((p - X_START) / h)) for p in (-1.0, -0.5, 0.0, 0.5))
+    return {"level": level, "domain": dom, "h": h, "A": A, "lb": lb, "feature": feature, "snapshots": snaps}
+
+
+def run(level: int = 3) -> dict:
+    s = setup(level)
+    dom, h, A, lb, feature, snaps = s["domain"], s["h"], s["A"], s["lb"], s["feature"], s["snapshots"]
     t0 = time.perf_counter()
     r = solve_point_transient(M, L, feature, T_end=1.5 - X_START, level=level, snapshots=snaps)
     nx = int(round((dom.x1 - dom.x0) / h)) + 1
@@ -85,10 +92,16 @@ def _plot(r, nx, centre, path) -> None:
     fig.savefig(path, dpi=120)
 
 
-if __name__ == "__main__":
-    level = next((int(a.split("=")[1]) for a in sys.argv[1:] if a.startswith("--level=")), 3)
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    level = next((int(a.split("=")[1]) for a in argv if a.startswith("--level=")), 3)
     res = run(level)
     print(f"Hmin {res['Hmin_min']:.4f} (smooth {res['Hmin_smooth']:.4f}), Pmax {res['Pmax_max']:.3f} "
           f"(smooth {res['Pmax_smooth']:.3f}), {res['steps']} steps, {res['newton_mean']:.2f} Newton/step, "
           f"{res['seconds']:.0f} s")
     print(json.dumps(res))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

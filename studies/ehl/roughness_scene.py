@@ -88,8 +88,13 @@ def pitch_extras(scene, w, R, ue, srr, E_red, oil, base: dict) -> dict:
             "p_synthetic": syn.p.tolist()}
 
 
+def setup(overrides: tuple[str, ...] = ()):
+    """The baseline scene with the study's roughness (DEFAULTS) and ``overrides``."""
+    return scene_from_dict(read_toml(ROOT / "studies" / "paper_baseline.toml"), [*DEFAULTS, *overrides], warn=False)
+
+
 def run(positions: int = 9, overrides: tuple[str, ...] = ()) -> dict:
-    scene = scene_from_dict(read_toml(ROOT / "studies" / "paper_baseline.toml"), [*DEFAULTS, *overrides], warn=False)
+    scene = setup(overrides)
     cp = contact_along_path(scene, n=positions)
     E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
     w = cp.line_load if cp.line_load is not None else np.full(cp.kin.u.shape, cp.load_per_length)

@@ -38,6 +38,7 @@ import importlib.util
 import itertools
 import json
 import math
+import sys
 from pathlib import Path
 
 from femgear.errors import ConvergenceError
@@ -56,7 +57,24 @@ def load_for(ph: float) -> float:
     return 2.0 * math.pi * case.R * ph**2 / case.E_RED
 
 
-def run(ph: float, ue: float, srr: float, model: str, x0: float) -> dict:
+def setup(ph: str = "0.5,1,1.5", ue: str = "5,10", srr: str = "0,0.5,1", model: str = "eyring,newtonian",
+          x0: str = "-4.5,-8") -> list[tuple]:
+    """The cases (p_h [Pa], u_e, SRR, model, x0) of the comma-separated lists (p_h in GPa)."""
+    return [(p * 1e9, u, s, m, x) for p, u, m, x, s in itertools.product(floats(ph), floats(ue), model.split(","),
+                                                                       floats(x0), floats(srr))]
+
+
+def run(cases: list[tuple] | None = None, echo=None) -> list[dict]:
+    """:func:`solve` of every case (default: :func:`setup`'s); ``echo(row)`` after each."""
+    rows = []
+    for c in setup() if cases is None else cases:
+        rows.append(solve(*c))
+        if echo:
+            echo(rows[-1])
+    return rows
+
+
+def solve(ph: float, ue: float, srr: float, model: str, x0: float) -> dict:
     """One TEHL solve and Gupta's factor in both SRR conventions."""
     level, cells = DOMAINS[x0]
     eta0 = float(case.OIL.viscosity(0.0, case.T0))
@@ -85,7 +103,7 @@ def floats(text: str) -> list[float]:
     return [float(v) for v in text.split(",")]
 
 
-def main() -> None:
+def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--ph", default="0.5,1,1.5", help="Hertz pressures [GPa]")
     ap.add_argument("--ue", default="5,10", help="entrainment speeds [m/s]")
@@ -93,19 +111,16 @@ def main() -> None:
     ap.add_argument("--model", default="eyring,newtonian")
     ap.add_argument("--x0", default="-4.5,-8", help=f"inlet starts, among {sorted(DOMAINS)}")
     ap.add_argument("--json", default=str(ROOT / "out" / "tehl_gupta.json"))
-    args = ap.parse_args()
+    args = ap.parse_args(argv)
     print(f"{'ph':>4} {'ue':>5} {'L':>5} {'model':>9} {'x0':>5} {'SRR':>4} {'phi':>6} {'hc_iso_um':>9} {'its':>4} "
           f"{'G':>6} {'phi/G':>6} {'G/2':>6} {'phi/G2':>6}")
-    rows = []
-    for ph, ue, model, x0, srr in itertools.product(floats(args.ph), floats(args.ue), args.model.split(","),
-                                                    floats(args.x0), floats(args.srr)):
-        rows.append(run(ph * 1e9, ue, srr, model, x0))
-        print(fmt(rows[-1]), flush=True)
+    rows = run(setup(args.ph, args.ue, args.srr, args.model, args.x0), echo=lambda r: print(fmt(r), flush=True))
     out = Path(args.json)
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(json.dumps(rows, indent=1))
     print(f"wrote {out}")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -43,8 +43,13 @@ KEYS = (("gear", "displacement", "y"), ("gear", "velocity", "y"), ("gear", "disp
         ("gear", "velocity", "x"))
 
 
+def setup() -> list[list[str]]:
+    """The runs: each case's overrides at each stiffness level (LEVELS × CASES, in that order)."""
+    return [ov + [f'physics.stiffness="{lv}"'] for lv in LEVELS for ov in CASES.values()]
+
+
 def run(coarse: bool = False, workers: int = 2) -> dict:
-    jobs = [ov + [f'physics.stiffness="{lv}"'] for lv in LEVELS for ov in CASES.values()]
+    jobs = setup()
     cases = C.run_cases(jobs, coarse=coarse, workers=workers, timed=True)
     out = {"coarse": coarse, "levels": {}}
     for i, lv in enumerate(LEVELS):

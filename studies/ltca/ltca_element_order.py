@@ -27,7 +27,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _baseline():
+def setup():
     from femgear.physics.geometry.gear import GearPair
     from femgear.scene import load_scene
 
@@ -48,7 +48,7 @@ def _pinion_spec(scene, pair, level: int):
 def run(quick: bool = False) -> list[dict]:
     from femgear.physics.ltca.compliance import member_compliance
 
-    scene, pair = _baseline()
+    scene, pair = setup()
     cases = [(1, 0), (1, 1)] + ([] if quick else [(1, 2), (1, 3)]) + [(2, 0)] + ([] if quick else [(2, 1)])
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -71,7 +71,7 @@ def run_ltca() -> list[dict]:
     and 3 and P2 at level 0 (the P2 build takes ~12 min on 2 shared cores)."""
     from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
 
-    scene, pair = _baseline()
+    scene, pair = setup()
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
     rows = []
     for order, level in ((1, 1), (1, 3), (2, 0)):
@@ -101,7 +101,7 @@ def run_split(max_p1: int = 5, max_p2: int = 1) -> list[dict]:
     from femgear.physics.ltca.flank import half_thickness, roll_range
     from femgear.physics.mesh.segment import member_body
 
-    scene, pair = _baseline()
+    scene, pair = setup()
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     r0, r1 = roll_range(pair, 1)
     gr, gz = np.linspace(r0, r1, 7), np.linspace(0.0, pair.b, 9)

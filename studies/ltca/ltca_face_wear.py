@@ -42,7 +42,7 @@ CYCLES = (1e6, 3e6)
 FIELDS = ("path", "face")
 
 
-def _cases() -> list[tuple[str, list[str]]]:
+def setup() -> list[tuple[str, list[str]]]:
     mods = list(TEST_GEAR_MODIFICATIONS)
     out = [("new", mods + ["wear.cycles=0.0"])]
     for n in CYCLES:
@@ -125,7 +125,7 @@ def step_cost(setup) -> dict:
 
 
 def run(coarse: bool = False, workers: int = 2) -> dict:
-    names, jobs = zip(*_cases())
+    names, jobs = zip(*setup())
     runs = C.run_cases(list(jobs), coarse=coarse, workers=workers, timed=True)
     cases = [c for c, _ in runs]
     rows = {}
@@ -136,12 +136,12 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
                       "wear_seconds": float(np.median([t["wear"] for t in timings])) if timings
                       else 0.0, **_depth_summary(c)}
     new = rows["new"]
-    setup = _setup(coarse)
+    coupling = _setup(coarse)
     for r, c in zip(rows.values(), cases):
         r["change_percent"] = {k: 100 * (r[k] / new[k] - 1) for k in ("gear_y_um", "gear_vy")}
-        r["worn_orders"] = worn_orders(setup, c)
-        r["unworn_orders"] = int(setup.ltca["resolved_orders"])
-    out = {"coarse": coarse, "rows": rows, "cost": step_cost(setup)}
+        r["worn_orders"] = worn_orders(coupling, c)
+        r["unworn_orders"] = int(coupling.ltca["resolved_orders"])
+    out = {"coarse": coarse, "rows": rows, "cost": step_cost(coupling)}
     out["png"] = str(_plot(dict(zip(names, cases))))
     return out
 

@@ -76,12 +76,17 @@ def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
     return out
 
 
-def run() -> dict:
+def setup():
+    """The baseline scene and its pair."""
     from femgear.physics.geometry import GearPair
     from femgear.scene import load_scene
 
     scene = load_scene(C.BASELINE)
-    pair = GearPair.from_scene(scene)
+    return scene, GearPair.from_scene(scene)
+
+
+def run() -> dict:
+    scene, pair = setup()
     return {name: _model_rows(pair, scene, *args) for name, args in MODELS.items()}
 
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -84,13 +85,19 @@ def run(fillet: bool = False) -> tuple[str, list[dict]]:
     return "\n".join(parts), rows
 
 
-if __name__ == "__main__":
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--fillet", action="store_true", help="also solve the FE fillet stress")
-    args = ap.parse_args()
+    args = ap.parse_args(argv)
     md, rows = run(args.fillet)
     print(md)
     out = ROOT / "out"
     out.mkdir(exist_ok=True)
     (out / "rating_table.md").write_text(md)
     (out / "rating_table.json").write_text(json.dumps(rows, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

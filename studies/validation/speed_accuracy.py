@@ -230,8 +230,9 @@ _KEY = {"stiffness": "stiffness", "thermal": "thermal", "lubrication μ(u)": "lu
         "EHL point (20,10)": "ehl_point", "dynamics integrator": "dynamics", "coupled case": "coupled"}
 
 
-if __name__ == "__main__":
-    args = setup(sys.argv[1:])
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    args = setup(argv)
     rows = run(args)
     plot(rows, OUT)
     text = table(rows)
@@ -239,4 +240,8 @@ if __name__ == "__main__":
     if args.readme:
         update_readme(text)
     print(json.dumps({"study": "speed_accuracy", "quick": args.quick, "rows": rows}, default=float))
-    sys.exit(0 if all(math.isfinite(r["error"]) for r in rows) else 1)
+    return 0 if all(math.isfinite(r["error"]) for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
