@@ -23,6 +23,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import sys
 import time
 
 import numpy as np
@@ -68,14 +69,19 @@ def extrapolate(rows: list[dict]) -> float | None:
     return h2 - c / k2
 
 
-def main() -> None:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed (defaults: the documented study)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--cases", nargs="*", default=["20,10", "100,10"])
     ap.add_argument("--ratios", nargs="*", type=float, default=[0.5, 0.2, 0.1])
     ap.add_argument("--ks", nargs="*", type=float, default=[1.0, 2.0, 3.0])
     ap.add_argument("--levels", nargs="*", type=int, default=[3, 4])
     ap.add_argument("--method", default="fas")
-    args = ap.parse_args()
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> list[dict]:
+    """Every (case, ratio, enlargement k, level): Hc and the load shares, with Hc(k -> inf) per (case, ratio)."""
     out = []
     print(f"{'M':>4} {'L':>3} {'lam':>5} {'k':>4} {'lev':>3} {'Hc':>7} {'grid%':>6} {'Hmin':>6} "
           f"{'Pmax':>6} {'P00':>6} {'inlet':>6} {'side':>6} {'s':>6}")
@@ -99,12 +105,19 @@ def main() -> None:
             ext = "-" if inf is None else f"{inf:.3f} ({100 * (inf / nvm - 1):+.1f} % NVM{hd_pc})"
             print(f"  -> ({M:g}, {L:g}) lambda {lam:g}: Hc(k -> inf) {ext}; NVM {nvm:.3f}, HD {hd:.3f}", flush=True)
             out.append({"M": M, "L": L, "ratio": lam, "rows": rows, "Hc_inf": inf, "NVM": nvm, "HD": hd})
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    out = run(args)
     os.makedirs("out", exist_ok=True)
     with open("out/ehl_elliptic_domain.json", "w") as f:
         json.dump(out, f, indent=1)
         f.write("\n")
     print(json.dumps([{k: o[k] for k in ("M", "L", "ratio", "Hc_inf", "NVM", "HD")} for o in out]))
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

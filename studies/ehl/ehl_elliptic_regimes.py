@@ -29,6 +29,7 @@ import argparse
 import json
 import math
 import os
+import sys
 
 from femgear.physics.contact.film import nvm_central
 from femgear.physics.ehl.core import params as pr
@@ -71,7 +72,8 @@ def one(M: float, L: float, lam: float, level: int, enlarge: tuple[float, float]
     return row
 
 
-def main() -> None:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed (defaults: the documented study)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--cases", nargs="*", default=["20,10", "20,0", "50,10"])
     ap.add_argument("--ratios", nargs="*", type=float,
@@ -79,7 +81,11 @@ def main() -> None:
     ap.add_argument("--level", type=int, default=3)
     ap.add_argument("--enlarge", default=None, help="fx,fy: also solve on the enlarged domain")
     ap.add_argument("--plot", action="store_true", help="write out/ehl_elliptic_regimes.png")
-    args = ap.parse_args()
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> list[dict]:
+    """Hc against lambda per (M, L) with NVM's regime films (and the enlarged domain with ``--enlarge``)."""
     enl = tuple(float(v) for v in args.enlarge.split(",")) if args.enlarge else None
     rows = []
     print(f"{'M':>4} {'L':>3} {'lam':>6} {'Hc':>6} {'Hc_big':>6} {'NVM':>6} {'dNVM%':>6} "
@@ -93,12 +99,19 @@ def main() -> None:
             print(f"{M:4g} {L:3g} {lam:6.3g} {row['Hc']:6.2f} {big} {row['NVM']:6.2f} "
                   f"{100 * (row['Hc'] / row['NVM'] - 1):6.1f} {row['RI']:6.2f} {row['EI']:5.2f} "
                   f"{row['RP']:5.2f} {row['EP']:5.2f} {row['Hh_over_a2']:9.2f}", flush=True)
+    return rows
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    rows = run(args)
     os.makedirs("out", exist_ok=True)
     with open("out/ehl_elliptic_regimes.json", "w") as f:
         json.dump(rows, f, indent=1)
         f.write("\n")
     if args.plot:
         plot(rows)
+    return 0
 
 
 def plot(rows: list[dict]) -> None:
@@ -130,4 +143,4 @@ def plot(rows: list[dict]) -> None:
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -27,6 +27,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import argparse
 import json
 import math
+import sys
 import time
 import tracemalloc
 
@@ -79,20 +80,32 @@ def show(row: dict) -> None:
             print(f"    {name}: " + " / ".join(f"{s[i]:.5f}" for s in seq) + f"  (observed order {order})")
 
 
-def main() -> None:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed (defaults: the documented study)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--levels", type=int, nargs="+", default=[2, 3, 4])
     ap.add_argument("--cases", nargs="+", default=["20,20", "100,20"])
     ap.add_argument("--method", default="newton", choices=["newton", "fas", "auto"])
-    args = ap.parse_args()
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> list[dict]:
+    """Every (M, L) on every level by ``args.method``."""
     rows = []
     for case in args.cases:
         M, L = (float(v) for v in case.split(","))
         for level in args.levels:
             rows.append(one(M, L, level, args.method))
             show(rows[-1])
+    return rows
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    rows = run(args)
     print(json.dumps({"study": "ehl_point_high_alpha", "rows": rows}))
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

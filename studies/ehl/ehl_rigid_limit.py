@@ -20,6 +20,7 @@ import argparse
 import json
 import math
 import os
+import sys
 import time
 from pathlib import Path
 
@@ -65,12 +66,17 @@ def solve_rigid_limit(M: float, R: float, lmax: int, rigid: bool = True) -> dict
             "order": order, "load_error": r.load_error, "seconds": time.perf_counter() - t0}
 
 
-def main() -> None:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed (defaults: the documented study)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--lmax", type=int, default=4)
     ap.add_argument("--radii", type=float, nargs="+", default=[8.0, 16.0, 32.0])
     ap.add_argument("--elastic", type=float, default=None, help="also the elastic solver at this M")
-    args = ap.parse_args()
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> tuple:
+    """The rigid (and elastic) solves per domain radius, the 1/R fits to the infinite domain, the reference films."""
     rows = [solve_rigid_limit(M_RIGID, R, args.lmax) for R in args.radii]
     if args.elastic:
         rows += [solve_rigid_limit(args.elastic, R, args.lmax, rigid=False) for R in args.radii]
@@ -92,11 +98,18 @@ def main() -> None:
         print(f"{key}: H M^2 -> {s['HM2_infinite_domain']:.2f} (H_inf - {s['C']:.1f}/R - D/R^2); "
               f"Brewe-Hamrock-Taylor {bht:.2f} ({s['HM2_infinite_domain'] / bht - 1:+.1%}), "
               f"NVM asymptote {nvm:.2f} ({s['HM2_infinite_domain'] / nvm - 1:+.1%})")
+    return rows, summary, bht, nvm
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    rows, summary, bht, nvm = run(args)
     OUT.mkdir(parents=True, exist_ok=True)
     (OUT / "rigid_limit.json").write_text(json.dumps(
         {"rows": rows, "summary": summary, "brewe_hamrock_taylor": bht, "nvm": nvm}, indent=1))
     print(f"wrote {OUT / 'rigid_limit.json'}")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -58,7 +58,7 @@ def cases(quick: bool) -> list[dict]:
     return out
 
 
-def run_case(c: dict) -> dict:
+def solve_case(c: dict) -> dict:
     speed = surface_speed(c.get("srr", 0.0), "pinion")
     t0 = time.perf_counter()
     ratio = measure_amplitude_reduction(c["M"], c["L"], c["nabla"], amplitude=c.get("amp", 0.1),
@@ -109,21 +109,33 @@ def plot(rows: list[dict], peak: dict, path: Path) -> None:
     fig.savefig(path, dpi=120)
 
 
-def main(argv: list[str]) -> dict:
-    quick = "--quick" in argv
-    workers = next((int(a.split("=")[1]) for a in argv if a.startswith("--workers=")), 2)
+def setup(quick: bool = False) -> list[dict]:
+    """The transient line cases (:func:`cases`; ``quick``: the short list)."""
+    return cases(quick)
+
+
+def run(quick: bool = False, workers: int = 2) -> dict:
+    """Every case's amplitude reduction (a pool of ``workers``) and the peak passage."""
     t0 = time.perf_counter()
     with ProcessPoolExecutor(max_workers=workers) as pool:
         fut_peak = pool.submit(peak_passage)
-        rows = list(pool.map(run_case, cases(quick)))
+        rows = list(pool.map(solve_case, setup(quick)))
         peak = fut_peak.result()
+    return {"rows": rows, "peak": peak, "seconds": time.perf_counter() - t0}
+
+
+def main(argv: list[str]) -> dict:
+    quick = "--quick" in argv
+    workers = next((int(a.split("=")[1]) for a in argv if a.startswith("--workers=")), 2)
+    res = run(quick, workers)
+    rows, peak = res["rows"], res["peak"]
     print(f"{'M':>5} {'L':>4} {'nabla':>6} {'A_i/Hc':>6} {'level':>5} {'c':>5} {'Ad/Ai':>7} {'fit':>6} {'s':>6}")
     for r in rows:
         print(f"{r['M']:5g} {r['L']:4g} {r['nabla']:6g} {r.get('amp', 0.1):6g} {r.get('level', 5):5d} "
               f"{r['speed']:5.2f} {r['Ad_Ai']:7.3f} {r['fit']:6.3f} {r['seconds']:6.1f}")
     OUT.mkdir(parents=True, exist_ok=True)
     summary = {"rows": rows, "peak_Hmin_min": min(peak["Hmin"]) / peak["Hc"],
-               "peak_Pmax_max": max(peak["Pmax"]), "seconds": time.perf_counter() - t0}
+               "peak_Pmax_max": max(peak["Pmax"]), "seconds": res["seconds"]}
     (OUT / "roughness_amplitude.json").write_text(json.dumps({**summary, "peak": peak}))
     plot(rows, peak, OUT / "roughness_amplitude.png")
     print(json.dumps(summary))

@@ -22,6 +22,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -29,20 +30,23 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def main() -> dict:
-    from femgear.physics.contact.path import contact_along_path
-    from femgear.physics.lubrication.path import friction_along_path
-    from femgear.physics.tehl.path import tehl_along_path, write_thermal_vtk
-    from femgear.scene import load_scene
-
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed (defaults: 21 positions, level 5)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=21)
     ap.add_argument("--level", type=int, default=5)
     ap.add_argument("--vtk", default="0,pitch,-1")
     ap.add_argument("--out", default=str(ROOT / "out" / "tehl_path"))
-    args = ap.parse_args()
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> tuple:
+    """TEHL at ``args.n`` positions of the baseline path and the formula level beside it: (path, formula, summary)."""
+    from femgear.physics.contact.path import contact_along_path
+    from femgear.physics.lubrication.path import friction_along_path
+    from femgear.physics.tehl.path import tehl_along_path
+    from femgear.scene import load_scene
+
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
     contact = contact_along_path(scene, n=args.n)
     path = tehl_along_path(scene, contact, level=args.level)
@@ -67,6 +71,18 @@ def main() -> dict:
           f"{summary['pitch_s']*1e3:.2f} mm); U-shaped: {u_shaped}; μ max {summary['mu_max']:.4f}")
     print(f"max film temperature rise {summary['max_temperature_rise']:.1f} K, max surface (flash) "
           f"{summary['max_surface_temperature_rise']:.1f} K (paper ≈ 35 K); {path.seconds:.1f} s of TEHL solves")
+    return path, formula, summary
+
+
+def main(argv: list[str] | None = None) -> int:
+    from femgear.physics.tehl.path import write_thermal_vtk
+
+    args = setup(argv)
+    path, formula, summary = run(args)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    s = path.s
+    i_pitch = int(np.argmin(np.abs(s)))
     for tok in filter(None, args.vtk.split(",")):
         i = i_pitch if tok == "pitch" else int(tok) % s.size
         f = write_thermal_vtk(path.results[i], out / f"thermal_{i:03d}.vtr")
@@ -78,7 +94,7 @@ def main() -> dict:
         indent=1))
     _plot(path, formula.mu, out / "tehl_path.png")
     print(json.dumps(summary))
-    return summary
+    return 0
 
 
 def _plot(path, mu_formula, file: Path) -> None:
@@ -111,4 +127,4 @@ def _plot(path, mu_formula, file: Path) -> None:
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

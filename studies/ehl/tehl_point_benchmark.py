@@ -27,6 +27,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 from scipy.optimize import brentq
@@ -48,16 +49,21 @@ def hd_central(R: float, eta0: float, alpha: float, E_red: float) -> float:
     return float(hamrock_dowson_central(U, alpha * E_red, F / (E_red * R * R), 1.0339)) * R
 
 
-def main() -> None:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed (defaults: R = 20 mm, level 2, SRR 0.1, 0.3, 0.5)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--R", type=float, default=0.02)
     ap.add_argument("--level", type=int, default=2)
     ap.add_argument("--srr", nargs="*", type=float, default=[0.1, 0.3, 0.5])
-    args = ap.parse_args()
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> dict:
+    """The paper's §4.3 point contact: Hamrock-Dowson, the isothermal FE film and TEHL at each SRR."""
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    setup = tehl_setup(scene)
-    oil = ehl_oil_at(setup["oil"], T)
-    E = setup["E_red"]
+    ts = tehl_setup(scene)
+    oil = ehl_oil_at(ts["oil"], T)
+    E = ts["E_red"]
     hd = hd_central(args.R, oil.eta0, oil.alpha, E)
     R_paper = brentq(lambda r: hd_central(r, oil.eta0, oil.alpha, E) - PAPER["hc_um"] * 1e-6, 1e-3, 10.0)
     iso = solve_point_dimensional(F, args.R, None, UE, E, oil, level=args.level + 1)
@@ -70,16 +76,21 @@ def main() -> None:
     rows = []
     print(f"  {'SRR':>5} {'h_c um':>7} {'vs HD':>7} {'vs 0.82':>8} {'h_min':>6} {'mu':>7} {'vs 0.042':>8} {'dT K':>6}")
     for srr in args.srr:
-        r = solve_tehl_point(F, args.R, UE, srr, T, level=args.level, **setup)
+        r = solve_tehl_point(F, args.R, UE, srr, T, level=args.level, **ts)
         row = {"srr": srr, "hc_um": r.hc * 1e6, "hmin_um": r.hmin * 1e6, "mu": r.mu, "dT": r.dT_max,
                "hc_vs_hd": r.hc / hd - 1, "hc_vs_paper": r.hc * 1e6 / PAPER["hc_um"] - 1,
                "mu_vs_paper": r.mu / PAPER["mu"] - 1}
         rows.append(row)
         print(f"  {srr:5.2f} {row['hc_um']:7.3f} {100 * row['hc_vs_hd']:+6.1f}% {100 * row['hc_vs_paper']:+7.1f}% "
               f"{row['hmin_um']:6.3f} {r.mu:7.4f} {100 * row['mu_vs_paper']:+7.1f}% {r.dT_max:6.1f}")
-    print(json.dumps({"study": "tehl_point_benchmark", "R_m": args.R, "level": args.level, "hd_hc_um": hd * 1e6,
-                      "iso_hc_um": iso.hc * 1e6, "R_for_paper_hc_m": R_paper, "rows": rows}))
+    return {"study": "tehl_point_benchmark", "R_m": args.R, "level": args.level, "hd_hc_um": hd * 1e6,
+            "iso_hc_um": iso.hc * 1e6, "R_for_paper_hc_m": R_paper, "rows": rows}
+
+
+def main(argv: list[str] | None = None) -> int:
+    print(json.dumps(run(setup(argv))))
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -107,13 +107,24 @@ def plot(d: dict, path: Path, crowning: float, level: int) -> None:
     fig.savefig(path, dpi=120)
 
 
-def main() -> None:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed (defaults: the documented study)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--crowning", type=float, default=10e-6)
     ap.add_argument("--level", type=int, default=1)
-    args = ap.parse_args()
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> tuple:
+    """The point TEHL along the crowned baseline path; the data and the start time."""
     t0 = time.perf_counter()
     d = along_path(crowned_scene(args.crowning), args.level)
+    return d, t0
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    d, t0 = run(args)
     sec = time.perf_counter() - t0
     out = Path("out")
     out.mkdir(exist_ok=True)
@@ -126,7 +137,8 @@ def main() -> None:
                                                           for k, v in d.items()}))
     print(json.dumps({"study": "tehl_point_path", "positions": int(d["u_mm"].size), "seconds": round(sec, 1),
                       "png": "out/tehl_point_path.png"}))
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

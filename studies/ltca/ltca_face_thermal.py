@@ -35,7 +35,7 @@ OVER = ['physics.stiffness="ltca"', 'physics.thermal="fe3d"', 'wear.field="face"
         "thermal.flank_temperature_rise=30.0"]
 
 
-def _setup(coarse: bool, crowning: float = 0.0):
+def setup(coarse: bool, crowning: float = 0.0):
     from femgear.case import build_case
     from femgear.scene import load_scene
     from femgear.system.coupling import CouplingSetup
@@ -181,15 +181,21 @@ def table(res: dict) -> str:
     return "\n".join(lines)
 
 
+def run(coarse: bool = False, crowning: float = 0.0) -> dict:
+    """Path against face thermal deviation on the LTCA cycle, their cost and the coupled passes."""
+    t0 = time.perf_counter()
+    cs = setup(coarse, crowning)
+    setup_s = time.perf_counter() - t0
+    cmp = compare(cs)
+    return {"coarse": coarse, "crowning": crowning, "setup_s": setup_s, "compare": cmp, "cost": face_cost(cs),
+            "passes": passes(cs), "png": str(_plot(cmp, cs, crowning))}
+
+
 def main(argv: list[str]) -> int:
     opts = C.parse_args(argv)
-    t0 = time.perf_counter()
     crowning = float(opts.get("crowning", 0.0))
-    setup = _setup(opts["coarse"], crowning)
-    setup_s = time.perf_counter() - t0
-    cmp = compare(setup)
-    res = {"coarse": opts["coarse"], "crowning": crowning, "setup_s": setup_s, "compare": cmp, "cost": face_cost(setup),
-           "passes": passes(setup), "png": str(_plot(cmp, setup, crowning))}
+    res = run(opts["coarse"], crowning)
+    setup_s, cmp = res["setup_s"], res["compare"]
     print(f"crowning {1e6 * crowning:.1f} µm; setup {setup_s:.1f} s")
     print(table(res))
     tag = "ltca_face_thermal" + (f"_crowned{1e6 * crowning:.0f}" if crowning else "")

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -70,15 +71,27 @@ def _print(title: str, rows: dict) -> None:
         print(f"{k:16s}{a:14.6g}{b:14.6g}{100 * d:9.3f}")
 
 
-def main() -> None:
-    tr, fzg = tr_example(), fzg_table()
+def setup() -> dict:
+    """The checks: ISO/TR 6336-30 example 1 and the FZG C14 table."""
+    return {"tr": tr_example, "fzg": fzg_table}
+
+
+def run() -> dict:
+    """Each check's rows (femgear against the reference, difference)."""
+    return {name: check() for name, check in setup().items()}
+
+
+def main() -> int:
+    res = run()
+    tr, fzg = res["tr"], res["fzg"]
     _print("ISO/TR 6336-30 example 1 (ISO 6336-2 method B)", tr)
     print()
     _print("FZG C14, 200 N m: single-pair Hertz at the inner point of single contact B and the pitch point C", fzg)
     worst = {"tr_max_abs_diff": max(abs(d) for *_, d in tr.values()),
              "fzg_max_abs_diff": max(abs(d) for *_, d in fzg.values())}
     print(json.dumps({"study": "iso6336_checks", **worst}))
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

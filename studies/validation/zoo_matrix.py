@@ -197,7 +197,8 @@ def dry_run(name: str, path: Path, column: str, overrides: list[str]) -> dict:
         return {"scene": name, "cell": column, "verdict": f"refused: {exc}", "seconds": 0.0}
 
 
-def main(argv=None) -> int:
+def setup(argv: list[str] | None = None) -> tuple[argparse.Namespace, list[tuple]]:
+    """The command line ``argv`` parsed and the cells it selects: (scene name, scene path, column, overrides)."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--scenes", help="comma-separated scene names (default: all)")
     ap.add_argument("--cells", help="comma-separated columns, e.g. default,lubrication=tehl,full (default: all)")
@@ -216,13 +217,22 @@ def main(argv=None) -> int:
         for column, ov in cells(path).items():
             if args.cells is None or column in args.cells.split(","):
                 todo.append((name, path, column, ov))
+    return args, todo
+
+
+def run(args: argparse.Namespace, todo: list[tuple]) -> list[dict]:
+    """Each cell validated (``--dry-run``) or run (``args.jobs`` at once), recorded with the earlier cells."""
     if args.dry_run:
         rows = [dry_run(*t) for t in todo]
     else:
         with ThreadPoolExecutor(args.jobs) as pool:
             rows = list(pool.map(lambda t: run_cell(*t, args.coarse, args.timeout), todo))
-    if not args.dry_run:
-        rows = record(rows)
+    return rows if args.dry_run else record(rows)
+
+
+def main(argv: list[str] | None = None) -> int:
+    args, todo = setup(argv)
+    rows = run(args, todo)
     width = max(len(r["cell"]) for r in rows)
     for r in rows:
         print(f"{r['scene']:16s} {r['cell']:{width}s} {r['seconds']:7.1f} s  {r['verdict']}")
