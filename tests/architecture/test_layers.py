@@ -94,6 +94,15 @@ PENDING = {
 }
 
 
+# File writers below the edge.  PENDING_WRITERS: being moved to femgear/edge/io by h27edge (the lead empties it
+# at merge time).  CACHES: build-once disk caches and the resumable wear checkpoint (DESIGN.md: "cached on disk
+# where costly"), which write only under out/cache or a path the caller passes.
+PENDING_WRITERS = {"femgear.physics.body.vtk", "femgear.physics.tehl.path", "femgear.physics.ehl.output"}
+CACHES = {"femgear.physics.ltca.compliance", "femgear.physics.wear.archard"}
+WRITE_CALLS = {"write_text", "write_bytes", "savefig", "save", "savez", "savez_compressed", "dump", "to_csv",
+               "write_vtk", "to_file"}
+
+
 def _modules() -> dict[str, Path]:
     mods = {}
     for path in ROOT.rglob("*.py"):
@@ -241,6 +250,36 @@ def test_graph_sees_known_edges():
     seen = [n.names[0].name if isinstance(n, ast.Import) else n.module for n in ast.walk(tree)
             if isinstance(n, (ast.Import, ast.ImportFrom)) and id(n) not in skip]
     assert seen == ["typing", "femgear.errors"]
+
+
+def _writes(path: Path) -> list[str]:
+    """Calls in ``path`` that write a file: ``x.write_text(...)``, ``np.savez``, ``fig.savefig``, ``grid.save``,
+    ``json.dump``, ``meshio.write``, ``open(..., "w"/"a"/"x")``."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if not isinstance(node, ast.Call):
+            continue
+        f = node.func
+        if isinstance(f, ast.Attribute) and (f.attr in WRITE_CALLS or ast.unparse(f) == "meshio.write"):
+            found.append(f"{ast.unparse(f)}() line {node.lineno}")
+        elif isinstance(f, ast.Name) and f.id == "open":
+            mode = node.args[1] if len(node.args) > 1 else next((k.value for k in node.keywords if k.arg == "mode"), None)
+            if isinstance(mode, ast.Constant) and set(str(mode.value)) & set("wax"):
+                found.append(f"open(..., {mode.value!r}) line {node.lineno}")
+    return found
+
+
+def test_only_the_edge_writes_files():
+    """Physics, levels, input, case, system and driver write no file (figures and files are the edge's)."""
+    bad = {}
+    for name, path in _modules().items():
+        top = unit_path(name)[0][1]
+        if top in ("edge", "__main__") or name in PENDING_WRITERS | CACHES:
+            continue
+        if found := _writes(path):
+            bad[name] = found
+    assert not bad, f"file writing below the edge: {bad}"
+    assert all(_writes(_modules()[m]) for m in PENDING_WRITERS | CACHES), "a listed writer writes no more: unlist it"
 
 
 def test_functions_are_short():
