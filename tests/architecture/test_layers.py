@@ -9,9 +9,9 @@ when that is a module, else ``femgear.a``).
 The allowed directions are data (:data:`ORDER`): for a package, its children in tiers from low
 to high.  A module may import a module of its own unit, or of a unit in a strictly lower tier
 of the first package where their paths part; siblings of one tier may not import each other.
-``"*"`` stands for a package's own ``__init__`` and any child the tiers do not name.  A child
-of an ordered package that no tier names fails :func:`test_every_unit_has_a_place`: a new
-folder must be placed in the order, not slip in unordered.
+``"*"`` stands for the package's own ``__init__``.  A child of an ordered package that no tier
+names fails :func:`test_every_unit_has_a_place`: a new folder or module must be placed in the
+order, not slip in unordered.
 
 Layers of ``femgear`` (low → high; ARCHITECTURE.md says why):
 base (errors, docfields, perf) · physics (the leaves: arrays, numbers, typed objects) · levels
@@ -31,8 +31,9 @@ on the EHL solvers) and ltca (loaded tooth contact on the FE bodies, with the ra
 contact stress) on top.  Inside ``ehl`` the shared core (groups, rheology, grids, the
 half-space, results, error estimates, roughness) is below its two discretisations, FE
 Newton–Krylov (``fe``) and FD multigrid (``fd``), which never import each other; the entry
-modules (``point.solve_point`` choosing between them, ``dimensional``, ``transient``,
-``path``) are on top.
+modules are on top: ``point.solve_point`` choosing between them, then ``dimensional`` (SI entry),
+``transient`` (FE time steps from the steady solve) and ``output``, then ``path`` (the ``ehl-line``
+level along the gear path, on the SI entry).
 """
 
 from __future__ import annotations
@@ -49,7 +50,7 @@ import femgear
 ROOT = Path(femgear.__file__).parent
 MAX_FUNCTION_LINES = 100
 
-# low → high tiers of each ordered package's children ("*": its __init__ and unnamed children)
+# low → high tiers of each ordered package's children ("*": the package's own __init__)
 LAYERS = {
     "base": [["errors", "docfields"], ["perf"]],
     "physics": [["physics"]],
@@ -64,7 +65,7 @@ ORDER: dict[str, list[list[str]]] = {
     "femgear": [tier for tiers in LAYERS.values() for tier in tiers],
     "femgear.physics": [["geometry", "excitation"], ["mesh", "stiffness"], ["contact", "body"],
                         ["lubrication", "wear"], ["ehl", "rating"], ["tehl", "ltca"]],
-    "femgear.physics.ehl": [["core"], ["fe", "fd"], ["*"]],
+    "femgear.physics.ehl": [["core"], ["fe", "fd"], ["point"], ["dimensional", "transient", "output"], ["path"], ["*"]],
     "femgear.system": [["dynamics"], ["coupling"]],
     "femgear.edge": [["plot"], ["io"], ["run"], ["sweep"], ["cli"]],
 }
@@ -156,13 +157,13 @@ def unit_path(module: str) -> list[tuple[str, str, int]]:
     """(package, unit, tier) at each ordered package on the way to ``module``.
 
     The unit is the child of the package that holds ``module`` (``"*"`` for the package's own
-    ``__init__`` or a child no tier names, where the package has a ``"*"`` tier); a package's
-    ``__init__`` without a ``"*"`` tier ends the path (it belongs to its package, no tier)."""
+    ``__init__`` where the package has a ``"*"`` tier); a package's ``__init__`` without a ``"*"``
+    tier ends the path (it belongs to its package, no tier)."""
     path, package, rest = [], "femgear", module.split(".")[1:]
     while package in ORDER:
         tiers = ORDER[package]
         child = rest[0] if rest else None
-        unit = child if child is not None and any(child in t for t in tiers) else "*"
+        unit = "*" if child is None else child
         if not any(unit in t for t in tiers):
             if child is None:
                 break
