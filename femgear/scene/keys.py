@@ -91,7 +91,7 @@ def _type_name(annotation: Any) -> tuple[str, bool]:
 
 
 def _doc(model: type[BaseModel]) -> str:
-    return " ".join((model.__doc__ or "").split("\n\n")[0].split())
+    return " ".join((model.__doc__ or "").split("\n\n")[0].replace("``", "").split())
 
 
 def scene_tables(model: type[BaseModel] = Scene, prefix: str = "") -> list[TableDoc]:
