@@ -8,13 +8,13 @@ OUT     ?= out
 export OPENBLAS_NUM_THREADS ?= 1
 export OMP_NUM_THREADS ?= 1
 
-.PHONY: demo test test-slow bench clean sysdeps
+.PHONY: demo test test-slow bench docs validation clean sysdeps
 
 $(STAMP): pyproject.toml
 	@$(MAKE) --no-print-directory sysdeps
 	$(PY) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
-	$(BIN)/pip install -q -e '.[test]'
+	$(BIN)/pip install -q -e '.[test,docs]'
 	@touch $(STAMP)
 
 # gmsh's shared library needs a few X/GL libraries; install them when missing (root + apt only).
@@ -28,11 +28,17 @@ demo: $(STAMP)
 	$(BIN)/femgear run studies/paper_baseline.toml --out $(OUT)/paper_baseline
 
 test: $(STAMP)
-	$(BIN)/ruff check femgear tests studies meshes
+	$(BIN)/ruff check femgear tests studies meshes docs/gen docs/examples
+	$(BIN)/mkdocs build --strict --quiet --site-dir $(OUT)/site
 	$(BIN)/python -m pytest -q
 
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -m slow
+
+# the docs site (mkdocs.yml): warnings are errors; open $(OUT)/site/index.html
+docs: $(STAMP)
+	$(BIN)/mkdocs build --strict --site-dir $(OUT)/site
+	@echo "docs: $(OUT)/site/index.html"
 
 bench: $(STAMP)
 	@for f in studies/benchmarks/*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
