@@ -40,6 +40,17 @@ docs: $(STAMP)
 	$(BIN)/mkdocs build --strict --site-dir $(OUT)/site
 	@echo "docs: $(OUT)/site/index.html"
 
+# every table of the docs' validation pages, regenerated from the studies (long: well over half an hour on 2 cores;
+# outputs and figures in $(OUT)/<study>/; docs/validation/speed-accuracy.md is rewritten, the zoo table written to $(OUT)/zoo_matrix/table.md)
+VALIDATION := eccentricity wear_cycles temperature_rise dynamic_backlash meshing_error mixed_friction \
+              ltca_claims iso6336_checks ross_pem spur_jump overlap_load
+validation: $(STAMP)
+	@for s in $(VALIDATION); do echo "== studies/$$s.py"; $(BIN)/python studies/$$s.py || exit 1; done
+	$(BIN)/python studies/rig_conditions.py --ltca
+	$(BIN)/python studies/speed_accuracy.py --readme
+	$(BIN)/python studies/zoo_matrix.py --jobs 2 --coarse --markdown $(OUT)/zoo_matrix/table.md
+	@echo "validation: tables printed above; docs/validation/speed-accuracy.md rewritten; the zoo table (for docs/zoo_matrix.md) in $(OUT)/zoo_matrix/table.md"
+
 bench: $(STAMP)
 	@for f in studies/benchmarks/*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
 

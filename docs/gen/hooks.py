@@ -1,19 +1,23 @@
 """MkDocs hook: add the pages generated from the code (docs/gen/pages.py) to the site at build time.
 
-Also: ``ARCHITECTURE.md`` and ``CHANGELOG.md`` from the repository root as ``architecture.md`` and
-``changelog.md`` (one copy of each, kept at the root where a clone shows it), and the sweeps guide
-``guide/sweeps.md`` in the navigation when it is present.
+Also: ``README.md``, ``ARCHITECTURE.md`` and ``CHANGELOG.md`` from the repository root as the site's
+``index.md``, ``architecture.md`` and ``changelog.md`` (one copy of each, kept at the root where a clone
+shows it; their links rewritten for the site), and the sweeps guide ``guide/sweeps.md`` in the
+navigation when it is present.
 """
 
 from __future__ import annotations
 
 import importlib.util
+import re
 from pathlib import Path
 
 from mkdocs.structure.files import File
 
 ROOT = Path(__file__).resolve().parents[2]
-ROOT_PAGES = {"architecture.md": "ARCHITECTURE.md", "changelog.md": "CHANGELOG.md"}
+ROOT_PAGES = {"index.md": "README.md", "architecture.md": "ARCHITECTURE.md", "changelog.md": "CHANGELOG.md"}
+#: links of the root pages as the site has them
+ROOT_LINKS = {"](docs/": "](", "](ARCHITECTURE.md)": "](architecture.md)", "](CHANGELOG.md)": "](changelog.md)"}
 
 
 def _pages():
@@ -34,6 +38,11 @@ def on_config(config):
 def on_files(files, config):
     for rel, make in _pages().items():
         files.append(File.generated(config, rel, content=make()))
-    for rel, name in ROOT_PAGES.items():
-        files.append(File.generated(config, rel, content=(ROOT / name).read_text(encoding="utf-8")))
+    for rel, name in ROOT_PAGES.items():      # their links into docs/ are relative to the root
+        text = (ROOT / name).read_text(encoding="utf-8")
+        if not (Path(config["docs_dir"]) / "guide" / "sweeps.md").exists():   # the sweeps guide not in this tree
+            text = re.sub(r"\[([^\]]+)\]\(docs/guide/sweeps\.md\)", r"\1 (`docs/guide/sweeps.md`)", text)
+        for old, new in ROOT_LINKS.items():
+            text = text.replace(old, new)
+        files.append(File.generated(config, rel, content=text))
     return files

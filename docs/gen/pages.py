@@ -9,7 +9,8 @@
   registries of :mod:`femgear.levels`.
 
 ``docs/gen/hooks.py`` adds them to the site (MkDocs hook); ``python docs/gen/pages.py OUTDIR`` writes them
-as files, for a look without MkDocs.
+as files, for a look without MkDocs; ``python docs/gen/pages.py --readme`` rewrites the README's levels
+table from the registries (``tests/docs/test_pages.py`` fails when it is out of date).
 """
 
 from __future__ import annotations
@@ -80,6 +81,31 @@ def levels_page() -> str:
     return "\n".join(out)
 
 
+README_MARKERS = ("<!-- levels:begin -->", "<!-- levels:end -->")
+
+
+def levels_table() -> str:
+    """The README's levels table: one row per sub-model, its levels cheapest first (from the registries)."""
+    from femgear.levels import REGISTRIES
+
+    rows = ["| `[physics]` key | levels, cheapest first |", "|---|---|"]
+    for sub, reg in REGISTRIES.items():
+        names = " · ".join(f"`{n}`" for n in reg.names())
+        planned = f" (planned: {', '.join(f'`{n}`' for n in reg.planned)})" if reg.planned else ""
+        rows.append(f"| `{sub}` | {names}{planned} |")
+    return "\n".join(rows)
+
+
+def update_readme(readme: Path) -> bool:
+    """Rewrite the levels table between the README's markers; True when it changed."""
+    text = readme.read_text(encoding="utf-8")
+    begin, end = (text.index(m) for m in README_MARKERS)
+    new = text[:begin + len(README_MARKERS[0])] + "\n" + levels_table() + "\n" + text[end:]
+    if new != text:
+        readme.write_text(new, encoding="utf-8")
+    return new != text
+
+
 # ---------------------------------------------------------------- result fields
 
 
@@ -120,7 +146,7 @@ def field_docs(cls: type) -> dict[str, tuple[str, str | None]]:
     try:
         from femgear.docfields import field_docs as documented
         return {name: (d.doc, d.unit) for name, d in documented(cls).items()}
-    except Exception:  # noqa: BLE001 - not there yet, or a field without its unit: read what the source has
+    except (ImportError, TypeError):  # not there yet, or a field without its unit: read what the source has
         pass
     texts = _source_docs(cls)
     out = {}
@@ -156,7 +182,7 @@ def result_types(root: type | None = None) -> list[type]:
         seen.append(cls)
         try:
             hints = typing.get_type_hints(cls)
-        except Exception:  # noqa: BLE001 - an annotation that does not resolve: the fields are still listed
+        except (NameError, TypeError):  # an annotation that does not resolve: the fields are still listed
             hints = {}
         for f in dataclasses.fields(cls):
             queue += _dataclasses_in(hints.get(f.name))
@@ -199,6 +225,10 @@ PAGES = {"reference/scene-keys.md": scene_keys_page, "reference/result-fields.md
 
 
 if __name__ == "__main__":
+    if sys.argv[1:] == ["--readme"]:
+        changed = update_readme(Path(__file__).resolve().parents[2] / "README.md")
+        print("README levels table " + ("rewritten" if changed else "up to date"))
+        sys.exit(0)
     target = Path(sys.argv[1] if len(sys.argv) > 1 else "out/docs-pages")
     for rel, make in PAGES.items():
         path = target / rel
