@@ -56,7 +56,7 @@ def scene_keys_page() -> str:
         if not rows:
             continue
         optional = " (optional table)" if t.optional else ""
-        out += [f"## `[{t.table}]`{optional}", "", t.doc, "",
+        out += [f"## `[{t.table}]`{optional}", "", _cell(t.doc), "",
                 "| key | type | default | unit | meaning |", "|---|---|---|---|---|"]
         for k in rows:
             default = "**required**" if k.required else _default(k.default)
@@ -169,10 +169,17 @@ _NOT_EXPANDED = {"femgear.case.Case"}
 
 
 def result_types(root: type | None = None) -> list[type]:
-    """RunResult and every dataclass reachable through its fields' annotations, breadth first."""
+    """RunResult and every dataclass reachable through its fields' annotations (femgear.docfields.field_tree
+    where present, stopping at the inputs; else a breadth-first walk of the resolved annotations)."""
     if root is None:
         from femgear.results import RunResult
         root = RunResult
+        try:
+            from femgear.docfields import field_tree
+            from femgear.results import INPUT_TYPES
+            return list(field_tree(root, stop=INPUT_TYPES))
+        except ImportError:
+            pass
     seen: list[type] = []
     queue = [root]
     while queue:
