@@ -62,7 +62,10 @@ def toml_value(value: Any) -> str:
     if isinstance(value, str):
         return json.dumps(value, ensure_ascii=False)
     if isinstance(value, float):
-        return repr(value) if value == value and abs(value) != float("inf") else "nan"
+        text = repr(value)
+        if "e" not in text and value != 0 and not 1e-3 <= abs(value) < 1e5:
+            text = next(t for t in (f"{value:.{n}g}" for n in range(1, 18)) if float(t) == value)  # 5e+08, exact
+        return text if "." in text or "e" in text else text + ".0"
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(toml_value(v) for v in value) + "]"
     return repr(value)
@@ -74,7 +77,7 @@ def _comment(text: str, width: int = 100) -> list[str]:
 
 def _key_lines(k: KeyDoc, values: dict[str, Any], table_optional: bool) -> list[str]:
     unit = "" if k.unit is None else f" [{k.unit}]"
-    status = "required" if k.required else ("default: none (see above)" if k.default is None
+    status = "required" if k.required else ("no default: derived or off, as said above" if k.default is None
                                             else f"default: {toml_value(k.default)}")
     lines = _comment(k.description) + [f"#   ({k.type}{unit}; {status})"]
     if k.key in values:
