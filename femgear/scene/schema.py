@@ -15,7 +15,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
-from femgear.scene.levels import LEVELS, check_level
+from femgear.scene.levels import check_level
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -424,6 +424,8 @@ class Modifications(FlankModification):
 
 def _levels_doc(submodel: str, what: str) -> str:
     """The description of a ``[physics]`` key, listing its levels from the registry (cheapest first)."""
+    from femgear.scene.levels import LEVELS
+
     return f"level of the {what} sub-model, cheapest first: " + ", ".join(LEVELS[submodel])
 
 
