@@ -77,3 +77,12 @@ def on_files(files, config):
         files.append(File.generated(config, rel, content=text))
     _add_unlisted(files, config)
     return files
+
+
+#: Sphinx roles in docstrings (``:class:`X```) before the code span mkdocstrings made of the backticks
+_ROLE = re.compile(r":(?:class|func|mod|meth|attr|data|exc|obj):(?=<code)")
+
+
+def on_page_content(html, page, config, files):
+    """The API pages show ``X`` for the docstrings' :class:`X` (the source keeps Sphinx's roles)."""
+    return _ROLE.sub("", html)
