@@ -65,9 +65,10 @@ def tomllib_dumps(data: dict) -> str:
     return "\n".join(out)
 
 
-def test_the_double_helical_template_runs_coupled(tmp_path):
+@pytest.mark.parametrize("kind", KINDS)
+def test_the_template_runs_coupled(kind, tmp_path):
     path = tmp_path / "pair.toml"
-    path.write_text(scene_template("double"))
+    path.write_text(scene_template(kind))
     result = run_case(build_case(load_scene(path, COARSE)))
     assert result.coupled is not None and result.coupled.converged
     mu = result.tribology.friction_coefficient
