@@ -296,8 +296,8 @@ class Numerics(_Frozen):
     dynamics_method: Literal["expo", "rk4", "newmark"] | None = Field(
         None, description="integrator; default expo for lumped, rk4 for timoshenko")
     steps_per_mesh_period: int = Field(200, ge=10, le=100000, description="time steps per mesh period [-]")
-    dynamics_cycles: Pos = Field(100.0, description="simulated mesh periods [-]")
-    transient_cycles: NonNeg = Field(50.0, description="mesh periods dropped as transient (paper: 50) [-]")
+    dynamics_cycles: Pos = Field(100.0, description="simulated mesh periods in all, the transient_cycles included; must exceed them [-]")
+    transient_cycles: NonNeg = Field(50.0, description="mesh periods dropped as transient before the response is analysed (paper: 50) [-]")
     body_level: int = Field(
         1, ge=0, le=6, description="resolution of the 3-D member bodies (ltca stiffness, fe3d thermal) and of the "
                                    "2-D sections (fe stiffness): element size m_n/(2 + level) on the loaded teeth, "
