@@ -291,8 +291,10 @@ class Thermal(_Frozen):
 class Numerics(_Frozen):
     """``[numerics]``: resolution knobs shared by the pass along the path of contact."""
 
-    path_points: int = Field(41, ge=3, le=10001, description="equidistant positions from the start A to the end E of the path of contact; the pitch point is "
-                                                                       "added to them [-]")
+    path_points: int = Field(
+        41, ge=3, le=10001,
+        description="equidistant positions from the start A to the end E of the path of contact; the pitch point is "
+                    "added to them [-]")
     ehl_level: int = Field(5, ge=2, le=9, description="grid level of the FE line EHL (16·2^level cells) [-]")
     dynamics_method: Literal["expo", "rk4", "newmark"] | None = Field(
         None, description="integrator; default expo for lumped, rk4 for timoshenko")
