@@ -224,7 +224,19 @@ def result_fields_page() -> str:
     if missing:
         out += ["!!! note \"Fields without a unit in their docstring\"",
                 "    " + ", ".join(f"`{m}`" for m in missing), ""]
-    return "\n".join(out)
+    return "\n".join(out + _results_json_layout())
+
+
+def _results_json_layout() -> list[str]:
+    """The layout of results.json: the module docstring of its writer (read statically, the contract)."""
+    path = Path(__file__).resolve().parents[2] / "femgear" / "edge" / "io" / "run.py"
+    if not path.exists():
+        return []
+    doc = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8"))) or ""
+    doc = re.sub(r":(?:func|mod|class|meth|attr):`([^`]+)`", r"`\1`", doc).replace("``", "`")
+    return ["## `results.json`", "",
+            "The file `femgear run` writes is made from these objects by `femgear/edge/io/run.py`; its docstring, "
+            "the layout contract, reads:", "", doc, ""]
 
 
 PAGES = {"reference/scene-keys.md": scene_keys_page, "reference/result-fields.md": result_fields_page,
