@@ -44,7 +44,8 @@ def test_result_fields_page_lists_the_run_result_fields():
     for f in dataclasses.fields(RunResult):
         assert f"| `{f.name}` |" in section
     assert "## `Tribology`" in text and "## `ContactPath`" in text and "## `MeshStiffness`" in text
-    assert "## `results.json`" in text and "along_path" in text     # the writer's layout contract, read statically
+    assert "## `results.json`" in text and "along_path" in text, \
+        "the layout contract of results.json is read from femgear/edge/io/run.py: moved? update docs/gen/pages.py"
 
 
 def test_levels_page_lists_every_registered_level():
