@@ -29,6 +29,7 @@ def _pages():
 
 #: pages other branches add: (nav section, position, title, file), put in the navigation when the file exists
 OPTIONAL_PAGES = (("User guide", 4, "Sweeps, local and on a Dask cluster", "guide/sweeps.md"),
+                  ("User guide", 4, "Outputs: every file and who computes it", "outputs.md"),
                   ("Reference", 2, "Result conventions", "result_fields.md"),
                   ("Development", 1, "The case and the levels layer", "case_and_levels.md"))
 #: the section that takes any other page of docs/ that the navigation does not name
