@@ -42,10 +42,11 @@ docs: $(STAMP)
 
 # every table of the docs' validation pages, regenerated from the studies (long: well over half an hour on 2 cores;
 # outputs and figures in $(OUT)/<study>/; docs/validation/speed-accuracy.md is rewritten, the zoo table written to $(OUT)/zoo_matrix/table.md)
-VALIDATION := eccentricity wear_cycles temperature_rise dynamic_backlash meshing_error mixed_friction \
-              ltca_claims iso6336_checks ross_pem spur_jump overlap_load
+VALIDATION := studies/eccentricity.py studies/wear_cycles.py studies/temperature_rise.py studies/dynamic_backlash.py \
+              studies/meshing_error.py studies/mixed_friction.py studies/ltca_claims.py studies/iso6336_checks.py \
+              studies/ross_pem.py studies/spur_jump.py studies/overlap_load.py
 validation: $(STAMP)
-	@for s in $(VALIDATION); do echo "== studies/$$s.py"; $(BIN)/python studies/$$s.py || exit 1; done
+	@for s in $(VALIDATION); do echo "== $$s"; $(BIN)/python $$s || exit 1; done
 	$(BIN)/python studies/rig_conditions.py --ltca
 	$(BIN)/python studies/speed_accuracy.py --readme
 	$(BIN)/python studies/zoo_matrix.py --jobs 2 --coarse --markdown $(OUT)/zoo_matrix/table.md
