@@ -8,13 +8,13 @@ OUT     ?= out
 export OPENBLAS_NUM_THREADS ?= 1
 export OMP_NUM_THREADS ?= 1
 
-.PHONY: demo test test-slow bench clean sysdeps
+.PHONY: demo test test-slow bench docs validation clean sysdeps
 
 $(STAMP): pyproject.toml
 	@$(MAKE) --no-print-directory sysdeps
 	$(PY) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
-	$(BIN)/pip install -q -e '.[test]'
+	$(BIN)/pip install -q -e '.[test,docs]'
 	@touch $(STAMP)
 
 # gmsh's shared library needs a few X/GL libraries; install them when missing (root + apt only).
@@ -28,11 +28,29 @@ demo: $(STAMP)
 	$(BIN)/femgear run studies/paper_baseline.toml --out $(OUT)/paper_baseline
 
 test: $(STAMP)
-	$(BIN)/ruff check femgear tests studies meshes
+	$(BIN)/ruff check femgear tests studies meshes docs/gen docs/examples
+	$(BIN)/mkdocs build --strict --quiet --site-dir $(OUT)/site
 	$(BIN)/python -m pytest -q
 
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -m slow
+
+# the docs site (mkdocs.yml): warnings are errors; open $(OUT)/site/index.html
+docs: $(STAMP)
+	$(BIN)/mkdocs build --strict --site-dir $(OUT)/site
+	@echo "docs: $(OUT)/site/index.html"
+
+# every table of the docs' validation pages, regenerated from the studies (long: well over half an hour on 2 cores;
+# outputs and figures in $(OUT)/<study>/; docs/validation/speed-accuracy.md is rewritten, the zoo table written to $(OUT)/zoo_matrix/table.md)
+VALIDATION := studies/dynamics/eccentricity.py studies/paper/wear_cycles.py studies/paper/temperature_rise.py studies/paper/dynamic_backlash.py \
+              studies/paper/meshing_error.py studies/paper/mixed_friction.py studies/ltca/ltca_claims.py studies/validation/iso6336_checks.py \
+              studies/body/ross_pem.py studies/dynamics/spur_jump.py studies/dynamics/overlap_load.py
+validation: $(STAMP)
+	@for s in $(VALIDATION); do echo "== $$s"; $(BIN)/python $$s || exit 1; done
+	$(BIN)/python studies/paper/rig_conditions.py --ltca
+	$(BIN)/python studies/validation/speed_accuracy.py --readme
+	$(BIN)/python studies/validation/zoo_matrix.py --jobs 2 --coarse --markdown $(OUT)/zoo_matrix/table.md
+	@echo "validation: tables printed above; docs/validation/speed-accuracy.md rewritten; the zoo table (for docs/zoo_matrix.md) in $(OUT)/zoo_matrix/table.md"
 
 bench: $(STAMP)
 	@for f in studies/benchmarks/*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done

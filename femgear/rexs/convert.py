@@ -15,7 +15,8 @@ Readings (ISO 21771 terms):
   is kept where it differs;
 - double-helical: the groove is |u_A − u_B| − b between the halves' ``u_coordinate_on_shaft``
   (taken as the middle of each half's face);
-- a backlash not in the model is the recommended minimum of ISO/TR 10064-2,
+- ``pair.backlash`` is half the stage's total normal backlash j_bn (the mean of its minimum and
+  maximum); a backlash not in the model is half the recommended minimum of ISO/TR 10064-2,
   j_bn,min = 2/3 (0.06 mm + 0.0005 a + 0.03 m_n);
 - the dedendum h_fP/m_n comes from the rack-shaped tool (its addendum h_aP0*), else from the root
   diameter, d_f = d − 2 m_n (h_fP − x); the root radius ρ_fP/m_n is the tool's tip radius factor.
@@ -243,15 +244,16 @@ def _stage_values(conv: Conversion, parts: PairParts) -> None:
     j_min, s1 = conv.agree(parts.stages, "minimum_normal_backlash", "the backlash of the pair")
     j_max, s2 = conv.agree(parts.stages, "maximum_normal_backlash", "the backlash of the pair")
     given = [j for j in (j_min, j_max) if j is not None]
-    if given:
-        conv.put("pair.backlash", sum(given) / len(given), s1 + s2)
+    if given:       # REXS gives the total normal backlash j_bn; femgear's pair.backlash is half of it
+        conv.put("pair.backlash", sum(given) / len(given) / 2, s1 + s2)
     else:
         m_n = conv.get("pair.normal_module")
         a_w = a if a is not None else (conv.get("pinion.teeth") + conv.get("gear.teeth")) * m_n / 2 / math.cos(
             math.radians(conv.get("pair.helix_angle_deg")))
         j_min = 2 / 3 * (0.06e-3 + 0.0005 * a_w + 0.03 * m_n)
-        conv.default("pair.backlash", j_min, "no minimum/maximum_normal_backlash on the stage: the recommended "
-                                             "minimum of ISO/TR 10064-2, 2/3 (0.06 mm + 0.0005 a + 0.03 m_n)")
+        conv.default("pair.backlash", j_min / 2, "no minimum/maximum_normal_backlash on the stage: half the "
+                                                 "recommended minimum of ISO/TR 10064-2, j_bn = 2/3 (0.06 mm + "
+                                                 "0.0005 a + 0.03 m_n)")
     stagger, src = conv.agree(parts.stages, "custom_femgear_stagger", "the stagger of the helices")
     if stagger is not None:
         conv.put("pair.stagger", stagger, src)

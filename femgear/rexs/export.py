@@ -146,7 +146,7 @@ def _gear(b: _Builder, scene, pair, i: int, h: int, halves: int, mat, shaft) -> 
 def _stage(scene, pair, law) -> dict:
     t = scene.operating.ambient_temperature
     return {"center_distance": scene.pair.centre_distance or pair.a_w, "gear_ratio": pair.u, "common_face_width": pair.b,
-            "minimum_normal_backlash": scene.pair.backlash, "maximum_normal_backlash": scene.pair.backlash,
+            "minimum_normal_backlash": 2 * scene.pair.backlash, "maximum_normal_backlash": 2 * scene.pair.backlash,
             "temperature_lubricant": t, "operating_viscosity": float(law.viscosity(0.0, t) / law.density(0.0, t)),
             "radial_contact_ratio": pair.eps_alpha, "overlap_contact_ratio": pair.eps_beta,
             "total_contact_ratio": pair.eps_gamma,

@@ -34,7 +34,7 @@ class Meta(_Frozen):
         "scene", min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_][A-Za-z0-9_ .+-]*$",
         description="name of the load case and of its output folder: letters, digits, space, _ . + - "
                     "(no path separators, no leading dot)")
-    description: str = ""
+    description: str = Field("", description="free text describing the load case (copied into results.json)")
 
 
 class Pair(_Frozen):
@@ -57,8 +57,10 @@ class Pair(_Frozen):
     normal_pressure_angle_deg: float = Field(20.0, gt=0, lt=45, description="normal pressure angle α_n [deg]")
     helix_angle_deg: float = Field(
         description="helix angle β at the reference circle [deg]; 0 only for kind = 'spur'", ge=0, lt=45)
-    face_width: Pos = Field(description="face width of one helix b [m]")
-    groove_width: NonNeg = Field(0.0, description="central groove between the helices [m]")
+    face_width: Pos = Field(description="face width b of ONE helix [m]: a double-helical member of total width B with a groove g has "
+                    "face_width = (B − g)/2; the contact width of a member pair is the smaller of the two members' widths")
+    groove_width: NonNeg = Field(0.0, description="axial width of the central groove between the two helices of a double-helical member (0 for "
+                    "single-helical and spur pairs) [m]")
     addendum_coeff: float = Field(1.0, gt=0, le=1.5, description="basic-rack addendum h_aP/m_n [-]")
     dedendum_coeff: float = Field(1.25, gt=0, le=1.8, description="basic-rack dedendum h_fP/m_n [-]")
     root_radius_coeff: float = Field(0.38, ge=0, le=0.6, description="basic-rack root radius ρ_fP/m_n [-]")
@@ -68,10 +70,13 @@ class Pair(_Frozen):
     centre_distance: Pos | None = Field(
         None, description="working centre distance a_w [m]; checked against the profile shifts (or, with "
                           "tip diameters, used to derive them)")
-    backlash: NonNeg = Field(0.0, description="normal backlash b0 of the pair (paper: 'half backlash') [m]")
+    backlash: NonNeg = Field(0.0, description="HALF the normal backlash, b0 = j_bn/2 [m]: the dead zone of the mesh deflection "
+                    "along the normal line of action is |δ| ≤ b0, so the total free play between the drive and "
+                    "the coast flanks is 2 b0 (the paper's 'half backlash' b; Kahraman & Singh 1990)")
     stagger: float = Field(
         0.0, ge=0, lt=1,
-        description="offset of the right helix's mesh against the left one, as a fraction of the transverse base pitch [-]",
+        description="offset of the right helix's mesh phase against the left one, as a fraction of the transverse "
+                    "base pitch (0: teeth of both helices in line, apex; 0.5: half-pitch stagger) [-]",
     )
 
 
@@ -85,19 +90,33 @@ class Member(_Frozen):
     face_width: Pos | None = Field(
         None, description="this member's face width [m]; default pair.face_width; the contact width is the smaller")
     axial_stiffness: Pos | None = Field(
-        None, description="axial (thrust) bearing stiffness [N/m]; required for pair.kind = 'single-helical' "
+        None, description="axial (thrust) bearing stiffness of the member, total [N/m]; required for pair.kind = 'single-helical' "
                           "(its axial mesh force is not balanced), default support_stiffness otherwise")
-    axial_damping: NonNeg | None = Field(None, description="axial bearing damping [N s/m]; default support_damping")
-    mass: Pos = Field(description="mass of the member, both helices [kg]")
-    inertia: Pos = Field(description="polar moment of inertia, both helices [kg m^2]")
-    bore_radius: NonNeg = Field(0.0, description="shaft bore radius (0 = solid) [m]")
-    support_stiffness: Pos = Field(description="bearing stiffness per direction x, y, z [N/m]")
-    support_damping: NonNeg = Field(0.0, description="bearing damping per direction [N s/m]")
-    eccentricity: NonNeg = Field(0.0, description="geometric eccentricity e_r [m]")
-    eccentricity_phase_deg: float = Field(0.0, description="phase θ of the eccentricity [deg]")
-    unbalance: NonNeg = Field(0.0, description="mass unbalance m·e [kg m]")
-    bearing_span: Pos = Field(0.10, description="distance between the member's two bearings [m]")
-    shaft_diameter: Pos = Field(0.040, description="solid shaft diameter (timoshenko level) [m]")
+    axial_damping: NonNeg | None = Field(None, description="axial (thrust) bearing damping of the member, total [N s/m]; default support_damping")
+    mass: Pos = Field(description="mass of the gear body (both helices, rim, web, hub) WITHOUT the shaft [kg]: "
+                                  "the timoshenko dynamics level adds the shaft's own mass from shaft_diameter and "
+                                  "material.density between the bearings; the lumped level has a rigid massless "
+                                  "shaft, so add the shaft's mass here for that level if it matters")
+    inertia: Pos = Field(description="polar moment of inertia J of the gear body about its axis (both helices; "
+                                     "without the shaft, as mass) [kg m^2]")
+    bore_radius: NonNeg = Field(
+        0.0, description="inner radius of the gear body, where it sits on the shaft (usually shaft_diameter/2) [m]: "
+                         "the thermal models hold the bore at shaft_temperature_rise there, the LTCA member body is "
+                         "clamped there. 0 = not given: the analytic and FE thermal levels take half the root radius, "
+                         "the LTCA body half the shaft_diameter")
+    support_stiffness: Pos = Field(
+        description="bearing stiffness of the WHOLE member (the sum of its two bearings) in each direction x, y "
+                    "and, without axial_stiffness, z [N/m]; each of the two bearings at ±bearing_span/2 gets half")
+    support_damping: NonNeg = Field(
+        0.0, description="bearing damping of the WHOLE member (the sum of its two bearings) per direction, split "
+                         "like support_stiffness [N s/m]")
+    eccentricity: NonNeg = Field(0.0, description="geometric eccentricity e_r of the member: distance of its pitch-circle centre from its axis of "
+                    "rotation [m]")
+    eccentricity_phase_deg: float = Field(0.0, description="phase θ of the eccentricity at t = 0 [deg]")
+    unbalance: NonNeg = Field(0.0, description="mass unbalance U = m·e (rotating force U Ω²) [kg m]")
+    bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings, symmetric about the mid-plane [m]")
+    shaft_diameter: Pos = Field(0.040, description="diameter of the member's solid shaft [m]: the Timoshenko shaft elements between the bearings "
+                    "(timoshenko dynamics level) and the LTCA body's bore when bore_radius = 0")
 
 
 class Material(_Frozen):
@@ -109,23 +128,31 @@ class Material(_Frozen):
     specific_heat: Pos = Field(description="specific heat c [J/(kg K)]")
     conductivity: Pos = Field(description="thermal conductivity k [W/(m K)]")
     thermal_expansion: Pos = Field(description="linear expansion coefficient λ [1/K]")
-    hardness: Pos = Field(6.0e9, description="flank hardness H for Archard wear [Pa]")
+    hardness: Pos = Field(6.0e9, description="flank hardness H of Archard's law (Vickers hardness as a pressure: HV 600 ≈ 6e9 Pa) [Pa]")
 
 
 class Oil(_Frozen):
     """``[oil]``: the lubricant.  Viscosity data refer to ``reference_temperature``."""
 
-    viscosity: Pos = Field(description="dynamic viscosity η0 at the reference temperature [Pa s]")
-    density: Pos = Field(description="density ρ0 [kg/m^3]")
+    viscosity: Pos = Field(description="dynamic viscosity η0 at ambient pressure and the reference temperature [Pa s] (kinematic "
+                    "viscosity [mm²/s] × density [kg/m³] × 1e-6)")
+    density: Pos = Field(description="density ρ0 at ambient pressure and the reference temperature [kg/m^3]")
     specific_heat: Pos = Field(description="specific heat c_f [J/(kg K)]")
     conductivity: Pos = Field(description="thermal conductivity k_f [W/(m K)]")
-    pressure_viscosity: Pos = Field(description="Barus pressure-viscosity coefficient α [1/Pa]")
-    temperature_viscosity: NonNeg = Field(description="temperature-viscosity coefficient β_T [1/K]")
+    pressure_viscosity: Pos = Field(description="pressure-viscosity coefficient α = ∂ln η/∂p at p = 0 and the REFERENCE temperature [1/Pa] "
+                    "(typical mineral oils 1e-8 … 3e-8; 20 GPa⁻¹ = 2e-8): Barus' slope, from which the Roelands "
+                    "pressure index z0 is taken")
+    temperature_viscosity: NonNeg = Field(description="temperature-viscosity coefficient β_T = −∂ln η/∂T at p = 0 and the REFERENCE temperature "
+                    "[1/K]: the local slope there, from which the Roelands temperature index S0 is taken (so the "
+                    "law is exact at the reference and follows Roelands' shape away from it). From two datasheet "
+                    "viscosities, ln(η(T1)/η(T2))/(T2 − T1) with T1 < T0 < T2 close to T0 is a fair estimate; the "
+                    "40–100 °C secant underestimates the slope at 40 °C")
     reference_temperature: Pos | None = Field(
-        None, description="temperature of η0 [K]; defaults to operating.ambient_temperature"
+        None, description="temperature at which viscosity, density, pressure_viscosity and temperature_viscosity hold "
+                    "[K]; default operating.ambient_temperature"
     )
-    thermal_expansion: NonNeg = Field(6.5e-4, description="density-temperature coefficient ε [1/K]")
-    eyring_stress: Pos = Field(5.0e6, description="Eyring stress τ0 for non-Newtonian traction [Pa]")
+    thermal_expansion: NonNeg = Field(6.5e-4, description="density-temperature coefficient ε: ρ = ρ0 (1 − ε (T − T0)) [1/K]")
+    eyring_stress: Pos = Field(5.0e6, description="Eyring stress τ0 of the Ree–Eyring shear law of the traction [Pa]")
     limiting_shear_coeff: NonNeg = Field(
         0.0, description="limiting shear stress τ_L = Λ p as the coefficient Λ; 0 switches it off [-]"
     )
@@ -134,10 +161,10 @@ class Oil(_Frozen):
 class Operating(_Frozen):
     """``[operating]``: the load case."""
 
-    driver: Literal["pinion", "gear"] = Field("pinion", description="the driving member")
-    speed_rpm: Pos = Field(description="speed of the driving member [rev/min]")
-    torque: Pos = Field(description="torque on the driving member [N m]")
-    ambient_temperature: Pos = Field(313.0, description="ambient and oil supply temperature [K]")
+    driver: Literal["pinion", "gear"] = Field("pinion", description="the driving member: speed_rpm and torque are given on it")
+    speed_rpm: Pos = Field(description="rotational speed of the driving member [rev/min]")
+    torque: Pos = Field(description="torque on the driving member, both helices together [N m]")
+    ambient_temperature: Pos = Field(313.0, description="ambient and oil supply temperature [K] (313 K = 40 °C)")
     loop_stiffness: NonNeg = Field(
         0.0, description="torsional stiffness of a closed power loop (FZG rig), referred to the gear shaft; "
                          "0 = prescribed torques as in the paper [N m/rad]")
@@ -146,17 +173,18 @@ class Operating(_Frozen):
 class Errors(_Frozen):
     """``[errors]``: transmission-error sources beside eccentricity (see ``[pinion]``)."""
 
-    profile_error: NonNeg = Field(0.0, description="amplitude of the profile-error harmonics e_f [m]")
+    profile_error: NonNeg = Field(0.0, description="amplitude e_f of each mesh-frequency harmonic of the profile error, along the line of action [m]")
     profile_error_orders: int = Field(3, ge=1, le=10, description="number of mesh-frequency harmonics M [-]")
     profile_error_phase_deg: float = Field(0.0, description="phase φ of the profile error [deg]")
-    random: NonNeg = Field(0.0, description="amplitude of the seeded random error component e_0 [m]")
-    seed: int = Field(0, ge=0, description="seed of the random component")
+    random: NonNeg = Field(0.0, description="amplitude e_0 of the seeded random tooth-to-tooth error component, along the line of action [m]")
+    seed: int = Field(0, ge=0, description="seed of the random component (same seed, same errors) [-]")
 
 
 class Friction(_Frozen):
-    """``[friction]``: used when ``physics.lubrication = "constant"``."""
+    """``[friction]``: the constant μ of ``physics.lubrication = "constant"``, the sliding-sign regularisation of
+    the dynamics and the boundary friction of mixed lubrication."""
 
-    coefficient: float = Field(0.05, ge=0, le=0.5, description="friction coefficient μ [-]")
+    coefficient: float = Field(0.05, ge=0, le=0.5, description="constant friction coefficient μ of the constant lubrication level [-]")
     regularisation_speed: Pos = Field(0.01, description="v_reg of the sliding sign tanh(v_s/v_reg) [m/s]")
     boundary_coefficient: float = Field(
         0.1, ge=0, le=0.5, description="boundary friction coefficient μ_b of asperity contacts (mixed lubrication, "
@@ -192,7 +220,7 @@ class SyntheticSurface(_Frozen):
     correlation_length: Pos = Field(description="correlation length β: the ACF falls to 1/e at β [m]")
     acf: Literal["exponential", "gaussian"] = Field(
         "exponential", description="autocorrelation exp(−r/β) or exp(−(r/β)²)")
-    seed: int = Field(0, ge=0, description="seed of the random generator (same seed, same surface)")
+    seed: int = Field(0, ge=0, description="seed of the random generator (same seed, same surface) [-]")
     member: Literal["pinion", "gear"] = Field("pinion", description="flank that carries the surface")
     moving: bool = Field(True, description="the surface moves with its flank through the contact")
 
@@ -214,7 +242,8 @@ class SurfaceRoughness(_Frozen):
 
 
 class Stiffness(_Frozen):
-    """``[stiffness]``: used when ``physics.stiffness = "constant"``."""
+    """``[stiffness]``: the mesh stiffness of the ``constant`` level, mesh and Rayleigh damping (every dynamics
+    level) and the resolution of the ``pem`` / ``fe`` levels."""
 
     mesh_stiffness_per_width: Pos = Field(
         2.0e10, description="mean mesh stiffness per unit face width c_γ [N/m per m], ISO typical 20 N/(mm µm)"
@@ -244,13 +273,17 @@ class Thermal(_Frozen):
     """``[thermal]``: bulk temperatures for thermal expansion of the teeth."""
 
     flank_temperature_rise: NonNeg = Field(
-        0.0, description="flank temperature rise over ambient, if not from the lubrication model [K]"
+        0.0, description="bulk temperature rise of the flanks (tooth body) over ambient that drives the thermal "
+                         "expansion [K]. > 0: used as given. 0 in a COUPLED run (a dynamics level): estimated each "
+                         "pass as bulk_fraction × the mean contact temperature rise along the path (ISO/TS 6336-21). "
+                         "0 in an UNCOUPLED run (dynamics = none): taken as 0, so the flanks do not grow (only "
+                         "shaft_temperature_rise acts): give a value to see thermal expansion there"
     )
-    shaft_temperature_rise: NonNeg = Field(0.0, description="shaft/bore temperature rise over ambient [K]")
+    shaft_temperature_rise: NonNeg = Field(0.0, description="temperature rise of the bore (where the body sits on the shaft) over ambient [K]")
     bulk_fraction: float = Field(
         0.7, ge=0, le=1,
         description="bulk temperature rise over the oil as a fraction C_1 of the mean contact temperature rise "
-                    "along the path (ISO/TS 6336-21 integral-temperature method: 0.7), used when "
+                    "along the path (ISO/TS 6336-21 integral-temperature method: 0.7), used in a coupled run when "
                     "flank_temperature_rise = 0 [-]")
     mesh_size: Pos | None = Field(None, description="FE gear-section mesh size (fe level; fe3d uses the LTCA body level 1) [m]; default m_n/5")
 
@@ -258,13 +291,16 @@ class Thermal(_Frozen):
 class Numerics(_Frozen):
     """``[numerics]``: resolution knobs shared by the pass along the path of contact."""
 
-    path_points: int = Field(41, ge=3, le=10001, description="positions along the path of contact [-]")
+    path_points: int = Field(
+        41, ge=3, le=10001,
+        description="equidistant positions from the start A to the end E of the path of contact; the pitch point is "
+                    "added to them [-]")
     ehl_level: int = Field(5, ge=2, le=9, description="grid level of the FE line EHL (16·2^level cells) [-]")
     dynamics_method: Literal["expo", "rk4", "newmark"] | None = Field(
         None, description="integrator; default expo for lumped, rk4 for timoshenko")
     steps_per_mesh_period: int = Field(200, ge=10, le=100000, description="time steps per mesh period [-]")
-    dynamics_cycles: Pos = Field(100.0, description="simulated mesh periods [-]")
-    transient_cycles: NonNeg = Field(50.0, description="mesh periods dropped as transient (paper: 50) [-]")
+    dynamics_cycles: Pos = Field(100.0, description="simulated mesh periods in all, the transient_cycles included; must exceed them [-]")
+    transient_cycles: NonNeg = Field(50.0, description="mesh periods dropped as transient before the response is analysed (paper: 50) [-]")
     body_level: int = Field(
         1, ge=0, le=6, description="resolution of the 3-D member bodies (ltca stiffness, fe3d thermal) and of the "
                                    "2-D sections (fe stiffness): element size m_n/(2 + level) on the loaded teeth, "
@@ -281,24 +317,24 @@ class Rating(_Frozen):
     inputs are given; Z_W = Z_X = 1.
     """
 
-    application_factor: float = Field(1.0, ge=1, description="K_A [-]")
-    dynamic_factor: float = Field(1.0, ge=1, description="K_v [-]")
-    face_load_factor: float = Field(1.0, ge=1, description="K_Hβ [-]")
-    transverse_load_factor: float = Field(1.0, ge=1, description="K_Hα [-]")
+    application_factor: float = Field(1.0, ge=1, description="application factor K_A (ISO 6336-1) [-]")
+    dynamic_factor: float = Field(1.0, ge=1, description="dynamic factor K_v (ISO 6336-1) [-]")
+    face_load_factor: float = Field(1.0, ge=1, description="face load factor K_Hβ (contact, ISO 6336-1) [-]")
+    transverse_load_factor: float = Field(1.0, ge=1, description="transverse load factor K_Hα (contact, ISO 6336-1) [-]")
     contact_stress_limit: Pos = Field(1.5e9, description="σ_Hlim, allowable stress number (contact) [Pa]")
-    min_safety_factor: Pos = Field(1.0, description="S_Hmin [-]")
+    min_safety_factor: Pos = Field(1.0, description="minimum required safety factor for pitting S_Hmin [-]")
     life_hours: Pos | None = Field(None, description="required life L_h [h]; sets N_L and Z_NT (None: Z_NT = 1)")
     oil_viscosity_40: Pos | None = Field(
         None, description="kinematic viscosity of the oil at 40 °C ν40 [mm^2/s]; sets Z_L and Z_v (None: 1)")
     roughness_rz: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
         None, description="mean peak-to-valley roughness R_z of the pinion and gear flanks, [R_z1, R_z2] [m]; "
                           "sets Z_R (None: 1)")
-    work_hardening_factor: Pos = Field(1.0, description="Z_W [-]")
-    size_factor: Pos = Field(1.0, description="Z_X [-]")
+    work_hardening_factor: Pos = Field(1.0, description="work hardening factor Z_W (ISO 6336-2) [-]")
+    size_factor: Pos = Field(1.0, description="size factor Z_X (ISO 6336-2) [-]")
     # ---- bending, scuffing, micropitting (docs/rating.md; None: the documented default, logged) ----
     bending_stress_limit: Pos | None = Field(
         None, description="σ_Flim, nominal stress number (bending) [Pa]; default 5e8 (case-carburised, ISO 6336-5 MQ)")
-    bending_min_safety_factor: Pos = Field(1.0, description="S_Fmin [-]")
+    bending_min_safety_factor: Pos = Field(1.0, description="minimum required safety factor for bending S_Fmin [-]")
     root_roughness_rz: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
         None, description="root fillet roughness R_z of pinion and gear [m] (Y_RrelT); default 1e-5 each")
     finishing: Literal["ground", "honed", "shaved", "hobbed"] | None = Field(
@@ -374,8 +410,10 @@ class Modifications(FlankModification):
     outer end (negative: closes).
     """
 
-    pinion: FlankModification | None = None
-    gear: FlankModification | None = None
+    pinion: FlankModification | None = Field(
+        None, description="[modifications.pinion]: the pinion's own modifications (replace the shared keys for it)")
+    gear: FlankModification | None = Field(
+        None, description="[modifications.gear]: the gear's own modifications (replace the shared keys for it)")
     helix_slope_deviation_left: float = Field(0.0, ge=-1e-3, le=1e-3, description="f_Hβ of the left helix [m]")
     helix_slope_deviation_right: float = Field(0.0, ge=-1e-3, le=1e-3, description="f_Hβ of the right helix [m]")
 
@@ -387,6 +425,13 @@ class Modifications(FlankModification):
         return FlankModification(**{k: getattr(self, k) for k in FlankModification.model_fields})
 
 
+def _levels_doc(submodel: str, what: str) -> str:
+    """The description of a ``[physics]`` key, listing its levels from the registry (cheapest first)."""
+    from femgear.scene.levels import LEVELS
+
+    return f"level of the {what} sub-model, cheapest first: " + ", ".join(LEVELS[submodel])
+
+
 class Physics(_Frozen):
     """``[physics]``: one fidelity level per sub-model (see :mod:`femgear.scene.levels`).
 
@@ -394,14 +439,16 @@ class Physics(_Frozen):
     levels and resolution knobs it names; keys given explicitly win.
     """
 
-    preset: Literal["fast", "balanced", "accurate"] | None = None
+    preset: Literal["fast", "balanced", "accurate"] | None = Field(
+        None, description="a point on the measured speed–accuracy fronts that fills in the levels and resolution "
+                          "knobs it names (fast, balanced, accurate; femgear.scene.presets); keys given explicitly win")
 
-    stiffness: str = "constant"
-    lubrication: str = "formula"
-    thermal: str = "none"
-    wear: str = "none"
-    dynamics: str = "none"
-    coupling: str = "one-way"
+    stiffness: str = Field("constant", description=_levels_doc("stiffness", "mesh stiffness"))
+    lubrication: str = Field("formula", description=_levels_doc("lubrication", "friction, film and contact temperature"))
+    thermal: str = Field("none", description=_levels_doc("thermal", "thermal expansion of the flanks"))
+    wear: str = Field("none", description=_levels_doc("wear", "flank wear"))
+    dynamics: str = Field("none", description=_levels_doc("dynamics", "gear-rotor dynamics"))
+    coupling: str = Field("one-way", description=_levels_doc("coupling", "coupling of dynamics and tribology"))
 
     @field_validator("stiffness", "lubrication", "thermal", "wear", "dynamics", "coupling")
     @classmethod

@@ -6,7 +6,7 @@ For each sub-model every level/resolution is run on the baseline scene and compa
 with the finest one run here (the reference row, error 0): wall time (median of
 ``repeats``), peak traced memory and the error defined per sub-model below.  Writes
 ``out/speed_accuracy/rows.json``, one Pareto plot per sub-model (PNG), prints the table
-and a JSON line, and with ``--readme`` rewrites the README's table between the
+and a JSON line, and with ``--readme`` rewrites the table of docs/validation/speed-accuracy.md between the
 ``speed-accuracy`` markers (so that table is produced here, never typed).
 
 Errors (all relative, max over what is compared):
@@ -194,7 +194,7 @@ def plot(rows: list[dict], folder: Path) -> None:
         plt.close(fig)
 
 
-def update_readme(text: str, readme: Path = ROOT / "README.md") -> None:
+def update_readme(text: str, readme: Path = ROOT / "docs" / "validation" / "speed-accuracy.md") -> None:
     s = readme.read_text(encoding="utf-8")
     start, end = s.index(MARK[0]) + len(MARK[0]), s.index(MARK[1])
     readme.write_text(s[:start] + "\n" + text + "\n" + s[end:], encoding="utf-8")
@@ -203,7 +203,7 @@ def update_readme(text: str, readme: Path = ROOT / "README.md") -> None:
 def setup(argv: list[str]) -> argparse.Namespace:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--quick", action="store_true", help="coarser references (CI)")
-    p.add_argument("--readme", action="store_true", help="rewrite the README table")
+    p.add_argument("--readme", action="store_true", help="rewrite the table in docs/validation/speed-accuracy.md")
     p.add_argument("--only", nargs="*", default=None, help="sub-model functions to run")
     p.add_argument("--repeats", type=int, default=3)
     return p.parse_args(argv)

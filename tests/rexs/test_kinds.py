@@ -95,10 +95,12 @@ def test_listing_as_json(two_stage, cli):
     assert data["stages"][1]["centre_distance"] == pytest.approx(0.245)
 
 
-def test_missing_backlash_is_the_iso_tr_10064_2_minimum(two_stage):
-    """j_bn,min = 2/3 (0.06 mm + 0.0005 a + 0.03 m_n), ISO/TR 10064-2 (stage 30: a = 245 mm, m_n = 5 mm)."""
+def test_missing_backlash_is_half_the_iso_tr_10064_2_minimum(two_stage):
+    """j_bn,min = 2/3 (0.06 mm + 0.0005 a + 0.03 m_n), ISO/TR 10064-2 (stage 30: a = 245 mm, m_n = 5 mm);
+    pair.backlash is half the total normal backlash (the dead zone |δ| ≤ b0)."""
     conv = read_stage(two_stage(), 30)
-    assert conv.data["pair"]["backlash"] == pytest.approx(2 / 3 * (0.06 + 0.0005 * 245 + 0.03 * 5) * 1e-3, rel=1e-12)
+    j_bn = 2 / 3 * (0.06 + 0.0005 * 245 + 0.03 * 5) * 1e-3
+    assert conv.data["pair"]["backlash"] == pytest.approx(j_bn / 2, rel=1e-12)
     assert "pair.backlash" in conv.defaults
 
 

@@ -156,6 +156,9 @@ def test_exported_figures_are_femgears(cli, tmp_path):
     assert model.value(stage, "radial_contact_ratio") == pytest.approx(pair.eps_alpha, rel=1e-12)
     tips = sorted(model.value(g, "tip_diameter") for g in model.of_type("cylindrical_gear"))
     assert tips[0] == pytest.approx(2 * pair.ra1, rel=1e-12) and tips[-1] == pytest.approx(2 * pair.ra2, rel=1e-12)
+    # REXS's normal backlash is the total j_bn: twice femgear's half backlash pair.backlash (the dead zone |δ| ≤ b0)
+    j_bn = model.value(stage, "minimum_normal_backlash")
+    assert j_bn == pytest.approx(2 * load_scene(MARINE).pair.backlash, rel=1e-12)
 
 
 def test_a_root_diameter_off_the_rack_tool_names_both(cli, tmp_path):
