@@ -63,7 +63,8 @@ def check_workers(client, base: str, cases_dir: str, timeout: float = 60.0) -> i
     Raises :class:`ArgumentError` naming ``--scheduler`` when no worker joins within ``timeout`` seconds,
     when a worker cannot import femgear, or cannot see the base scene or the case folder (the
     filesystem is not shared at the same path, or the workers start in another folder while the
-    paths are relative).  A worker with another femgear version is logged as a warning.
+    paths are relative).  A worker with another femgear version, or with more than one thread (it
+would run several cases at once in one process), is logged as a warning.
     """
     import femgear
 
@@ -84,6 +85,11 @@ def check_workers(client, base: str, cases_dir: str, timeout: float = 60.0) -> i
                                                "path on every worker")
         if answer["version"] != femgear.__version__:
             log.warning("worker %s runs femgear %s, this process %s", worker, answer["version"], femgear.__version__)
+    threads = {w: info.get("nthreads", 1) for w, info in client.scheduler_info().get("workers", {}).items()}
+    for worker, n in sorted(threads.items()):
+        if n > 1:
+            log.warning("worker %s has %d threads: it runs %d cases at once in one process (gmsh is not "
+                        "thread-safe, BLAS threads compete); start workers with --nthreads 1", worker, n, n)
     return len(answers)
 
 

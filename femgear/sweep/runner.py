@@ -23,6 +23,7 @@ import logging
 import os
 import shutil
 import signal
+import socket
 import time
 import uuid
 from collections.abc import Callable, Sequence
@@ -45,7 +46,8 @@ def run_case(base: str, overrides: tuple[str, ...], case_dir: str, plots: bool =
 
     final = Path(case_dir)
     tmp = final.parent / f".{final.name}.tmp-{uuid.uuid4().hex[:8]}"
-    row: dict[str, Any] = {"case": final.name, "overrides": " ".join(overrides)}
+    row: dict[str, Any] = {"case": final.name, "overrides": " ".join(overrides),
+                           "worker": f"{socket.gethostname()}:{os.getpid()}"}
     start = time.perf_counter()
     try:
         scene = load_scene(base, overrides)

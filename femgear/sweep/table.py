@@ -2,8 +2,8 @@
 
 Columns: ``case``, ``status``, then one column per swept key holding its value as the
 sweep file gave it (numbers stay numbers, so a spreadsheet or ``pandas.read_csv`` reads
-them as numbers), then ``error``, ``seconds``, ``overrides`` (the case's overrides as
-typed) and the scalar summary figures of the case's run (``a.b.c`` columns, SI units).
+them as numbers), then ``error``, ``seconds``, ``worker`` (``host:pid`` of the process that ran
+the case), ``overrides`` (the case's overrides as typed) and the scalar summary figures of the case's run (``a.b.c`` columns, SI units).
 Rows are sorted by the swept keys in the sweep file's order: numbers numerically,
 other values in the order of the file; cases without a key come last for that key.
 """
@@ -21,7 +21,7 @@ from femgear.io.atomic import write_text_atomic
 from femgear.sweep.spec import SweepSpec
 
 LEADING = ("case", "status")
-TRAILING = ("error", "seconds", "overrides")
+TRAILING = ("error", "seconds", "worker", "overrides")
 
 
 def is_number(value: Any) -> bool:

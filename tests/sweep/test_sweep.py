@@ -28,8 +28,8 @@ def write_sweep(tmp_path, body: str, name: str = "t") -> Path:
 
 
 def numeric(rows):
-    """Rows without wall-time columns (those differ run to run)."""
-    return [{k: v for k, v in r.items() if not k.endswith("seconds")} for r in rows]
+    """Rows without wall-time and worker columns (those differ run to run)."""
+    return [{k: v for k, v in r.items() if not k.endswith("seconds") and k != "worker"} for r in rows]
 
 
 def test_rig_sweep_has_the_15_conditions():
