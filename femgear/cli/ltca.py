@@ -121,14 +121,16 @@ def _write(result, scene, pair, out: Path, plots: bool, vtk: bool) -> dict[str, 
         from femgear.plot.ltca import plot_harmonics, plot_harris, plot_load_distribution, plot_te_curves
 
         name = scene.meta.name
-        files["te_curves_png"] = plot_te_curves(result.analyses, out / "te_curves.png", f"{name}: loaded TE (LTCA)")
+        files["te_curves_png"] = plot_te_curves(result.analyses, out / "te_curves.png",
+                                                f"{name}: loaded transmission error (TE), LTCA")
         files["te_harmonics_png"] = plot_harmonics(result.analyses, out / "te_harmonics.png",
-                                                   f"{name}: loaded TE harmonics")
+                                                   f"{name}: harmonics of the loaded transmission error (TE)")
         for m in result.maps:
             files[f"load_{torque_tag(m.torque)}_png"] = plot_load_distribution(
-                m, out / f"load_{torque_tag(m.torque)}.png")
+                m, out / f"load_{torque_tag(m.torque)}.png", name=name)
         if result.harris is not None:
-            files["harris_png"] = plot_harris(result.harris, out / "harris.png", f"{name}: Harris map (LTCA)")
+            files["harris_png"] = plot_harris(result.harris, out / "harris.png",
+                                              f"{name}: Harris map, loaded transmission error against torque")
     if vtk:
         for m in result.maps:
             files[f"maps_{torque_tag(m.torque)}_pvd"] = write_maps(out, m)
