@@ -35,7 +35,11 @@ def _last_cycles(res: Response, cycles: float) -> np.ndarray:
 
 
 def _title(name: str, what: str) -> str:
-    return f"{name}: {what}" if name else what
+    """``name: what``, on two lines where one would not fit a figure."""
+    what = what.strip()
+    if not name:
+        return what
+    return f"{name}: {what}" if len(name) + len(what) < 80 else f"{name}:\n{what}"
 
 
 #: the x label of the time histories: the window starts at 0
@@ -51,8 +55,8 @@ def plot_time_histories(res: Response, path, cycles: float = 5.0, name: str = ""
     sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
     fig, axes = plt.subplots(4, 2, figsize=(10, 9), sharex=True)
-    rows = [("displacement", 0, 1e6, "displacement x − mean [µm]"), ("displacement", 1, 1e6, "displacement y − mean [µm]"),
-            ("velocity", 0, 1e3, "velocity ẋ − mean [mm/s]"), ("velocity", 1, 1e3, "velocity ẏ − mean [mm/s]")]
+    rows = [("displacement", 0, 1e6, "displacement\nx − mean [µm]"), ("displacement", 1, 1e6, "displacement\ny − mean [µm]"),
+            ("velocity", 0, 1e3, "velocity\nẋ − mean [mm/s]"), ("velocity", 1, 1e3, "velocity\nẏ − mean [mm/s]")]
     for col, member in enumerate(("pinion", "gear")):
         for row, (kind, k, scale, label) in enumerate(rows):
             q = res.member(member, kind)[sel, k]
@@ -84,7 +88,7 @@ def plot_mesh_force(res: Response, path, cycles: float = 5.0, name: str = "") ->
     ax_d.set_xlabel(TIME_LABEL)
     for a in (ax, ax_d):
         a.grid(alpha=0.3)
-    ax.set_title(_title(name, f"dynamic mesh force per helix (normal), last {cycles:g} mesh periods"))
+    fig.suptitle(_title(name, f"dynamic mesh force per helix (normal to the flank), last {cycles:g} mesh periods"))
     return _save(fig, path)
 
 
@@ -170,7 +174,7 @@ def plot_sweep(sweep, path, modal=None, name: str = "", harmonics: int = 4) -> P
         top.set_xlabel("driver speed [rpm]")
     if modal is not None:
         _mark_modes(ax, modal, float(fm.min()), float(fm.max()), harmonics)
-    fig.suptitle(_title(name, "\nspeed sweep: dynamic transmission error against mesh frequency"), fontsize=10)
+    fig.suptitle(_title(name, "speed sweep: dynamic transmission error against mesh frequency"), fontsize=10)
     return _save(fig, path)
 
 
