@@ -168,17 +168,17 @@ def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
 
     name, t = result.case.name, result.tribology
     files = {"contact_path_png": plot_contact_path(result.contact, out_dir / "contact_path.png",
-                                                   title=f"{name}: quasi-static contact along the path (Hertz, "
+                                                   title=f"{name}:\nquasi-static contact along the path (Hertz, "
                                                          "film formulas)")}
     if t.friction_coefficient is not None:
         files["friction_path_png"] = plot_friction_path(
             result.case.path.s, t.friction_coefficient, t.temperature_rise, out_dir / "friction_path.png",
-            title=f"{name}: friction and contact temperature along the path (lubrication "
+            title=f"{name}:\nfriction and contact temperature along the path (lubrication "
                   f"{result.case.levels.lubrication})")
     if result.rating is not None:
         from femgear.plot.rating import plot_rating_path
 
         files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
                                                     out_dir / "rating_path.png",
-                                                    title=f"{name}: ISO/TS 6336-20/22 scuffing and micropitting ratings")
+                                                    title=f"{name}:\nISO/TS 6336-20/22 scuffing and micropitting ratings")
     return files

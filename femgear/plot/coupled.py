@@ -90,7 +90,7 @@ def run_figures(result, out_dir: str | Path) -> dict[str, Path]:
     files = {"tribology_path_png": plot_coupled_path(
         case.path.s, t.load_per_length, out_dir / "tribology_path.png", mu=t.friction_coefficient,
         temperature_rise=t.temperature_rise, thermal_deviation=t.thermal_deviation, wear=t.wear,
-        wear_cycles=t.wear_cycles, title=f"{case.name}: load, friction, thermal deviation and wear along the path "
+        wear_cycles=t.wear_cycles, title=f"{case.name}:\nload, friction, thermal deviation and wear along the path "
                                          "of contact")}
     if result.coupled is not None:
         h = result.coupled.history
