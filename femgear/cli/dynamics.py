@@ -132,39 +132,40 @@ def _check_sweep_speeds(scene, speeds) -> None:
 
 def _sweep(case, args, out: Path) -> int:
     from femgear.dynamics import build_model
-    from femgear.dynamics.modal import modal_analysis
+    from femgear.dynamics.modal import modal_analysis, resonance_marks
     from femgear.dynamics.sweep import speed_sweep
 
     rpm = sweep_speeds(args.sweep)
     kw = {"level": args.level, "stiffness": args.stiffness}
     sw = speed_sweep(case, rpm, method=args.method, **kw)
-    modal = modal_analysis(build_model(case, **kw))
+    model = build_model(case, **kw)
+    modal = modal_analysis(model)
+    marks = resonance_marks(modal.frequencies, modal.energy["mesh"], float(sw.mesh_frequency.min()),
+                            float(sw.mesh_frequency.max()))
     files = {}
     if not args.no_plots:
         from femgear.dynamics.plot import plot_sweep
 
         files["sweep"] = plot_sweep(sw, out / "dynamics_sweep.png", modal,
-                                    name=f"{case.name} ({modal_level(args, case)})")
+                                    name=f"{case.name} ({model.level}, {model.stiffness.label} stiffness)")
     if args.json:
         from femgear.cli.common import emit_json
 
         emit_json({"speed_rpm": sw.speed_rpm, "mesh_frequency": sw.mesh_frequency, "dte_rms": sw.dte_rms,
                    "natural_frequencies_hz": modal.frequencies, "mesh_energy": modal.energy["mesh"],
+                   "resonances": [{"mesh_frequency": x, "harmonic": k, "natural_frequency": f}
+                                  for x, k, f in marks],
                    "files": {k: str(v) for k, v in files.items()}})
         return 0
-    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s}")
+    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s}  (DTE: dynamic transmission error)")
     for r, f, d in zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms):
         print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f}")
     _print_modes(modal)
+    for x, k, f in marks:
+        print(f"resonance in range: f_m = {x:.1f} Hz, mesh harmonic {k} meets the natural frequency {f:.1f} Hz")
     for name, path in files.items():
         print(f"{name}: {path}")
     return 0
-
-
-def modal_level(args, case) -> str:
-    """"<dynamics level>, <stiffness> stiffness" of a run with these arguments, for figure titles."""
-    level = args.level or (case.levels.dynamics if case.levels.dynamics != "none" else "lumped")
-    return f"{level}, {args.stiffness or case.levels.stiffness} stiffness"
 
 
 def _kahraman_singh(args, out: Path) -> int:

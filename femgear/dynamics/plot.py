@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.dynamics.modal import resonance_marks
 from femgear.dynamics.response import Response, spectrum
 
 
@@ -142,19 +143,6 @@ def plot_spectra(res: Response, path, max_order: float = 32.0, name: str = "") -
     axes[-1].set_xlabel(f"mesh order f/f_m  (mesh frequency f_m = {res.mesh_frequency:.1f} Hz)")
     fig.suptitle(_title(name, "spectra (Hanning window, peak amplitudes, not RMS)"))
     return _save(fig, path)
-
-
-def resonance_marks(frequencies, mesh_energy, f_lo: float, f_hi: float, min_energy: float = 0.05,
-                    harmonics: int = 4) -> list[tuple[float, int, float]]:
-    """Where the mesh excitation meets a natural frequency inside a mesh-frequency range [Hz].
-
-    The k-th mesh harmonic excites a mode of natural frequency f_n when k f_m = f_n, so a mode with at
-    least ``min_energy`` of its strain energy in the mesh resonates at the mesh frequencies f_n / k,
-    k = 1 … ``harmonics``.  Returns (f_n / k, k, f_n) for those inside [f_lo, f_hi], by f_n / k.
-    """
-    marks = [(f / k, k, float(f)) for f, e in zip(frequencies, mesh_energy) if f > 0 and e >= min_energy
-             for k in range(1, harmonics + 1) if f_lo <= f / k <= f_hi]
-    return sorted(marks)
 
 
 def plot_sweep(sweep, path, modal=None, name: str = "", harmonics: int = 4) -> Path:

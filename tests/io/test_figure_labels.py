@@ -10,6 +10,7 @@ import pytest
 
 import femgear.plot
 from femgear.dynamics import plot as dplot
+from femgear.dynamics.modal import resonance_marks
 from femgear.dynamics.response import Response, spectrum
 
 
@@ -74,7 +75,7 @@ def test_dynamics_figures_carry_the_scene_name_and_spelled_out_quantities(figure
 def test_resonances_are_where_a_mesh_harmonic_meets_a_natural_frequency():
     """k f_m = f_n: the 8321 Hz mode resonates at f_m = 2080 Hz (k = 4) and 2774 Hz (k = 3), not 4160 Hz (out of
     range); a mode with 1 % mesh energy and the rigid mode are not marked."""
-    marks = dplot.resonance_marks([0.0, 2851.0, 4000.0, 8321.0], [0.0, 0.15, 0.01, 0.84], 250.0, 3100.0)
+    marks = resonance_marks([0.0, 2851.0, 4000.0, 8321.0], [0.0, 0.15, 0.01, 0.84], 250.0, 3100.0)
     assert [(round(x), k) for x, k, _ in marks] == [(713, 4), (950, 3), (1426, 2), (2080, 4), (2774, 3), (2851, 1)]
 
 
