@@ -12,7 +12,7 @@ from femgear.cli.common import emit_json
 
 def register(sub) -> None:
     p = sub.add_parser("sweep", help="run many load cases of a base scene (resumable)")
-    p.add_argument("sweep", metavar="SWEEP", help="sweep file (TOML): base scene, [grid], [[case]]")
+    p.add_argument("sweep", metavar="SWEEP", help="sweep file (TOML): base, name, outputs, [grid], [[case]] (see docs/guide/sweeps.md)")
     p.add_argument("--workers", type=int, default=2, help="local worker processes (default 2)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run on a Dask distributed scheduler, e.g. tcp://10.0.0.5:8786 (the workers need femgear "
@@ -22,7 +22,8 @@ def register(sub) -> None:
                         "(workers started in the same shared folder) instead of absolute paths")
     p.add_argument("--outputs", default=None, metavar="COL[,COL...]",
                    help="results.csv columns drawn against the swept keys in summary.png (default: the sweep "
-                        "file's outputs, else Hertz pressure, minimum film, mean μ and DTE RMS where computed)")
+                        "file's outputs, else the Hertz pressure at the pitch point, the minimum film, the mean "
+                        "friction coefficient and the dynamic transmission error (DTE) RMS, where computed)")
     p.add_argument("--out", type=Path, default=Path("out") / "sweeps", help="output root (default out/sweeps)")
     p.add_argument("--plots", action="store_true", help="write each case's PNG figures")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")

@@ -43,7 +43,7 @@ def write_summary(spec: SweepSpec, rows: Sequence[Mapping[str, Any]], folder: Pa
         return None
     return plot_sweep_summary(done, spec.keys, outputs, folder / "summary.png",
                               title=f"sweep {spec.name} of scene {_scene_name(spec)}: {len(done)} of {len(rows)} "
-                                    "cases finished")
+                                    "cases finished (SI units)")
 
 
 def _scene_name(spec: SweepSpec) -> str:
