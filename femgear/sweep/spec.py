@@ -26,6 +26,7 @@ import itertools
 import json
 import re
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 from femgear.errors import SceneError
@@ -40,9 +41,9 @@ class Case:
     #: where the case was written in the sweep file (``grid`` or ``case[i]``), for messages
     source: str = field(default="grid", compare=False)
 
-    @property
+    @cached_property
     def values(self) -> dict[str, object]:
-        """The overridden values by key, as TOML reads them (numbers stay numbers)."""
+        """The overridden values by key, as TOML reads them (numbers stay numbers); read once."""
         out = {}
         for text in self.overrides:
             path, value = parse_override(text)
