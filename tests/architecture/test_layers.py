@@ -52,14 +52,14 @@ MAX_FUNCTION_LINES = 100
 
 # low → high tiers of each ordered package's children ("*": the package's own __init__)
 LAYERS = {
-    "base": [["errors", "docfields"], ["perf"]],
+    "base": [["*"], ["errors", "docfields"], ["perf"]],   # "*": femgear/__init__ (a docstring and __version__)
     "physics": [["physics"]],
     "levels": [["levels"]],
     "input": [["scene"], ["rexs"]],
     "case": [["case"]],
     "system": [["system"]],
     "driver": [["results"], ["rate"], ["pipeline", "summary"]],
-    "edge": [["edge"], ["__main__"], ["*"]],
+    "edge": [["edge"], ["__main__"]],
 }
 ORDER: dict[str, list[list[str]]] = {
     "femgear": [tier for tiers in LAYERS.values() for tier in tiers],

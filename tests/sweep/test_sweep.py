@@ -28,8 +28,8 @@ def write_sweep(tmp_path, body: str, name: str = "t") -> Path:
 
 
 def numeric(rows):
-    """Rows without wall-time columns (those differ run to run)."""
-    return [{k: v for k, v in r.items() if not k.endswith("seconds")} for r in rows]
+    """Rows without wall-time and worker columns (those differ run to run)."""
+    return [{k: v for k, v in r.items() if not k.endswith("seconds") and k != "worker"} for r in rows]
 
 
 def test_rig_sweep_has_the_15_conditions():
@@ -40,7 +40,8 @@ def test_rig_sweep_has_the_15_conditions():
     assert parse_sweep(RIG).cases == spec.cases        # ids are stable
 
 
-@pytest.mark.parametrize("body,key", [("[grid]\n\"a.b\" = 3\n", "grid.a.b"), ("foo = 1\n", "foo"), ("", "grid")])
+@pytest.mark.parametrize("body,key", [("[grid]\n\"a.b\" = 3\n", "grid.a.b"), ("foo = 1\n", "foo"), ("", "grid"),
+                                      ("[grid]\n\"a.b\" = [[1]]\n", "grid.a.b"), ("outputs = 3\n[grid]\n\"a\" = [1]\n", "outputs")])
 def test_bad_sweep_files_name_the_key(tmp_path, body, key):
     with pytest.raises(SceneError) as info:
         parse_sweep(write_sweep(tmp_path, body))
@@ -67,19 +68,54 @@ def test_local_pool_and_dask_cluster_give_identical_results(tmp_path, full):
         assert len(list(csv.DictReader(fh))) == 15
 
 
-def test_an_impossible_case_is_reported_and_the_others_complete(tmp_path):
-    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 0.0, 200.0]\n' + STATIC +
-                                 '[[case]]\n"pair.no_such_key" = 1\n')
-    result = run_sweep(parse_sweep(path), tmp_path / "out", workers=2, progress=False)
-    status = {r["overrides"].split(" ")[0]: r for r in result.rows}
-    assert status["operating.torque=100.0"]["status"] == "done"
-    assert status["operating.torque=200.0"]["status"] == "done"
-    assert "operating.torque" in status["operating.torque=0.0"]["error"]
-    assert "pair.no_such_key" in status["pair.no_such_key=1"]["error"]
-    assert result.failed == 2
-    # failed cases leave no finished folder, only their error record
+def block_case(tmp_path, spec, index: int, out: str = "out") -> str:
+    """Put a file where case ``index`` must rename its finished folder: that case fails when it finishes
+    (a case folder that cannot be written), a failure only running the case can find."""
+    cases = tmp_path / out / spec.name / "cases"
+    cases.mkdir(parents=True)
+    blocked = spec.cases[index].case_id
+    (cases / blocked).write_text("in the way")
+    return blocked
+
+
+def test_a_failing_case_is_reported_and_the_others_complete(tmp_path):
+    spec = parse_sweep(write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 150.0, 200.0]\n' + STATIC))
+    blocked = block_case(tmp_path, spec, 1)
+    result = run_sweep(spec, tmp_path / "out", workers=2, progress=False)
+    status = {r["case"]: r for r in result.rows}
+    assert [status[c.case_id]["status"] for c in spec.cases] == ["done", "failed", "done"]
+    assert "Error" in status[blocked]["error"]
+    assert result.failed == 1
+    # the failed case leaves no finished folder, only its error record
     cases = tmp_path / "out" / "t" / "cases"
-    assert sorted(p.name.endswith(".error.json") for p in cases.iterdir()).count(True) == 2
+    assert sorted(p.name for p in cases.iterdir() if p.name.endswith(".error.json")) == [blocked + ".error.json"]
+
+
+@pytest.mark.parametrize("body,key", [
+    ('[grid]\n"operating.sped_rpm" = [100.0, 200.0]\n' + STATIC, "grid.operating.sped_rpm"),          # a typo
+    ('[grid]\n"operating.torque" = [100.0, 0.0]\n' + STATIC, "grid.operating.torque"),                # range
+    ('[grid]\n"operating.speed_rpm" = ["fast"]\n' + STATIC, "grid.operating.speed_rpm"),              # type
+    ('[grid]\n"operating.torque" = [100.0]\n' + STATIC + '[[case]]\n"pair.no_such_key" = 1\n',
+     "case[0].pair.no_such_key"),
+])
+def test_bad_cases_are_refused_before_any_case_runs(tmp_path, body, key):
+    """Every case's scene is validated first: one SceneError naming the key as the sweep file spells it,
+    and nothing is computed (no output folder)."""
+    spec = parse_sweep(write_sweep(tmp_path, body))
+    with pytest.raises(SceneError) as info:
+        run_sweep(spec, tmp_path / "out", workers=1, progress=False)
+    assert info.value.key == key
+    assert not (tmp_path / "out").exists()
+
+
+def test_cli_refuses_a_grid_typo_with_one_line_and_exit_2(tmp_path):
+    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 150.0]\n"operating.sped_rpm" = [1.0]\n')
+    run = subprocess.run([sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(tmp_path / "o")],
+                         capture_output=True, text=True)
+    assert run.returncode == 2
+    assert run.stderr.strip().splitlines() == ["femgear: error: grid.operating.sped_rpm: unknown key "
+                                               "(checked before any case ran)"]
+    assert not (tmp_path / "o").exists()
 
 
 def done_cases(cases: Path) -> list[Path]:
@@ -150,7 +186,8 @@ def test_interrupted_sweep_stops_cleanly_with_a_consistent_table(tmp_path, how):
 
 
 def test_a_sweep_with_failed_cases_exits_1_and_says_how_many(tmp_path):
-    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 0.0]\n' + STATIC)
+    path = write_sweep(tmp_path, '[grid]\n"operating.torque" = [100.0, 150.0]\n' + STATIC)
+    block_case(tmp_path, parse_sweep(path), 1, out="o")
     run = subprocess.run([sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(tmp_path / "o"),
                           "--workers", "1"], capture_output=True, text=True)
     assert run.returncode == 1

@@ -6,15 +6,23 @@ import argparse
 from pathlib import Path
 
 from femgear.edge.cli.common import add_scene_arguments, emit_json, load_scene_arg
+from femgear.edge.cli.levels import level_choices
+
+#: a mesh stiffness of the dynamics only (not a scene level): c_γ times the contact-line length
+DYNAMICS_ONLY_STIFFNESS = ("contact-line",)
 
 
 def register(sub) -> None:
     p = sub.add_parser("dynamics", help="simulate the gear-rotor dynamics of a scene")
     add_scene_arguments(p)
-    p.add_argument("--level", choices=("lumped", "timoshenko"), default=None,
-                   help="dynamics level (default: physics.dynamics, or lumped)")
-    p.add_argument("--stiffness", default=None,
-                   help="mesh stiffness: constant, contact-line, iso6336, pem, fe (default: physics.stiffness)")
+    levels = level_choices("dynamics", exclude=("none",))
+    p.add_argument("--level", choices=levels, default=None,
+                   help=f"dynamics level: {', '.join(levels)} (default: physics.dynamics, or {levels[0]})")
+    stiffness = level_choices("stiffness")
+    p.add_argument("--stiffness", choices=stiffness + DYNAMICS_ONLY_STIFFNESS, default=None, metavar="LEVEL",
+                   help=f"mesh stiffness level: {', '.join(stiffness)} (the physics.stiffness levels), or "
+                        "contact-line (c_γ times the length of the lines in contact; dynamics only) "
+                        "(default: physics.stiffness)")
     p.add_argument("--method", choices=("expo", "rk4", "newmark"), default=None,
                    help="integrator (default: expo for lumped, rk4 for timoshenko)")
     p.add_argument("--dt", type=float, default=None, help="time step [s] (default per integrator)")
@@ -25,8 +33,10 @@ def register(sub) -> None:
     p.add_argument("--json", action="store_true", help="print one JSON summary as the last line")
     p.add_argument("--modes", action="store_true", help="print the natural frequencies and modal energies")
     p.add_argument("--sweep", metavar="RPM0:RPM1:N", default=None,
-                   help="instead of one run: time-domain speed sweep of the driver speed, DTE RMS vs mesh "
-                        "frequency beside the natural frequencies (writes dynamics_sweep.png)")
+                   help="instead of one run: time-domain speed sweep of the driver speed; plots the RMS of the "
+                        "dynamic transmission error (DTE) against mesh frequency with the natural frequencies "
+                        "(≥ 5 %% mesh strain energy) marked where the mesh frequency or its 2nd-4th harmonic "
+                        "meets them (writes dynamics_sweep.png)")
     p.add_argument("--kahraman-singh", action="store_true",
                    help="instead of one run: up/down frequency sweeps of the Kahraman-Singh backlash oscillator "
                         "(writes kahraman_singh.png)")
@@ -63,7 +73,7 @@ def _run(args: argparse.Namespace) -> int:
     model = build_model(case, args.level, stiffness=args.stiffness)
     run = run_dynamics(model, method=args.method or case.numerics.dynamics_method, dt=args.dt, cycles=args.cycles,
                        transient_cycles=args.transient, steps_per_period=case.numerics.steps_per_mesh_period)
-    files = write_dynamics(run, out, plots=not args.no_plots)
+    files = write_dynamics(run, out, plots=not args.no_plots, name=case.name)
     summary = dynamics_summary(run)
     if args.json:
         emit_json({**summary, "files": {k: str(v) for k, v in files.items()}})
@@ -122,29 +132,37 @@ def _check_sweep_speeds(scene, speeds) -> None:
 
 def _sweep(case, args, out: Path) -> int:
     from femgear.system.dynamics import build_model
-    from femgear.system.dynamics.modal import modal_analysis
+    from femgear.system.dynamics.modal import modal_analysis, resonance_marks
     from femgear.system.dynamics.sweep import speed_sweep
 
     rpm = sweep_speeds(args.sweep)
     kw = {"level": args.level, "stiffness": args.stiffness}
     sw = speed_sweep(case, rpm, method=args.method, **kw)
-    modal = modal_analysis(build_model(case, **kw))
+    model = build_model(case, **kw)
+    modal = modal_analysis(model)
+    marks = resonance_marks(modal.frequencies, modal.energy["mesh"], float(sw.mesh_frequency.min()),
+                            float(sw.mesh_frequency.max()))
     files = {}
     if not args.no_plots:
         from femgear.edge.plot.dynamics import plot_sweep
 
-        files["sweep"] = plot_sweep(sw, out / "dynamics_sweep.png", modal)
+        files["sweep"] = plot_sweep(sw, out / "dynamics_sweep.png", modal,
+                                    name=f"{case.name} ({model.level}, {model.stiffness.label} stiffness)")
     if args.json:
         from femgear.edge.cli.common import emit_json
 
         emit_json({"speed_rpm": sw.speed_rpm, "mesh_frequency": sw.mesh_frequency, "dte_rms": sw.dte_rms,
                    "natural_frequencies_hz": modal.frequencies, "mesh_energy": modal.energy["mesh"],
+                   "resonances": [{"mesh_frequency": x, "harmonic": k, "natural_frequency": f}
+                                  for x, k, f in marks],
                    "files": {k: str(v) for k, v in files.items()}})
         return 0
-    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s}")
+    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s}  (DTE: dynamic transmission error)")
     for r, f, d in zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms):
         print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f}")
     _print_modes(modal)
+    for x, k, f in marks:
+        print(f"resonance in range: f_m = {x:.1f} Hz, mesh harmonic {k} meets the natural frequency {f:.1f} Hz")
     for name, path in files.items():
         print(f"{name}: {path}")
     return 0

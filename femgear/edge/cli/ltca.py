@@ -22,14 +22,15 @@ from femgear.errors import ArgumentError
 
 
 def register(sub) -> None:
-    p = sub.add_parser("ltca", help="loaded tooth contact analysis alone: TE, harmonics, load maps, Harris map")
+    p = sub.add_parser("ltca", help="loaded tooth contact analysis (LTCA) alone: transmission error (TE), its "
+                                            "harmonics, load maps, Harris map")
     add_scene_arguments(p)
     p.add_argument("--torques", default=None, metavar="T1,T2,...",
                    help="driver torques [N m] (default: the scene's operating.torque)")
-    p.add_argument("--harris", action="store_true", help="add the Harris map (TE p-p against torque)")
+    p.add_argument("--harris", action="store_true", help="add the Harris map (TE peak-to-peak against torque)")
     p.add_argument("--harris-range", default=None, metavar="TMIN,TMAX[,N]",
                    help="torque range of the Harris map [N m] (default: 0.1 to 2 x the design torque, 12 points)")
-    p.add_argument("--harmonics", type=int, default=5, metavar="N", help="mesh orders reported (default 5)")
+    p.add_argument("--harmonics", type=int, default=5, metavar="N", help="mesh orders of the TE reported as peak amplitudes (default 5)")
     p.add_argument("--phases", type=int, default=64, metavar="N", help="phases per mesh period (default 64)")
     p.add_argument("--points", type=int, default=16, metavar="N", help="points per contact line (default 16)")
     p.add_argument("--no-check", action="store_true", help="skip the 2x-points check of the harmonics")
@@ -121,14 +122,16 @@ def _write(result, scene, pair, out: Path, plots: bool, vtk: bool) -> dict[str, 
         from femgear.edge.plot.ltca import plot_harmonics, plot_harris, plot_load_distribution, plot_te_curves
 
         name = scene.meta.name
-        files["te_curves_png"] = plot_te_curves(result.analyses, out / "te_curves.png", f"{name}: loaded TE (LTCA)")
+        files["te_curves_png"] = plot_te_curves(result.analyses, out / "te_curves.png",
+                                                f"{name}: loaded transmission error (TE), LTCA")
         files["te_harmonics_png"] = plot_harmonics(result.analyses, out / "te_harmonics.png",
-                                                   f"{name}: loaded TE harmonics")
+                                                   f"{name}: harmonics of the loaded transmission error (TE)")
         for m in result.maps:
             files[f"load_{torque_tag(m.torque)}_png"] = plot_load_distribution(
-                m, out / f"load_{torque_tag(m.torque)}.png")
+                m, out / f"load_{torque_tag(m.torque)}.png", name=name)
         if result.harris is not None:
-            files["harris_png"] = plot_harris(result.harris, out / "harris.png", f"{name}: Harris map (LTCA)")
+            files["harris_png"] = plot_harris(result.harris, out / "harris.png",
+                                              f"{name}: Harris map, loaded transmission error against torque")
     if vtk:
         for m in result.maps:
             files[f"maps_{torque_tag(m.torque)}_pvd"] = write_maps(out, m)

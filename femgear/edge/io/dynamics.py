@@ -43,8 +43,9 @@ def _save_npz(path: Path, **arrays: np.ndarray) -> Path:
     return write_bytes_atomic(path, buf.getvalue())
 
 
-def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True) -> dict[str, Path]:
-    """Write ``dynamics.json``, ``dynamics.npz`` (and the PNG figures) into ``folder``."""
+def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True, name: str = "") -> dict[str, Path]:
+    """Write ``dynamics.json``, ``dynamics.npz`` (and the PNG figures, titled with the scene ``name``) into
+    ``folder``."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     res = run.response
@@ -56,8 +57,9 @@ def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True) -> 
     if plots:
         from femgear.edge.plot import dynamics as plot
 
-        files["time_histories"] = plot.plot_time_histories(res, folder / "dynamics_time.png")
-        files["mesh_force"] = plot.plot_mesh_force(res, folder / "dynamics_mesh_force.png")
-        files["phase_planes"] = plot.plot_phase_planes(res, folder / "dynamics_phase.png")
-        files["spectra"] = plot.plot_spectra(res, folder / "dynamics_spectra.png")
+        name = f"{name} ({run.model.level}, {run.model.stiffness.label} stiffness)" if name else ""
+        files["time_histories"] = plot.plot_time_histories(res, folder / "dynamics_time.png", name=name)
+        files["mesh_force"] = plot.plot_mesh_force(res, folder / "dynamics_mesh_force.png", name=name)
+        files["phase_planes"] = plot.plot_phase_planes(res, folder / "dynamics_phase.png", name=name)
+        files["spectra"] = plot.plot_spectra(res, folder / "dynamics_spectra.png", name=name)
     return files

@@ -140,7 +140,7 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tup
     if result.coupled is not None:
         from femgear.edge.io.dynamics import write_dynamics
 
-        dyn = write_dynamics(result.coupled.state.dynamics, out_dir, plots)
+        dyn = write_dynamics(result.coupled.state.dynamics, out_dir, plots, name=result.case.name)
         files.update({f"dynamics_{k}": v for k, v in dyn.items()})
     if plots:
         files.update(_figures(result, out_dir))
@@ -167,14 +167,18 @@ def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
     from femgear.edge.plot.path import plot_contact_path, plot_friction_path
 
     name, t = result.case.name, result.tribology
-    files = {"contact_path_png": plot_contact_path(result.contact, out_dir / "contact_path.png", title=name)}
+    files = {"contact_path_png": plot_contact_path(result.contact, out_dir / "contact_path.png",
+                                                   title=f"{name}:\nquasi-static contact along the path (Hertz, "
+                                                         "film formulas)")}
     if t.friction_coefficient is not None:
         files["friction_path_png"] = plot_friction_path(
             result.case.path.s, t.friction_coefficient, t.temperature_rise, out_dir / "friction_path.png",
-            title=f"{name}: lubrication = {result.case.levels.lubrication}")
+            title=f"{name}:\nfriction and contact temperature along the path (lubrication "
+                  f"{result.case.levels.lubrication})")
     if result.rating is not None:
         from femgear.edge.plot.rating import plot_rating_path
 
         files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
-                                                    out_dir / "rating_path.png", title=f"{name}: ISO ratings")
+                                                    out_dir / "rating_path.png",
+                                                    title=f"{name}:\nISO/TS 6336-20/22 scuffing and micropitting ratings")
     return files

@@ -38,13 +38,13 @@ def plot_coupled_path(s: np.ndarray, load_per_length: np.ndarray, path: str | Pa
             ax.set_ylabel("load per length w' [N/mm]")
         elif name == "friction":
             ax.plot(s_mm, mu, "C0-")
-            ax.set_ylabel("μ [-]", color="C0")
+            ax.set_ylabel("friction coefficient μ [-]", color="C0")
             if temperature_rise is not None:
                 twin = ax.twinx()
                 twin.plot(s_mm, temperature_rise, "C3--")
-                twin.set_ylabel("ΔT contact [K]", color="C3")
+                twin.set_ylabel("contact temperature rise ΔT [K]", color="C3")
         elif name == "thermal":
-            _members(ax, s_mm, thermal_deviation, "thermal deviation ζ_T [µm]")
+            _members(ax, s_mm, thermal_deviation, "thermal flank\ndeviation ζ_T [µm]")
         else:
             _members(ax, s_mm, wear, f"wear depth [µm]\nafter {wear_cycles:g} cycles")
         ax.axvline(0, color="0.6", lw=0.8, ls=":")
@@ -68,7 +68,8 @@ def plot_convergence(iteration, mesh_force_change, mu_change, path: str | Path, 
     """Change of the dynamic mesh force (relative) and of μ (absolute) per coupling pass, log scale."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(6, 4))
-    for values, style, label in ((mesh_force_change, "o-", "mesh force (relative)"), (mu_change, "s--", "μ (absolute)")):
+    for values, style, label in ((mesh_force_change, "o-", "dynamic mesh force (relative change)"),
+                                 (mu_change, "s--", "friction coefficient μ (absolute change)")):
         pts = [(i, v) for i, v in zip(iteration, values) if v is not None and v > 0]
         if pts:
             ax.semilogy(*zip(*pts), style, label=label)
@@ -89,12 +90,13 @@ def run_figures(result, out_dir: str | Path) -> dict[str, Path]:
     files = {"tribology_path_png": plot_coupled_path(
         case.path.s, t.load_per_length, out_dir / "tribology_path.png", mu=t.friction_coefficient,
         temperature_rise=t.temperature_rise, thermal_deviation=t.thermal_deviation, wear=t.wear,
-        wear_cycles=t.wear_cycles, title=f"{case.name}: along the path of contact")}
+        wear_cycles=t.wear_cycles, title=f"{case.name}:\nload, friction, thermal deviation and wear along the path "
+                                         "of contact")}
     if result.coupled is not None:
         h = result.coupled.history
         files["convergence_png"] = plot_convergence(
             h.iteration, h.mesh_force_change, h.mu_change, out_dir / "convergence.png",
-            title=f"{case.name}: {case.levels.coupling} coupling")
+            title=f"{case.name}: convergence of the {case.levels.coupling} coupling")
     return files
 
 

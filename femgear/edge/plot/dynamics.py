@@ -1,6 +1,9 @@
 """PNG plots of dynamic responses (matplotlib is imported inside the functions only).
 
-Each function takes frozen results and a path, writes one PNG and returns the path.
+Each function takes frozen results and a path, writes one PNG and returns the path.  Every
+figure carries a title saying what it shows, prefixed with the scene name ``name`` when given;
+quantities are spelled out on the axes ("dynamic transmission error (DTE)"), spectra say that
+they show peak amplitudes.
 """
 
 from __future__ import annotations
@@ -9,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.system.dynamics.modal import resonance_marks
 from femgear.system.dynamics.response import Response, spectrum
 
 
@@ -31,7 +35,19 @@ def _last_cycles(res: Response, cycles: float) -> np.ndarray:
     return res.t >= res.t[-1] - cycles / res.mesh_frequency
 
 
-def plot_time_histories(res: Response, path, cycles: float = 5.0) -> Path:
+def _title(name: str, what: str) -> str:
+    """``name: what``, on two lines where one would not fit a figure."""
+    what = what.strip()
+    if not name:
+        return what
+    return f"{name}: {what}" if len(name) + len(what) < 80 else f"{name}:\n{what}"
+
+
+#: the x label of the time histories: the window starts at 0
+TIME_LABEL = "time t from the start of the window [ms]"
+
+
+def plot_time_histories(res: Response, path, cycles: float = 5.0, name: str = "") -> Path:
     """Displacement and velocity of pinion and gear centres over the last ``cycles`` mesh periods.
 
     x and y each get their own panel (own scale): on one axis the smaller one hid under the other.
@@ -40,8 +56,8 @@ def plot_time_histories(res: Response, path, cycles: float = 5.0) -> Path:
     sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
     fig, axes = plt.subplots(4, 2, figsize=(10, 9), sharex=True)
-    rows = [("displacement", 0, 1e6, "x − mean [µm]"), ("displacement", 1, 1e6, "y − mean [µm]"),
-            ("velocity", 0, 1e3, "ẋ − mean [mm/s]"), ("velocity", 1, 1e3, "ẏ − mean [mm/s]")]
+    rows = [("displacement", 0, 1e6, "displacement\nx − mean [µm]"), ("displacement", 1, 1e6, "displacement\ny − mean [µm]"),
+            ("velocity", 0, 1e3, "velocity\nẋ − mean [mm/s]"), ("velocity", 1, 1e3, "velocity\nẏ − mean [mm/s]")]
     for col, member in enumerate(("pinion", "gear")):
         for row, (kind, k, scale, label) in enumerate(rows):
             q = res.member(member, kind)[sel, k]
@@ -49,11 +65,12 @@ def plot_time_histories(res: Response, path, cycles: float = 5.0) -> Path:
             axes[row, col].set_ylabel(label)
             axes[row, col].grid(alpha=0.3)
         axes[0, col].set_title(f"{member} centre")
-        axes[-1, col].set_xlabel("t [ms]")
+        axes[-1, col].set_xlabel(TIME_LABEL)
+    fig.suptitle(_title(name, f"lateral motion of the pinion and gear centres, last {cycles:g} mesh periods"))
     return _save(fig, path)
 
 
-def plot_mesh_force(res: Response, path, cycles: float = 5.0) -> Path:
+def plot_mesh_force(res: Response, path, cycles: float = 5.0, name: str = "") -> Path:
     """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference."""
     plt = _pyplot()
     sel = _last_cycles(res, cycles)
@@ -67,11 +84,12 @@ def plot_mesh_force(res: Response, path, cycles: float = 5.0) -> Path:
     diff = right - left
     ax_d.plot(t_ms, diff, color="k", lw=1.0)
     same = np.max(np.abs(diff)) <= 1e-9 * max(np.max(np.abs(left)), 1.0)
-    ax_d.set_ylabel("right − left [N]")
+    ax_d.set_ylabel("force difference\nright − left [N]")
     ax_d.set_title("the helices carry equal forces (stagger 0)" if same else "", fontsize=9)
-    ax_d.set_xlabel("t [ms]")
+    ax_d.set_xlabel(TIME_LABEL)
     for a in (ax, ax_d):
         a.grid(alpha=0.3)
+    fig.suptitle(_title(name, f"dynamic mesh force per helix (normal to the flank), last {cycles:g} mesh periods"))
     return _save(fig, path)
 
 
@@ -84,7 +102,7 @@ def _smooth_orbit(t: np.ndarray, d: np.ndarray, v: np.ndarray, upsample: int = 8
     return CubicHermiteSpline(t, d, v)(tf), CubicSpline(t, v)(tf)
 
 
-def plot_phase_planes(res: Response, path, cycles: float = 10.0) -> Path:
+def plot_phase_planes(res: Response, path, cycles: float = 10.0, name: str = "") -> Path:
     """Velocity against displacement (about their means) of pinion and gear, x and y in separate panels,
     over the last ``cycles`` mesh periods, interpolated between the time steps."""
     plt = _pyplot()
@@ -99,42 +117,74 @@ def plot_phase_planes(res: Response, path, cycles: float = 10.0) -> Path:
             ax = axes[row, col]
             ax.plot(x * 1e6, xd * 1e3, lw=0.8, color=f"C{row}")
             ax.set_title(f"{member}, {ax_name}: phase plane ({cycles:g} mesh periods)", fontsize=10)
-            ax.set_xlabel(f"{ax_name} − mean [µm]")
+            ax.set_xlabel(f"displacement {ax_name} − mean [µm]")
             ax.set_ylabel(f"velocity {ax_name} − mean [mm/s]")
             ax.grid(alpha=0.3)
+    fig.suptitle(_title(name, "phase planes (velocity against displacement) of the pinion and gear centres"))
     return _save(fig, path)
 
 
-def plot_spectra(res: Response, path, max_order: float = 32.0) -> Path:
-    """Hanning spectra of the DTE and of the gear's y acceleration at a bearing, with mesh orders."""
+def plot_spectra(res: Response, path, max_order: float = 32.0, name: str = "") -> Path:
+    """Hanning-windowed single-sided spectra of the DTE and of the gear's left-bearing y acceleration against
+    the mesh order: each line's height is the peak amplitude of that harmonic (a sine of amplitude A shows A,
+    :func:`femgear.system.dynamics.response.spectrum`)."""
     plt = _pyplot()
     dt = float(np.median(np.diff(res.t)))
-    specs = [("DTE [µm]", spectrum(res.dte, dt, res.mesh_frequency), 1e6),
-             ("gear bearing acceleration y [m/s²]", spectrum(res.bearing_acceleration[:, 2, 1], dt, res.mesh_frequency), 1.0)]
-    fig, axes = plt.subplots(len(specs), 1, figsize=(9, 6), sharex=True)
+    specs = [("dynamic transmission error (DTE)\npeak amplitude [µm]", spectrum(res.dte, dt, res.mesh_frequency), 1e6),
+             ("gear left-bearing acceleration y\npeak amplitude [m/s²]",
+              spectrum(res.bearing_acceleration[:, 2, 1], dt, res.mesh_frequency), 1.0)]
+    fig, axes = plt.subplots(len(specs), 1, figsize=(9, 6.4), sharex=True)
     for ax, (label, sp, scale) in zip(axes, specs):
         sel = sp.order <= max_order
         ax.plot(sp.order[sel], sp.amplitude[sel] * scale)
         ax.set_ylabel(label)
         for k in range(1, int(max_order) + 1):
             ax.axvline(k, color="0.8", lw=0.6, zorder=0)
-    axes[-1].set_xlabel(f"mesh order f/f_m  (f_m = {res.mesh_frequency:.1f} Hz)")
+    axes[-1].set_xlabel(f"mesh order f/f_m  (mesh frequency f_m = {res.mesh_frequency:.1f} Hz)")
+    fig.suptitle(_title(name, "spectra (Hanning window, peak amplitudes, not RMS)"))
     return _save(fig, path)
 
 
-def plot_sweep(sweep, path, modal=None) -> Path:
-    """DTE RMS against mesh frequency, with the natural frequencies (mesh energy ≥ 5 %) marked."""
+def plot_sweep(sweep, path, modal=None, name: str = "", harmonics: int = 4) -> Path:
+    """RMS of the dynamic transmission error against mesh frequency (driver speed on the top axis), with
+    the natural frequencies whose mesh strain energy is ≥ 5 % marked where the mesh frequency or one of
+    its first ``harmonics`` harmonics meets them (:func:`resonance_marks`); those modes are listed."""
     plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(8, 4))
-    ax.plot(sweep.mesh_frequency, sweep.dte_rms * 1e6, "o-", ms=3)
+    fig, ax = plt.subplots(figsize=(8.5, 5.6))
+    fm = np.asarray(sweep.mesh_frequency)
+    ax.plot(fm, np.asarray(sweep.dte_rms) * 1e6, "o-", ms=3, label="DTE RMS")
+    ax.set_xlabel("mesh frequency f_m [Hz]")
+    ax.set_ylabel("dynamic transmission error (DTE)\nRMS [µm]")
+    ax.grid(alpha=0.3)
+    if fm.size and fm[0] > 0:
+        ratio = float(sweep.speed_rpm[0]) / float(fm[0])          # rpm per Hz of mesh frequency
+        top = ax.secondary_xaxis("top", functions=(lambda f: f * ratio, lambda r: r / ratio))
+        top.set_xlabel("driver speed [rpm]")
     if modal is not None:
-        for f, e in zip(modal.frequencies, modal.energy["mesh"]):
-            if f > 0 and e >= 0.05 and sweep.mesh_frequency.min() <= f <= sweep.mesh_frequency.max():
-                ax.axvline(f, color="C3", ls="--", lw=0.8)
-                ax.text(f, ax.get_ylim()[1] * 0.95, f" {f:.0f} Hz", color="C3", va="top", fontsize=8)
-    ax.set_xlabel("mesh frequency [Hz]")
-    ax.set_ylabel("DTE RMS [µm]")
+        _mark_modes(ax, modal, float(fm.min()), float(fm.max()), harmonics)
+    fig.suptitle(_title(name, "speed sweep: dynamic transmission error against mesh frequency"), fontsize=10)
     return _save(fig, path)
+
+
+def _mark_modes(ax, modal, lo: float, hi: float, harmonics: int) -> None:
+    """Vertical lines at the resonant mesh frequencies f_n / k and a legend of the modes they belong to."""
+    marks = resonance_marks(modal.frequencies, modal.energy["mesh"], lo, hi, harmonics=harmonics)
+    modes = sorted({f_n for _, _, f_n in marks})
+    energy = dict(zip(np.asarray(modal.frequencies, dtype=float), modal.energy["mesh"]))
+    bottom = ax.get_ylim()[0]
+    for x, k, f_n in marks:
+        color = f"C{1 + modes.index(f_n) % 9}"
+        ax.axvline(x, color=color, ls="--" if k == 1 else ":", lw=1.0)
+        ax.text(x, bottom, f"{f_n:.0f} Hz" + (f" / {k} " if k > 1 else " "), color=color, va="bottom",
+                ha="right", fontsize=7, rotation=90)
+    for f_n in modes:
+        ax.plot([], [], color=f"C{1 + modes.index(f_n) % 9}", ls="--",
+                label=f"natural frequency f_n = {f_n:.0f} Hz ({100 * energy[f_n]:.0f} % of its strain energy in the mesh)")
+    if marks:
+        ax.plot([], [], " ", label="dashed: f_m = f_n; dotted: f_m = f_n / k, the k-th mesh harmonic meets f_n")
+    if not marks:
+        ax.plot([], [], " ", label="no natural frequency with ≥ 5 % mesh energy resonates in this range")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), frameon=False)
 
 
 def plot_branches(up, down, path) -> Path:
@@ -143,7 +193,9 @@ def plot_branches(up, down, path) -> Path:
     fig, ax = plt.subplots(figsize=(7, 4))
     ax.plot(up.frequency, up.amplitude, "o-", ms=3, label="sweep up")
     ax.plot(down.frequency, down.amplitude, "s--", ms=3, label="sweep down")
-    ax.set_xlabel("Ω = ω/ω_n")
-    ax.set_ylabel("amplitude / b")
+    ax.set_xlabel("excitation frequency over natural frequency Ω = ω/ω_n [-]")
+    ax.set_ylabel("amplitude (half peak-to-peak)\nover the backlash b [-]")
+    ax.set_title("Kahraman–Singh backlash oscillator: frequency sweeps up and down", fontsize=10)
+    ax.grid(alpha=0.3)
     ax.legend()
     return _save(fig, path)

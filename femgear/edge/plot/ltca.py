@@ -31,17 +31,17 @@ def plot_te_curves(analyses: Sequence[TEAnalysis], path: str | Path, title: str 
         ph = np.append(a.phase, 1.0)
         loop = lambda y: np.append(y, y[0]) * 1e6  # noqa: E731
         ax.plot(ph, loop(a.lte), "-", color=c, lw=1.8, label=f"{a.torque:g} N m: both helices "
-                f"(p-p {a.peak_to_peak * 1e6:.3f} µm)")
+                f"(peak-to-peak {a.peak_to_peak * 1e6:.3f} µm)")
         if a.lte_left is not None:
             ax.plot(ph, loop(a.lte_left), "--", color=c, lw=1.0, label="  left helix alone")
             ax.plot(ph, loop(a.lte_right), ":", color=c, lw=1.2, label="  right helix alone")
         ax.plot(ph, loop(a.nlte), "-", color="0.6", lw=0.8)
-    ax.plot([], [], "-", color="0.6", lw=0.8, label="unloaded TE")
+    ax.plot([], [], "-", color="0.6", lw=0.8, label="unloaded transmission error")
     ax.set_xlabel("mesh phase [base pitches]")
-    ax.set_ylabel("transmission error, normal [µm]")
+    ax.set_ylabel("transmission error (TE) along the\nnormal line of action [µm]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, ncol=2 if len(analyses) > 2 else 1)
-    ax.set_title(title or "loaded transmission error (LTCA)")
+    ax.set_title(title or "loaded transmission error (TE), loaded tooth contact analysis (LTCA)", fontsize=10)
     return save_figure(fig, path)
 
 
@@ -60,11 +60,11 @@ def plot_harmonics(analyses: Sequence[TEAnalysis], path: str | Path, title: str 
     if analyses[0].harmonics_refined is not None:
         ax.plot([], [], "k_", ms=8, label="2× points per line")
     ax.set_xticks(orders)
-    ax.set_xlabel("mesh order")
-    ax.set_ylabel("loaded TE amplitude [µm]")
+    ax.set_xlabel("mesh order (harmonic of the mesh frequency)")
+    ax.set_ylabel("loaded transmission error (TE)\npeak amplitude per harmonic [µm]")
     ax.grid(alpha=0.3, axis="y")
     ax.legend(fontsize=8)
-    ax.set_title(title or "loaded TE harmonics (LTCA)")
+    ax.set_title(title or "harmonics of the loaded transmission error (TE), LTCA", fontsize=10)
     return save_figure(fig, path)
 
 
@@ -76,14 +76,14 @@ def plot_harris(h: HarrisMap, path: str | Path, title: str = "") -> Path:
     ax.plot(h.torque, h.peak_to_peak_unmodified * 1e6, "s--", label="unmodified")
     ax.axvline(h.design_torque, color="k", lw=0.8, ls=":", label="design torque")
     ax.set_xlabel("driver torque [N m]")
-    ax.set_ylabel("loaded TE peak-to-peak [µm]")
+    ax.set_ylabel("loaded transmission error (TE)\npeak-to-peak [µm]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    ax.set_title(title or "Harris map (LTCA)")
+    ax.set_title(title or "Harris map: loaded transmission error against torque (LTCA)", fontsize=10)
     return save_figure(fig, path)
 
 
-def plot_load_distribution(maps: LoadMaps, path: str | Path, title: str = "") -> Path:
+def plot_load_distribution(maps: LoadMaps, path: str | Path, title: str = "", name: str = "") -> Path:
     """Load per unit length over the pinion's flank of each helix at the phase of the largest pressure
     (roll distance ρ₁ against face coordinate ζ) [N/mm]; loaded edge nodes marked (edge contact)."""
     plt = _plt()
@@ -103,8 +103,9 @@ def plot_load_distribution(maps: LoadMaps, path: str | Path, title: str = "") ->
             ax.legend(fontsize=7, loc="upper left")
     axes[0].set_ylabel("pinion roll distance ρ₁ [mm] (tip at top)")
     fig.colorbar(pc, ax=axes[1], label="load per length [N/mm]")
-    fig.suptitle(title or f"load over the flank at phase {maps.worst_phase:.3f} (largest pressure), "
-                 f"{maps.torque:g} N m")
+    default = (f"load over the pinion flank at phase {maps.worst_phase:.3f} (largest pressure), "
+               f"{maps.torque:g} N m")
+    fig.suptitle(title or (f"{name}: {default}" if name else default))
     return save_figure(fig, path)
 
 

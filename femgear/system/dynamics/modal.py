@@ -79,3 +79,20 @@ def mesh_mode_limit(model: GearRotorModel) -> float:
     flexible = r.frequencies > 1e-6 * max(r.frequencies.max(), 1e-300)
     hit = flexible & (r.energy["mesh"] >= MESH_ENERGY_MIN)
     return float(r.frequencies[hit].max()) if hit.any() else 0.0
+
+
+#: a mode is marked as a mesh resonance when at least this fraction of its strain energy is in the mesh
+RESONANCE_MESH_ENERGY = 0.05
+
+
+def resonance_marks(frequencies, mesh_energy, f_lo: float, f_hi: float, min_energy: float = RESONANCE_MESH_ENERGY,
+                    harmonics: int = 4) -> list[tuple[float, int, float]]:
+    """Where the mesh excitation meets a natural frequency inside a mesh-frequency range [Hz].
+
+    The k-th mesh harmonic excites a mode of natural frequency f_n when k f_m = f_n, so a mode with at
+    least ``min_energy`` of its strain energy in the mesh resonates at the mesh frequencies f_n / k,
+    k = 1 … ``harmonics``.  Returns (f_n / k, k, f_n) for those inside [f_lo, f_hi], by f_n / k.
+    """
+    marks = [(f / k, k, float(f)) for f, e in zip(frequencies, mesh_energy) if f > 0 and e >= min_energy
+             for k in range(1, harmonics + 1) if f_lo <= f / k <= f_hi]
+    return sorted(marks)
