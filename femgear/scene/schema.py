@@ -45,7 +45,7 @@ class Pair(_Frozen):
     single-helical pair is one helix of width ``face_width``; a spur pair has
     ``helix_angle_deg = 0``.  Consistency (kind vs helix angle, thrust bearings of a
     single helix, basic rack vs coefficients, tip diameters and centre distance vs
-    profile shifts) is checked by :mod:`femgear.physics.geometry.scene_pair`.
+    profile shifts) is checked by :mod:`femgear.case.pair`.
     """
 
     kind: Literal["double-helical", "single-helical", "spur"] = Field(

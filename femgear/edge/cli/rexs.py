@@ -113,6 +113,7 @@ def _convert(args: argparse.Namespace) -> int:
 
 
 def _export(args: argparse.Namespace) -> int:
+    from femgear.case import build_case
     from femgear.edge.io.atomic import write_bytes_atomic
     from femgear.errors import ArgumentError
     from femgear.rexs.export import check_finite, export_scene
@@ -124,7 +125,7 @@ def _export(args: argparse.Namespace) -> int:
         raise ArgumentError("-o", f"{args.output}: the REXS file must end in .rexs (XML), .rexsj (JSON) or .rexsz "
                                   "(zipped XML)")
     scene = load_scene(args.export, args.overrides)
-    model, skipped = export_scene(scene, source=args.output.name)
+    model, skipped = export_scene(scene, build_case(scene).pair, source=args.output.name)
     check_finite(model)
     version = _version()
     if suffix == ".rexsj":

@@ -110,7 +110,10 @@ def contact_along_path(scene, n: int | None = None, pair: GearPair | None = None
     ``u`` replaces the positions [m]; ``stiffness`` (a :class:`MeshStiffness` of the
     scene's level) supplies k'(u) for the load sharing instead of recomputing it.
     """
-    pair = pair or GearPair.from_scene(scene)
+    if pair is None:   # transitional (h27lub replaces this scene adapter by femgear.levels.contact)
+        from femgear.case.pair import pair_from_scene
+
+        pair = pair_from_scene(scene)
     if u is None:
         n = n or scene.numerics.path_points
         # include the pitch point exactly so that pitch-point figures are not interpolated
