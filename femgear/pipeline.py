@@ -54,7 +54,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
     t0 = time.perf_counter()
     stiffness = stiffness_levels.of(case)
-    contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness)
+    contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness, kin=case.path)
     contact_warnings(case, float(contact.hertz_pressure.max()))     # the scene's plausibility, on the run's pass
     te = transmission_error(case, stiffness)
     if not dynamics_levels.spec(case.levels.dynamics).is_dynamic:

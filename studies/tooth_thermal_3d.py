@@ -27,7 +27,8 @@ import numpy as np
 
 from femgear.case.pair import pair_from_scene
 from femgear.edge.plot import save_figure
-from femgear.physics.body.thermal import flank_deviation, flank_displacement, solve_temperature, thermo_elastic
+from femgear.levels.thermal import flank_deviation
+from femgear.physics.body.thermal import flank_displacement, solve_temperature, thermo_elastic
 from femgear.physics.body.thermal3d import thermal_units_3d
 from femgear.physics.mesh.section import gear_section
 from femgear.physics.stiffness.pem import contact_geometry

@@ -7,12 +7,11 @@ import pytest
 
 from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
-from femgear.levels.thermal import flank_deviation_of
+from femgear.levels.thermal import flank_deviation, flank_deviation_of
 from femgear.physics.body.thermal import (
     analytic_radial_displacement,
     disk_radial_displacement,
     disk_temperature,
-    flank_deviation,
     flank_displacement,
     gear_thermo_elastic,
     solve_temperature,
