@@ -26,9 +26,9 @@ from femgear.physics.geometry import GearPair, PathKinematics, kinematics, mesh_
 from femgear.scene.schema import (
     Errors,
     Friction,
-    Modifications,
     Material,
     Member,
+    Modifications,
     Numerics,
     Oil,
     Physics,

@@ -56,14 +56,6 @@ def tip_speeds(scene: Scene, pair) -> tuple[float, float]:
     return w1 * pair.ra1, w2 * pair.ra2
 
 
-def tip_speeds(scene: Scene, pair) -> tuple[float, float]:
-    """Tip speeds of pinion and gear [m/s] from the driver's speed."""
-    ratio = scene.gear.teeth / scene.pinion.teeth
-    w1 = 2.0 * math.pi * scene.pinion_rpm / 60.0
-    w2 = w1 / ratio
-    return w1 * pair.ra1, w2 * pair.ra2
-
-
 def check_temperatures(scene: Scene) -> None:
     """Raise :class:`SceneError` for an oil temperature at or below the Roelands pole."""
     for key, temperature in (("operating.ambient_temperature", scene.operating.ambient_temperature),

@@ -76,8 +76,8 @@ def _options(args: argparse.Namespace):
 
 
 def _run(args: argparse.Namespace) -> int:
-    from femgear.edge.io.paths import child_path, prepare_output_dir
     from femgear.case import build_case
+    from femgear.edge.io.paths import child_path, prepare_output_dir
     from femgear.levels.stiffness import body_options
     from femgear.physics.ltca.te import check_torques
     from femgear.physics.ltca.tool import run_ltca

@@ -67,7 +67,7 @@ def crowned_contact(scene, pair=None) -> CrownedContact:
     """:class:`CrownedContact` of a scene; an uncrowned pair raises SceneError naming
     ``modifications.crowning``."""
     if pair is None:
-        from femgear.case.pair import pair_from_scene   # transitional (h27lub removes this scene adapter)
+        from femgear.case.pair import pair_from_scene  # transitional (h27lub removes this scene adapter)
 
         pair = pair_from_scene(scene)
     mods = scene.modifications

@@ -12,12 +12,7 @@ The levels (``constant``, ``iso6336``, ``pem``, ``fe``, ``ltca``) are dispatched
 """
 
 from femgear.physics.stiffness.iso6336 import IsoStiffness, iso6336_stiffness
-from femgear.physics.stiffness.tvms import (
-    MeshStiffness,
-    helix_stiffness,
-    sliced_mesh_stiffness,
-    uniform_mesh_stiffness,
-)
+from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness, sliced_mesh_stiffness, uniform_mesh_stiffness
 
 __all__ = ["IsoStiffness", "MeshStiffness", "helix_stiffness", "iso6336_stiffness", "sliced_mesh_stiffness",
            "uniform_mesh_stiffness"]

@@ -52,6 +52,7 @@ from femgear.physics.geometry import GearPair
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import FrictionTable, MeshGeometry, StiffnessTable, periodic_interp, periodic_slope
 
+
 @dataclass(frozen=True)
 class MeshDeviation:
     """Flank deviations of the drive and coast flanks per helix over one mesh period [m].
