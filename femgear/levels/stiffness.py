@@ -104,8 +104,6 @@ _SUMMARIES = {
     "fe": "2-D finite-element tooth sections (plane strain) sliced along the face",
     "ltca": "loaded tooth contact analysis on 3-D FE member bodies with flank modifications",
 }
-#: levels whose pair stiffness k'(u) is uniform along the path (the load sharing needs no curve)
-UNIFORM_ALONG_PATH = frozenset({"constant", "iso6336"})
 
 
 def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, stagger: float = 0.0,

@@ -15,6 +15,8 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from femgear.levels import coupling as coupling_levels
+from femgear.levels import dynamics as dynamics_levels
 from femgear.scene.levels import check_level
 
 Pos = Annotated[float, Field(gt=0)]
@@ -414,7 +416,9 @@ class Physics(_Frozen):
     @field_validator("coupling")
     @classmethod
     def _coupling_needs_dynamics(cls, level: str, info: ValidationInfo) -> str:
-        if level == "bidirectional" and info.data.get("dynamics") == "none":
+        dynamics = info.data.get("dynamics")
+        if coupling_levels.spec(level).iterates and dynamics is not None and \
+                not dynamics_levels.spec(dynamics).is_dynamic:
             raise ValueError("bidirectional coupling needs a dynamics level (set physics.dynamics)")
         return level
 
