@@ -13,8 +13,13 @@ from typing import TYPE_CHECKING
 
 from femgear.errors import SceneError
 from femgear.levels import stiffness as stiffness_levels
-from femgear.scene.plausibility import check_operating_limits, log_warnings, pair_warnings, pressure_warnings
-from femgear.scene.ranges import check_input_ranges
+from femgear.scene.plausibility import (
+    check_operating_limits,
+    log_warnings,
+    pair_warnings,
+    pressure_warnings,
+    scene_warnings,
+)
 from femgear.scene.schema import Scene
 
 if TYPE_CHECKING:
@@ -24,8 +29,8 @@ if TYPE_CHECKING:
 
 def check_bound_scene(scene: Scene, pair: GearPair, warn: bool = True) -> tuple[str, ...]:
     """Raise :class:`SceneError` for an operating point or a level the bound ``pair`` cannot run; log the
-    pair's plausibility warnings (``warn``) and return every warning of the case so far (``key: message``),
-    those :func:`femgear.scene.load_scene` logged included."""
+    pair's plausibility warnings (``warn``) and return the plausibility warnings of the scene and the pair
+    (``key: message``; the scene's were logged by :func:`femgear.scene.load_scene`)."""
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
     if scene.physics.lubrication in ("tehl", "tehl-point"):
@@ -37,9 +42,7 @@ def check_bound_scene(scene: Scene, pair: GearPair, warn: bool = True) -> tuple[
         from femgear.physics.geometry import kinematics, path_positions
 
         check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
-    from femgear.scene.plausibility import scene_warnings
-
-    earlier = scene_warnings(scene, check_input_ranges(scene))
+    earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
     return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair), earlier, warn))
 
 
