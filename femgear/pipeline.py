@@ -174,11 +174,13 @@ class WrittenRun:
 
 def run_scene(scene, out_dir: str | Path, plots: bool = True,
               progress: Callable[[CouplingState], None] | None = None) -> WrittenRun:
-    """Bind ``scene``, run it and write ``results.json`` (and figures) into ``out_dir``."""
+    """Bind ``scene`` (or take the bound :class:`Case` given), run it and write ``results.json`` (and figures)
+    into ``out_dir``."""
     from femgear.edge.io.run import write_run
 
     out_dir = Path(out_dir)
-    result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")
+    case = scene if isinstance(scene, Case) else build_case(scene)
+    result = run_case(case, progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")
     summary, files = write_run(result, out_dir, plots)
     return WrittenRun(result=result, summary=summary, files=files)
 

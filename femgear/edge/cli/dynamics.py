@@ -5,13 +5,16 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from femgear.edge.cli.common import add_scene_arguments, emit_json, load_scene_arg
+from femgear.edge.cli.common import add_scene_arguments, emit_json, load_case_arg
 
 
 def register(sub) -> None:
     p = sub.add_parser("dynamics", help="simulate the gear-rotor dynamics of a scene")
     add_scene_arguments(p)
-    p.add_argument("--level", choices=("lumped", "timoshenko"), default=None,
+    from femgear.levels import dynamics as dynamics_levels
+
+    dynamic = tuple(name for name in dynamics_levels.REGISTRY if dynamics_levels.spec(name).is_dynamic)
+    p.add_argument("--level", choices=dynamic, default=None,
                    help="dynamics level (default: physics.dynamics, or lumped)")
     p.add_argument("--stiffness", default=None,
                    help="mesh stiffness: constant, contact-line, iso6336, pem, fe (default: physics.stiffness)")
@@ -34,7 +37,6 @@ def register(sub) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from femgear.case import build_case
     from femgear.edge.cli.limits import finite
     from femgear.edge.io.paths import child_path, prepare_output_dir
     from femgear.errors import ArgumentError
@@ -45,10 +47,9 @@ def _run(args: argparse.Namespace) -> int:
     finite("--transient", args.transient, nonnegative=True)
     if args.transient >= args.cycles:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
-    scene = load_scene_arg(args)
+    case = load_case_arg(args)
     if args.sweep:
-        _check_sweep_speeds(scene, sweep_speeds(args.sweep))
-    case = build_case(scene)
+        _check_sweep_speeds(case, sweep_speeds(args.sweep))
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
     else:
@@ -104,16 +105,17 @@ def sweep_speeds(text: str):
     return np.linspace(lo, hi, count)
 
 
-def _check_sweep_speeds(scene, speeds) -> None:
+def _check_sweep_speeds(case, speeds) -> None:
     """The sweep's end speeds pass the scene's speed checks (:mod:`femgear.scene.ranges`, the burst
-    speed), before any computing; a refusal names ``--sweep``."""
+    speed of the case's pair), before any computing; a refusal names ``--sweep``."""
     from femgear.errors import ArgumentError, SceneError
     from femgear.scene.load import scene_from_dict
+    from femgear.scene.plausibility import check_operating_limits
 
-    data = scene.model_dump(exclude_none=True)
+    data = case.scene.model_dump(exclude_none=True)
     for rpm in (float(speeds[0]), float(speeds[-1])):
         try:
-            scene_from_dict(data, [f"operating.speed_rpm={rpm!r}"], warn=False)
+            check_operating_limits(scene_from_dict(data, [f"operating.speed_rpm={rpm!r}"], warn=False), case.pair)
         except SceneError as exc:
             if exc.key != "operating.speed_rpm":
                 raise

@@ -87,6 +87,7 @@ def _num(value: float | None) -> str:
 
 
 def _convert(args: argparse.Namespace) -> int:
+    from femgear.edge.cli.common import bind_rexs
     from femgear.edge.io.atomic import write_text_atomic
     from femgear.rexs.importer import read_stage, validate
     from femgear.rexs.scene_toml import scene_toml
@@ -98,6 +99,7 @@ def _convert(args: argparse.Namespace) -> int:
         conv.defaults.pop(key, None)
         conv.overridden.add(key)
     scene = validate(conv, args.overrides)
+    bind_rexs(conv, scene)          # the gear's feasibility, in the model's terms
     if args.overrides:
         from femgear.scene.load import apply_overrides
 
