@@ -16,11 +16,11 @@ operating point changes per load case (:meth:`Case.at_speed` for speed sweeps).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from femgear.case.checks import check_bound_scene
+from femgear.case.checks import check_bound_case
 from femgear.case.pair import pair_from_scene
 from femgear.physics.geometry import GearPair, PathKinematics, kinematics, mesh_frequency, path_positions
 from femgear.scene.schema import (
@@ -171,14 +171,12 @@ def build_case(scene: Scene, pair: GearPair | None = None, warn: bool = True) ->
     """Bind a validated scene into a :class:`Case`, once per run.
 
     The pair is bound and checked (:class:`femgear.errors.SceneError` naming the key for an impossible
-    gear or operating point, :func:`femgear.case.checks.check_bound_scene`); implausible inputs are
+    gear or operating point, :func:`femgear.case.checks.check_bound_case`); implausible inputs are
     logged as warnings (``warn=False`` skips them).  A given ``pair`` (the same gear at another
     operating point, :meth:`Case.at_speed`) is taken as bound and checked.
     """
-    warnings: tuple[str, ...] = ()
-    if pair is None:
-        pair = pair_from_scene(scene)
-        warnings = check_bound_scene(scene, pair, warn)
+    checks = pair is None
+    pair = pair_from_scene(scene) if checks else pair
     op = operating_point(scene, pair)
-    return Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed),
-                warnings=warnings)
+    case = Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed))
+    return replace(case, warnings=check_bound_case(case, warn)) if checks else case

@@ -27,12 +27,22 @@ if TYPE_CHECKING:
     from femgear.physics.geometry import GearPair
 
 
-def check_bound_scene(scene: Scene, pair: GearPair, warn: bool = True) -> tuple[str, ...]:
-    """Raise :class:`SceneError` for an operating point or a level the bound ``pair`` cannot run; log the
+def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
+    """Raise :class:`SceneError` for an operating point or a level the bound case cannot run; log the
     pair's plausibility warnings (``warn``) and return the plausibility warnings of the scene and the pair
     (``key: message``; the scene's were logged by :func:`femgear.scene.load_scene`)."""
+    scene, pair = case.scene, case.pair
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
+    check_lubrication_range(case)
+    earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
+    return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair), earlier, warn))
+
+
+def check_lubrication_range(case: Case) -> None:
+    """Refuse the TEHL levels up front outside their validated range (h27lub's
+    ``femgear.levels.lubrication.check_range(case)`` replaces this on merge)."""
+    scene, pair = case.scene, case.pair
     if scene.physics.lubrication in ("tehl", "tehl-point"):
         from femgear.physics.tehl.solver import check_tehl_range
 
@@ -42,8 +52,6 @@ def check_bound_scene(scene: Scene, pair: GearPair, warn: bool = True) -> tuple[
         from femgear.physics.geometry import kinematics, path_positions
 
         check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
-    earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
-    return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair), earlier, warn))
 
 
 def check_wear_field(scene: Scene, pair: GearPair) -> None:
