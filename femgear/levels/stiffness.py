@@ -39,7 +39,7 @@ def _iso6336(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, young
 
     t0 = time.perf_counter()
     k, iso = iso6336_helix_stiffness(pair, youngs_modulus)
-    return uniform_mesh_stiffness(pair, k, "iso6336", n_positions, stagger, info={"iso": iso}, t0=t0)
+    return uniform_mesh_stiffness(pair, k, "iso6336", n_positions, stagger, t0=t0, info={"iso": iso})
 
 
 def _pem(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
@@ -74,7 +74,7 @@ def _fe(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: 
                                                 **opts)
     u_grid = path_samples(pair)
     return sliced_mesh_stiffness(pair, u_grid, tabulated(pair, u_fe, k_fe)(u_grid), "fe", n_positions, stagger,
-                                 n_slices, info={**fe_info, "u_fe": u_fe, "k_fe": k_fe}, t0=t0)
+                                 n_slices, t0=t0, info={**fe_info, "u_fe": u_fe, "k_fe": k_fe})
 
 
 def _ltca(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, youngs_modulus: float = 210e9,

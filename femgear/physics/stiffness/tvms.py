@@ -127,14 +127,15 @@ def check_period(n_positions: int, stagger: float) -> np.ndarray:
 
 
 def uniform_mesh_stiffness(pair: GearPair, k: float, label: str, n_positions: int = 200, stagger: float = 0.0,
-                           info: dict | None = None, t0: float | None = None) -> MeshStiffness:
+                           t0: float | None = None, **fields) -> MeshStiffness:
     """A mesh stiffness constant over the period: ``k`` per helix [N/m] (the ``constant`` and ``iso6336``
-    levels); the right helix of a single-helical or spur pair is 0."""
+    levels); the right helix of a single-helical or spur pair is 0.  ``fields``: the level's other
+    :class:`MeshStiffness` fields; ``t0``: when the level started (for ``seconds``)."""
     t0 = time.perf_counter() if t0 is None else t0
     phases = check_period(n_positions, stagger)
     kl = np.full(n_positions, k)
     kr = kl.copy() if pair.n_helices == 2 else np.zeros(n_positions)
-    return MeshStiffness(label, phases, kl, kr, stagger, 0, time.perf_counter() - t0, dict(info or {}))
+    return MeshStiffness(label, phases, kl, kr, stagger, 0, time.perf_counter() - t0, **fields)
 
 
 def iso6336_helix_stiffness(pair: GearPair, youngs_modulus: float = 210e9):
@@ -153,15 +154,15 @@ def path_samples(pair: GearPair) -> np.ndarray:
 
 def sliced_mesh_stiffness(pair: GearPair, u_grid: np.ndarray, k_grid: np.ndarray, label: str,
                           n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
-                          info: dict | None = None, t0: float | None = None) -> MeshStiffness:
+                          t0: float | None = None, info: dict | None = None) -> MeshStiffness:
     """Mesh stiffness of both helices from the pair stiffness per width ``k_grid`` at path positions ``u_grid``
-    (the ``pem`` and ``fe`` levels): k'(u) interpolated, each helix cut into ``n_slices`` slices (one for spur)."""
+    (the ``pem`` and ``fe`` levels): k'(u) interpolated, each helix cut into ``n_slices`` slices (one for spur).
+    ``info``: the level's other records; ``t0``: when the level started (for ``seconds``)."""
     t0 = time.perf_counter() if t0 is None else t0
     phases = check_period(n_positions, stagger)
-    info = dict(info or {})
-    info.update(u=u_grid, k_pair_per_width=k_grid)
     k_unit = tabulated(pair, u_grid, k_grid)
     n_slices = 1 if pair.beta_b == 0 else n_slices     # spur: every slice sees the same position
     kl = helix_stiffness(pair, k_unit, phases, n_slices)
     kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
+    info = {**(info or {}), "u": u_grid, "k_pair_per_width": k_grid}
     return MeshStiffness(label, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)
