@@ -27,10 +27,15 @@ from pathlib import Path
 import numpy as np
 
 from femgear.case import Case
+from femgear.case.checks import contact_warnings
+from femgear.levels import coupling as coupling_levels
+from femgear.levels import dynamics as dynamics_levels
+from femgear.levels import stiffness as stiffness_levels
+from femgear.levels import wear as wear_levels
 from femgear.physics.contact.path import ContactPath, contact_along_path
 from femgear.physics.lubrication.films import level_film
 from femgear.physics.lubrication.levels import friction_along_path
-from femgear.physics.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
+from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.results import RunResult, Tribology
 from femgear.system.coupling.loop import (
     CouplingSetup,
@@ -47,27 +52,28 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
              wear_checkpoint: Path | None = None) -> RunResult:
     """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
     t0 = time.perf_counter()
-    stiffness = mesh_stiffness_from_scene(case.scene)
-    contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness)
+    stiffness = stiffness_levels.of(case)
+    contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness, kin=case.path)
+    contact_warnings(case, float(contact.hertz_pressure.max()))     # the scene's plausibility, on the run's pass
     te = transmission_error(case, stiffness)
-    if case.levels.dynamics == "none":
+    if not dynamics_levels.spec(case.levels.dynamics).is_dynamic:
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
         tribology = replace(tribology, film=level_film(case, tribology.load_per_length))
         return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0, transmission_error=te,
                          rating=case_rating(case, contact, tribology))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
-    coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
+    coupled = run_coupled(setup, one_way=not coupling_levels.spec(case.levels.coupling).iterates, progress=progress)
     st = coupled.state
-    levels = case.levels
+    levels, worn = case.levels, wear_levels.has_wear(case)
     tribology = Tribology(
         load_per_length=st.load_per_length,
         friction_coefficient=st.mu if levels.lubrication != "none" else None,
         temperature_rise=st.temperature_rise if levels.lubrication != "none" else None,
         flank_temperature_rise=st.flank_temperature_rise,
-        thermal_deviation=st.thermal_deviation if levels.thermal != "none" else None,
-        wear=st.wear if levels.wear != "none" else None, wear_cycles=case.wear.cycles,
+        thermal_deviation=st.thermal_deviation if setup.thermal is not None else None,
+        wear=st.wear if worn else None, wear_cycles=case.wear.cycles,
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
-                      st.wear_face if levels.wear != "none" else None, st.thermal_face),
+                      st.wear_face if worn else None, st.thermal_face),
         film=level_film(case, st.load_per_length, solver=setup.lubrication))
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
                      transmission_error=te, rating=case_rating(case, contact, tribology))
@@ -75,7 +81,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
     """The :class:`femgear.physics.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
-    ltca = stiffness.info.get("ltca") if stiffness.level == "ltca" else None
+    ltca = stiffness.info.get("ltca")
     if ltca is None or not ltca.line_load:
         return None
     from femgear.physics.ltca.te import analyse_cycle
@@ -112,27 +118,28 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
     if units is not None:
         zeta = units.deviation(case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)
     cycles, steps, faces = 0.0, 0, {}
-    if case.levels.wear == "archard":
-        from femgear.physics.wear import WearSetup, run_wear
-
+    wear_model = wear_levels.of(case)
+    if wear_model is not None:
         pair = case.pair
         k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
             case.stiffness.mesh_stiffness_per_width * pair.b
         info = {} if stiffness is None else stiffness.info
         ref = ltca_reference(pair, case.path.u, info, np.zeros(case.path.u.size)) \
             if "ltca" in info and pair.beta_b > 0 else None     # spur: the Winkler sharing (see coupling.loop)
-        setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / pair.n_helices,
-                          c_l=line_stiffness(case, k_mean, stiffness),
-                          coefficient=case.wear.coefficient, hardness=case.material.hardness, reference=ref)
-        if case.wear.field == "face" and ref is not None:     # face-resolved (femgear.physics.wear.face); no checkpoint
+        setup = wear_model.setup(pair, case.path, case.operating.normal_force / pair.n_helices,
+                                 line_stiffness(case, k_mean, stiffness), reference=ref)
+        if wear_model.face and ref is not None:     # face-resolved (femgear.physics.wear.face); no checkpoint
             from femgear.physics.wear.face import run_face_wear
 
-            face = ltca_face_reference(pair, case.path.u, info, np.zeros(case.path.u.size), n_zeta=case.wear.face_points)
-            state = run_face_wear(setup, face, case.wear.cycles)
+            face = ltca_face_reference(pair, case.path.u, info, np.zeros(case.path.u.size),
+                                       n_zeta=wear_model.face_points)
+            state = run_face_wear(setup, face, wear_model.cycles)
             wear = state.path_mean(face.grid)
             faces = {"grid": face.grid, "wear_face": np.array([state.h1, state.h2])}
         else:
-            state = run_wear(setup, case.wear.cycles, checkpoint=wear_checkpoint)
+            from femgear.physics.wear import run_wear
+
+            state = run_wear(setup, wear_model.cycles, checkpoint=wear_checkpoint)
             wear = np.array([state.h1, state.h2])
         cycles, steps = state.cycles, state.steps
     return Tribology(load_per_length=w, friction_coefficient=mu, temperature_rise=dT,

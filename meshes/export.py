@@ -8,7 +8,7 @@ git.  This writes into ``DIR`` (default ``out/meshes/``), as ``.vtu`` via meshio
 - ``pinion_body.vtu``, ``gear_body.vtu``: the 3-D member bodies the LTCA solves
   (:func:`femgear.physics.mesh.segment.member_body`: both helices of opposite hand, the groove, the
   stagger, the rack-generated flank and trochoid fillet, the rim down to the bore), built from the
-  scene as :func:`femgear.physics.ltca.analysis.body_options` does, at body resolution ``--level`` (default 1,
+  scene as :func:`femgear.levels.stiffness.body_options` does, at body resolution ``--level`` (default 1,
   the ``ltca`` stiffness level's);
 - ``pinion_section.vtu``, ``gear_section.vtu``: the 2-D transverse sections (three teeth down to
   the bore) of the ``fe`` levels, mesh size ``--h`` (default m_n/4).
@@ -29,6 +29,10 @@ import json
 from pathlib import Path
 
 import numpy as np
+
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.stiffness import body_options
 
 ROOT = Path(__file__).resolve().parents[1]
 AGGREGATES = ("flank", "loaded_flank", "loaded_flank_right")   #: unions of other regions (not written twice)
@@ -74,15 +78,13 @@ def body_regions(body, pair, member: int, spec) -> tuple[dict, dict]:
 
 def export(scene_path: str, level: int = 1, h: float | None = None, out: Path | None = None) -> list[Path]:
     """Write the member bodies and the transverse sections of the scene; return the ``.vtu`` paths."""
-    from femgear.physics.geometry import GearPair
-    from femgear.physics.ltca.analysis import body_options
     from femgear.physics.mesh.section import gear_section
     from femgear.physics.mesh.segment import default_spec, member_body
     from femgear.scene import load_scene
 
     scene = load_scene(scene_path)
-    pair = GearPair.from_scene(scene)
-    body = body_options(scene)
+    pair = pair_from_scene(scene)
+    body = body_options(build_case(scene))
     out = Path(out) if out is not None else ROOT / "out" / "meshes"
     written = []
     for member, name in ((1, "pinion"), (2, "gear")):

@@ -4,6 +4,8 @@ from pathlib import Path
 
 import pytest
 
+from femgear.case.pair import pair_from_scene
+
 ROOT = Path(__file__).resolve().parents[1]
 BASELINE = ROOT / "studies" / "paper_baseline.toml"
 
@@ -22,6 +24,5 @@ def baseline_scene():
 
 @pytest.fixture(scope="session")
 def baseline_pair(baseline_scene):
-    from femgear.physics.geometry import GearPair
 
-    return GearPair.from_scene(baseline_scene)
+    return pair_from_scene(baseline_scene)

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
+from femgear.case.pair import pair_from_scene
+from femgear.levels import stiffness as stiffness_levels
 from femgear.pipeline import run_case
 from femgear.scene import load_scene
 
@@ -46,9 +46,9 @@ def test_stiffness_level_is_computed(baseline_path):
     4.15 % against 4.07 %); the ``constant`` level has none."""
     scene = load_scene(baseline_path, ['physics.stiffness="pem"'])
     s = _run(scene).stiffness
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     assert s.level == "pem"
-    assert s.ripple() == pytest.approx(mesh_stiffness_from_scene(scene).ripple(), rel=1e-12)
+    assert s.ripple() == pytest.approx(stiffness_levels.of(build_case(scene)).ripple(), rel=1e-12)
     theory = contact_line_ripple(pair.eps_alpha, pair.eps_beta)
     assert theory == pytest.approx(0.0563, abs=1e-4)
     assert s.ripple() == pytest.approx(theory, rel=0.2)
@@ -62,10 +62,10 @@ def test_pem_ripple_follows_contact_line_theory_on_the_marine_pair():
 
     scene = load_scene(Path(__file__).resolve().parents[1] / "studies" / "zoo" / "marine.toml",
                        ['physics.stiffness="pem"'])
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     theory = contact_line_ripple(pair.eps_alpha, pair.eps_beta)
     assert theory == pytest.approx(0.0407, abs=1e-4)
-    assert mesh_stiffness_from_scene(scene).ripple() == pytest.approx(theory, rel=0.2)
+    assert stiffness_levels.of(build_case(scene)).ripple() == pytest.approx(theory, rel=0.2)
 
 
 def test_lubrication_levels(baseline_path):

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from femgear.case import build_case
+from femgear.case import Case, build_case
 from femgear.edge.io.run import write_run
 from femgear.pipeline import run_case
 from femgear.results import RunResult
@@ -30,8 +30,10 @@ class WrittenRun:
 
 def run_scene(scene, out_dir: str | Path, plots: bool = True,
               progress: Callable[[CouplingState], None] | None = None) -> WrittenRun:
-    """Bind ``scene``, run it and write ``results.json`` (and figures) into ``out_dir``."""
+    """Bind ``scene`` (or take the bound :class:`~femgear.case.Case` given), run it and write ``results.json``
+    (and figures) into ``out_dir``."""
     out_dir = Path(out_dir)
-    result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")
+    case = scene if isinstance(scene, Case) else build_case(scene)
+    result = run_case(case, progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")
     summary, files = write_run(result, out_dir, plots)
     return WrittenRun(result=result, summary=summary, files=files)

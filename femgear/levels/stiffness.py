@@ -1,13 +1,184 @@
 """Mesh stiffness levels (the ``[physics] stiffness`` key).
 
-The names are the registry; factories are attached where a level is dispatched.
+Each level is a function of the pair and its numbers (:func:`mesh_stiffness` dispatches
+them for a bare pair); its registered factory reads the Case's typed parts: the pair, the
+stagger, the material, the bores, the ``[stiffness]`` knobs and, for ``ltca``, the normal
+force of the operating point, the flank modifications and the member bodies.  The FE
+level's 2-D tooth solves (:mod:`femgear.physics.body.compliance`) and the LTCA cycle
+(:mod:`femgear.physics.ltca.level`) are called from here, so that the stiffness leaf
+imports neither.
 """
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 from femgear.levels.registry import Registry
 
+if TYPE_CHECKING:
+    from femgear.case import Case
+    from femgear.physics.geometry import GearPair
+    from femgear.physics.stiffness import MeshStiffness
+
 REGISTRY = Registry("stiffness")
-REGISTRY.add("constant", "one mesh stiffness per unit face width, constant in time (stiffness.mesh_stiffness_per_width)")
-REGISTRY.add("iso6336", "ISO 6336-1 single-pair stiffness c' and mesh stiffness c_gamma, shared along the contact lines")
-REGISTRY.add("pem", "potential-energy tooth compliance (Hertz, bending, shear, axial, foundation) sliced along the face")
-REGISTRY.add("fe", "2-D finite-element tooth sections (plane strain) sliced along the face")
-REGISTRY.add("ltca", "loaded tooth contact analysis on 3-D FE member bodies with flank modifications")
+
+
+def _constant(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, constant_per_width: float = 2.0e10,
+              **_: Any) -> MeshStiffness:
+    from femgear.physics.stiffness import uniform_mesh_stiffness
+
+    return uniform_mesh_stiffness(pair, constant_per_width * pair.b, "constant", n_positions, stagger)
+
+
+def _iso6336(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, youngs_modulus: float = 210e9,
+             **_: Any) -> MeshStiffness:
+    from femgear.physics.stiffness import uniform_mesh_stiffness
+    from femgear.physics.stiffness.tvms import iso6336_helix_stiffness
+
+    t0 = time.perf_counter()
+    k, iso = iso6336_helix_stiffness(pair, youngs_modulus)
+    return uniform_mesh_stiffness(pair, k, "iso6336", n_positions, stagger, t0=t0, info={"iso": iso})
+
+
+def _pem(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
+         youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, bore_radius: tuple[float, float] = (0.0, 0.0),
+         plane: str = "strain", **_: Any) -> MeshStiffness:
+    from femgear.physics.stiffness import sliced_mesh_stiffness
+    from femgear.physics.stiffness.pem import pair_stiffness_per_width
+    from femgear.physics.stiffness.tvms import path_samples
+
+    t0 = time.perf_counter()
+    u_grid = path_samples(pair)
+    k_grid = pair_stiffness_per_width(pair, u_grid, youngs_modulus, poisson_ratio, bore_radius, plane)
+    return sliced_mesh_stiffness(pair, u_grid, k_grid, "pem", n_positions, stagger, n_slices, t0=t0)
+
+
+def _fe(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
+        youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, bore_radius: tuple[float, float] = (0.0, 0.0),
+        fe_options: dict | None = None, **_: Any) -> MeshStiffness:
+    """Tooth compliance from the 2-D FE sections at ``fe_options['n_fe']`` (default 9) path positions, Hertz as
+    in PEM, tabulated along the path and sliced."""
+    import numpy as np
+
+    from femgear.physics.body.compliance import fe_pair_stiffness_per_width
+    from femgear.physics.stiffness import sliced_mesh_stiffness
+    from femgear.physics.stiffness.tvms import path_samples, tabulated
+
+    t0 = time.perf_counter()
+    opts = dict(fe_options or {})
+    n_fe = opts.pop("n_fe", 9)
+    u_fe = np.linspace(pair.u_start, pair.u_end, n_fe)
+    k_fe, fe_info = fe_pair_stiffness_per_width(pair, u_fe, youngs_modulus, poisson_ratio, bore_radius=bore_radius,
+                                                **opts)
+    u_grid = path_samples(pair)
+    return sliced_mesh_stiffness(pair, u_grid, tabulated(pair, u_fe, k_fe)(u_grid), "fe", n_positions, stagger,
+                                 n_slices, t0=t0, info={**fe_info, "u_fe": u_fe, "k_fe": k_fe})
+
+
+def _ltca(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, youngs_modulus: float = 210e9,
+          poisson_ratio: float = 0.3, ltca_options: dict | None = None, **_: Any) -> MeshStiffness:
+    """Secant stiffness per helix of the loaded tooth contact analysis at ``ltca_options['force']`` (its TE
+    tables in ``info``)."""
+    from femgear.physics.ltca.level import ltca_cycle
+    from femgear.physics.stiffness import MeshStiffness
+
+    if not ltca_options or "force" not in ltca_options:
+        raise ValueError("level 'ltca' needs ltca_options={'force': normal force [N], ...}")
+    t0 = time.perf_counter()
+    res, info = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
+                           poisson_ratio=poisson_ratio, **ltca_options)
+    return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger, 0,
+                         time.perf_counter() - t0, info)
+
+
+#: level name -> the level's function of a bare pair (the keywords of :func:`mesh_stiffness`)
+PAIR_LEVELS: dict[str, Callable[..., MeshStiffness]] = {
+    "constant": _constant, "iso6336": _iso6336, "pem": _pem, "fe": _fe, "ltca": _ltca,
+}
+_SUMMARIES = {
+    "constant": "one mesh stiffness per unit face width, constant in time (stiffness.mesh_stiffness_per_width)",
+    "iso6336": "ISO 6336-1 single-pair stiffness c' and mesh stiffness c_gamma, shared along the contact lines",
+    "pem": "potential-energy tooth compliance (Hertz, bending, shear, axial, foundation) sliced along the face",
+    "fe": "2-D finite-element tooth sections (plane strain) sliced along the face",
+    "ltca": "loaded tooth contact analysis on 3-D FE member bodies with flank modifications",
+}
+
+
+def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, stagger: float = 0.0,
+                   n_slices: int = 100, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
+                   bore_radius: tuple[float, float] = (0.0, 0.0), plane: str = "strain",
+                   constant_per_width: float = 2.0e10, fe_options: dict | None = None,
+                   ltca_options: dict | None = None) -> MeshStiffness:
+    """Mesh stiffness of both helices of ``pair`` at ``n_positions`` phases of one mesh period.
+
+    Levels: ``constant`` (``constant_per_width`` [N/m per m] × b per helix), ``iso6336``
+    (c_γα b, constant; ISO's value is read as a transverse stiffness per unit face width
+    and projected like the sliced levels), ``pem`` (sliced potential energy method),
+    ``fe`` (sliced, tooth compliance from the 2-D FE of :mod:`femgear.physics.body.compliance`
+    at ``fe_options['n_fe']`` path positions, Hertz as in PEM), ``ltca`` (secant stiffness
+    per helix from the loaded tooth contact analysis of :mod:`femgear.physics.ltca` at
+    ``ltca_options['force']``; its TE tables are in ``info``).
+    """
+    build = PAIR_LEVELS.get(level)
+    if build is None:
+        raise ValueError(f"level must be one of {', '.join(PAIR_LEVELS)}, got {level!r}")
+    return build(pair, n_positions=n_positions, stagger=stagger, n_slices=n_slices, youngs_modulus=youngs_modulus,
+                 poisson_ratio=poisson_ratio, bore_radius=bore_radius, plane=plane,
+                 constant_per_width=constant_per_width, fe_options=fe_options, ltca_options=ltca_options)
+
+
+def body_options(case: Case) -> dict:
+    """``bore_radius`` (each member's bore radius if > 0, else its shaft radius), ``groove_width`` and
+    ``stagger`` of the member bodies (:func:`femgear.physics.ltca.analysis.build_model`)."""
+    bores = tuple(m.bore_radius if m.bore_radius > 0 else 0.5 * m.shaft_diameter for m in case.members)
+    return {"bore_radius": bores, "groove_width": case.groove_width, "stagger": case.stagger}
+
+
+def ltca_options(case: Case) -> dict:
+    """Force F_bn of the operating point, the flank modifications, the member bodies (bore, groove) and their
+    resolution ``numerics.body_level`` for :func:`femgear.physics.ltca.level.ltca_cycle`."""
+    body = {k: v for k, v in body_options(case).items() if k != "stagger"}   # the level passes the stagger itself
+    return {"force": case.operating.normal_force, "modifications": case.modifications, "body": body,
+            "level": case.numerics.body_level}
+
+
+def case_arguments(case: Case, level: str) -> dict:
+    """The keywords of :func:`mesh_stiffness` from the case: stagger, material, bores, ``[stiffness]``."""
+    st = case.stiffness
+    fe_options: dict = {} if st.fe_mesh_size is None else {"h": st.fe_mesh_size}
+    fe_options["level"] = case.numerics.body_level
+    args = dict(n_positions=st.n_positions, stagger=case.stagger, n_slices=st.n_slices,
+                youngs_modulus=case.material.youngs_modulus, poisson_ratio=case.material.poisson_ratio,
+                bore_radius=case.bore_radii, constant_per_width=st.mesh_stiffness_per_width, fe_options=fe_options)
+    if level == "ltca":
+        args["ltca_options"] = ltca_options(case)
+    return args
+
+
+def _factory(name: str) -> Callable[..., MeshStiffness]:
+    def factory(case: Case, **options: Any) -> MeshStiffness:
+        args = case_arguments(case, name)
+        fe = {**args.pop("fe_options"), **(options.pop("fe_options", None) or {})}
+        ltca = {**args.pop("ltca_options", {}), **(options.pop("ltca_options", None) or {})}
+        return PAIR_LEVELS[name](case.pair, **{**args, **options}, fe_options=fe, ltca_options=ltca or None)
+    factory.__doc__ = f"The ``{name}`` mesh stiffness of ``case`` ({_SUMMARIES[name]}); ``options`` override."
+    return factory
+
+
+for _name in PAIR_LEVELS:
+    REGISTRY.register(_name, _SUMMARIES[_name])(_factory(_name))
+
+
+def of(case: Case, level: str | None = None, **options: Any) -> MeshStiffness:
+    """The mesh stiffness of ``case`` at its ``physics.stiffness`` level (or ``level``); ``options`` override
+    the keywords :func:`case_arguments` reads from the case (``fe_options``, ``ltca_options`` are merged)."""
+    return REGISTRY.build(level or case.levels.stiffness, case, **options)
+
+
+def has_contact_lines(level: str) -> bool:
+    """Whether level ``level`` resolves the load along the contact lines (``ltca``: what the face-resolved
+    wear and the LTCA load maps read)."""
+    REGISTRY[level]
+    return level == "ltca"

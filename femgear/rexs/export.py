@@ -48,12 +48,11 @@ class _Builder:
                                        tuple(Ref(c.id, role, c.type) for c, role in refs), order))
 
 
-def export_scene(scene, source: str = "femgear") -> tuple[Model, list[str]]:
-    """The REXS 1.4 model of ``scene``'s pair, and what could not be exported (one line each)."""
-    from femgear.physics.geometry import GearPair
+def export_scene(scene, pair, source: str = "femgear") -> tuple[Model, list[str]]:
+    """The REXS 1.4 model of ``scene``'s pair (``pair``, bound by :func:`femgear.case.build_case`), and what
+    could not be exported (one line each)."""
     from femgear.physics.lubrication.oil import OilLaw
 
-    pair = GearPair.from_scene(scene)
     law = OilLaw.from_scene(scene)
     b = _Builder()
     skipped: list[str] = []

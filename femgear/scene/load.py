@@ -1,4 +1,7 @@
-"""Loading a scene: TOML -> overrides -> validated :class:`Scene` -> feasibility checks.
+"""Loading a scene: TOML -> overrides -> validated :class:`Scene` (its own values only).
+
+The checks that need the bound gear pair run once per run, where the pair is bound
+(:func:`femgear.case.build_case`).
 
 Every failure is a :class:`femgear.errors.SceneError` naming the key, so the CLI can
 print one line.
@@ -14,7 +17,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from femgear.errors import SceneError
-from femgear.scene.plausibility import check_operating_limits, plausibility_warnings
+from femgear.scene.plausibility import check_temperatures, log_warnings, scene_warnings
 from femgear.scene.presets import expand_preset
 from femgear.scene.ranges import check_input_ranges
 from femgear.scene.schema import Scene
@@ -68,53 +71,23 @@ def _first_error(exc: ValidationError) -> SceneError:
 
 
 def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, warn: bool = True) -> Scene:
-    """Validate a raw scene dictionary (plus overrides) and check the gear is feasible.
+    """Validate a raw scene dictionary (plus overrides): types, the inputs as typed and the temperatures.
 
-    Impossible inputs and operating points raise :class:`SceneError`; implausible ones are logged as
-    warnings, one line per key (``warn=False`` skips them).  The inputs as typed are checked in
-    engineering terms first (:mod:`femgear.scene.ranges`), before any derived geometry, so that a
-    unit slip is blamed on the key the user typed; then the gear's feasibility
-    (:mod:`femgear.physics.geometry`) and the operating point (:mod:`femgear.scene.plausibility`).
+    Impossible inputs raise :class:`SceneError`; implausible ones are logged as warnings, one line
+    per key (``warn=False`` skips them).  The inputs as typed are checked in engineering terms
+    (:mod:`femgear.scene.ranges`), before any derived geometry, so that a unit slip is blamed on the
+    key the user typed.  The gear's feasibility and the checks of the operating point that need the
+    pair run when the case is bound (:func:`femgear.case.build_case`).
     """
-    from femgear.physics.geometry import GearPair  # the feasibility checks are geometry's
-
     raw = expand_preset(apply_overrides(data, overrides))
     try:
         scene = Scene.model_validate(raw)
     except ValidationError as exc:
         raise _first_error(exc) from None
     range_warnings = check_input_ranges(scene)
-    pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
-    check_operating_limits(scene, pair)
-    check_wear_field(scene, pair)
-    if scene.physics.lubrication in ("tehl", "tehl-point"):
-        from femgear.physics.tehl.solver import check_tehl_range
-
-        check_tehl_range(scene, pair)
-    if scene.physics.lubrication == "tehl-point":
-        from femgear.physics.contact.crowning import check_point_range
-        from femgear.physics.geometry import kinematics, path_positions
-
-        check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
-    if warn:
-        from femgear.physics.contact.path import contact_along_path
-
-        plausibility_warnings(scene, pair, float(contact_along_path(scene, pair=pair).hertz_pressure.max()),
-                              earlier=range_warnings)
+    check_temperatures(scene)
+    log_warnings(scene_warnings(scene, range_warnings), log_them=warn)
     return scene
-
-
-def check_wear_field(scene: Scene, pair) -> None:
-    """Raise :class:`SceneError` for ``wear.field = "face"`` without what the face-resolved wear reads: the
-    ``ltca`` stiffness's contact-line loads, one contact line per helix at each path position (ε_β ≤ 1)."""
-    if scene.wear.field != "face":
-        return
-    if scene.physics.stiffness != "ltca":
-        raise SceneError("wear.field", f'"face" needs physics.stiffness = "ltca" (the face-resolved wear reads the '
-                                       f"LTCA's contact-line loads; got {scene.physics.stiffness!r})")
-    if pair.eps_beta > 1:
-        raise SceneError("wear.field", f'"face" needs an overlap ratio ε_β ≤ 1 (one contact line per helix at each '
-                                       f"path position); this pair has ε_β = {pair.eps_beta:.3f}")
 
 
 MAX_TOML_BYTES = 1 << 20  # a scene or sweep file is a few kB
@@ -146,5 +119,5 @@ def read_toml(path: str | Path, what: str = "scene") -> dict[str, Any]:
 
 
 def load_scene(path: str | Path, overrides: Iterable[str] = ()) -> Scene:
-    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it."""
+    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it (no geometry is built)."""
     return scene_from_dict(read_toml(path), overrides)

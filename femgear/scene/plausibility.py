@@ -1,6 +1,11 @@
 """Physical plausibility of a valid scene: impossible operating points are refused,
 implausible but computable ones are accepted with a logged warning naming the key.
 
+The checks of the scene alone (the temperatures) run in :func:`femgear.scene.load_scene`;
+those needing the bound pair (tip and pitch-line speeds) run when the case is bound
+(:func:`femgear.case.build_case`), and the Hertz pressure check after the run's own
+contact pass (:func:`femgear.case.checks.contact_warnings`).  One line per key is logged.
+
 Refused (:class:`femgear.errors.SceneError`):
 
 - a tip speed at which the rim would burst: the hoop stress of a thin rotating ring,
@@ -51,13 +56,17 @@ def tip_speeds(scene: Scene, pair) -> tuple[float, float]:
     return w1 * pair.ra1, w2 * pair.ra2
 
 
-def check_operating_limits(scene: Scene, pair) -> None:
-    """Raise :class:`SceneError` for an operating point no gear survives."""
+def check_temperatures(scene: Scene) -> None:
+    """Raise :class:`SceneError` for an oil temperature at or below the Roelands pole."""
     for key, temperature in (("operating.ambient_temperature", scene.operating.ambient_temperature),
                              ("oil.reference_temperature", scene.oil_reference_temperature)):
         if temperature <= ROELANDS_POLE:
             raise SceneError(key, f"{temperature:g} K is at or below {ROELANDS_POLE:g} K, the pole of the Roelands "
                                   "viscosity-temperature law; give an absolute temperature in K")
+
+
+def check_operating_limits(scene: Scene, pair) -> None:
+    """Raise :class:`SceneError` for an operating point no gear survives (the rim bursts)."""
     v_tip = max(tip_speeds(scene, pair))
     rho, hardness = scene.material.density, scene.material.hardness
     v_burst = math.sqrt(hardness / 3.0 / rho)
@@ -69,21 +78,10 @@ def check_operating_limits(scene: Scene, pair) -> None:
             f"(the rim bursts above {v_burst:.0f} m/s)")
 
 
-def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None = None,
-                          earlier: Sequence[str] = ()) -> list[str]:
-    """Warnings (each ``key: message``) for implausible but computable inputs; also logged.
-
-    ``earlier``: warnings of the input ranges (:mod:`femgear.scene.ranges`, e.g. the eccentricity
-    against the backlash); one line per key is logged, the first one given for it.
-    """
+def scene_warnings(scene: Scene, earlier: Sequence[str] = ()) -> list[str]:
+    """``earlier`` (the input ranges' warnings, :mod:`femgear.scene.ranges`) and the oil temperature's
+    warnings (each ``key: message``), not logged."""
     out: list[str] = list(earlier)
-    v_pitch = 2.0 * math.pi * pair.rw1 * scene.pinion_rpm / 60.0
-    if v_pitch > MAX_PLAUSIBLE_SPEED:
-        out.append(f"operating.speed_rpm: pitch-line speed {v_pitch:.4g} m/s is above {MAX_PLAUSIBLE_SPEED:g} m/s, "
-                   "beyond the range the film and friction formulas were fitted in")
-    if max_hertz_pressure is not None and max_hertz_pressure > MAX_HERTZ_PRESSURE:
-        out.append(f"operating.torque: maximum Hertz pressure {max_hertz_pressure / 1e9:.3g} GPa is above "
-                   f"{MAX_HERTZ_PRESSURE / 1e9:g} GPa (beyond the flank's contact strength)")
     t_amb, t_ref = scene.operating.ambient_temperature, scene.oil_reference_temperature
     if t_amb > MAX_OIL_TEMPERATURE:
         out.append(f"operating.ambient_temperature: {t_amb:g} K is above {MAX_OIL_TEMPERATURE:g} K, "
@@ -94,12 +92,39 @@ def plausibility_warnings(scene: Scene, pair, max_hertz_pressure: float | None =
     if abs(t_amb - t_ref) > MAX_VISCOSITY_EXTRAPOLATION:
         out.append(f"operating.ambient_temperature: {t_amb:g} K is {abs(t_amb - t_ref):.0f} K from the oil's "
                    f"viscosity reference {t_ref:g} K; the viscosity-temperature law is extrapolated")
+    return out
+
+
+def pair_warnings(scene: Scene, pair) -> list[str]:
+    """The pitch-line speed's warning (``key: message``) of the bound ``pair``, not logged."""
+    v_pitch = 2.0 * math.pi * pair.rw1 * scene.pinion_rpm / 60.0
+    if v_pitch > MAX_PLAUSIBLE_SPEED:
+        return [f"operating.speed_rpm: pitch-line speed {v_pitch:.4g} m/s is above {MAX_PLAUSIBLE_SPEED:g} m/s, "
+                "beyond the range the film and friction formulas were fitted in"]
+    return []
+
+
+def pressure_warnings(max_hertz_pressure: float) -> list[str]:
+    """The Hertz pressure's warning (``key: message``) of a contact pass's maximum [Pa], not logged."""
+    if max_hertz_pressure > MAX_HERTZ_PRESSURE:
+        return [f"operating.torque: maximum Hertz pressure {max_hertz_pressure / 1e9:.3g} GPa is above "
+                f"{MAX_HERTZ_PRESSURE / 1e9:g} GPa (beyond the flank's contact strength)"]
+    return []
+
+
+def log_warnings(messages: Sequence[str], earlier: Sequence[str] = (), log_them: bool = True) -> list[str]:
+    """The first of ``messages`` per key whose key is not among ``earlier``'s, logged (``log_them``)."""
+    seen = {m.split(":", 1)[0] for m in earlier}
     first: dict[str, str] = {}
-    for message in out:
-        first.setdefault(message.split(":", 1)[0], message)
-    for message in first.values():
-        log.warning(message)
+    for message in messages:
+        key = message.split(":", 1)[0]
+        if key not in seen:
+            first.setdefault(key, message)
+    if log_them:
+        for message in first.values():
+            log.warning(message)
     return list(first.values())
 
 
-__all__ = ["check_operating_limits", "plausibility_warnings", "tip_speeds"]
+__all__ = ["check_operating_limits", "check_temperatures", "log_warnings", "pair_warnings", "pressure_warnings",
+           "scene_warnings", "tip_speeds"]

@@ -15,6 +15,8 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from femgear.levels import coupling as coupling_levels
+from femgear.levels import dynamics as dynamics_levels
 from femgear.scene.levels import check_level
 
 Pos = Annotated[float, Field(gt=0)]
@@ -45,7 +47,7 @@ class Pair(_Frozen):
     single-helical pair is one helix of width ``face_width``; a spur pair has
     ``helix_angle_deg = 0``.  Consistency (kind vs helix angle, thrust bearings of a
     single helix, basic rack vs coefficients, tip diameters and centre distance vs
-    profile shifts) is checked by :mod:`femgear.physics.geometry.scene_pair`.
+    profile shifts) is checked by :mod:`femgear.case.pair`.
     """
 
     kind: Literal["double-helical", "single-helical", "spur"] = Field(
@@ -461,7 +463,9 @@ class Physics(_Frozen):
     @field_validator("coupling")
     @classmethod
     def _coupling_needs_dynamics(cls, level: str, info: ValidationInfo) -> str:
-        if level == "bidirectional" and info.data.get("dynamics") == "none":
+        dynamics = info.data.get("dynamics")
+        if coupling_levels.spec(level).iterates and dynamics is not None and \
+                not dynamics_levels.spec(dynamics).is_dynamic:
             raise ValueError("bidirectional coupling needs a dynamics level (set physics.dynamics)")
         return level
 

@@ -19,10 +19,10 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case.pair import pair_from_scene
+from femgear.levels.thermal import flank_deviation
 from femgear.perf import measure
 from femgear.physics.body.compliance import fe_pair_stiffness_per_width
-from femgear.physics.body.thermal import flank_deviation
-from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness import iso6336_stiffness
 from femgear.physics.stiffness.pem import pair_stiffness_per_width
 from femgear.scene import load_scene
@@ -32,7 +32,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml"):
     scene = load_scene(scene_path)
-    return scene, GearPair.from_scene(scene)
+    return scene, pair_from_scene(scene)
 
 
 def stiffness_rows(scene, pair, quick: bool = False) -> list[dict]:

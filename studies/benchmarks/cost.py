@@ -31,6 +31,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels import stiffness as stiffness_levels
+from femgear.levels.stiffness import body_options
+
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 ROOT = Path(__file__).resolve().parents[2]
 FIDELITY = ["--set", "physics.stiffness=\"ltca\"", "--set", "physics.lubrication=\"tehl-point\"",
@@ -57,12 +62,10 @@ def one(kind: str, scene_path: str, level: int) -> dict:
 
     sets = [f"numerics.body_level={level}"]
     if kind == "size":
-        from femgear.physics.geometry.gear import GearPair
-        from femgear.physics.ltca.analysis import body_options
         from femgear.physics.mesh.segment import body_size, default_spec
 
         scene = load_scene(scene_path, sets)
-        pair, body = GearPair.from_scene(scene), body_options(scene)
+        pair, body = pair_from_scene(scene), body_options(build_case(scene))
         out = {}
         for m in (1, 2):
             spec = default_spec(pair, m, level, r_bore=body["bore_radius"][m - 1], groove=body["groove_width"],
@@ -73,11 +76,10 @@ def one(kind: str, scene_path: str, level: int) -> dict:
             out["flank_dz_mn"] = pair.b / spec.layers / pair.m_n
         return out
     if kind in ("ltca", "fe"):
-        from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
 
         scene = load_scene(scene_path, sets)
         t0 = time.perf_counter()
-        ms = mesh_stiffness_from_scene(scene, kind)
+        ms = stiffness_levels.of(build_case(scene), kind)
         out = {"seconds": time.perf_counter() - t0, "k_mean": ms.mean}
         if kind == "ltca":
             out["lte_pp_um"] = ms.info["lte_peak_to_peak"] * 1e6

@@ -20,19 +20,22 @@ import tempfile
 import time
 from pathlib import Path
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.stiffness import body_options
+
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def run(level: int = 1, phases: int = 64, repeat: int = 3, order: int = 1) -> dict:
-    from femgear.physics.geometry.gear import GearPair
-    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.scene import load_scene
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
-    body = body_options(scene)
+    body = body_options(build_case(scene))
     out: dict = {"level": level, "order": order, "phases": phases, "body": body}
     with tempfile.TemporaryDirectory() as tmp:
         os.environ["FEMGEAR_CACHE"] = tmp

@@ -18,9 +18,11 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
 from femgear.edge.plot import save_figure
-from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness import iso6336_stiffness, mesh_stiffness_from_scene
+from femgear.levels import stiffness as stiffness_levels
+from femgear.physics.stiffness import iso6336_stiffness
 from femgear.scene import load_scene
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -31,13 +33,13 @@ def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml"):
 
 
 def run(scene, coarse: bool = False) -> dict:
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     fe_opts = {"n_fe": 5, "h": pair.m_n / 2.5, "refine_ratio": 0.5} if coarse else \
         {"n_fe": 11, "h": pair.m_n / 2.5, "refine_ratio": 0.3}
     levels = {
-        "iso6336": mesh_stiffness_from_scene(scene, level="iso6336"),
-        "pem": mesh_stiffness_from_scene(scene, level="pem"),
-        "fe": mesh_stiffness_from_scene(scene, level="fe", fe_options=fe_opts),
+        "iso6336": stiffness_levels.of(build_case(scene), level="iso6336"),
+        "pem": stiffness_levels.of(build_case(scene), level="pem"),
+        "fe": stiffness_levels.of(build_case(scene), level="fe", fe_options=fe_opts),
     }
     fe = levels["fe"].info
     from femgear.physics.stiffness.pem import pair_stiffness_per_width
@@ -45,7 +47,7 @@ def run(scene, coarse: bool = False) -> dict:
     k_pem = pair_stiffness_per_width(pair, fe["u_fe"], scene.material.youngs_modulus, scene.material.poisson_ratio)
     single = (fe["u_fe"] >= pair.u_end - pair.p_bt - 1e-12) & (fe["u_fe"] <= pair.u_start + pair.p_bt + 1e-12)
     iso = iso6336_stiffness(pair, youngs_modulus=scene.material.youngs_modulus)
-    half = mesh_stiffness_from_scene(scene.model_copy(update={"pair": scene.pair.model_copy(update={"stagger": 0.5})}),
+    half = stiffness_levels.of(build_case(scene.model_copy(update={"pair": scene.pair.model_copy(update={"stagger": 0.5})})),
                                      level="pem")
     return {"pair": pair, "levels": levels, "pem_half_stagger": half, "u_fe": fe["u_fe"], "k_fe": fe["k_fe"], "k_pem": k_pem,
             "single": single, "iso": iso}

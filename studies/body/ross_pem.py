@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness.tvms import mesh_stiffness
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "tests" / "stiffness" / "data" / "ross_62_62_tvms.json"

@@ -19,9 +19,9 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case.pair import pair_from_scene
 from femgear.edge.plot import save_figure
 from femgear.physics.body.thermal import analytic_radial_displacement, flank_displacement, gear_thermo_elastic
-from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness.pem import contact_geometry
 from femgear.scene import load_scene
 
@@ -33,7 +33,7 @@ def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml"):
 
 
 def run(scene, rises=(0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0), coarse: bool = False) -> dict:
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     mat = scene.material
     dTs = scene.thermal.shaft_temperature_rise
     u = np.linspace(pair.u_start, pair.u_end, 21)

@@ -25,9 +25,10 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case.pair import pair_from_scene
 from femgear.edge.plot import save_figure
-from femgear.physics.body.thermal import flank_deviation, flank_displacement, solve_temperature, thermo_elastic
-from femgear.physics.geometry.gear import GearPair
+from femgear.levels.thermal import flank_deviation
+from femgear.physics.body.thermal import flank_displacement, solve_temperature, thermo_elastic
 from femgear.physics.ltca.thermal import thermal_units_3d
 from femgear.physics.mesh.section import gear_section
 from femgear.physics.stiffness.pem import contact_geometry
@@ -106,7 +107,7 @@ def setup(scene_path=ROOT / "studies" / "paper_baseline.toml"):
 
 
 def run(scene, levels=(0, 1, 2), groove=0.0) -> dict:
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     u = np.linspace(pair.u_start, pair.u_end, 21)
     out = {"u": u, "pair": pair, "members": {}}
     for member, name in ((1, "pinion"), (2, "gear")):

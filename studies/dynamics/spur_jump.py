@@ -16,8 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.physics.geometry import GearPair
-from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels import stiffness as stiffness_levels
 from femgear.scene import load_scene
 from femgear.system.dynamics.one_mesh import torsional_mode_hand, torsional_sweep
 
@@ -26,7 +27,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def setup(scene_path: str | Path = ROOT / "studies" / "fzg_c14.toml"):
     scene = load_scene(scene_path, ["physics.stiffness=pem"])
-    return scene, GearPair.from_scene(scene), mesh_stiffness_from_scene(scene).k_left
+    return scene, pair_from_scene(scene), stiffness_levels.of(build_case(scene)).k_left
 
 
 def run(scene, pair, k, torque: float = 20.0, backlash: float = 50e-6, points: int = 36) -> dict:

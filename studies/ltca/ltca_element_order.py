@@ -3,7 +3,7 @@
     python studies/ltca/ltca_element_order.py [--quick | --ltca | --split [--max-p1-level N] [--max-p2-level N]]
 
 All on the member bodies of the baseline scene (:func:`femgear.physics.mesh.segment.member_body`: both
-helices, the groove, the rim down to the scene's bore, :func:`femgear.physics.ltca.analysis.body_options`).
+helices, the groove, the rim down to the scene's bore, :func:`femgear.levels.stiffness.body_options`).
 For the baseline pinion, a 3 × 3 flank grid (hat loads of 1 N): the FE approach at the
 reading depth under the mid-flank, mid-face load (``fe_self``) and its half-space-free bulk
 part, with DOFs and wall time, for P1 at segment levels 0–3 and P2 at levels 0–1
@@ -23,24 +23,26 @@ import tempfile
 import time
 from pathlib import Path
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.stiffness import body_options
+
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def setup():
-    from femgear.physics.geometry.gear import GearPair
     from femgear.scene import load_scene
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    return scene, GearPair.from_scene(scene)
+    return scene, pair_from_scene(scene)
 
 
 def _pinion_spec(scene, pair, level: int):
     """The pinion body of the scene at ``level`` (bore, groove and stagger as the LTCA builds it)."""
-    from femgear.physics.ltca.analysis import body_options
     from femgear.physics.mesh.segment import default_spec
 
-    body = body_options(scene)
+    body = body_options(build_case(scene))
     return default_spec(pair, 1, level, r_bore=body["bore_radius"][0], groove=body["groove_width"],
                         stagger=body["stagger"])
 
@@ -69,7 +71,7 @@ def run(quick: bool = False) -> list[dict]:
 def run_ltca() -> list[dict]:
     """The LTCA outputs (mean stiffness, LTE p-p and mean; 5 × 7 grid, 64 phases, 200 N m) for P1 at levels 1
     and 3 and P2 at level 0 (the P2 build takes ~12 min on 2 shared cores)."""
-    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
 
     scene, pair = setup()
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
@@ -77,7 +79,7 @@ def run_ltca() -> list[dict]:
     for order, level in ((1, 1), (1, 3), (2, 0)):
         t0 = time.perf_counter()
         m = build_model(pair, scene.material.youngs_modulus, scene.material.poisson_ratio, level=level, order=order,
-                        n_rho=5, n_z=7, **body_options(scene))
+                        n_rho=5, n_z=7, **body_options(build_case(scene)))
         r = mesh_cycle(m, F, None, n_phases=64, keep_lines=False)
         rows.append({"order": order, "level": level, "build_s": time.perf_counter() - t0,
                      "ndofs": [int(m.kernels[k].ndofs) for k in (1, 2)], "lte_pp_um": r.lte_peak_to_peak() * 1e6,

@@ -31,6 +31,10 @@ import os
 import sys
 from pathlib import Path
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.stiffness import body_options
+
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np
 
@@ -38,22 +42,21 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def setup(scene_path=ROOT / "studies" / "paper_baseline.toml"):
-    from femgear.physics.geometry.gear import GearPair
     from femgear.scene import load_scene
 
     scene = load_scene(scene_path)
-    return scene, GearPair.from_scene(scene)
+    return scene, pair_from_scene(scene)
 
 
 def convergence(scene, pair, levels, phases=64):
-    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.physics.mesh.segment import default_spec
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
     rows = []
     for lv in levels:
-        model = build_model(pair, E, nu, level=lv, **body_options(scene))
+        model = build_model(pair, E, nu, level=lv, **body_options(build_case(scene)))
         r = mesh_cycle(model, F, None, n_phases=phases, keep_lines=False)
         rows.append({"level": lv, "h_tooth_mm": default_spec(pair, 1, lv).h_tooth * 1e3,
                      "ndofs": [int(model.kernels[m].ndofs) for m in (1, 2)],
@@ -87,12 +90,12 @@ def body_checks(scene, pair, level=1, phases=64):
     6 h_tooth, all five teeth at ≤ h: the grading's cost in accuracy)."""
     from dataclasses import replace
 
-    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.physics.mesh.segment import default_spec
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
-    body = body_options(scene)
+    body = body_options(build_case(scene))
     h_tooth = default_spec(pair, 1, level).h_tooth
     models = {"default": build_model(pair, E, nu, level=level, **body)}
     models["no_cross"] = replace(models["default"], kernels={m: replace(k, cross=None)
@@ -141,12 +144,12 @@ def observed_order(h, f) -> float:
 def discretisation(scene, pair, level):
     """Phases (64 vs 128) and contact points per line (16 vs 32) at one segment level, unmodified and
     with a 5 µm / 0.4 p_bt tip relief: LTE p-p, mean stiffness and LTE harmonics 1–5."""
-    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     F = normal_force(pair, scene.operating.torque, scene.operating.driver)
-    model = build_model(pair, E, nu, level=level, **body_options(scene))
+    model = build_model(pair, E, nu, level=level, **body_options(build_case(scene)))
     out = {}
     for name, mods in (("unmodified", None), ("tip_relief", Modifications(tip_relief=5e-6, tip_relief_length=0.4 * pair.p_bt))):
         runs = {(n, m): mesh_cycle(model, F, mods, n_phases=n, n_line=m, keep_lines=False)
@@ -197,12 +200,12 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
     """LTE p-p against load for a linear tip relief designed by ``rule`` (:func:`relief_design`) for the scene
     load, for the relief amount minimising LTE p-p at that load (Tavakoli & Houser, ASME JMTAD 108:86, 1986),
     and unmodified."""
-    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.scene.schema import Modifications
 
     E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
     Fd = normal_force(pair, scene.operating.torque, scene.operating.driver)
-    model = build_model(pair, E, nu, level=level, **body_options(scene))
+    model = build_model(pair, E, nu, level=level, **body_options(build_case(scene)))
     ref = mesh_cycle(model, Fd, None, n_phases=phases, keep_lines=False)
     Ca, length = relief_design(pair, ref, rule)
     mods = Modifications(tip_relief=Ca, tip_relief_length=length)
@@ -231,7 +234,7 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
 
 def run(coarse: bool = False) -> dict:
     from femgear.edge.io.ltca import write_flank_pressure
-    from femgear.physics.stiffness.tvms import mesh_stiffness
+    from femgear.levels.stiffness import mesh_stiffness
 
     scene, pair = setup()
     levels = (0, 1) if coarse else (1, 2, 3, 4)

@@ -21,6 +21,10 @@ from dataclasses import replace
 
 import numpy as np
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.wear import static_setup
+
 try:
     from studies import _common as C
 except ImportError:
@@ -37,7 +41,7 @@ MODELS = {"level 0 (tests)": ({"level": 0, "order": 1, "n_rho": 5, "n_z": 5, "n_
 def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
     from femgear.physics.geometry import kinematics, path_positions
     from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
-    from femgear.physics.wear import WearSetup, WearState, wear_rates
+    from femgear.physics.wear import WearState, wear_rates
     from femgear.physics.wear.load_sharing import load_map, reference_load_map, reference_loads, trapezoid_weights
     from femgear.scene.schema import FlankModification, Modifications
     from femgear.system.coupling.loop import ltca_reference
@@ -59,7 +63,7 @@ def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
             out["line_scaled_grid_force_error"] = float(np.max(np.abs(refs[name].load @ dl / own - 1)))
             out["raw_grid_force_error"] = float(np.max(np.abs(res.path_load(pair, u) @ dl / own - 1)))
     kin = kinematics(pair, u, 500 * 2 * math.pi / 60)
-    base = WearSetup.from_scene(scene, kin, pair, n_phase=n_phases)
+    base = static_setup(build_case(scene), kin, n_phase=n_phases)
     ltca = reference_load_map(pair, u, base.force, np.zeros(u.size), base.c_l, refs["plain"])
     wink = load_map(pair, u, base.force, np.zeros(u.size), base.c_l, n_phases)
     inner = (wink.loaded_fraction > 0.2) & (np.abs(u - u.mean()) < 0.4 * np.ptp(u))
@@ -78,11 +82,10 @@ def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
 
 def setup():
     """The baseline scene and its pair."""
-    from femgear.physics.geometry import GearPair
     from femgear.scene import load_scene
 
     scene = load_scene(C.BASELINE)
-    return scene, GearPair.from_scene(scene)
+    return scene, pair_from_scene(scene)
 
 
 def run() -> dict:

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case.pair import pair_from_scene
 from femgear.physics.contact.path import contact_along_path
 from femgear.physics.contact.sharing import single_contact_bounds
 from femgear.physics.geometry.gear import GearPair
@@ -45,7 +46,7 @@ def tr_example() -> dict:
 
 def fzg_table(torque: float = 200.0) -> dict:
     scene = load_scene(ROOT / "studies" / "fzg_c14.toml", [f"operating.torque={torque}"])
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     u_B = single_contact_bounds(pair)[0]
     c = contact_along_path(scene, u=np.array([u_B, pair.u_pitch]))
     # hand calculation from the drawing data (as in tests/contact/test_sharing.py)

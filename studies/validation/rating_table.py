@@ -17,6 +17,8 @@ import math
 import sys
 from pathlib import Path
 
+from femgear.case.pair import pair_from_scene
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -30,12 +32,11 @@ def setup() -> list[Path]:
 
 def rate(path: Path, fillet: bool):
     from femgear.physics.contact.path import contact_along_path, zone_grid
-    from femgear.physics.geometry import GearPair
     from femgear.rate import rate_case
     from femgear.scene import load_scene
 
     scene = load_scene(path, ["rating.fillet_fe=true"] if fillet else [])
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
     return scene, pair, rate_case(scene, pair, contact)
 

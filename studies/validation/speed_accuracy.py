@@ -31,6 +31,9 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case import build_case
+from femgear.levels import stiffness as stiffness_levels
+from femgear.levels.thermal import flank_deviation_of
 from femgear.perf import measure, pareto_front
 from femgear.scene import load_scene
 
@@ -51,29 +54,28 @@ def _rows(submodel: str, cases: list[tuple[str, Callable[[], object]]], error: C
 
 
 def stiffness(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
-
+    case = build_case(scene)
     mn = scene.pair.normal_module
     fe = [2.5, 3.0] if quick else [2.5, 3.0, 4.0]
-    cases = [(lv, lambda lv=lv: mesh_stiffness_from_scene(scene, level=lv)) for lv in ("constant", "iso6336")]
-    cases += [(f"pem, {n} slices", lambda n=n: mesh_stiffness_from_scene(scene, level="pem", n_slices=n)) for n in (20, 100)]
+    cases = [(lv, lambda lv=lv: stiffness_levels.of(case, level=lv)) for lv in ("constant", "iso6336")]
+    cases += [(f"pem, {n} slices", lambda n=n: stiffness_levels.of(case, level="pem", n_slices=n)) for n in (20, 100)]
     cases += [("ltca (3-D FE member bodies + contact; cached kernels; a model, not a resolution)",
-               lambda: mesh_stiffness_from_scene(scene, level="ltca"))]
-    cases += [(f"fe h=m/{d:g}", lambda d=d: mesh_stiffness_from_scene(scene, level="fe", fe_options={"h": mn / d}))
+               lambda: stiffness_levels.of(case, level="ltca"))]
+    cases += [(f"fe h=m/{d:g}", lambda d=d: stiffness_levels.of(case, level="fe", fe_options={"h": mn / d}))
               for d in fe]
     return _rows("stiffness", cases, lambda a, r: np.max(np.abs(a.k_total - r.k_total)) / r.mean, repeats)
 
 
 def thermal(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.physics.body.thermal import flank_deviation_from_scene
-    from femgear.physics.geometry import GearPair, path_positions
+    from femgear.physics.geometry import path_positions
 
     s = load_scene(BASELINE, ["thermal.flank_temperature_rise=30"])
-    u = path_positions(GearPair.from_scene(s), 21)
+    case = build_case(s)
+    u = path_positions(case.pair, 21)
     mn = s.pair.normal_module
     fe = [2.5, 4.0] if quick else [2.5, 4.0, 8.0]
-    cases = [("analytic", lambda: flank_deviation_from_scene(s, 1, u, level="analytic"))]
-    cases += [(f"fe h=m/{d:g}", lambda d=d: flank_deviation_from_scene(s, 1, u, level="fe", h=mn / d)) for d in fe]
+    cases = [("analytic", lambda: flank_deviation_of(case, 1, u, level="analytic"))]
+    cases += [(f"fe h=m/{d:g}", lambda d=d: flank_deviation_of(case, 1, u, level="fe", h=mn / d)) for d in fe]
     return _rows("thermal", cases, lambda a, r: np.max(np.abs(a - r)) / np.max(np.abs(r)), repeats)
 
 

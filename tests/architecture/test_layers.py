@@ -83,11 +83,8 @@ PENDING = {
     ("femgear.physics.lubrication.films", "femgear.physics.tehl.solver"),
     ("femgear.physics.lubrication.levels", "femgear.physics.tehl.point_level"),
     ("femgear.physics.lubrication.levels", "femgear.physics.tehl.solver"),
-    # h27body: the stiffness level's dispatch (FE body, LTCA) moves to femgear/levels/stiffness.py
-    ("femgear.physics.stiffness.tvms", "femgear.physics.body.compliance"),
-    ("femgear.physics.stiffness.tvms", "femgear.physics.ltca.level"),
-    # h27body: the thermal level's dispatch (flank_deviation's "fe3d") moves to femgear/levels/thermal.py
-    ("femgear.physics.body.thermal", "femgear.physics.ltca.thermal"),
+    ("femgear.physics.contact.crowning", "femgear.case.pair"),      # h27body's transitional binding
+    ("femgear.physics.contact.path", "femgear.case.pair"),
     # h27edge: the rating is computed in the driver (rate/pipeline), summary only formats
     ("femgear.rate", "femgear.summary"),
     # h27edge: figures are written by edge/io's one writer, not by plot

@@ -5,8 +5,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from femgear.case.pair import pair_from_scene
 from femgear.physics.body.compliance import ToothFE, fe_pair_stiffness_per_width
-from femgear.physics.geometry.gear import GearPair
 from femgear.physics.mesh.section import gear_section
 from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
@@ -17,7 +17,7 @@ BASELINE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.tom
 def pair():
     from femgear.scene import load_scene
 
-    return GearPair.from_scene(load_scene(BASELINE))
+    return pair_from_scene(load_scene(BASELINE))
 
 
 def test_pem_within_10_percent_of_fe_in_single_pair_zone(pair):
@@ -43,8 +43,8 @@ def test_section_size_in_module_units():
     from femgear.physics.body.compliance import section_size
     from femgear.scene import load_scene
 
-    a = GearPair.from_scene(load_scene(BASELINE))
-    b = GearPair.from_scene(load_scene(BASELINE, ["pair.normal_module=6e-3", "pair.face_width=35e-3"]))
+    a = pair_from_scene(load_scene(BASELINE))
+    b = pair_from_scene(load_scene(BASELINE, ["pair.normal_module=6e-3", "pair.face_width=35e-3"]))
     ma, mb = ToothFE(a, 1, 210e9, 0.3, n_teeth=3).mesh, ToothFE(b, 1, 210e9, 0.3, n_teeth=3).mesh
     assert section_size(b) == pytest.approx(2 * section_size(a))
     assert abs(mb.p.shape[1] - ma.p.shape[1]) <= 0.02 * ma.p.shape[1]

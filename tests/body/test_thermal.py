@@ -5,11 +5,13 @@ import math
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.thermal import flank_deviation, flank_deviation_of
 from femgear.physics.body.thermal import (
     analytic_radial_displacement,
     disk_radial_displacement,
     disk_temperature,
-    flank_deviation,
     flank_displacement,
     gear_thermo_elastic,
     solve_temperature,
@@ -132,21 +134,20 @@ def test_scene_entry_point():
     a flank-only rise gives what the explicit call with the scene's values gives."""
     from pathlib import Path
 
-    from femgear.physics.body.thermal import flank_deviation_from_scene
     from femgear.scene import load_scene
 
     path = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
     sc = load_scene(path, overrides=["thermal.flank_temperature_rise=35", "thermal.shaft_temperature_rise=35",
                                      "physics.thermal=analytic"])
-    p = GearPair.from_scene(sc)
+    p = pair_from_scene(sc)
     u = np.linspace(p.u_start, p.u_end, 4)
     _, _, rho = contact_geometry(p, 1, u)
     lam = sc.material.thermal_expansion
     assert lam == 1.16e-5
-    np.testing.assert_allclose(flank_deviation_from_scene(sc, 1, u), lam * 35 * rho * math.cos(p.beta_b), rtol=1e-12)
+    np.testing.assert_allclose(flank_deviation_of(build_case(sc), 1, u), lam * 35 * rho * math.cos(p.beta_b), rtol=1e-12)
 
     sc = load_scene(path, overrides=["thermal.flank_temperature_rise=35", "physics.thermal=analytic"])
-    z = flank_deviation_from_scene(sc, 1, u)
+    z = flank_deviation_of(build_case(sc), 1, u)
     mat = sc.material
     explicit = flank_deviation(p, 1, u, "analytic", 35.0, 0.0, lam, mat.youngs_modulus, mat.poisson_ratio,
                                bore_radius=sc.pinion.bore_radius)

@@ -6,8 +6,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from femgear.case.pair import pair_from_scene
 from femgear.errors import SceneError
-from femgear.physics.body.thermal import flank_deviation
+from femgear.levels.thermal import flank_deviation
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.ltca.separation import tabulated_deviation
 from femgear.physics.ltca.thermal import thermal_units_3d
@@ -55,7 +56,7 @@ def test_mid_face_deviation_within_band_of_the_2d_fe():
     studies/body/tooth_thermal_3d.py).  Mid-face of a helix, the 3-D body is close to plane stress; its free
     outer ends and the apex differ from plane stress by −11 … +23 % (end effects; not tested here)."""
     scene = load_scene(BASELINE)
-    pair, m = GearPair.from_scene(scene), scene.material
+    pair, m = pair_from_scene(scene), scene.material
     units = thermal_units_3d(pair, 1, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, level=0, cache=False)
     u = np.linspace(pair.u_start, pair.u_end, 5)
     _, _, rho = contact_geometry(pair, 1, u)

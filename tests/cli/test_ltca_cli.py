@@ -13,6 +13,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.stiffness import body_options
 from tests.cli.test_bad_input import cli
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -39,8 +42,7 @@ def test_ltca_tool_on_the_baseline_with_a_tip_relief_at_three_torques(tmp_path, 
     """Tip relief 10 µm over 2.5 mm, 100/200/300 N m (level-1 bodies, 32 phases; ≈ 25 s cached): TE curves,
     harmonics, load maps and one ParaView set per torque are written; results.json's TE p-p and harmonics equal
     ``LTCAResult.lte_peak_to_peak``/``harmonics`` (what studies/ltca/ltca_study.py prints) to 1e-9."""
-    from femgear.physics.geometry import GearPair
-    from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
     from femgear.scene import load_scene
 
     out = tmp_path / "ltca"
@@ -54,8 +56,8 @@ def test_ltca_tool_on_the_baseline_with_a_tip_relief_at_three_torques(tmp_path, 
     data = json.loads((out / "results.json").read_text())
     assert data["units"]["lte_peak_to_peak"] == "m" and len(data["curves"]) == 3
     scene = load_scene(BASE, ["modifications.tip_relief=10e-6", "modifications.tip_relief_length=2.5e-3"])
-    pair = GearPair.from_scene(scene)
-    body = body_options(scene)
+    pair = pair_from_scene(scene)
+    body = body_options(build_case(scene))
     model = build_model(pair, 210e9, 0.3, stagger=body.pop("stagger"), **body)
     for row in summary["per_torque"]:
         r = mesh_cycle(model, normal_force(pair, row["torque"]), scene.modifications, n_phases=32)

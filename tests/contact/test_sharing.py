@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from scipy.integrate import trapezoid
 
+from femgear.case.pair import pair_from_scene
 from femgear.physics.contact.path import contact_along_path
 from femgear.physics.contact.sharing import load_sharing, single_contact_bounds
 from femgear.physics.geometry.gear import GearPair
@@ -44,7 +45,7 @@ def _hand_fzg_c14(torque: float):
 def test_fzg_c14_single_pair_hertz_against_hand(fzg_c14):
     """FZG C14, 200 N m: p_H and b_H at C and at B within 1 % of the single-pair hand calculation."""
     hand = _hand_fzg_c14(200.0)
-    pair = GearPair.from_scene(fzg_c14)
+    pair = pair_from_scene(fzg_c14)
     u_B, _ = single_contact_bounds(pair)
     c = contact_along_path(fzg_c14, u=np.array([u_B, pair.u_pitch]))
     for i, name in enumerate(("B", "C")):

@@ -6,7 +6,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from femgear.physics.geometry import GearPair
+from femgear.case.pair import pair_from_scene
 from femgear.physics.mesh.segment import (
     body_size,
     coarse_layers,
@@ -35,7 +35,7 @@ def grooved(baseline_scene):
     from tests.conftest import BASELINE
 
     scene = load_scene(BASELINE, ["pair.groove_width=0.01"])
-    return GearPair.from_scene(scene), scene
+    return pair_from_scene(scene), scene
 
 
 def test_coarse_far_layers_keep_the_body_conforming(grooved):

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
 from femgear.errors import ConvergenceError
 from femgear.physics.geometry import path_positions
 from femgear.scene import load_scene
@@ -36,9 +37,8 @@ def test_tables_are_the_contact_line_mean(baseline_pair):
 def test_spur_tables_are_the_mean_over_the_pairs_in_contact(baseline_path):
     """Spur pair (zero line extent): at phase φ the pairs sit at u_A + (φ + k) p_bt; the table of
     h(u) is the mean of h over them (found by the zoo: a spur scene with a thermal level failed)."""
-    from femgear.physics.geometry import GearPair
 
-    p = GearPair.from_scene(load_scene(baseline_path, ['pair.kind="spur"', "pair.helix_angle_deg=0.0"]))
+    p = pair_from_scene(load_scene(baseline_path, ['pair.kind="spur"', "pair.helix_angle_deg=0.0"]))
     u = path_positions(p, 201)
     h = 1e-6 * ((u - p.u_start) / p.g_alpha) ** 2
     n = 16

@@ -7,8 +7,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels import stiffness as stiffness_levels
+from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness.tvms import mesh_stiffness, mesh_stiffness_from_scene
 from femgear.scene import load_scene
 from femgear.system.dynamics.one_mesh import (
     MemberData,
@@ -26,7 +29,7 @@ FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 @pytest.fixture(scope="module")
 def fzg():
     scene = load_scene(FZG, ["physics.stiffness=pem", "stiffness.n_positions=100"])
-    return scene, GearPair.from_scene(scene), mesh_stiffness_from_scene(scene).k_left
+    return scene, pair_from_scene(scene), stiffness_levels.of(build_case(scene)).k_left
 
 
 def _members(scene, radial, axial):

@@ -7,8 +7,9 @@ from pathlib import Path
 
 import pytest
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
 from femgear.errors import SceneError
-from femgear.physics.geometry import GearPair
 from femgear.scene import load_scene
 
 STUDIES = Path(__file__).resolve().parents[2] / "studies"
@@ -16,14 +17,14 @@ FZG = STUDIES / "fzg_c14.toml"
 
 
 def _error(path, *overrides) -> SceneError:
-    with pytest.raises(SceneError) as info:
-        load_scene(path, list(overrides))
+    with pytest.raises(SceneError) as info:     # the pair is bound and checked with the case
+        build_case(load_scene(path, list(overrides)))
     return info.value
 
 
 def test_fzg_c14_geometry_matches_gearpie():
     """FZG C (GEARpie library): radii root 31.193/49.147, tip 41.228/59.182, pitch 36.600/54.900 mm; ε_α 1.44."""
-    p = GearPair.from_scene(load_scene(FZG))
+    p = pair_from_scene(load_scene(FZG))
     assert p.kind == "spur" and p.n_helices == 1 and p.beta_b == 0
     for got, ref in ((p.rf1, 31.193), (p.rf2, 49.147), (p.ra1, 41.228), (p.ra2, 59.182), (p.rw1, 36.600),
                      (p.rw2, 54.900)):
@@ -44,7 +45,7 @@ def test_helical_kind_without_helix_angle():
 
 
 def test_single_helical_without_axial_support_is_one_line():
-    assert GearPair.from_scene(load_scene(STUDIES / "single_helical.toml")).n_helices == 1
+    assert pair_from_scene(load_scene(STUDIES / "single_helical.toml")).n_helices == 1
     path = STUDIES / "paper_baseline.toml"
     err = _error(path, "pair.kind=single-helical")
     assert err.key == "pinion.axial_stiffness" and "thrust" in str(err) and "\n" not in str(err)
@@ -63,10 +64,10 @@ def test_tip_diameter_derives_profile_shift():
 
     raw = tomllib.loads(FZG.read_text())
     del raw["pinion"]["profile_shift"]
-    p = GearPair.from_scene(scene_from_dict(raw))
+    p = pair_from_scene(scene_from_dict(raw))
     assert p.x1 == pytest.approx(0.1817, abs=2e-4)
     del raw["gear"]["profile_shift"]
-    p = GearPair.from_scene(scene_from_dict(raw))
+    p = pair_from_scene(scene_from_dict(raw))
     assert p.x2 == pytest.approx(0.1715, abs=2e-4) and p.a_w == pytest.approx(91.5e-3, rel=1e-5)
 
 
@@ -76,16 +77,16 @@ def test_centre_distance_inconsistent():
 
 
 def test_basic_rack_preset_and_conflict():
-    p = GearPair.from_scene(load_scene(FZG, ["pair.basic_rack=B"]))
+    p = pair_from_scene(load_scene(FZG, ["pair.basic_rack=B"]))
     assert (p.h_aP, p.h_fP, p.rho_fP) == (1.0, 1.25, 0.30)
     err = _error(FZG, "pair.dedendum_coeff=1.4")
     assert err.key == "pair.dedendum_coeff" and "basic_rack" in str(err)
 
 
 def test_member_face_width_contact_width():
-    p = GearPair.from_scene(load_scene(FZG, ["gear.face_width=0.020"]))
+    p = pair_from_scene(load_scene(FZG, ["gear.face_width=0.020"]))
     assert p.b == pytest.approx(0.014)
-    p = GearPair.from_scene(load_scene(FZG, ["pinion.face_width=0.010"]))
+    p = pair_from_scene(load_scene(FZG, ["pinion.face_width=0.010"]))
     assert p.b == pytest.approx(0.010)
 
 

@@ -11,8 +11,10 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.levels.wear import static_setup
 from femgear.physics.geometry import kinematics, path_positions
-from femgear.physics.wear import WearSetup, WearState, run_wear, wear_rates
+from femgear.physics.wear import WearState, run_wear, wear_rates
 from femgear.physics.wear.face import (
     FaceReference,
     FaceWearState,
@@ -34,7 +36,7 @@ def grid(baseline_pair):
 
 @pytest.fixture(scope="module")
 def base(baseline_scene, baseline_pair, grid):
-    return WearSetup.from_scene(baseline_scene, kinematics(baseline_pair, grid, 500 * 2 * math.pi / 60), baseline_pair)
+    return static_setup(build_case(baseline_scene), kinematics(baseline_pair, grid, 500 * 2 * math.pi / 60))
 
 
 def _analysis(model, force, pair, u, mods=None):
@@ -229,13 +231,13 @@ def test_a_coupling_pass_reruns_the_ltca_on_the_face_field(plain, coarse_model, 
 
 
 def test_face_wear_needs_the_ltca_stiffness(baseline_scene):
-    """``wear.field = "face"`` is refused on load, naming the key, without the ltca stiffness."""
+    """``wear.field = "face"`` is refused when the case is bound, naming the key, without the ltca stiffness."""
     from femgear.errors import SceneError
     from femgear.scene import load_scene
     from tests.conftest import BASELINE
 
     with pytest.raises(SceneError, match=r"wear\.field.*ltca"):
-        load_scene(BASELINE, ['wear.field="face"'])
+        build_case(load_scene(BASELINE, ['wear.field="face"']))
     with pytest.raises(SceneError, match=r"wear\.field"):
         load_scene(BASELINE, ['wear.field="surface"'])
     assert load_scene(BASELINE, ['wear.field="face"', 'physics.stiffness="ltca"']).wear.field == "face"

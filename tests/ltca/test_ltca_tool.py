@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from femgear.case.pair import pair_from_scene
 from femgear.errors import ArgumentError, SceneError
 from femgear.scene.schema import Modifications
 
@@ -138,13 +139,12 @@ def test_both_members_are_turned_into_mesh_along_a_contact_line(scene):
     baseline, the marine pair (m_n 6 mm, 29/97) and the FZG C spur pair (profile-shifted), geometry only."""
     from pathlib import Path
 
-    from femgear.physics.geometry import GearPair
     from femgear.physics.ltca.flank import flank_normals, flank_points
     from femgear.physics.ltca.maps import to_mesh
     from femgear.physics.mesh.segment import frame_of
     from femgear.scene import load_scene
 
-    pair = GearPair.from_scene(load_scene(Path(__file__).resolve().parents[2] / "studies" / scene))
+    pair = pair_from_scene(load_scene(Path(__file__).resolve().parents[2] / "studies" / scene))
     L, tb = pair.line_of_action, math.tan(pair.beta_b)
     u_p = pair.rb1 * math.tan(pair.alpha_wt)
     groove, s = 8e-3, 0.3

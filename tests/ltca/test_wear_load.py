@@ -13,6 +13,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.levels.wear import static_setup
 from femgear.physics.geometry import kinematics, path_positions
 from femgear.physics.geometry.lines import line_weights
 from femgear.physics.wear.load_sharing import load_map, reference_load_map, reference_loads
@@ -89,14 +91,14 @@ def test_a_pinion_tip_relief_lowers_the_wear_rate_at_the_pinion_tip(coarse_model
                                                                        baseline_scene, plain, grid):
     """Pinion tip (path end E, u → u_E): a 10 µm linear relief over 3 mm opens the gap there, the LTCA
     unloads it and the Archard rate falls; the gear's tip (start A) is untouched and keeps its rate."""
-    from femgear.physics.wear import WearSetup, WearState, wear_rates
+    from femgear.physics.wear import WearState, wear_rates
     from femgear.scene.schema import FlankModification, Modifications
 
     p, u = baseline_pair, grid
     mods = Modifications(pinion=FlankModification(tip_relief=10e-6, tip_relief_length=3e-3), gear=FlankModification())
     relieved = _cycle(coarse_model, baseline_force, mods)
     kin = kinematics(p, u, 500 * 2 * math.pi / 60)
-    base = WearSetup.from_scene(baseline_scene, kin, p)
+    base = static_setup(build_case(baseline_scene), kin)
     zero = WearState.zero(u.size)
     r1_plain = wear_rates(replace(base, reference=_reference(p, u, plain)), zero)[0]
     r1_relief = wear_rates(replace(base, reference=_reference(p, u, relieved, mods=mods)), zero)[0]

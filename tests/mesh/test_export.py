@@ -6,6 +6,10 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case import build_case
+from femgear.case.pair import pair_from_scene
+from femgear.levels.stiffness import body_options
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -21,8 +25,6 @@ def test_export_writes_the_member_bodies_with_named_regions(tmp_path):
     helices per tooth and side, ...) carry facets and partition each body's boundary."""
     import meshio
 
-    from femgear.physics.geometry import GearPair
-    from femgear.physics.ltca.analysis import body_options
     from femgear.physics.mesh.segment import default_spec, member_body
     from femgear.scene import load_scene
 
@@ -31,7 +33,7 @@ def test_export_writes_the_member_bodies_with_named_regions(tmp_path):
     assert sorted(p.name for p in written) == ["gear_body.vtu", "gear_section.vtu", "pinion_body.vtu",
                                                "pinion_section.vtu"]
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    pair, body = GearPair.from_scene(scene), body_options(scene)
+    pair, body = pair_from_scene(scene), body_options(build_case(scene))
     for member, name in ((1, "pinion"), (2, "gear")):
         mesh = meshio.read(tmp_path / f"{name}_body.vtu")
         info = json.loads((tmp_path / f"{name}_body_regions.json").read_text())

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from femgear.case.pair import pair_from_scene
 from femgear.physics.contact.path import contact_along_path
-from femgear.physics.geometry import GearPair
 from femgear.scene import load_scene
 from femgear.summary import scene_power_loss, scene_rating
 
@@ -17,7 +17,7 @@ FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 
 def test_rating_inputs_reach_the_factors():
     scene = load_scene(FZG, ["rating.application_factor=1.25", "rating.life_hours=100"])
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     base = scene_rating(load_scene(FZG), pair)
     r = scene_rating(scene, pair)
     assert r.stress.sigma_H[0] == pytest.approx(base.stress.sigma_H[0] * 1.25**0.5, rel=1e-12)
@@ -28,7 +28,7 @@ def test_rating_inputs_reach_the_factors():
 def test_power_loss_constant_mu_is_ohlendorf_on_any_grid():
     """Constant μ: the summary's loss is μ P_in H_V whatever grid the contact pass used (the B, D jumps are added)."""
     scene = load_scene(FZG, ["physics.lubrication=constant", "friction.coefficient=0.05"])
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     loss, level = scene_power_loss(scene, pair, contact_along_path(scene, pair=pair))
     assert level == "constant"
     assert loss.equivalent_mu == pytest.approx(0.05, rel=1e-6)

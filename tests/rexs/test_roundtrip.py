@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from femgear.physics.geometry import GearPair
+from femgear.case.pair import pair_from_scene
 from femgear.rexs.database import id_problems
 from femgear.rexs.importer import scene_from_rexs
 from femgear.rexs.read import read_model
@@ -62,7 +62,7 @@ def _numbers_equal(a, b, path: str) -> None:
 
 def essence(scene) -> dict:
     """What the round trip must keep: the resolved pair geometry and the scene's physical tables."""
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     geometry = {f.name: getattr(pair, f.name) for f in dataclasses.fields(pair)}
     geometry.update(a_w=pair.a_w, ra1=pair.ra1, ra2=pair.ra2, rf1=pair.rf1, rf2=pair.rf2)
     members = {}
@@ -149,7 +149,7 @@ def test_exported_figures_are_femgears(cli, tmp_path):
     out = tmp_path / "pair.rexs"
     _export(cli, MARINE, out)
     model = read_model(out)
-    pair = GearPair.from_scene(load_scene(MARINE))
+    pair = pair_from_scene(load_scene(MARINE))
     stage = model.of_type("cylindrical_stage")[0]
     assert model.value(stage, "center_distance") == pytest.approx(pair.a_w, rel=1e-12)
     assert model.value(stage, "overlap_contact_ratio") == pytest.approx(pair.eps_beta, rel=1e-12)

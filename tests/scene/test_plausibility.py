@@ -1,4 +1,7 @@
-"""Scene plausibility: impossible operating points refused, implausible ones warned; strict types."""
+"""Scene plausibility: impossible operating points refused, implausible ones warned; strict types.
+
+The scene's own checks run in ``load_scene``; those needing the pair when the case is bound
+(``build_case``), the Hertz pressure's after the run's contact pass (``contact_warnings``)."""
 
 from __future__ import annotations
 
@@ -7,21 +10,23 @@ import math
 
 import pytest
 
+from femgear.case import build_case
+from femgear.case.checks import contact_warnings
+from femgear.case.pair import pair_from_scene
 from femgear.errors import SceneError
 from femgear.scene import load_scene
 
 
 def test_burst_speed_is_the_ring_hoop_stress_at_tabor_yield(baseline_path):
     """v_burst = √(H / 3ρ): 505 m/s for H = 6 GPa, ρ = 7850 kg/m³; the tip speed just below passes."""
-    from femgear.physics.geometry import GearPair
 
     scene = load_scene(baseline_path)
-    pair = GearPair.from_scene(scene)
+    pair = pair_from_scene(scene)
     v_burst = math.sqrt(6e9 / 3 / 7850.0)
     rpm_burst = v_burst / (2 * math.pi * pair.ra1) * 60       # the pinion tip is the fastest (ra1 ω1 > ra2 ω2)
-    load_scene(baseline_path, [f"operating.speed_rpm={0.99 * rpm_burst!r}"], )
+    build_case(load_scene(baseline_path, [f"operating.speed_rpm={0.99 * rpm_burst!r}"]))
     with pytest.raises(SceneError, match="bursts above 505 m/s") as info:
-        load_scene(baseline_path, [f"operating.speed_rpm={1.01 * rpm_burst!r}"])
+        build_case(load_scene(baseline_path, [f"operating.speed_rpm={1.01 * rpm_burst!r}"]))
     assert info.value.key == "operating.speed_rpm"
 
 
@@ -44,14 +49,38 @@ def test_temperatures_at_the_roelands_pole_are_refused(baseline_path, override, 
 ])
 def test_implausible_inputs_are_accepted_with_a_warning_naming_the_key(baseline_path, caplog, override, key):
     with caplog.at_level(logging.WARNING, logger="femgear.scene"):
-        load_scene(baseline_path, [override])
+        _bind_and_contact(baseline_path, [override])
     assert any(r.getMessage().startswith(key) for r in caplog.records), caplog.text
+    assert len({r.getMessage().split(":")[0] for r in caplog.records}) == len(caplog.records)   # one line per key
+
+
+def _bind_and_contact(path, overrides=()):
+    """What a run does before its sub-models: load, bind, the contact pass and its plausibility warning."""
+    from femgear.physics.contact.path import contact_along_path
+
+    case = build_case(load_scene(path, overrides))
+    contact = contact_along_path(case.scene, pair=case.pair)
+    return case, contact_warnings(case, float(contact.hertz_pressure.max()))
 
 
 def test_the_baseline_loads_without_warnings(baseline_path, caplog):
     with caplog.at_level(logging.WARNING, logger="femgear.scene"):
-        load_scene(baseline_path)
-    assert caplog.records == []
+        case, later = _bind_and_contact(baseline_path)
+    assert caplog.records == [] and case.warnings == () and later == ()
+
+
+def test_the_hertz_warning_comes_from_the_runs_contact_pass_once_per_key(baseline_path, caplog):
+    """Loading and binding an overloaded scene warn nothing (no contact pass there); the run's pass warns
+    once, and not again for a key already warned."""
+    from dataclasses import replace
+
+    with caplog.at_level(logging.WARNING, logger="femgear.scene"):
+        case = build_case(load_scene(baseline_path, ["operating.torque=20000.0"]))
+        assert caplog.records == []
+        case, later = _bind_and_contact(baseline_path, ["operating.torque=20000.0"])
+    assert [w.split(":")[0] for w in later] == ["operating.torque"] and "GPa is above 3 GPa" in later[0]
+    assert contact_warnings(replace(case, warnings=later), 4e9) == ()
+    assert contact_warnings(case, 2.9e9) == ()
 
 
 @pytest.mark.parametrize("override,key", [

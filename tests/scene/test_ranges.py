@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 
+from femgear.case.pair import pair_from_scene
 from femgear.errors import SceneError
 from femgear.scene import load_scene
 from femgear.scene.ranges import _iso1328, _nominal_contact_stress
@@ -50,10 +51,10 @@ SLIPS = [
 def test_unit_slips_are_refused_on_the_key_typed(scene, override, key, words, monkeypatch):
     import femgear.physics.geometry as geometry
 
-    def no_geometry(*args, **kwargs):  # the check must come first
+    def no_geometry(*args, **kwargs):  # the check must come first (load_scene builds no geometry at all)
         raise AssertionError("geometry was derived before the input ranges were checked")
 
-    monkeypatch.setattr(geometry.GearPair, "from_scene", no_geometry)
+    monkeypatch.setattr(geometry.GearPair, "__init__", no_geometry)
     with pytest.raises(SceneError) as info:
         load_scene(scene, [override])
     assert info.value.key == key, str(info.value)
@@ -111,11 +112,10 @@ def test_iso1328_tolerances_match_the_standards_formulas():
 def test_nominal_contact_stress_is_isos_sigma_h0_without_z_eps_z_beta():
     """The torque check's σ_H0 against femgear's ISO 6336-2 σ_H0 on the baseline (x = 0: same Z_H),
     divided by Z_ε Z_β that the check leaves out."""
-    from femgear.physics.geometry import GearPair
     from femgear.summary import rating_summary, scene_rating
 
     scene = load_scene(BASE)
-    rating = rating_summary(scene_rating(scene, GearPair.from_scene(scene)))
+    rating = rating_summary(scene_rating(scene, pair_from_scene(scene)))
     d1 = 31 * 3e-3 / math.cos(math.radians(30))
     nominal = _nominal_contact_stress(scene, 200.0, d1)
     assert nominal == pytest.approx(rating["sigma_H0"] / (rating["Z_eps"] * rating["Z_beta"]), rel=1e-6)

@@ -5,6 +5,7 @@ import tomllib
 import pydantic
 import pytest
 
+from femgear.case import build_case
 from femgear.errors import SceneError
 from femgear.scene import load_scene, scene_from_dict
 from femgear.scene.levels import AVAILABLE, LEVELS
@@ -51,8 +52,8 @@ def test_overrides_take_toml_values(baseline_path):
 def test_bad_scenes_name_the_key(baseline_path, change, key):
     data = raw(baseline_path)
     change(data)
-    with pytest.raises(SceneError) as info:
-        scene_from_dict(data)
+    with pytest.raises(SceneError) as info:    # the pair's feasibility: when the case is bound
+        build_case(scene_from_dict(data))
     assert info.value.key == key
     assert "\n" not in str(info.value)
 

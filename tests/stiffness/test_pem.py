@@ -5,6 +5,7 @@ import math
 import numpy as np
 import pytest
 
+from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.stiffness.iso6336 import iso6336_stiffness
 from femgear.physics.stiffness.pem import (
     SAINSOT,
@@ -13,7 +14,6 @@ from femgear.physics.stiffness.pem import (
     sainsot_coefficient,
     tooth_compliance,
 )
-from femgear.physics.stiffness.tvms import mesh_stiffness
 
 
 def test_sainsot_polynomial_exact():

@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness.tvms import mesh_stiffness
 
 DATA = Path(__file__).parent / "data" / "ross_62_62_tvms.json"
 ROSS_TEST_FIRST5 = [396622921.3581085, 396738680.0375346, 396854147.2919756, 396969323.136738, 397084207.5865779]

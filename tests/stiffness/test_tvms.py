@@ -5,9 +5,12 @@ import math
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.levels import stiffness as stiffness_levels
+from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry import double_helical_contact
 from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness, mesh_stiffness
+from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness
 
 
 def test_constant_unit_stiffness_gives_contact_length(baseline_pair):
@@ -58,11 +61,10 @@ def test_interpolation_periodic(baseline_pair):
 
 
 def test_levels_and_bad_arguments(baseline_pair, baseline_scene):
-    from femgear.physics.stiffness import mesh_stiffness_from_scene
 
     iso = mesh_stiffness(baseline_pair, "iso6336", n_positions=8)
     assert iso.ripple() == 0 and iso.mean > 0
-    const = mesh_stiffness_from_scene(baseline_scene, level="constant", n_positions=8)
+    const = stiffness_levels.of(build_case(baseline_scene), level="constant", n_positions=8)
     assert const.mean_left == pytest.approx(baseline_scene.stiffness.mesh_stiffness_per_width * baseline_pair.b)
     with pytest.raises(ValueError, match="level"):
         mesh_stiffness(baseline_pair, "weber")

@@ -30,8 +30,8 @@ def _scene(crowning=None, lubrication="tehl-point"):
 
 
 def test_uncrowned_flank_refused_naming_the_key():
-    with pytest.raises(SceneError, match=r"modifications\.crowning"):
-        _scene(None)
+    with pytest.raises(SceneError, match=r"modifications\.crowning"):     # when the case is bound
+        build_case(_scene(None))
     with pytest.raises(SceneError, match=r"modifications\.crowning"):
         crowned_contact(_scene(None, lubrication="formula"))
 
@@ -110,9 +110,9 @@ def test_the_tehl_levels_are_refused_above_their_speed_range():
     zoo = BASE.parents[0] / "zoo"
     for level in ("tehl", "tehl-point"):
         with pytest.raises(SceneError, match=r'above 100 m/s.*"ehl-line"') as info:
-            load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"', "modifications.crowning=20e-6"])
+            build_case(load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"', "modifications.crowning=20e-6"]))
         assert info.value.key == "physics.lubrication"
-    assert load_scene(zoo / "marine.toml", ['physics.lubrication="tehl"']).physics.lubrication == "tehl"
+    assert build_case(load_scene(zoo / "marine.toml", ['physics.lubrication="tehl"'])).levels.lubrication == "tehl"
 
 
 def test_tehl_is_refused_where_its_map_leaves_the_line_solvers_range():
@@ -123,6 +123,6 @@ def test_tehl_is_refused_where_its_map_leaves_the_line_solvers_range():
 
     zoo = BASE.parents[0] / "zoo"
     with pytest.raises(SceneError, match=r"Moes M = 346.*\"ehl-line\""):
-        load_scene(zoo / "wind.toml", ['physics.lubrication="tehl"'])
+        build_case(load_scene(zoo / "wind.toml", ['physics.lubrication="tehl"']))
     assert map_corner_moes(load_scene(zoo / "fzg_c14.toml"))[0] == pytest.approx(126.8, rel=1e-3)
-    load_scene(zoo / "fzg_c14.toml", ['physics.lubrication="tehl"'])
+    build_case(load_scene(zoo / "fzg_c14.toml", ['physics.lubrication="tehl"']))

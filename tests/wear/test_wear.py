@@ -6,8 +6,10 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.levels.wear import static_setup
 from femgear.physics.geometry import kinematics, path_positions
-from femgear.physics.wear import WearSetup, WearState, load_map, run_wear, wear_rates, wear_steps
+from femgear.physics.wear import WearState, load_map, run_wear, wear_rates, wear_steps
 
 
 @pytest.fixture(scope="module")
@@ -15,7 +17,7 @@ def setup(baseline_scene, baseline_pair):
     p = baseline_pair
     u = np.unique(np.append(path_positions(p, 61), p.u_pitch))
     kin = kinematics(p, u, 500 * 2 * math.pi / 60)
-    return WearSetup.from_scene(baseline_scene, kin, p, n_phase=48)
+    return static_setup(build_case(baseline_scene), kin, n_phase=48)
 
 
 def test_unworn_load_sharing_is_uniform_and_in_equilibrium(setup):

@@ -39,6 +39,33 @@ def load_scene_arg(args: argparse.Namespace):
     return load_scene(args.scene, args.overrides)
 
 
+def load_case_arg(args: argparse.Namespace):
+    """The bound :class:`femgear.case.Case` of ``SCENE`` (:func:`femgear.case.build_case`, once); for a REXS
+    model, an error of the binding (the gear's feasibility) names the REXS component and attribute."""
+    from femgear.case import build_case
+    from femgear.rexs import is_rexs_path
+
+    if not is_rexs_path(args.scene):
+        return build_case(load_scene_arg(args))
+    from femgear.rexs.importer import read_stage, validate
+
+    conv = read_stage(args.scene, args.stage)
+    return bind_rexs(conv, validate(conv, args.overrides))
+
+
+def bind_rexs(conv, scene):
+    """``build_case(scene)`` of a REXS conversion ``conv``, a :class:`SceneError` re-issued naming the REXS
+    component and attribute of its key (:func:`femgear.rexs.importer.translate`)."""
+    from femgear.case import build_case
+    from femgear.errors import SceneError
+    from femgear.rexs.importer import translate
+
+    try:
+        return build_case(scene)
+    except SceneError as exc:
+        raise translate(conv, exc) from None
+
+
 def emit_json(payload: dict[str, Any]) -> None:
     """Print ``payload`` as one JSON line (numpy values converted, non-finite -> null)."""
     print(json.dumps(to_plain(payload), separators=(",", ":")))

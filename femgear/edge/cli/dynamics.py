@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from femgear.edge.cli.common import add_scene_arguments, emit_json, load_scene_arg
+from femgear.edge.cli.common import add_scene_arguments, emit_json, load_case_arg
 from femgear.edge.cli.levels import level_choices
 
 #: a mesh stiffness of the dynamics only (not a scene level): c_γ times the contact-line length
@@ -44,7 +44,6 @@ def register(sub) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from femgear.case import build_case
     from femgear.edge.cli.limits import finite
     from femgear.edge.io.paths import child_path, prepare_output_dir
     from femgear.errors import ArgumentError
@@ -55,10 +54,9 @@ def _run(args: argparse.Namespace) -> int:
     finite("--transient", args.transient, nonnegative=True)
     if args.transient >= args.cycles:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
-    scene = load_scene_arg(args)
+    case = load_case_arg(args)
     if args.sweep:
-        _check_sweep_speeds(scene, sweep_speeds(args.sweep))
-    case = build_case(scene)
+        _check_sweep_speeds(case, sweep_speeds(args.sweep))
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
     else:
@@ -114,16 +112,17 @@ def sweep_speeds(text: str):
     return np.linspace(lo, hi, count)
 
 
-def _check_sweep_speeds(scene, speeds) -> None:
+def _check_sweep_speeds(case, speeds) -> None:
     """The sweep's end speeds pass the scene's speed checks (:mod:`femgear.scene.ranges`, the burst
-    speed), before any computing; a refusal names ``--sweep``."""
+    speed of the case's pair), before any computing; a refusal names ``--sweep``."""
     from femgear.errors import ArgumentError, SceneError
     from femgear.scene.load import scene_from_dict
+    from femgear.scene.plausibility import check_operating_limits
 
-    data = scene.model_dump(exclude_none=True)
+    data = case.scene.model_dump(exclude_none=True)
     for rpm in (float(speeds[0]), float(speeds[-1])):
         try:
-            scene_from_dict(data, [f"operating.speed_rpm={rpm!r}"], warn=False)
+            check_operating_limits(scene_from_dict(data, [f"operating.speed_rpm={rpm!r}"], warn=False), case.pair)
         except SceneError as exc:
             if exc.key != "operating.speed_rpm":
                 raise

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from femgear.edge.cli.common import add_scene_arguments, emit_json, load_scene_arg
+from femgear.edge.cli.common import add_scene_arguments, emit_json, load_case_arg
 
 
 def register(sub) -> None:
@@ -16,14 +16,15 @@ def register(sub) -> None:
 
 
 def _info(args: argparse.Namespace) -> int:
+    from femgear.case.checks import contact_warnings
     from femgear.physics.contact.path import contact_along_path, zone_grid
-    from femgear.physics.geometry import GearPair
     from femgear.rate import rate_case
     from femgear.summary import scene_summary
 
-    scene = load_scene_arg(args)
-    pair = GearPair.from_scene(scene)
+    case = load_case_arg(args)
+    scene, pair = case.scene, case.pair
     contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
+    contact_warnings(case, float(contact.hertz_pressure.max()))
     summary = scene_summary(scene, pair, contact, ratings=rate_case(scene, pair, contact))
     if args.json:
         emit_json(summary)

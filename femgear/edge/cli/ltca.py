@@ -77,15 +77,16 @@ def _options(args: argparse.Namespace):
 
 
 def _run(args: argparse.Namespace) -> int:
+    from femgear.case import build_case
     from femgear.edge.io.paths import child_path, prepare_output_dir
-    from femgear.physics.geometry import GearPair
-    from femgear.physics.ltca.analysis import body_options
+    from femgear.levels.stiffness import body_options
     from femgear.physics.ltca.te import check_torques
     from femgear.physics.ltca.tool import run_ltca
     from femgear.scene import load_scene
 
     scene = load_scene(args.scene, args.overrides)
-    pair = GearPair.from_scene(scene)
+    case = build_case(scene)
+    pair = case.pair
     E, nu, driver = scene.material.youngs_modulus, scene.material.poisson_ratio, scene.operating.driver
     design = scene.operating.torque
     given = [design] if args.torques is None else parse_torques(args.torques, "--torques")
@@ -99,7 +100,7 @@ def _run(args: argparse.Namespace) -> int:
     out = prepare_output_dir(args.out if args.out is not None else
                              child_path("out", f"{scene.meta.name}/ltca", "meta.name"), "--out")
     t0 = time.perf_counter()
-    result = run_ltca(pair, E, nu, scene.modifications, torques, design, driver, body_options(scene), harris, options)
+    result = run_ltca(pair, E, nu, scene.modifications, torques, design, driver, body_options(case), harris, options)
     files = _write(result, scene, pair, out, plots=not args.no_plots, vtk=not args.no_vtk)
     if args.json:
         from femgear.edge.io.ltca import ltca_summary

@@ -87,6 +87,7 @@ def _num(value: float | None) -> str:
 
 
 def _convert(args: argparse.Namespace) -> int:
+    from femgear.edge.cli.common import bind_rexs
     from femgear.edge.io.atomic import write_text_atomic
     from femgear.rexs.importer import read_stage, validate
     from femgear.rexs.scene_toml import scene_toml
@@ -98,6 +99,7 @@ def _convert(args: argparse.Namespace) -> int:
         conv.defaults.pop(key, None)
         conv.overridden.add(key)
     scene = validate(conv, args.overrides)
+    bind_rexs(conv, scene)          # the gear's feasibility, in the model's terms
     if args.overrides:
         from femgear.scene.load import apply_overrides
 
@@ -113,6 +115,7 @@ def _convert(args: argparse.Namespace) -> int:
 
 
 def _export(args: argparse.Namespace) -> int:
+    from femgear.case import build_case
     from femgear.edge.io.atomic import write_bytes_atomic
     from femgear.errors import ArgumentError
     from femgear.rexs.export import check_finite, export_scene
@@ -124,7 +127,7 @@ def _export(args: argparse.Namespace) -> int:
         raise ArgumentError("-o", f"{args.output}: the REXS file must end in .rexs (XML), .rexsj (JSON) or .rexsz "
                                   "(zipped XML)")
     scene = load_scene(args.export, args.overrides)
-    model, skipped = export_scene(scene, source=args.output.name)
+    model, skipped = export_scene(scene, build_case(scene).pair, source=args.output.name)
     check_finite(model)
     version = _version()
     if suffix == ".rexsj":

@@ -11,7 +11,7 @@ import argparse
 import time
 from pathlib import Path
 
-from femgear.edge.cli.common import add_scene_arguments, emit_json, load_scene_arg
+from femgear.edge.cli.common import add_scene_arguments, emit_json, load_case_arg
 
 
 def register(sub) -> None:
@@ -29,14 +29,15 @@ def _run(args: argparse.Namespace) -> int:
     from femgear.edge.io.paths import child_path, prepare_output_dir
     from femgear.edge.run import run_scene
 
-    scene = load_scene_arg(args)
+    case = load_case_arg(args)
+    scene = case.scene
     if args.out is None:
         out = prepare_output_dir(child_path("out", scene.meta.name, "meta.name"), "meta.name")
     else:
         out = prepare_output_dir(args.out, "--out")
     t0 = time.perf_counter()
     with CouplingProgress(enabled=not (args.quiet or args.json)) as progress:
-        written = run_scene(scene, out, plots=not args.no_plots, progress=progress)
+        written = run_scene(case, out, plots=not args.no_plots, progress=progress)
     files = dict(written.files)
     if not args.no_plots:
         from femgear.edge.plot.coupled import run_figures

@@ -24,7 +24,7 @@ Levels of the flank deviation (``physics.thermal``):
   deviation averaged over the face of both helices.
 
 ζ is positive when material is added along the flank's outward normal (less
-backlash).  :func:`flank_deviation` returns it along the *normal* line of action
+backlash).  :func:`analytic_flank_deviation`, :func:`fe_flank_deviation` (and :func:`femgear.physics.ltca.thermal.fe3d_flank_deviation`) return it along the *normal* line of action
 (ζ_n = ζ_t cos β_b) at path positions u, like the stiffness convention.
 """
 
@@ -66,7 +66,7 @@ def _member(pair: GearPair, member: int):
     return (pair.rb1, pair.rf1) if member == 1 else (pair.rb2, pair.rf2)
 
 
-def _flank_radius(pair: GearPair, member: int, u):
+def flank_radius(pair: GearPair, member: int, u):
     from femgear.physics.stiffness.pem import contact_geometry
 
     return contact_geometry(pair, member, u)
@@ -184,33 +184,24 @@ def flank_displacement(result: ThermoElasticResult, pair: GearPair, member: int,
     return np.interp(r, R, ux) * nX + np.interp(r, R, uy) * nY
 
 
-def flank_deviation(pair: GearPair, member: int, u, level: str, dT_flank: float, dT_shaft: float,
-                    expansion: float, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
-                    conductivity: float = 46.0, bore_radius: float = 0.0, h: float | None = None,
-                    groove: float = 0.0, stagger: float = 0.0, body_level: int = 1):
-    """Thermal flank deviation ζ_T along the normal line of action at path positions ``u`` [m].
+def analytic_flank_deviation(pair: GearPair, member: int, u, dT_flank: float, dT_shaft: float, expansion: float,
+                             poisson_ratio: float = 0.3, bore_radius: float = 0.0) -> np.ndarray:
+    """ζ_T [m] along the normal line of action at path positions ``u`` [m] of the free thermal expansion
+    (the ``analytic`` level: the radial displacement of the section's disc, see module docstring)."""
+    r, alpha, _ = flank_radius(pair, member, u)
+    ur = analytic_radial_displacement(pair, member, r, dT_flank, dT_shaft, expansion, poisson_ratio, bore_radius)
+    return ur * np.sin(alpha) * math.cos(pair.beta_b)
 
-    ``level``: ``none`` (zeros), ``analytic``, ``fe`` or ``fe3d`` (see module docstring; ``h`` is the
-    2-D mesh size, ``groove`` and ``stagger`` shape the 3-D body, ``body_level`` its resolution).
-    """
-    r, alpha, rho = _flank_radius(pair, member, u)
-    cb = math.cos(pair.beta_b)
-    if level == "none":
-        return np.zeros_like(r)
-    if level == "analytic":
-        ur = analytic_radial_displacement(pair, member, r, dT_flank, dT_shaft, expansion, poisson_ratio, bore_radius)
-        return ur * np.sin(alpha) * cb
-    if level == "fe":
-        res = gear_thermo_elastic(pair, member, dT_flank, dT_shaft, expansion, youngs_modulus, poisson_ratio,
-                                  conductivity, bore_radius, h)
-        return flank_displacement(res, pair, member, r) * cb
-    if level == "fe3d":
-        from femgear.physics.ltca.thermal import thermal_units_3d
 
-        units = thermal_units_3d(pair, member, expansion, youngs_modulus, poisson_ratio, bore_radius, groove, stagger,
-                                 level=body_level)
-        return units.face_mean(rho, dT_flank, dT_shaft)
-    raise ValueError(f"level must be 'none', 'analytic', 'fe' or 'fe3d', got {level!r}")
+def fe_flank_deviation(pair: GearPair, member: int, u, dT_flank: float, dT_shaft: float, expansion: float,
+                       youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, conductivity: float = 46.0,
+                       bore_radius: float = 0.0, h: float | None = None) -> np.ndarray:
+    """ζ_T [m] at ``u`` [m] from the 2-D FE conduction and thermo-elasticity of the tooth section (the ``fe``
+    level; ``h`` the mesh size)."""
+    r, _, _ = flank_radius(pair, member, u)
+    res = gear_thermo_elastic(pair, member, dT_flank, dT_shaft, expansion, youngs_modulus, poisson_ratio,
+                              conductivity, bore_radius, h)
+    return flank_displacement(res, pair, member, r) * math.cos(pair.beta_b)
 
 
 def gear_thermo_elastic(pair: GearPair, member: int, dT_flank: float, dT_shaft: float, expansion: float,
@@ -235,19 +226,3 @@ def gear_thermo_elastic(pair: GearPair, member: int, dT_flank: float, dT_shaft: 
     full = "sides" not in mesh.boundaries
     return thermo_elastic(mesh, temp, youngs_modulus, poisson_ratio, expansion,
                           support="free" if full else "rollers", bore_radius=rbore)
-
-
-def flank_deviation_from_scene(scene, member: int, u, level: str | None = None, h: float | None = None):
-    """:func:`flank_deviation` with the scene's pair, material, bores and ``[thermal]`` rises.
-
-    ``level`` defaults to ``physics.thermal``; the flank rise is
-    ``thermal.flank_temperature_rise`` (a lubrication model may pass its own through
-    :func:`flank_deviation`).
-    """
-    pair = GearPair.from_scene(scene)
-    mat = scene.material
-    bore = scene.pinion.bore_radius if member == 1 else scene.gear.bore_radius
-    return flank_deviation(pair, member, u, level or scene.physics.thermal, scene.thermal.flank_temperature_rise,
-                           scene.thermal.shaft_temperature_rise, mat.thermal_expansion, mat.youngs_modulus,
-                           mat.poisson_ratio, mat.conductivity, bore, h if h is not None else scene.thermal.mesh_size,
-                           scene.pair.groove_width, scene.pair.stagger, scene.numerics.body_level)

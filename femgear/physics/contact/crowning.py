@@ -67,9 +67,9 @@ def crowned_contact(scene, pair=None) -> CrownedContact:
     """:class:`CrownedContact` of a scene; an uncrowned pair raises SceneError naming
     ``modifications.crowning``."""
     if pair is None:
-        from femgear.physics.geometry import GearPair
+        from femgear.case.pair import pair_from_scene  # transitional (h27lub removes this scene adapter)
 
-        pair = GearPair.from_scene(scene)
+        pair = pair_from_scene(scene)
     mods = scene.modifications
     c1, c2 = mods.member(1).crowning, mods.member(2).crowning
     if c1 + c2 <= 0.0:

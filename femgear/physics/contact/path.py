@@ -104,20 +104,23 @@ def pair_stiffness_curve(scene, pair: GearPair, stiffness=None) -> StiffnessPerW
 
 
 def contact_along_path(scene, n: int | None = None, pair: GearPair | None = None, u: np.ndarray | None = None,
-                       stiffness=None) -> ContactPath:
+                       stiffness=None, kin: PathKinematics | None = None) -> ContactPath:
     """Hertz pressure, films and velocities at ``n`` positions from A to E (plus the pitch point).
 
     ``u`` replaces the positions [m]; ``stiffness`` (a :class:`MeshStiffness` of the
     scene's level) supplies k'(u) for the load sharing instead of recomputing it.
     """
-    pair = pair or GearPair.from_scene(scene)
-    if u is None:
+    if pair is None:   # transitional (h27lub replaces this scene adapter by femgear.levels.contact)
+        from femgear.case.pair import pair_from_scene
+
+        pair = pair_from_scene(scene)
+    if u is None and kin is None:
         n = n or scene.numerics.path_points
         # include the pitch point exactly so that pitch-point figures are not interpolated
         u = np.unique(np.append(path_positions(pair, n), pair.u_pitch))
-    u = np.asarray(u, float)
-    omega1 = pinion_speed(scene) * 2 * math.pi / 60
-    kin = kinematics(pair, u, omega1)
+    if kin is None:     # transitional (h27lub): the case's path is passed as ``kin``
+        kin = kinematics(pair, np.asarray(u, float), pinion_speed(scene) * 2 * math.pi / 60)
+    u = np.asarray(kin.u, float)
     F_bn = normal_force(scene, pair)
     share = load_sharing(pair, u, F_bn / pair.n_helices, pair_stiffness_curve(scene, pair, stiffness))
     E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)

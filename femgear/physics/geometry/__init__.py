@@ -2,7 +2,6 @@
 
 - ``involute``    the involute function and its inverse.
 - ``gear``        dimensions, contact ratios and feasibility checks (ISO 21771); ``GearPair.kind``.
-- ``scene_pair``  the pair of a scene: kind checks, ISO 53 racks, tip diameters, centre distance.
 - ``kinematics``  radii of curvature and velocities along the path of contact,
                   contact lines of each helix, mesh frequency.
 """

@@ -27,7 +27,7 @@ __all__ = ["KINDS", "GearPair", "inv", "inv_inverse"]
 class GearPair:
     """Dimensions of one helix of an external involute helical gear pair.
 
-    Built by :meth:`from_parameters` or :meth:`from_scene`, which check that the gear
+    Built by :meth:`from_parameters` or :func:`femgear.case.pair.pair_from_scene`, which check that the gear
     can be made and meshes (no undercut, no pointed tip, no interference, ε_α ≥ 1).
     """
 
@@ -224,13 +224,6 @@ class GearPair:
         pair = cls(**kw)
         pair.check()
         return pair
-
-    @classmethod
-    def from_scene(cls, scene) -> GearPair:
-        """The pair of a :class:`femgear.scene.Scene` (checked; see :mod:`femgear.physics.geometry.scene_pair`)."""
-        from femgear.physics.geometry.scene_pair import pair_from_scene
-
-        return pair_from_scene(scene, cls)
 
     def check(self) -> None:
         """Raise :class:`SceneError` if the pair cannot be made or does not mesh."""

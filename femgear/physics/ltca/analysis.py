@@ -57,7 +57,8 @@ def build_model(pair: GearPair, youngs_modulus: float, poisson_ratio: float, lev
 
     Each member is one body holding both helices, the groove of ``groove_width`` and the rim down to
     ``bore_radius`` (per member; 0: r_f − 3 m_n), the right helix staggered by ``stagger`` base pitches
-    (:mod:`femgear.physics.mesh.segment`); :func:`body_options` reads these from a scene.  ``spec_options``:
+    (:mod:`femgear.physics.mesh.segment`); :func:`femgear.levels.stiffness.body_options` reads these from a
+    case.  ``spec_options``:
     other :class:`femgear.physics.mesh.segment.SegmentSpec` fields (the far-field grading of a study).
     """
     t0 = time.perf_counter()
@@ -70,13 +71,6 @@ def build_model(pair: GearPair, youngs_modulus: float, poisson_ratio: float, lev
         kernels[member] = member_compliance(pair, member, spec, youngs_modulus, poisson_ratio, order=order,
                                             n_rho=n_rho, n_z=n_z, cache=cache)
     return LTCAModel(pair, youngs_modulus, poisson_ratio, kernels, level, time.perf_counter() - t0, stagger)
-
-
-def body_options(scene) -> dict:
-    """``bore_radius`` (the scene's bore radius if > 0, else the shaft radius), ``groove_width`` and
-    ``stagger`` of a scene for :func:`build_model`."""
-    bores = tuple(m.bore_radius if m.bore_radius > 0 else 0.5 * m.shaft_diameter for m in (scene.pinion, scene.gear))
-    return {"bore_radius": bores, "groove_width": scene.pair.groove_width, "stagger": scene.pair.stagger}
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""The ``ltca`` stiffness level: one LTCA mesh cycle for :func:`femgear.physics.stiffness.tvms.mesh_stiffness`.
+"""The ``ltca`` stiffness level: one LTCA mesh cycle for :func:`femgear.levels.stiffness.mesh_stiffness`.
 
 tvms wraps the result as a ``MeshStiffness``: ``k_left``/``k_right`` are the secant
 stiffnesses F_h/(δ − NLTE_h) of each helix along the normal line of action at the
@@ -74,7 +74,7 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
 
     The line loads are kept (:meth:`LTCAResult.path_load`: the wear and lubrication load map of
     the ``ltca`` level, :func:`femgear.system.coupling.loop.ltca_reference`).  ``body``: ``bore_radius``
-    and ``groove_width`` of the member bodies (:func:`femgear.physics.ltca.analysis.body_options`).
+    and ``groove_width`` of the member bodies (:func:`femgear.levels.stiffness.body_options`).
     ``n_line`` points per contact line, doubled while fewer than :data:`MIN_RESOLVED_ORDERS`
     mesh orders are resolved (``info['options']['n_line']`` is the one used).
     """
@@ -154,14 +154,3 @@ def deviated_cycle(info: dict, extra) -> dict:
 
     res = mesh_cycle(info["model"], info["force"], info["modifications"], extra=extra, **info["options"])
     return {**info, "ltca": res, "excitation": res.excitation(), "lte_peak_to_peak": res.lte_peak_to_peak()}
-
-
-def ltca_options_from_scene(scene) -> dict:
-    """Force, modifications, the member bodies (bore, groove) and their resolution ``numerics.body_level``
-    of a scene for :func:`ltca_cycle`."""
-    from femgear.physics.ltca.analysis import body_options, normal_force
-
-    pair = GearPair.from_scene(scene)
-    body = {k: v for k, v in body_options(scene).items() if k != "stagger"}   # tvms passes the stagger itself
-    return {"force": normal_force(pair, scene.operating.torque, scene.operating.driver),
-            "modifications": scene.modifications, "body": body, "level": scene.numerics.body_level}

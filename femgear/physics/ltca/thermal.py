@@ -44,6 +44,7 @@ from dataclasses import asdict, dataclass, field, replace
 
 import numpy as np
 
+from femgear.physics.body.thermal import flank_radius
 from femgear.physics.geometry.gear import GearPair
 
 CACHE_VERSION = 1
@@ -236,3 +237,14 @@ def _flank_reading(pair, member, model, frame, rho, zeta, helix, u) -> np.ndarra
     if not np.all(np.isfinite(zt)):
         raise ValueError(f"3-D thermal reading on helix {helix} of member {member}: a point lies outside the body")
     return (zt * math.cos(pair.beta_b)).reshape(RR.shape)
+
+
+def fe3d_flank_deviation(pair: GearPair, member: int, u, dT_flank: float, dT_shaft: float, expansion: float,
+                         youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, bore_radius: float = 0.0,
+                         groove: float = 0.0, stagger: float = 0.0, body_level: int = 1) -> np.ndarray:
+    """ζ_T [m] at ``u`` [m], the face mean of the 3-D member body's thermo-elastic growth (the ``fe3d`` level;
+    ``groove`` and ``stagger`` shape the body, ``body_level`` its resolution)."""
+    _, _, rho = flank_radius(pair, member, u)
+    units = thermal_units_3d(pair, member, expansion, youngs_modulus, poisson_ratio, bore_radius, groove, stagger,
+                             level=body_level)
+    return units.face_mean(rho, dT_flank, dT_shaft)

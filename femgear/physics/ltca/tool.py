@@ -67,7 +67,7 @@ def run_ltca(pair: GearPair, youngs_modulus: float, poisson_ratio: float, modifi
              harris_torques=None, options: LTCAOptions = LTCAOptions(), model=None) -> LTCAToolResult:
     """LTCA of ``pair`` at ``torques`` [N m] on the ``driver`` (checked beforehand by the caller:
     :func:`femgear.physics.ltca.te.check_torques`); ``body``: bore_radius, groove_width, stagger
-    (:func:`femgear.physics.ltca.analysis.body_options`); ``harris_torques``: the Harris map's torques (None: none);
+    (:func:`femgear.levels.stiffness.body_options`); ``harris_torques``: the Harris map's torques (None: none);
     ``model``: a prebuilt :class:`femgear.physics.ltca.analysis.LTCAModel` of these bodies (a test's coarse model)."""
     from femgear.physics.ltca.analysis import build_model
     from femgear.physics.ltca.maps import load_maps

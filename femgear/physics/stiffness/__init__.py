@@ -4,12 +4,15 @@
 - ``pem``      potential energy method per transverse slice (Hertz, bending, shear,
                axial, Sainsot fillet foundation over the generated tooth outline).
 - ``tvms``     slicing along the face width, left/right stagger, :class:`MeshStiffness`
-               (the periodic stiffness the dynamics model consumes) and
-               :func:`mesh_stiffness` for every level (``fe`` uses :mod:`femgear.physics.body`).
+               (the periodic stiffness the dynamics model consumes): a uniform table
+               (:func:`uniform_mesh_stiffness`) or a sliced one from k'(u) (:func:`sliced_mesh_stiffness`).
+
+The levels (``constant``, ``iso6336``, ``pem``, ``fe``, ``ltca``) are dispatched by
+:mod:`femgear.levels.stiffness` (``mesh_stiffness(pair, level)``, or the registry for a case).
 """
 
 from femgear.physics.stiffness.iso6336 import IsoStiffness, iso6336_stiffness
-from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness, mesh_stiffness, mesh_stiffness_from_scene
+from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness, sliced_mesh_stiffness, uniform_mesh_stiffness
 
-__all__ = ["IsoStiffness", "MeshStiffness", "helix_stiffness", "iso6336_stiffness", "mesh_stiffness",
-           "mesh_stiffness_from_scene"]
+__all__ = ["IsoStiffness", "MeshStiffness", "helix_stiffness", "iso6336_stiffness", "sliced_mesh_stiffness",
+           "uniform_mesh_stiffness"]

@@ -32,7 +32,7 @@ import numpy as np
 
 from femgear.physics.geometry.gear import GearPair
 
-LEVELS = ("constant", "iso6336", "pem", "fe", "ltca")
+U_SAMPLES = 161   #: path positions A..E at which the sliced levels sample k'(u)
 
 
 @dataclass(frozen=True)
@@ -117,92 +117,52 @@ def tabulated(pair: GearPair, u_samples: np.ndarray, k_samples: np.ndarray) -> C
     return lambda u: spline(np.clip(u, u_samples[0], u_samples[-1]))
 
 
-def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, stagger: float = 0.0,
-                   n_slices: int = 100, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
-                   bore_radius: tuple[float, float] = (0.0, 0.0), plane: str = "strain",
-                   constant_per_width: float = 2.0e10, fe_options: dict | None = None,
-                   ltca_options: dict | None = None) -> MeshStiffness:
-    """Mesh stiffness of both helices of ``pair`` at ``n_positions`` phases of one mesh period.
-
-    Levels: ``constant`` (``constant_per_width`` [N/m per m] × b per helix), ``iso6336``
-    (c_γα b, constant; ISO's value is read as a transverse stiffness per unit face width
-    and projected like the sliced levels), ``pem`` (sliced potential energy method),
-    ``fe`` (sliced, tooth compliance from the 2-D FE of :mod:`femgear.physics.body.compliance`
-    at ``fe_options['n_fe']`` path positions, Hertz as in PEM), ``ltca`` (secant stiffness
-    per helix from the loaded tooth contact analysis of :mod:`femgear.physics.ltca` at
-    ``ltca_options['force']``; its TE tables are in ``info``).
-    """
-    if level not in LEVELS:
-        raise ValueError(f"level must be one of {', '.join(LEVELS)}, got {level!r}")
+def check_period(n_positions: int, stagger: float) -> np.ndarray:
+    """The ``n_positions`` phases i/n of one mesh period, after checking ``n_positions`` and ``stagger``."""
     if n_positions < 2:
         raise ValueError(f"n_positions must be ≥ 2, got {n_positions}")
     if not 0.0 <= stagger < 1.0:
         raise ValueError(f"stagger must be in [0, 1) base pitches, got {stagger}")
-    if level == "ltca":      # loaded tooth contact analysis on 3-D FE teeth (femgear.physics.ltca.level)
-        from femgear.physics.ltca.level import ltca_cycle
+    return np.arange(n_positions) / n_positions
 
-        if not ltca_options or "force" not in ltca_options:
-            raise ValueError("level 'ltca' needs ltca_options={'force': normal force [N], ...}")
-        t0 = time.perf_counter()
-        res, info = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
-                               poisson_ratio=poisson_ratio, **ltca_options)
-        return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger, 0,
-                             time.perf_counter() - t0, info)
-    t0 = time.perf_counter()
-    phases = np.arange(n_positions) / n_positions
-    info: dict = {}
-    if level in ("constant", "iso6336"):
-        if level == "constant":
-            k = constant_per_width * pair.b
-        else:
-            from femgear.physics.stiffness.iso6336 import iso6336_stiffness
 
-            iso = iso6336_stiffness(pair, youngs_modulus=youngs_modulus)
-            k = iso.k("c_gamma_alpha") / math.cos(pair.beta_b) ** 2
-            info["iso"] = iso
-        kl = np.full(n_positions, k)
-        kr = kl.copy() if pair.n_helices == 2 else np.zeros(n_positions)
-        return MeshStiffness(level, phases, kl, kr, stagger, 0, time.perf_counter() - t0, info)
-    u_grid = np.linspace(pair.u_start, pair.u_end, 161)
-    if level == "pem":
-        from femgear.physics.stiffness.pem import pair_stiffness_per_width
+def uniform_mesh_stiffness(pair: GearPair, k: float, label: str, n_positions: int = 200, stagger: float = 0.0,
+                           t0: float | None = None, **fields) -> MeshStiffness:
+    """A mesh stiffness constant over the period: ``k`` per helix [N/m] (the ``constant`` and ``iso6336``
+    levels); the right helix of a single-helical or spur pair is 0.  ``fields``: the level's other
+    :class:`MeshStiffness` fields; ``t0``: when the level started (for ``seconds``)."""
+    t0 = time.perf_counter() if t0 is None else t0
+    phases = check_period(n_positions, stagger)
+    kl = np.full(n_positions, k)
+    kr = kl.copy() if pair.n_helices == 2 else np.zeros(n_positions)
+    return MeshStiffness(label, phases, kl, kr, stagger, 0, time.perf_counter() - t0, **fields)
 
-        k_grid = pair_stiffness_per_width(pair, u_grid, youngs_modulus, poisson_ratio, bore_radius, plane)
-    else:
-        from femgear.physics.body.compliance import fe_pair_stiffness_per_width
 
-        opts = dict(fe_options or {})
-        n_fe = opts.pop("n_fe", 9)
-        u_fe = np.linspace(pair.u_start, pair.u_end, n_fe)
-        k_fe, fe_info = fe_pair_stiffness_per_width(pair, u_fe, youngs_modulus, poisson_ratio,
-                                                    bore_radius=bore_radius, **opts)
-        info.update(fe_info, u_fe=u_fe, k_fe=k_fe)
-        k_grid = tabulated(pair, u_fe, k_fe)(u_grid)
-    info.update(u=u_grid, k_pair_per_width=k_grid)
+def iso6336_helix_stiffness(pair: GearPair, youngs_modulus: float = 210e9):
+    """(k, iso): ISO 6336-1's c_γα b read as a transverse stiffness per unit face width and projected to the
+    normal line of action like the sliced levels, k = c_γα b / cos²β_b [N/m] per helix, and the ISO record."""
+    from femgear.physics.stiffness.iso6336 import iso6336_stiffness
+
+    iso = iso6336_stiffness(pair, youngs_modulus=youngs_modulus)
+    return iso.k("c_gamma_alpha") / math.cos(pair.beta_b) ** 2, iso
+
+
+def path_samples(pair: GearPair) -> np.ndarray:
+    """The :data:`U_SAMPLES` path positions from A to E at which a sliced level samples k'(u) [m]."""
+    return np.linspace(pair.u_start, pair.u_end, U_SAMPLES)
+
+
+def sliced_mesh_stiffness(pair: GearPair, u_grid: np.ndarray, k_grid: np.ndarray, label: str,
+                          n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
+                          t0: float | None = None, info: dict | None = None) -> MeshStiffness:
+    """Mesh stiffness of both helices from the pair stiffness per width ``k_grid`` at path positions ``u_grid``
+    (the ``pem`` and ``fe`` levels): k'(u) interpolated, each helix cut into ``n_slices`` slices (one for spur).
+    ``info``: the level's other records; ``t0``: when the level started (for ``seconds``)."""
+    t0 = time.perf_counter() if t0 is None else t0
+    phases = check_period(n_positions, stagger)
     k_unit = tabulated(pair, u_grid, k_grid)
     n_slices = 1 if pair.beta_b == 0 else n_slices     # spur: every slice sees the same position
     kl = helix_stiffness(pair, k_unit, phases, n_slices)
     kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
-    return MeshStiffness(level, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)
-
-
-def mesh_stiffness_from_scene(scene, level: str | None = None, **kw) -> MeshStiffness:
-    """:func:`mesh_stiffness` with the pair, level, stagger, material, bores and ``[stiffness]`` knobs of a scene."""
-    from femgear.physics.geometry.gear import GearPair as _GP
-
-    pair = _GP.from_scene(scene)
-    st = scene.stiffness
-    fe_options = dict(kw.pop("fe_options", None) or {})
-    if st.fe_mesh_size is not None:
-        fe_options.setdefault("h", st.fe_mesh_size)
-    fe_options.setdefault("level", scene.numerics.body_level)
-    args = dict(n_positions=st.n_positions, stagger=scene.pair.stagger, n_slices=st.n_slices,
-                youngs_modulus=scene.material.youngs_modulus, poisson_ratio=scene.material.poisson_ratio,
-                bore_radius=(scene.pinion.bore_radius, scene.gear.bore_radius),
-                constant_per_width=st.mesh_stiffness_per_width, fe_options=fe_options or None)
-    if (level or scene.physics.stiffness) == "ltca":
-        from femgear.physics.ltca.level import ltca_options_from_scene
-
-        args["ltca_options"] = {**ltca_options_from_scene(scene), **(kw.pop("ltca_options", None) or {})}
-    args.update(kw)
-    return mesh_stiffness(pair, level or scene.physics.stiffness, **args)
+    info = {**(info or {}), "u": u_grid, "k_pair_per_width": k_grid}
+    return MeshStiffness(label, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)

@@ -51,17 +51,6 @@ class WearSetup:
     #: share the load like this contact analysis (the ``ltca`` level) instead of the Winkler layer c_l alone
     reference: ReferenceLoad | None = None
 
-    @classmethod
-    def from_scene(cls, scene, kin: PathKinematics, pair: GearPair | None = None, n_phase: int = 64) -> WearSetup:
-        """Static load sharing of the scene: each helix carries F_bn/2; c_l from ``[stiffness]``."""
-        from femgear.physics.contact.path import normal_force
-
-        pair = pair or GearPair.from_scene(scene)
-        F_bn = normal_force(scene, pair)
-        c_l = scene.stiffness.mesh_stiffness_per_width * pair.b / pair.mean_contact_length
-        return cls(pair=pair, kin=kin, force=F_bn / 2, c_l=c_l, coefficient=scene.wear.coefficient,
-                   hardness=scene.material.hardness, n_phase=n_phase)
-
 
 @dataclass(frozen=True)
 class WearState:

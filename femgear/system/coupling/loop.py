@@ -46,6 +46,7 @@ import numpy as np
 
 from femgear.case import Case
 from femgear.errors import ConvergenceError
+from femgear.levels import wear as wear_levels
 from femgear.physics.lubrication.levels import Lubrication, lubrication_solver
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.physics.wear.face import FaceReference
@@ -300,20 +301,20 @@ def _wear(setup: CouplingSetup, force: np.ndarray,
     case = setup.case
     n = setup.kin.u.size
     face = None if setup.face is None else np.zeros((2, 2, n, setup.face.grid.size))
-    if case.levels.wear == "none" or case.wear.cycles == 0:
+    wear = wear_levels.of(case)
+    if wear is None or wear.cycles == 0:
         return np.zeros((2, n)), face
-    from femgear.physics.wear import WearSetup, run_wear
+    from femgear.physics.wear import run_wear
 
     helices = force[:setup.pair.n_helices]
-    ws = WearSetup(pair=setup.pair, kin=setup.kin, force=helices.mean(axis=0) if reference is None else helices,
-                   c_l=setup.c_l, coefficient=case.wear.coefficient, hardness=case.material.hardness,
-                   n_phase=setup.n_phase, reference=reference)
+    ws = wear.setup(setup.pair, setup.kin, helices.mean(axis=0) if reference is None else helices, setup.c_l,
+                    n_phase=setup.n_phase, reference=reference)
     if face is not None:
         from femgear.physics.wear.face import run_face_wear
 
-        state = run_face_wear(ws, replace(setup.face, ref=reference), case.wear.cycles)
+        state = run_face_wear(ws, replace(setup.face, ref=reference), wear.cycles)
         return state.path_mean(setup.face.grid), np.array([state.h1, state.h2])
-    state = run_wear(ws, case.wear.cycles)
+    state = run_wear(ws, wear.cycles)
     return np.array([state.h1, state.h2]), None
 
 

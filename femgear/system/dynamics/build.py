@@ -20,6 +20,8 @@ from scipy.linalg import eigh
 
 from femgear.case import Case
 from femgear.errors import SceneError
+from femgear.levels import dynamics as dynamics_levels
+from femgear.levels import stiffness as stiffness_levels
 from femgear.physics.excitation import Eccentricity, ProfileError, RandomError, Unbalance
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import (
@@ -31,7 +33,7 @@ from femgear.system.dynamics.mesh import (
     friction_table,
     mesh_geometry,
 )
-from femgear.system.dynamics.model import LEVELS, GearRotorModel, MeshDeviation
+from femgear.system.dynamics.model import GearRotorModel, MeshDeviation
 from femgear.system.dynamics.structure import assemble_structure
 
 Friction = float | Callable[[np.ndarray], np.ndarray]
@@ -59,19 +61,22 @@ def loop_spring(pair, T: np.ndarray, stiffness: float) -> np.ndarray:
     return stiffness * np.outer(wr, wr)
 
 
+#: the model's own mesh tables of c_γ (``stiffness.mesh_stiffness_per_width``), beside the stiffness levels
+MODEL_TABLES: dict[str, Callable[[Case], StiffnessTable]] = {
+    "constant": lambda case: constant_stiffness(case.pair, case.stiffness.mesh_stiffness_per_width),
+    "contact-line": lambda case: contact_line_stiffness(case.pair, case.stiffness.mesh_stiffness_per_width,
+                                                        case.stagger),
+}
+
+
 def stiffness_source(case: Case, stiffness):
-    """The mesh stiffness: a given table or TVMS, "constant", "contact-line" or a stiffness level."""
+    """The mesh stiffness: a given table or TVMS, "constant" (c_γ b), "contact-line" or a stiffness level
+    (built through :mod:`femgear.levels.stiffness`)."""
     if stiffness is None:
         stiffness = case.levels.stiffness
     if isinstance(stiffness, str):
-        c_gamma = case.stiffness.mesh_stiffness_per_width
-        if stiffness == "constant":
-            return constant_stiffness(case.pair, c_gamma)
-        if stiffness == "contact-line":
-            return contact_line_stiffness(case.pair, c_gamma, case.stagger)
-        from femgear.physics.stiffness import mesh_stiffness_from_scene
-
-        return mesh_stiffness_from_scene(case.scene, level=stiffness)
+        table = MODEL_TABLES.get(stiffness)
+        return table(case) if table is not None else stiffness_levels.REGISTRY.build(stiffness, case)
     return stiffness
 
 
@@ -211,15 +216,15 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     ``deviation``: flank deviations of the drive and coast flanks (:class:`MeshDeviation`).
     """
     pair, members = case.pair, case.members
-    level = level or (case.levels.dynamics if case.levels.dynamics in LEVELS else "lumped")
-    if level not in LEVELS:
-        raise SceneError("physics.dynamics", f"unknown dynamics level {level!r}; choose one of {', '.join(LEVELS)}")
+    dyn = dynamics_levels.model_level(level, case.levels.dynamics)
+    if not dyn.is_dynamic:
+        raise SceneError("physics.dynamics", f"level {dyn.name!r} has no rotor model; choose a dynamic level")
     bearing_span = bearing_span or tuple(m.bearing_span for m in members)
     shaft_diameter = shaft_diameter or tuple(m.shaft_diameter for m in members)
     # helix centres at ±half; a pair with one mesh (spur, single helix) meshes in the mid-plane: the
     # two "halves" coincide and the right one carries no mesh (k_right = 0 from the stiffness level)
     half = 0.5 * (pair.b + case.groove_width) if pair.n_helices == 2 else 0.0
-    if pair.n_helices == 1 and level != "lumped":
+    if pair.n_helices == 1 and dyn.shaft_elements:
         raise SceneError("physics.dynamics", f"a {pair.kind} pair (one mesh) runs with the lumped dynamics level")
     for name, span in zip(("pinion", "gear"), bearing_span):
         if not span > 2 * half:
@@ -232,7 +237,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     if b0 < 0:
         raise ValueError(f"backlash must be non-negative (got {b0!r})")
 
-    st = assemble_structure(members, case.material, pair, level, bearing_span, shaft_diameter, half)
+    st = assemble_structure(members, case.material, pair, dyn.shaft_elements, bearing_span, shaft_diameter, half)
     K = st.K + (loop_spring(pair, st.T, load_stiffness) if load_stiffness > 0 else 0.0)
     geom = mesh_geometry(pair, half)
     G = geom.g @ st.T
@@ -253,7 +258,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         rate[6 * side + 5], rate[6 * (2 + side) + 5] = omega
     profile, rnd, ecc, unb = excitations(case, omega, fm)
     model = GearRotorModel(
-        level=level, pair=pair, M=st.M, K=K, C=st.C + C_R, T=st.T, G=G, H0=geom.h0 @ st.T, H1=geom.h1 @ st.T,
+        level=dyn.name, pair=pair, M=st.M, K=K, C=st.C + C_R, T=st.T, G=G, H0=geom.h0 @ st.T, H1=geom.h1 @ st.T,
         stiffness=table, mesh_damping=mesh_damping(geom, st.M24, table, zeta_m), backlash=float(b0), mu=0.0,
         friction=None, mesh_frequency=fm, omega=omega, torque_full=torque, bearing_map=st.bearing_map,
         stagger=case.stagger, profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb,

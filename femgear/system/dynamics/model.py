@@ -52,8 +52,6 @@ from femgear.physics.geometry import GearPair
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import FrictionTable, MeshGeometry, StiffnessTable, periodic_interp, periodic_slope
 
-LEVELS = ("lumped", "timoshenko")
-
 
 @dataclass(frozen=True)
 class MeshDeviation:

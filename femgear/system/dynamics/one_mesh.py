@@ -281,9 +281,9 @@ def one_mesh_from_case(case, k_mesh: np.ndarray | None = None) -> OneMeshModel:
     ``stiffness.damping_ratio``; ``k_mesh`` defaults to the scene's stiffness level.
     """
     if k_mesh is None:
-        from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
+        from femgear.levels import stiffness as stiffness_levels
 
-        k_mesh = mesh_stiffness_from_scene(case.scene).k_left
+        k_mesh = stiffness_levels.of(case).k_left
     members = tuple(
         MemberData(mass=m.mass, inertia=m.inertia, radial_stiffness=m.support_stiffness,
                    axial_stiffness=m.support_stiffness if m.axial_stiffness is None else m.axial_stiffness,

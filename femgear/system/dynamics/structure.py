@@ -59,10 +59,11 @@ def _half_bodies(members: tuple[Member, Member], pair: GearPair) -> np.ndarray:
     return np.diag(M)
 
 
-def assemble_structure(members: tuple[Member, Member], material: Material, pair: GearPair, level: str,
+def assemble_structure(members: tuple[Member, Member], material: Material, pair: GearPair, shaft_elements: bool,
                        bearing_span: tuple[float, float], shaft_diameter: tuple[float, float],
                        half: float) -> Structure:
-    """The structure at ``level`` ("lumped" or "timoshenko"); ``half`` = z of the helix centres.
+    """The structure with Timoshenko ``shaft_elements`` between helix halves and bearings (the ``timoshenko``
+    level) or without (``lumped``: the halves tied rigidly per member); ``half`` = z of the helix centres.
 
     ``members``: the scene's ``[pinion]``, ``[gear]`` tables; ``bearing_span`` and
     ``shaft_diameter`` are (pinion, gear) values [m].
@@ -79,7 +80,7 @@ def assemble_structure(members: tuple[Member, Member], material: Material, pair:
         c = mem.support_damping
         Cb_list.append(np.diag([c, c, c if c_ax is None else c_ax]) / 2)
 
-    if level == "lumped":
+    if not shaft_elements:
         T = tie_matrix(half)
         M = T.T @ M24 @ T
         K = np.zeros((12, 12))

@@ -1,6 +1,8 @@
-"""The gear pair of a scene: kind, basic rack, face widths, tip diameters and centre distance.
+"""The gear pair of a scene (the binding of ``[pair]``, ``[pinion]``, ``[gear]``): kind, basic rack,
+face widths, tip diameters and centre distance.
 
-Every inconsistency is a :class:`SceneError` naming the scene key at fault, so that the
+:func:`pair_from_scene` is called once per run, by :func:`femgear.case.build_case`; everything
+below the case takes the bound :class:`femgear.physics.geometry.GearPair`.  Every inconsistency is a :class:`SceneError` naming the scene key at fault, so that the
 CLI prints one line:
 
 - ``pair.kind = "spur"`` needs ``helix_angle_deg = 0``; the helical kinds need β > 0;
@@ -22,6 +24,8 @@ import math
 from dataclasses import replace
 
 from femgear.errors import SceneError
+from femgear.levels import dynamics as dynamics_levels
+from femgear.physics.geometry.gear import GearPair
 from femgear.physics.geometry.involute import inv
 
 #: ISO 53:1998 basic-rack profiles: (h_aP, h_fP, ρ_fP) / m_n, α_P = 20°
@@ -46,7 +50,7 @@ def _check_kind(scene) -> None:
                 raise SceneError(f"{name}.axial_stiffness",
                                  "a single-helical pair needs the axial (thrust) bearing stiffness of each member: "
                                  "its axial mesh force is not balanced by a second helix")
-    if p.kind != "double-helical" and scene.physics.dynamics == "timoshenko":
+    if p.kind != "double-helical" and dynamics_levels.spec(scene.physics.dynamics).shaft_elements:
         raise SceneError("physics.dynamics",
                          f"the timoshenko level joins two helix halves by shaft elements; a {p.kind} pair has one "
                          "mesh in the mid-plane: use physics.dynamics = 'lumped'")
@@ -132,15 +136,13 @@ def _resolve_shifts(scene, pair):
     return pair
 
 
-def pair_from_scene(scene, cls):
-    """The checked gear pair (an instance of ``cls``, :class:`femgear.physics.geometry.GearPair`) of a validated scene.
-
-    ``cls`` is passed in (not imported) so that ``gear`` → ``scene_pair`` stays one-way."""
+def pair_from_scene(scene) -> GearPair:
+    """The checked gear pair of a validated scene (:class:`SceneError` naming the key for an impossible one)."""
     _check_kind(scene)
     p = scene.pair
     h_aP, h_fP, rho_fP = rack_coefficients(p)
     widths = [getattr(scene, n).face_width or p.face_width for n in _MEMBERS]
-    pair = cls(
+    pair = GearPair(
         z1=scene.pinion.teeth, z2=scene.gear.teeth, m_n=p.normal_module,
         alpha_n=math.radians(p.normal_pressure_angle_deg), beta=math.radians(p.helix_angle_deg),
         b=min(widths), x1=scene.pinion.profile_shift, x2=scene.gear.profile_shift,

@@ -1,10 +1,13 @@
 """The frozen description of one run, bound from a validated scene in one place.
 
 A :class:`Case` is built once per run by :func:`build_case` (the scene's edge): the gear
-pair, the operating point, the one path grid every sub-model shares, and the scene's
+pair (:func:`femgear.case.pair.pair_from_scene`, with its feasibility checks), the operating
+point with the normal force F_bn, the one path grid every sub-model shares, and the scene's
 typed tables (materials, oil, members, errors, resolution knobs, physics levels).  The
-driver level (:mod:`femgear.pipeline`, :mod:`femgear.system.coupling`, :mod:`femgear.system.dynamics`)
-takes a Case; physics functions below it take arrays, numbers and typed objects.
+checks that need the bound pair run here (:mod:`femgear.case.checks`), after the scene's
+own validation (:func:`femgear.scene.load_scene`).  The levels (:mod:`femgear.levels`) and
+the driver (:mod:`femgear.pipeline`, :mod:`femgear.system.coupling`, :mod:`femgear.system.dynamics`)
+take a Case; physics functions below it take arrays, numbers and typed objects.
 
 Lifetimes (ROSS habit): the pair, materials and oil stay fixed over a study; the
 operating point changes per load case (:meth:`Case.at_speed` for speed sweeps).
@@ -17,12 +20,15 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from femgear.case.checks import check_bound_case
+from femgear.case.pair import pair_from_scene
 from femgear.physics.geometry import GearPair, PathKinematics, kinematics, mesh_frequency, path_positions
 from femgear.scene.schema import (
     Errors,
     Friction,
     Material,
     Member,
+    Modifications,
     Numerics,
     Oil,
     Physics,
@@ -60,6 +66,8 @@ class Case:
     pair: GearPair
     operating: OperatingPoint
     path: PathKinematics          #: the one path grid (``numerics.path_points`` + the pitch point)
+    #: the plausibility warnings logged so far for this case (``key: message``), one per key
+    warnings: tuple[str, ...] = ()
 
     # ---------- the scene's typed tables ----------
     @property
@@ -103,6 +111,10 @@ class Case:
         return self.scene.thermal
 
     @property
+    def modifications(self) -> Modifications:
+        return self.scene.modifications
+
+    @property
     def numerics(self) -> Numerics:
         return self.scene.numerics
 
@@ -135,11 +147,6 @@ class Case:
         op = self.scene.operating.model_copy(update={"speed_rpm": float(driver_rpm)})
         return build_case(self.scene.model_copy(update={"operating": op}), pair=self.pair)
 
-    def with_levels(self, **levels: str) -> Case:
-        """The same case with other ``[physics]`` levels (no re-validation of the pair)."""
-        physics = self.scene.physics.model_copy(update=levels)
-        return replace(self, scene=self.scene.model_copy(update={"physics": physics}))
-
 
 def operating_point(scene: Scene, pair: GearPair) -> OperatingPoint:
     """Speeds and torques referred to the pinion; F_bn = T1 / (r_b1 cos β_b)."""
@@ -160,8 +167,16 @@ def path_grid(pair: GearPair, n: int, omega1: float) -> PathKinematics:
     return kinematics(pair, u, omega1)
 
 
-def build_case(scene: Scene, pair: GearPair | None = None) -> Case:
-    """Bind a validated scene into a :class:`Case` (the pair is checked on construction)."""
-    pair = pair or GearPair.from_scene(scene)
+def build_case(scene: Scene, pair: GearPair | None = None, warn: bool = True) -> Case:
+    """Bind a validated scene into a :class:`Case`, once per run.
+
+    The pair is bound and checked (:class:`femgear.errors.SceneError` naming the key for an impossible
+    gear or operating point, :func:`femgear.case.checks.check_bound_case`); implausible inputs are
+    logged as warnings (``warn=False`` skips them).  A given ``pair`` (the same gear at another
+    operating point, :meth:`Case.at_speed`) is taken as bound and checked.
+    """
+    checks = pair is None
+    pair = pair_from_scene(scene) if checks else pair
     op = operating_point(scene, pair)
-    return Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed))
+    case = Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed))
+    return replace(case, warnings=check_bound_case(case, warn)) if checks else case
