@@ -23,11 +23,13 @@ from femgear.scene.schema import (
     Friction,
     Material,
     Member,
+    Modifications,
     Numerics,
     Oil,
     Physics,
     Scene,
     Stiffness,
+    SurfaceRoughness,
     Thermal,
     Wear,
 )
@@ -81,6 +83,19 @@ class Case:
     @property
     def oil(self) -> Oil:
         return self.scene.oil
+
+    @property
+    def oil_reference_temperature(self) -> float:
+        """Temperature at which ``oil.viscosity`` holds [K]."""
+        return self.scene.oil_reference_temperature
+
+    @property
+    def roughness(self) -> SurfaceRoughness:
+        return self.scene.roughness
+
+    @property
+    def modifications(self) -> Modifications:
+        return self.scene.modifications
 
     @property
     def errors(self) -> Errors:

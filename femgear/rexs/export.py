@@ -54,7 +54,7 @@ def export_scene(scene, source: str = "femgear") -> tuple[Model, list[str]]:
     from femgear.physics.lubrication.oil import OilLaw
 
     pair = GearPair.from_scene(scene)
-    law = OilLaw.from_scene(scene)
+    law = OilLaw.from_table(scene.oil, scene.oil_reference_temperature)
     b = _Builder()
     skipped: list[str] = []
     unit = b.add("gear_unit", scene.meta.name, {})

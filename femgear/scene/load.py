@@ -87,20 +87,15 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
-    if scene.physics.lubrication in ("tehl", "tehl-point"):
-        from femgear.physics.tehl.solver import check_tehl_range
+    # transitional (h27body binds these checks in femgear.case): the lubrication level's range, and the contact pass
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import check_range
 
-        check_tehl_range(scene, pair)
-    if scene.physics.lubrication == "tehl-point":
-        from femgear.physics.contact.crowning import check_point_range
-        from femgear.physics.geometry import kinematics, path_positions
-
-        check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
+    case = build_case(scene, pair)
+    check_range(case)
     if warn:
-        from femgear.physics.contact.path import contact_along_path
-
-        plausibility_warnings(scene, pair, float(contact_along_path(scene, pair=pair).hertz_pressure.max()),
-                              earlier=range_warnings)
+        plausibility_warnings(scene, pair, float(contact_pass(case).hertz_pressure.max()), earlier=range_warnings)
     return scene
 
 

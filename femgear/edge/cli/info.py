@@ -16,14 +16,16 @@ def register(sub) -> None:
 
 
 def _info(args: argparse.Namespace) -> int:
-    from femgear.physics.contact.path import contact_along_path, zone_grid
-    from femgear.physics.geometry import GearPair
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.physics.contact.path import zone_grid
     from femgear.rate import rate_case
     from femgear.summary import scene_summary
 
     scene = load_scene_arg(args)
-    pair = GearPair.from_scene(scene)
-    contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
+    case = build_case(scene)
+    pair = case.pair
+    contact = contact_pass(case, u=zone_grid(pair, scene.numerics.path_points))
     summary = scene_summary(scene, pair, contact, ratings=rate_case(scene, pair, contact))
     if args.json:
         emit_json(summary)
