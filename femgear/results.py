@@ -13,9 +13,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.case import Case
+from femgear.levels.lubrication import LevelFilm
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.ltca.te import TEAnalysis
-from femgear.levels.lubrication import LevelFilm
 from femgear.physics.rating.suite import PairRating
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.system.coupling.loop import CoupledResult

@@ -28,14 +28,16 @@ def setup() -> list[Path]:
 
 
 def rate(path: Path, fillet: bool):
-    from femgear.physics.contact.path import contact_along_path, zone_grid
-    from femgear.physics.geometry import GearPair
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.physics.contact.path import zone_grid
     from femgear.rate import rate_case
     from femgear.scene import load_scene
 
     scene = load_scene(path, ["rating.fillet_fe=true"] if fillet else [])
-    pair = GearPair.from_scene(scene)
-    contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
+    case = build_case(scene)
+    pair = case.pair
+    contact = contact_pass(case, u=zone_grid(pair, scene.numerics.path_points))
     return scene, pair, rate_case(scene, pair, contact)
 
 

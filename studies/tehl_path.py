@@ -30,8 +30,9 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def main() -> dict:
-    from femgear.physics.contact.path import contact_along_path
-    from femgear.physics.lubrication.path import friction_along_path
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import line_friction, tehl_setup
     from femgear.physics.tehl.path import tehl_along_path, write_thermal_vtk
     from femgear.scene import load_scene
 
@@ -43,10 +44,11 @@ def main() -> dict:
     args = ap.parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    contact = contact_along_path(scene, n=args.n)
-    path = tehl_along_path(scene, contact, level=args.level)
-    formula = friction_along_path(scene, contact)
+    case = build_case(load_scene(ROOT / "studies" / "paper_baseline.toml"))
+    T0 = case.operating.ambient_temperature
+    contact = contact_pass(case, n=args.n)
+    path = tehl_along_path(contact, tehl_setup(case), T0, level=args.level)
+    formula = line_friction(case).along(contact, T0)
     s = path.s
     i_pitch = int(np.argmin(np.abs(s)))
     print(f"{'s [mm]':>8} {'SRR':>7} {'h_c [nm]':>9} {'p_max [GPa]':>11} {'dT [K]':>7} {'dT_s [K]':>8} "

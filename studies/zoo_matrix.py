@@ -143,14 +143,14 @@ def hand_figures(path: Path) -> dict:
     single-contact zone (s_B, s_D) of a spur pair (None for helical), the formula film at the pitch point
     and the formula-level contact temperature."""
     from femgear.case import build_case
-    from femgear.physics.contact.path import contact_along_path
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import friction_along_path
     from femgear.physics.contact.sharing import single_contact_bounds
-    from femgear.physics.lubrication.levels import friction_along_path
 
     scene = _load(path, ['physics.lubrication="formula"'])
     case = build_case(scene)
     pair = case.pair
-    contact = contact_along_path(scene, pair=pair, u=case.path.u)
+    contact = contact_pass(case)
     _, dT = friction_along_path(case, contact.line_load)
     u_B, u_D = single_contact_bounds(pair)
     return {"force": case.operating.normal_force / pair.n_helices,

@@ -51,16 +51,20 @@ def reduced_modulus_of(case: Case) -> float:
     return reduced_modulus(case.material.youngs_modulus, case.material.poisson_ratio)
 
 
-def contact_pass(case: Case, u: np.ndarray | None = None, stiffness=None, *, shared: bool = True) -> ContactPath:
-    """Hertz pressure, films and velocities at the case's path positions (or at ``u`` [m]).
+def contact_pass(case: Case, u: np.ndarray | None = None, stiffness=None, *, n: int | None = None,
+                 shared: bool = True) -> ContactPath:
+    """Hertz pressure, films and velocities at the case's path positions, or at ``u`` [m], or at ``n``
+    positions from A to E plus the pitch point.
 
     ``stiffness`` (a :class:`MeshStiffness` of the case's level) supplies k'(u) for the load sharing
     instead of recomputing it; ``shared=False`` shares the load uniformly (for callers that read only the
     path's mean load per length, which the sharing does not change).
     """
     from femgear.physics.contact.path import contact_along_path
-    from femgear.physics.geometry import kinematics
+    from femgear.physics.geometry import kinematics, path_positions
 
+    if n is not None:
+        u = np.unique(np.append(path_positions(case.pair, n), case.pair.u_pitch))
     kin = case.path if u is None else kinematics(case.pair, np.asarray(u, float), case.operating.pinion_speed)
     curve = pair_stiffness_curve(case, stiffness) if shared else None
     return contact_along_path(case.pair, kin, case.operating.normal_force, reduced_modulus_of(case),

@@ -149,9 +149,8 @@ def envelope_contact(case: Case, n: int = 21) -> ContactPath:
     """The contact pass at ``n`` positions plus the pitch point that friction-map envelopes span (kinematics
     and the mean load per length only: the load is not shared by the stiffness level)."""
     from femgear.levels.contact import contact_pass
-    from femgear.physics.geometry import path_positions
 
-    return contact_pass(case, u=np.unique(np.append(path_positions(case.pair, n), case.pair.u_pitch)), shared=False)
+    return contact_pass(case, n=n, shared=False)
 
 
 def tehl_axes(case: Case) -> dict[str, np.ndarray]:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.physics.contact.film import line_film
-from femgear.physics.contact.hertz import hertz_line, reduced_modulus
+from femgear.physics.contact.hertz import hertz_line
 from femgear.physics.contact.sharing import LoadSharing, StiffnessPerWidth, load_sharing, single_contact_bounds
 from femgear.physics.geometry import GearPair, PathKinematics, path_positions
 
