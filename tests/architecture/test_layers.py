@@ -1,7 +1,7 @@
 """Identities of the package structure: no import cycles, no long functions.
 
 The import graph counts every ``import`` statement of ``femgear`` (module level and
-inside functions: a lazy import is still a dependency), each edge pointing at the
+inside functions: a lazy import is still a dependency; those under ``if TYPE_CHECKING:`` are not), each edge pointing at the
 imported module itself (``from femgear.a import b`` → ``femgear.a.b`` when that is a
 module, else ``femgear.a``).  Strongly connected components of more than one module
 are cycles.
@@ -36,7 +36,12 @@ def _imports(name: str, path: Path, modules: dict[str, Path]) -> set[str]:
     tree = ast.parse(path.read_text(encoding="utf-8"))
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     out = set()
+    typing_only = {id(n) for block in ast.walk(tree) if isinstance(block, ast.If)
+                   and getattr(block.test, "id", getattr(block.test, "attr", None)) == "TYPE_CHECKING"
+                   for stmt in block.body for n in ast.walk(stmt)}     # never run: not a dependency
     for node in ast.walk(tree):
+        if id(node) in typing_only:
+            continue
         if isinstance(node, ast.Import):
             out.update(a.name for a in node.names if a.name.startswith("femgear"))
         elif isinstance(node, ast.ImportFrom):
