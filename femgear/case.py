@@ -17,6 +17,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from femgear.levels.lubrication import check_range
 from femgear.physics.geometry import GearPair, PathKinematics, kinematics, mesh_frequency, path_positions
 from femgear.scene.schema import (
     Errors,
@@ -179,4 +180,6 @@ def build_case(scene: Scene, pair: GearPair | None = None) -> Case:
     """Bind a validated scene into a :class:`Case` (the pair is checked on construction)."""
     pair = pair or GearPair.from_scene(scene)
     op = operating_point(scene, pair)
-    return Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed))
+    case = Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed))
+    check_range(case)     # the lubrication level's validated range: one line naming physics.lubrication
+    return case

@@ -12,8 +12,8 @@ With dynamics, everything goes through the coupling loop of :mod:`femgear.system
 ``coupling = "one-way"`` stops after the first dynamic pass, ``"bidirectional"``
 iterates to convergence.
 
-:func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult`;
-:func:`run_scene` binds a scene, runs it and writes the files (:mod:`femgear.edge.io.run`).
+:func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult` and writes
+nothing; :func:`femgear.edge.run.run_scene` binds a scene, runs it and writes the files.
 """
 
 from __future__ import annotations
@@ -21,13 +21,12 @@ from __future__ import annotations
 import logging
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
-from femgear.case import Case, build_case
+from femgear.case import Case
 from femgear.levels.contact import contact_pass
 from femgear.levels.lubrication import Lubrication, friction_along_path, lubrication_solver
 from femgear.physics.contact.path import ContactPath
@@ -158,24 +157,4 @@ def face_fields(case: Case, units: ThermalUnits | None, rise: float, grid: np.nd
     return {"face_grid": grid, "wear_face": wear_face, "thermal_face": thermal_face}
 
 
-@dataclass(frozen=True)
-class WrittenRun:
-    """A run and the files written from it; ``summary`` is the JSON summary as written."""
-
-    result: RunResult
-    summary: dict[str, Any]
-    files: dict[str, Path] = field(default_factory=dict)
-
-
-def run_scene(scene, out_dir: str | Path, plots: bool = True,
-              progress: Callable[[CouplingState], None] | None = None) -> WrittenRun:
-    """Bind ``scene``, run it and write ``results.json`` (and figures) into ``out_dir``."""
-    from femgear.edge.io.run import write_run
-
-    out_dir = Path(out_dir)
-    result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")
-    summary, files = write_run(result, out_dir, plots)
-    return WrittenRun(result=result, summary=summary, files=files)
-
-
-__all__ = ["MeshStiffness", "RunResult", "WrittenRun", "run_case", "run_scene", "static_tribology"]
+__all__ = ["MeshStiffness", "RunResult", "run_case", "static_tribology"]

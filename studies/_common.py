@@ -1,14 +1,19 @@
-"""Helpers shared by the paper-comparison studies: one coupled case, a process pool, the paper's tables.
+"""Helpers shared by the paper-comparison studies: one case through the pipeline, a process pool, the paper's tables.
 
-A *case* is a list of scene overrides of ``studies/paper_baseline.toml`` run through the
-bidirectional coupling loop (:func:`femgear.system.coupling.run_coupled`).  :func:`coupled_case`
-returns a plain, picklable dict (amplitudes, the fields along the path, the excitation
-tables, a few time series) so cases can run in worker processes.
+A *case* is a list of scene overrides of ``studies/paper_baseline.toml``, bound once
+(:func:`case`) and run by the pipeline's :func:`femgear.pipeline.run_case` (:func:`run`); a study
+reads the typed :class:`femgear.results.RunResult` (``result.tribology``, ``result.coupled.state``,
+``result.case.path``), with the few derived tables here (:func:`deviation_tables`,
+:func:`bearing_accelerations`, :func:`series`).  RunResults pickle, so cases run in worker processes.
+
+The study protocol (DESIGN.md, the Devito habit): each study has ``setup()`` (what to run),
+``run(coarse=...)`` (compute, return a dict of results) and ``main(argv)`` behind
+``if __name__ == "__main__"`` (print, plot, write under out/); tests call ``run(coarse=True)``.
 
 Resolution levels: ``coarse`` (CI) = 20 mesh periods with 10 dropped (the scene's integrator),
-31 path positions, 64 phases and one dynamic pass (``one_way``); the full
-level = the scene's numerics (100/50 mesh periods), 61 positions, 128 phases, iterated
-to the paper's tolerance 1e-6.
+31 path positions and one dynamic pass (``physics.coupling = "one-way"``); ``static`` stops at the
+quasi-static pass (``physics.dynamics = "none"``); the full level = the scene's numerics (100/50
+mesh periods), 61 positions, iterated to the scene's tolerance.
 """
 
 from __future__ import annotations
@@ -18,7 +23,6 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import json
-import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -50,55 +54,80 @@ PAPER_TABLE7 = {
 AMPLITUDE_KEYS = [(m, q, ax) for m in ("gear", "pinion") for q in ("displacement", "velocity") for ax in "xy"]
 
 
-def coupled_case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = False, static: bool = False,
-                 series: bool = True, base: str | Path = BASELINE) -> dict:
-    """Run one case; ``static`` stops at the quasi-static start (iteration 0, no dynamics)."""
-    from dataclasses import asdict
-
+def case(overrides: list[str] | tuple[str, ...] = (), coarse: bool = False, static: bool = False,
+         base: str | Path = BASELINE):
+    """The bound :class:`femgear.case.Case` of ``overrides`` of ``base`` at the study's resolution."""
     from femgear.case import build_case
     from femgear.scene import load_scene
-    from femgear.system.coupling import CouplingSetup, coupling_iterations, run_coupled
+
+    levels = ["numerics.path_points=31"] if coarse else ["numerics.path_points=61"]
+    levels += list(overrides)
+    if coarse:
+        levels += [*COARSE, 'physics.coupling="one-way"']
+    if static:
+        levels += ['physics.coupling="one-way"', 'physics.dynamics="none"']
+    return build_case(load_scene(base, levels))
+
+
+def run(overrides: list[str] | tuple[str, ...] = (), coarse: bool = False, static: bool = False,
+        base: str | Path = BASELINE, timed: bool = False):
+    """:func:`femgear.pipeline.run_case` of :func:`case`; with ``timed`` also the wall time of each
+    coupling pass's parts (``CouplingState.timings``, passes 1, 2, ...) as ``(result, timings)``."""
+    from femgear.pipeline import run_case
+
+    passes: list[dict] = []
+    result = run_case(case(overrides, coarse, static, base),
+                      progress=(lambda s: passes.append(dict(s.timings)) if s.iteration else None) if timed else None)
+    return (result, passes) if timed else result
+
+
+def wear(result) -> np.ndarray:
+    """(2, n) wear depth of pinion and gear along the path [m] (zeros without a wear level)."""
+    w = result.tribology.wear
+    return np.zeros((2, result.case.path.u.size)) if w is None else w
+
+
+def thermal_deviation(result) -> np.ndarray:
+    """(2, n) thermal flank deviation ζ_T of pinion and gear along the path [m] (zeros without a thermal level)."""
+    z = result.tribology.thermal_deviation
+    return np.zeros((2, result.case.path.u.size)) if z is None else z
+
+
+def deviation_tables(result, n_phase: int = 128) -> tuple[np.ndarray, np.ndarray]:
+    """(drive, coast) deviation tables (2 helices, ``n_phase``) of the run's wear and thermal deviation [m]."""
     from femgear.system.coupling.profile import mesh_deviation
 
-    t0 = time.perf_counter()
-    paths = ["numerics.path_points=31"] if coarse else ["numerics.path_points=61"]
-    scene = load_scene(base, paths + list(overrides) + (list(COARSE) if coarse else []))
-    setup = CouplingSetup.from_case(build_case(scene), n_phase=64 if coarse else 128)
-    if static:
-        state, history, converged = next(coupling_iterations(setup)), {}, True
-    else:
-        passes: list[dict] = []          # wall time of each pass's parts (CouplingState.timings)
-        res = run_coupled(setup, one_way=coarse,
-                          progress=lambda s: passes.append(dict(s.timings)) if s.iteration else None)
-        state, history, converged = res.state, asdict(res.history), res.converged
-    u = setup.kin.u
-    dev = mesh_deviation(setup.pair, u, state.wear.sum(axis=0), state.thermal_deviation.sum(axis=0),
-                         scene.pair.stagger, setup.n_phase)
-    zero = np.zeros((2, setup.n_phase))
-    drive, coast = (zero, zero) if dev is None else (dev.drive, dev.coast)
-    out = {"overrides": list(overrides), "coarse": coarse, "converged": converged, "history": history,
-           "pass_timings": [] if static else passes,
-           "u": u, "u_pitch": setup.pair.u_pitch, "mu": state.mu, "temperature_rise": state.temperature_rise,
-           "flank_temperature_rise": state.flank_temperature_rise, "wear": state.wear,
-           "thermal_deviation": state.thermal_deviation, "removed": state.removed, "mesh_force_phase": state.mesh_force,
-           "drive_deviation": drive, "coast_deviation": coast, "b0": scene.pair.backlash,
-           "load_per_length": state.load_per_length,
-           "amplitudes": dict(state.amplitudes), "lte_peak_to_peak": state.lte_peak_to_peak,
-           "wear_face": state.wear_face, "face_grid": None if setup.face is None else setup.face.grid}
-    if state.dynamics is not None:
-        r = state.dynamics.response
-        out["mesh_frequency"] = r.mesh_frequency
-        for suffix, a in (("", r.bearing_acceleration[:, :, :2]), ("_lp5k", rig_filter(r.t, r.bearing_acceleration[:, :, :2]))):
-            acc = np.linalg.norm(a, axis=2)                                    # radial |a| per station
-            out["acc_point1" + suffix] = float(acc[:, :2].max())              # pinion bearing housing
-            out["acc_point2" + suffix] = float(acc[:, 2:].max())              # gear bearing housing
-        if series:
-            keep = r.t >= r.t[-1] - 10.0 / r.mesh_frequency                  # last 10 mesh periods
-            out["series"] = {"t": r.t[keep] - r.t[keep][0], "mesh_force": r.mesh_force[keep].sum(axis=1),
-                             **{f"{m}.{k}": r.member(m, k)[keep, :2] for m in ("gear", "pinion")
-                                for k in ("displacement", "velocity")}}
-    out["seconds"] = time.perf_counter() - t0
+    c = result.case
+    dev = mesh_deviation(c.pair, c.path.u, wear(result).sum(axis=0), thermal_deviation(result).sum(axis=0),
+                         c.stagger, n_phase)
+    zero = np.zeros((2, n_phase))
+    return (zero, zero) if dev is None else (dev.drive, dev.coast)
+
+
+def response(result):
+    """The last dynamic pass's :class:`femgear.system.dynamics.response.Response` (None without dynamics)."""
+    st = None if result.coupled is None else result.coupled.state
+    return None if st is None or st.dynamics is None else st.dynamics.response
+
+
+def bearing_accelerations(result) -> dict[str, float]:
+    """Time max of the radial bearing-housing acceleration [m/s²] at point 1 (pinion stations) and point 2
+    (gear stations), raw and after the rig's 5 kHz filter (``_lp5k``)."""
+    r = response(result)
+    out = {}
+    for suffix, a in (("", r.bearing_acceleration[:, :, :2]), ("_lp5k", rig_filter(r.t, r.bearing_acceleration[:, :, :2]))):
+        acc = np.linalg.norm(a, axis=2)                                    # radial |a| per station
+        out["acc_point1" + suffix] = float(acc[:, :2].max())              # pinion bearing housing
+        out["acc_point2" + suffix] = float(acc[:, 2:].max())              # gear bearing housing
     return out
+
+
+def series(result, periods: int = 10) -> dict[str, np.ndarray]:
+    """The last ``periods`` mesh periods: time from 0, total mesh force, gear and pinion x-y displacement and velocity."""
+    r = response(result)
+    keep = r.t >= r.t[-1] - periods / r.mesh_frequency
+    return {"t": r.t[keep] - r.t[keep][0], "mesh_force": r.mesh_force[keep].sum(axis=1),
+            **{f"{m}.{k}": r.member(m, k)[keep, :2] for m in ("gear", "pinion") for k in ("displacement", "velocity")}}
 
 
 def rig_filter(t: np.ndarray, a: np.ndarray, cutoff: float = 5000.0) -> np.ndarray:
@@ -116,12 +145,13 @@ def rig_filter(t: np.ndarray, a: np.ndarray, cutoff: float = 5000.0) -> np.ndarr
 
 
 def _case(args):
-    return coupled_case(*args[:3], **args[3])
+    return run(*args[:3], **args[3])
 
 
 def run_cases(cases: list[list[str]], coarse: bool = False, static: bool = False, workers: int = 2,
-              **kw) -> list[dict]:
-    """:func:`coupled_case` for every override list, on a pool of ``workers`` processes (order kept)."""
+              **kw) -> list:
+    """:func:`run` for every override list, on a pool of ``workers`` processes (order kept): RunResults
+    (``(result, timings)`` pairs with ``timed=True``)."""
     jobs = [(list(c), coarse, static, kw) for c in cases]
     if workers <= 1 or len(jobs) == 1:
         return [_case(j) for j in jobs]
@@ -129,9 +159,9 @@ def run_cases(cases: list[list[str]], coarse: bool = False, static: bool = False
         return list(pool.map(_case, jobs))
 
 
-def amplitude(case: dict, member: str, quantity: str, axis: str) -> float:
-    """Half peak-to-peak amplitude in µm (displacement) or m/s (velocity)."""
-    v = case["amplitudes"][f"{member}.{quantity}.{axis}"]
+def amplitude(result, member: str, quantity: str, axis: str) -> float:
+    """Half peak-to-peak amplitude of the run's last dynamic pass in µm (displacement) or m/s (velocity)."""
+    v = result.coupled.state.amplitudes[f"{member}.{quantity}.{axis}"]
     return v * 1e6 if quantity == "displacement" else v
 
 
@@ -208,7 +238,7 @@ FLANK_CASES = {
 }
 
 
-def flank_cases(coarse: bool = False, workers: int = 2) -> dict[str, dict]:
-    """The four flank-deviation cases; coarse = the quasi-static start (no dynamics), else converged."""
-    cases = run_cases(list(FLANK_CASES.values()), coarse=coarse, static=coarse, workers=workers, series=False)
+def flank_cases(coarse: bool = False, workers: int = 2) -> dict:
+    """The four flank-deviation cases (RunResults); coarse = the quasi-static pass (no dynamics), else converged."""
+    cases = run_cases(list(FLANK_CASES.values()), coarse=coarse, static=coarse, workers=workers)
     return dict(zip(FLANK_CASES, cases))

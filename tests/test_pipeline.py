@@ -1,18 +1,32 @@
-"""`femgear run` honours every physics level it accepts (none is silently ignored)."""
+"""The driver honours every physics level it accepts (none is silently ignored).
 
+These tests read the typed :class:`femgear.results.RunResult` of :func:`femgear.pipeline.run_case`;
+the JSON layout written from it is checked by the contract tests (tests/cli/test_cli_contract.py).
+"""
+
+import numpy as np
 import pytest
 
+from femgear.case import build_case
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
-from femgear.pipeline import run_scene
+from femgear.pipeline import run_case
 from femgear.scene import load_scene
 
 
+def _run(scene):
+    return run_case(build_case(scene))
+
+
+def _at_pitch(result, values) -> float:
+    return float(np.interp(0.0, result.case.path.s, values))
+
+
 @pytest.mark.parametrize("level", ["analytic"])
-def test_thermal_level_reports_flank_deviation(baseline_path, tmp_path, level):
+def test_thermal_level_reports_flank_deviation(baseline_path, level):
     scene = load_scene(baseline_path, [f'physics.thermal="{level}"', "thermal.flank_temperature_rise=30"])
-    s = run_scene(scene, tmp_path, plots=False).summary
-    assert 1e-6 < s["thermal"]["deviation_pitch_pinion"] < 2e-5
+    r = _run(scene)
+    assert 1e-6 < _at_pitch(r, r.tribology.thermal_deviation[0]) < 2e-5
 
 
 def contact_line_ripple(eps_alpha: float, eps_beta: float) -> float:
@@ -25,21 +39,21 @@ def contact_line_ripple(eps_alpha: float, eps_beta: float) -> float:
     return (min(a, c) - max(0.0, a + c - 1.0)) / (eps_alpha * eps_beta)
 
 
-def test_stiffness_level_is_computed(baseline_path, tmp_path):
+def test_stiffness_level_is_computed(baseline_path):
     """The ``pem`` level reaches the results: its ripple is the sliced PEM's own (bit for bit) and
     follows the contact-line-length theory of the baseline (ε_α 1.369, ε_β 0.928, stagger 0: 5.63 %)
     to the share PEM's varying stiffness per unit line moves it (measured 4.90 %, the marine pair
     4.15 % against 4.07 %); the ``constant`` level has none."""
     scene = load_scene(baseline_path, ['physics.stiffness="pem"'])
-    s = run_scene(scene, tmp_path, plots=False).summary["stiffness"]
+    s = _run(scene).stiffness
     pair = GearPair.from_scene(scene)
-    assert s["level"] == "pem"
-    assert s["ripple_total"] == pytest.approx(mesh_stiffness_from_scene(scene).ripple(), rel=1e-12)
+    assert s.level == "pem"
+    assert s.ripple() == pytest.approx(mesh_stiffness_from_scene(scene).ripple(), rel=1e-12)
     theory = contact_line_ripple(pair.eps_alpha, pair.eps_beta)
     assert theory == pytest.approx(0.0563, abs=1e-4)
-    assert s["ripple_total"] == pytest.approx(theory, rel=0.2)
-    const = run_scene(load_scene(baseline_path, ['physics.stiffness="constant"']), tmp_path, plots=False).summary
-    assert const["stiffness"]["ripple_total"] == 0.0
+    assert s.ripple() == pytest.approx(theory, rel=0.2)
+    const = _run(load_scene(baseline_path, ['physics.stiffness="constant"'])).stiffness
+    assert const.ripple() == 0.0
 
 
 def test_pem_ripple_follows_contact_line_theory_on_the_marine_pair():
@@ -54,23 +68,23 @@ def test_pem_ripple_follows_contact_line_theory_on_the_marine_pair():
     assert mesh_stiffness_from_scene(scene).ripple() == pytest.approx(theory, rel=0.2)
 
 
-def test_lubrication_levels(baseline_path, tmp_path):
-    none = run_scene(load_scene(baseline_path, ['physics.lubrication="none"']), tmp_path, plots=False).summary
-    const = run_scene(load_scene(baseline_path, ['physics.lubrication="constant"', "friction.coefficient=0.07"]),
-                      tmp_path, plots=False).summary
-    assert "friction" not in none
-    assert const["friction"]["mu_mean"] == pytest.approx(0.07)
+def test_lubrication_levels(baseline_path):
+    none = _run(load_scene(baseline_path, ['physics.lubrication="none"'])).tribology
+    const = _run(load_scene(baseline_path, ['physics.lubrication="constant"', "friction.coefficient=0.07"])).tribology
+    assert none.friction_coefficient is None and none.temperature_rise is None
+    np.testing.assert_allclose(const.friction_coefficient, 0.07, rtol=1e-12)
 
 
-def test_ehl_line_level_gives_a_u_shaped_friction(baseline_path, tmp_path):
+def test_ehl_line_level_gives_a_u_shaped_friction(baseline_path):
     scene = load_scene(baseline_path, ['physics.lubrication="ehl-line"', 'physics.dynamics="none"',
                                        'physics.coupling="one-way"', "numerics.path_points=9", "numerics.ehl_level=4"])
-    f = run_scene(scene, tmp_path, plots=False).summary["friction"]
-    assert f["mu_pitch"] < 1e-3 < 0.01 < f["mu_max"] < 0.1
+    r = _run(scene)
+    mu = r.tribology.friction_coefficient
+    assert _at_pitch(r, mu) < 1e-3 < 0.01 < mu.max() < 0.1
 
 
 @pytest.mark.parametrize("scene_file", ["fzg_c14.toml", "single_helical.toml"])
-def test_one_mesh_pairs_run_coupled_dynamics(scene_file, tmp_path):
+def test_one_mesh_pairs_run_coupled_dynamics(scene_file):
     """Spur and single-helical pairs through the coupled pipeline (lumped level, one mesh in the
     mid-plane): the mean dynamic mesh force carries F_bn (within the friction-loss share, 1 %),
     the absent right mesh carries nothing, and a spur pair has no axial response."""
@@ -79,9 +93,9 @@ def test_one_mesh_pairs_run_coupled_dynamics(scene_file, tmp_path):
     base = Path(__file__).resolve().parents[1] / "studies" / scene_file
     scene = load_scene(base, ['physics.dynamics="lumped"', 'physics.coupling="one-way"',
                               "numerics.dynamics_cycles=40.0", "numerics.transient_cycles=20.0"])
-    s = run_scene(scene, tmp_path, plots=False).summary
-    a = s["dynamics"]["amplitudes"]
-    assert a["mesh_force.L.mean"] == pytest.approx(s["contact"]["normal_force"], rel=0.01)
+    r = _run(scene)
+    a = r.coupled.state.amplitudes
+    assert a["mesh_force.L.mean"] == pytest.approx(r.contact.normal_force, rel=0.01)
     assert a["mesh_force.R.mean"] == 0.0 and a["mesh_force.R.amplitude"] == 0.0
     if scene_file.startswith("fzg"):
         assert a["gear.displacement.z"] < 1e-12 and a["pinion.displacement.z"] < 1e-12

@@ -3,7 +3,7 @@
 A preset fills in the fidelity levels and resolution knobs it names; any key a scene
 (or ``--set``) gives explicitly wins.  Wear and coupling are physics choices, not
 fidelity, and are left to the scene.  The choice of each preset comes from the
-measured speed–accuracy trade (``studies/speed_accuracy.py``, README table).
+measured speed–accuracy trade (``studies/validation/speed_accuracy.py``, README table).
 """
 
 from __future__ import annotations

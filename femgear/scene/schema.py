@@ -169,7 +169,7 @@ class RoughnessPeak(_Frozen):
 
     Heights count towards the other flank (a peak thins the film: h = h0 + g + v − R; the paper's
     eq. 23 writes + R_r, which with its eq. 22 would be a dent).  Film term of the EHL solvers
-    (:mod:`femgear.physics.ehl.surface`, :mod:`femgear.physics.ehl.transient`).
+    (:mod:`femgear.physics.ehl.core.surface`, :mod:`femgear.physics.ehl.transient`).
     """
 
     amplitude: Pos = Field(description="peak height A_b [m]")
@@ -184,7 +184,7 @@ class RoughnessPeak(_Frozen):
 
 class SyntheticSurface(_Frozen):
     """``[roughness.synthetic]``: a seeded Gaussian random surface on one flank (FFT filtering,
-    :func:`femgear.physics.ehl.surface.random_surface`) for deterministic rough EHL.  Independent of
+    :func:`femgear.physics.ehl.core.surface.random_surface`) for deterministic rough EHL.  Independent of
     ``roughness.rq``, which feeds the statistical (Greenwood–Tripp) mixed-lubrication model.
     """
 

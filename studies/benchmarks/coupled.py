@@ -8,7 +8,7 @@ Rows (median of 3 repeats, one with ``--quick``):
   dynamics, 100 mesh periods with 50 dropped, 61 path positions × 128 phases, tolerance
   1e-6 on the dynamic mesh force and μ), in this process (imports done);
 - ``run_coupled wear 3e6``: the same with 3 × 10⁶ wear cycles (the heaviest case of
-  studies/wear_cycles.py: the wear accumulation runs in every pass);
+  studies/paper/wear_cycles.py: the wear accumulation runs in every pass);
 - ``femgear run``: the whole command ``femgear run SCENE --json --no-plots`` in a fresh
   process (interpreter start, imports, the contact pass along the path, the coupled
   loop, files), output to a temporary folder.

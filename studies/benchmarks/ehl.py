@@ -40,13 +40,14 @@ import numpy as np
 
 from femgear.perf import measure
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.core.rheology import Rheology
 from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.line import line_level
-from femgear.physics.ehl.point import default_domain, solve_point
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.fe.level import Level
+from femgear.physics.ehl.fe.line import line_level
+from femgear.physics.ehl.point import solve_point
 
 CASES = ((20.0, 10.0), (200.0, 10.0))
 

@@ -1,10 +1,39 @@
-"""Identities of the package structure: no import cycles, no long functions.
+"""Identities of the package structure: imports only point down, no cycles, no long functions.
 
-The import graph counts every ``import`` statement of ``femgear`` (module level and
-inside functions: a lazy import is still a dependency; those under ``if TYPE_CHECKING:`` are not), each edge pointing at the
-imported module itself (``from femgear.a import b`` → ``femgear.a.b`` when that is a
-module, else ``femgear.a``).  Strongly connected components of more than one module
-are cycles.
+The import graph counts every ``import`` statement of ``femgear`` — at module level and inside
+functions: a lazy import is still a dependency — except those under ``if TYPE_CHECKING:``,
+which never run (a levels factory may name ``femgear.case.Case`` there for its annotations).
+Each edge points at the imported module itself (``from femgear.a import b`` → ``femgear.a.b``
+when that is a module, else ``femgear.a``).
+
+The allowed directions are data (:data:`ORDER`): for a package, its children in tiers from low
+to high.  A module may import a module of its own unit, or of a unit in a strictly lower tier
+of the first package where their paths part; siblings of one tier may not import each other.
+``"*"`` stands for the package's own ``__init__``.  A child of an ordered package that no tier
+names fails :func:`test_every_unit_has_a_place`: a new folder or module must be placed in the
+order, not slip in unordered.
+
+Layers of ``femgear`` (low → high; ARCHITECTURE.md says why):
+base (errors, docfields, perf) · physics (the leaves: arrays, numbers, typed objects) · levels
+(one registry per sub-model: the only place that dispatches on a level name) · input (scene,
+rexs) · case (the Case, built once per run) · system (dynamics, coupling) · driver (results,
+rate, pipeline, summary) · edge (plot, io, run, sweep, cli; ``__main__``).
+
+The physics leaves form a DAG, read from what they compute:
+geometry (the gear) and excitation (errors, backlash) use no other leaf; mesh (gmsh sections
+and bodies of the gear) and stiffness (ISO 6336 and potential-energy tooth stiffness, the
+MeshStiffness table) read the geometry; contact (path kinematics, Hertz, load sharing by the
+stiffness) and body (FE elasticity, conduction, compliance on those meshes) come next;
+lubrication (oil laws, traction, flash temperature along the contact path) and wear (Archard
+on the path); ehl (isothermal EHL of one contact, with its oil laws) and rating (ISO 6336
+with the body's fillet, the stiffness factors and the flash temperature); tehl (thermal EHL
+on the EHL solvers) and ltca (loaded tooth contact on the FE bodies, with the rating's
+contact stress) on top.  Inside ``ehl`` the shared core (groups, rheology, grids, the
+half-space, results, error estimates, roughness) is below its two discretisations, FE
+Newton–Krylov (``fe``) and FD multigrid (``fd``), which never import each other; the entry
+modules are on top: ``point.solve_point`` choosing between them, then ``dimensional`` (SI entry),
+``transient`` (FE time steps from the steady solve) and ``output``, then ``path`` (the ``ehl-line``
+level along the gear path, on the SI entry).
 """
 
 from __future__ import annotations
@@ -21,6 +50,49 @@ import femgear
 ROOT = Path(femgear.__file__).parent
 MAX_FUNCTION_LINES = 100
 
+# low → high tiers of each ordered package's children ("*": the package's own __init__)
+LAYERS = {
+    "base": [["errors", "docfields"], ["perf"]],
+    "physics": [["physics"]],
+    "levels": [["levels"]],
+    "input": [["scene"], ["rexs"]],
+    "case": [["case"]],
+    "system": [["system"]],
+    "driver": [["results"], ["rate"], ["pipeline", "summary"]],
+    "edge": [["edge"], ["__main__"], ["*"]],
+}
+ORDER: dict[str, list[list[str]]] = {
+    "femgear": [tier for tiers in LAYERS.values() for tier in tiers],
+    "femgear.physics": [["geometry", "excitation"], ["mesh", "stiffness"], ["contact", "body"],
+                        ["lubrication", "wear"], ["ehl", "rating"], ["tehl", "ltca"]],
+    "femgear.physics.ehl": [["core"], ["fe", "fd"], ["point"], ["dimensional", "transient", "output"], ["path"], ["*"]],
+    "femgear.system": [["dynamics"], ["coupling"]],
+    "femgear.edge": [["plot"], ["io"], ["run"], ["sweep"], ["cli"]],
+}
+
+# Upward edges other helpers of issue 27 are removing, as (importer, imported) module pairs.
+# The lead empties this set as their branches merge; nothing may be added to it.
+PENDING = {
+    # h27body: the stiffness level's dispatch (FE body, LTCA) moves to femgear/levels/stiffness.py
+    ("femgear.physics.stiffness.tvms", "femgear.physics.body.compliance"),
+    ("femgear.physics.stiffness.tvms", "femgear.physics.ltca.level"),
+    # h27body: the thermal level's dispatch (flank_deviation's "fe3d") moves to femgear/levels/thermal.py
+    ("femgear.physics.body.thermal", "femgear.physics.ltca.thermal"),
+    # h27edge: the rating is computed in the driver (rate/pipeline), summary only formats
+    ("femgear.rate", "femgear.summary"),
+    # h27edge: figures are written by edge/io's one writer, not by plot
+    ("femgear.edge.plot", "femgear.edge.io.atomic"),
+}
+
+
+# File writers below the edge.  PENDING_WRITERS: being moved to femgear/edge/io by h27edge (the lead empties it
+# at merge time).  CACHES: build-once disk caches and the resumable wear checkpoint (DESIGN.md: "cached on disk
+# where costly"), which write only under out/cache or a path the caller passes.
+PENDING_WRITERS = {"femgear.physics.body.vtk", "femgear.physics.tehl.path", "femgear.physics.ehl.output"}
+CACHES = {"femgear.physics.ltca.compliance", "femgear.physics.wear.archard"}
+WRITE_CALLS = {"write_text", "write_bytes", "savefig", "save", "savez", "savez_compressed", "dump", "to_csv",
+               "write_vtk", "to_file"}
+
 
 def _modules() -> dict[str, Path]:
     mods = {}
@@ -32,15 +104,25 @@ def _modules() -> dict[str, Path]:
     return mods
 
 
+def _type_checking_nodes(tree: ast.AST) -> set[int]:
+    """ids of the nodes under ``if TYPE_CHECKING:`` / ``if typing.TYPE_CHECKING:`` (never run)."""
+    skip = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If):
+            t = node.test
+            if (isinstance(t, ast.Name) and t.id == "TYPE_CHECKING") or (
+                    isinstance(t, ast.Attribute) and t.attr == "TYPE_CHECKING"):
+                skip.update(id(n) for stmt in node.body for n in ast.walk(stmt))
+    return skip
+
+
 def _imports(name: str, path: Path, modules: dict[str, Path]) -> set[str]:
     tree = ast.parse(path.read_text(encoding="utf-8"))
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+    skip = _type_checking_nodes(tree)
     out = set()
-    typing_only = {id(n) for block in ast.walk(tree) if isinstance(block, ast.If)
-                   and getattr(block.test, "id", getattr(block.test, "attr", None)) == "TYPE_CHECKING"
-                   for stmt in block.body for n in ast.walk(stmt)}     # never run: not a dependency
     for node in ast.walk(tree):
-        if id(node) in typing_only:
+        if id(node) in skip:
             continue
         if isinstance(node, ast.Import):
             out.update(a.name for a in node.names if a.name.startswith("femgear"))
@@ -61,6 +143,81 @@ def import_graph() -> tuple[list[str], dict[str, set[str]]]:
     return names, {n: _imports(n, modules[n], modules) for n in names}
 
 
+def unit_path(module: str) -> list[tuple[str, str, int]]:
+    """(package, unit, tier) at each ordered package on the way to ``module``.
+
+    The unit is the child of the package that holds ``module`` (``"*"`` for the package's own
+    ``__init__`` where the package has a ``"*"`` tier); a package's ``__init__`` without a ``"*"``
+    tier ends the path (it belongs to its package, no tier)."""
+    path, package, rest = [], "femgear", module.split(".")[1:]
+    while package in ORDER:
+        tiers = ORDER[package]
+        child = rest[0] if rest else None
+        unit = "*" if child is None else child
+        if not any(unit in t for t in tiers):
+            if child is None:
+                break
+            raise KeyError(f"{package}.{child} is in no tier of ORDER[{package!r}]: place it")
+        path.append((package, unit, next(i for i, t in enumerate(tiers) if unit in t)))
+        if unit == "*":
+            break
+        package, rest = f"{package}.{child}", rest[1:]
+    return path
+
+
+def direction(importer: str, imported: str) -> str:
+    """'down' (or within one unit) when ``importer`` may import ``imported``, else 'up' / 'sideways'
+    with the first package where their paths part."""
+    for (pkg, ua, ra), (_, ub, rb) in zip(unit_path(importer), unit_path(imported)):
+        if ua == ub:
+            continue
+        return "down" if rb < ra else f"{'up' if rb > ra else 'sideways'} in {pkg}: {ua} (tier {ra}) → {ub} (tier {rb})"
+    return "down"
+
+
+def upward_edges() -> dict[tuple[str, str], str]:
+    names, edges = import_graph()
+    out = {}
+    for a in names:
+        for b in sorted(edges[a]):
+            d = direction(a, b)
+            if d != "down":
+                out[(a, b)] = d
+    return out
+
+
+def test_every_unit_has_a_place():
+    missing = []
+    for name in _modules():
+        try:
+            unit_path(name)
+        except KeyError as exc:
+            missing.append(str(exc))
+    assert not missing, "; ".join(sorted(set(missing)))
+
+
+def test_imports_only_point_down():
+    found = upward_edges()
+    new = {e: d for e, d in found.items() if e not in PENDING}
+    assert not new, "upward imports:\n" + "\n".join(f"  {a} → {b}  ({d})" for (a, b), d in sorted(new.items()))
+
+
+def test_pending_edges_still_exist():
+    """PENDING lists only edges that are still there (an edge that went comes off the list)."""
+    gone = PENDING - set(upward_edges())
+    assert not gone, f"remove from PENDING (no longer upward or gone): {sorted(gone)}"
+
+
+def test_order_catches_an_upward_import():
+    """The rule itself: physics below the case, ehl's core below its discretisations, FE and FD apart."""
+    assert direction("femgear.physics.lubrication.oil", "femgear.case").startswith("up in femgear")
+    assert direction("femgear.physics.ehl.core.grid", "femgear.physics.ehl.fe.level").startswith("up")
+    assert direction("femgear.physics.ehl.fe.point", "femgear.physics.ehl.fd.point").startswith("sideways")
+    assert direction("femgear.physics.ehl.fd.point", "femgear.physics.ehl.core.grid") == "down"
+    assert direction("femgear.edge.plot.path", "femgear.physics.contact.path") == "down"
+    assert direction("femgear.physics.geometry.gear", "femgear.physics.geometry") == "down"
+
+
 def test_no_import_cycles():
     names, edges = import_graph()
     index = {n: i for i, n in enumerate(names)}
@@ -73,10 +230,47 @@ def test_no_import_cycles():
 
 
 def test_graph_sees_known_edges():
-    """The graph is not vacuous: it finds the dynamics → stiffness and cli → cli.common edges."""
+    """The graph is not vacuous: it finds the cli → cli.common and lazy edges, and skips TYPE_CHECKING."""
     _, edges = import_graph()
     assert any(m.startswith("femgear.edge.cli.common") for m in edges["femgear.edge.cli.common"] | edges["femgear.edge.cli.run"])
+    assert "femgear.physics.body.elastic3d" in edges["femgear.physics.ltca.compliance"]  # a lazy import
     assert len(sum((list(v) for v in edges.values()), [])) > 100
+    src = "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from femgear.case import Case\nimport femgear.errors\n"
+    tree = ast.parse(src)
+    skip = _type_checking_nodes(tree)
+    seen = [n.names[0].name if isinstance(n, ast.Import) else n.module for n in ast.walk(tree)
+            if isinstance(n, (ast.Import, ast.ImportFrom)) and id(n) not in skip]
+    assert seen == ["typing", "femgear.errors"]
+
+
+def _writes(path: Path) -> list[str]:
+    """Calls in ``path`` that write a file: ``x.write_text(...)``, ``np.savez``, ``fig.savefig``, ``grid.save``,
+    ``json.dump``, ``meshio.write``, ``open(..., "w"/"a"/"x")``."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if not isinstance(node, ast.Call):
+            continue
+        f = node.func
+        if isinstance(f, ast.Attribute) and (f.attr in WRITE_CALLS or ast.unparse(f) == "meshio.write"):
+            found.append(f"{ast.unparse(f)}() line {node.lineno}")
+        elif isinstance(f, ast.Name) and f.id == "open":
+            mode = node.args[1] if len(node.args) > 1 else next((k.value for k in node.keywords if k.arg == "mode"), None)
+            if isinstance(mode, ast.Constant) and set(str(mode.value)) & set("wax"):
+                found.append(f"open(..., {mode.value!r}) line {node.lineno}")
+    return found
+
+
+def test_only_the_edge_writes_files():
+    """Physics, levels, input, case, system and driver write no file (figures and files are the edge's)."""
+    bad = {}
+    for name, path in _modules().items():
+        top = unit_path(name)[0][1]
+        if top in ("edge", "__main__") or name in PENDING_WRITERS | CACHES:
+            continue
+        if found := _writes(path):
+            bad[name] = found
+    assert not bad, f"file writing below the edge: {bad}"
+    assert all(_writes(_modules()[m]) for m in PENDING_WRITERS | CACHES), "a listed writer writes no more: unlist it"
 
 
 def test_functions_are_short():

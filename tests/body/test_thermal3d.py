@@ -8,9 +8,9 @@ import pytest
 
 from femgear.errors import SceneError
 from femgear.physics.body.thermal import flank_deviation
-from femgear.physics.body.thermal3d import thermal_units_3d
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.ltca.separation import tabulated_deviation
+from femgear.physics.ltca.thermal import thermal_units_3d
 from femgear.physics.stiffness.pem import contact_geometry
 from femgear.scene import load_scene
 
@@ -52,7 +52,7 @@ def test_mid_face_deviation_within_band_of_the_2d_fe():
     """Regression band (baseline pinion, level 0): the 3-D mid-face deviation of a unit flank rise lies within
     5 % below the 2-D plane-stress section, a unit shaft rise within 8 % above it (measured −2.6 … −2.1 % and
     +4.3 … +5.5 %; the gap closes with the body level: −0.5 … −0.1 % and +0.1 … +1.1 % at level 2,
-    studies/tooth_thermal_3d.py).  Mid-face of a helix, the 3-D body is close to plane stress; its free
+    studies/body/tooth_thermal_3d.py).  Mid-face of a helix, the 3-D body is close to plane stress; its free
     outer ends and the apex differ from plane stress by −11 … +23 % (end effects; not tested here)."""
     scene = load_scene(BASELINE)
     pair, m = GearPair.from_scene(scene), scene.material

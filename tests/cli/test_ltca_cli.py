@@ -38,7 +38,7 @@ def test_bad_torques_and_options_end_in_one_line_naming_the_key(args, key, capsy
 def test_ltca_tool_on_the_baseline_with_a_tip_relief_at_three_torques(tmp_path, capsys):
     """Tip relief 10 µm over 2.5 mm, 100/200/300 N m (level-1 bodies, 32 phases; ≈ 25 s cached): TE curves,
     harmonics, load maps and one ParaView set per torque are written; results.json's TE p-p and harmonics equal
-    ``LTCAResult.lte_peak_to_peak``/``harmonics`` (what studies/ltca_study.py prints) to 1e-9."""
+    ``LTCAResult.lte_peak_to_peak``/``harmonics`` (what studies/ltca/ltca_study.py prints) to 1e-9."""
     from femgear.physics.geometry import GearPair
     from femgear.physics.ltca.analysis import body_options, build_model, mesh_cycle, normal_force
     from femgear.scene import load_scene

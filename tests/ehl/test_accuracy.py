@@ -9,9 +9,9 @@ import pytest
 from femgear.edge.cli import main
 from femgear.errors import SceneError
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import accuracy as acc
-from femgear.physics.ehl.grid import Domain
-from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.core import accuracy as acc
+from femgear.physics.ehl.core.grid import Domain
+from femgear.physics.ehl.fe.line import solve_line
 from femgear.physics.ehl.point import solve_point
 
 

@@ -1,13 +1,14 @@
-"""Nonlinear elimination of the outlet spike (femgear.physics.ehl.eliminate; Cai & Li 2011): the
+"""Nonlinear elimination of the outlet spike (femgear.physics.ehl.fd.eliminate; Cai & Li 2011): the
 local Jacobian against finite differences, and the local Newton solve restoring a
 perturbed solution on its set while leaving every other node alone."""
 
 import numpy as np
 import pytest
 
-from femgear.physics.ehl.eliminate import SpikeElimination
-from femgear.physics.ehl.fas_point import FasPoint
-from femgear.physics.ehl.point import default_domain, solve_point
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.fd.eliminate import SpikeElimination
+from femgear.physics.ehl.fd.point import FasPoint
+from femgear.physics.ehl.point import solve_point
 
 
 @pytest.fixture(scope="module")

@@ -8,9 +8,10 @@ import pytest
 from scipy.integrate import quad
 
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl.elastic import PointDeflection, cell_influence
-from femgear.physics.ehl.grid import Domain, Grid
-from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.ehl.core.domain import default_domain, hertz_ellipse
+from femgear.physics.ehl.core.elastic import PointDeflection, cell_influence
+from femgear.physics.ehl.core.grid import Domain, Grid
+from femgear.physics.ehl.point import solve_point
 
 
 def _quad(dx, dy, hx, hy):

@@ -10,9 +10,10 @@ import numpy as np
 import pytest
 
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.point import default_domain, hertz_ellipse, solve_point
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain, hertz_ellipse
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.point import solve_point
 
 
 def _dom(M, L, lam, k):

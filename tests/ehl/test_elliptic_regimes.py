@@ -3,15 +3,16 @@
 In the near-rigid regime (film >> Hertzian indentation) the pressure of a slender contact
 spreads far beyond the Hertz ellipse; the default domain (|Y| <= 3b, Hamrock-Dowson inlet)
 truncates it and under-predicts Hc. These tests pin that known deficiency (strict xfail: a fix
-of :func:`femgear.physics.ehl.point.default_domain` makes them pass and must then drop the marker) and
+of :func:`femgear.physics.ehl.core.domain.default_domain` makes them pass and must then drop the marker) and
 the physical bound it violates (an elastic film is not thinner than the rigid-isoviscous film
 of Brewe, Hamrock & Taylor 1979)."""
 
 import pytest
 
 from femgear.physics.contact.film import nvm_central, rigid_isoviscous_point
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.point import default_domain, solve_point
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.point import solve_point
 
 
 def _enlarged(M, lam, fx, fy):

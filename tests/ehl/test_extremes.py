@@ -16,8 +16,8 @@ import pytest
 
 from femgear.errors import ConvergenceError
 from femgear.physics.contact.film import moes_line_central, nvm_central
-from femgear.physics.ehl.grid import Domain
-from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.core.grid import Domain
+from femgear.physics.ehl.fe.line import solve_line
 from femgear.physics.ehl.point import solve_point
 
 REGRESSION_REL = 0.02

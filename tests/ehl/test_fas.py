@@ -6,12 +6,13 @@ import pytest
 
 from femgear.errors import ConvergenceError
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.fas import FAS, FasOptions
-from femgear.physics.ehl.fas_point import solve_point_fas
-from femgear.physics.ehl.fd import FDLevel, inject, prolong_bilinear, restrict_full_weighting
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.point import default_domain, fas_suits, solve_point
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.fd.fas import FAS, FasOptions
+from femgear.physics.ehl.fd.operator import FDLevel, inject, prolong_bilinear, restrict_full_weighting
+from femgear.physics.ehl.fd.point import solve_point_fas
+from femgear.physics.ehl.point import fas_suits, solve_point
 
 
 @pytest.fixture(scope="module")

@@ -1,6 +1,6 @@
 """Multigrid (FAS) at strongly piezoviscous loads, alpha_bar > 17 (the HIGH_ALPHA cycle
-options of femgear.physics.ehl.fas_point; issue 16): (20, 20) and (100, 20) converge on 129^2 and
-257^2 (on 257^2 with the nonlinear elimination of the outlet spike, femgear.physics.ehl.eliminate)
+options of femgear.physics.ehl.fd.point; issue 16): (20, 20) and (100, 20) converge on 129^2 and
+257^2 (on 257^2 with the nonlinear elimination of the outlet spike, femgear.physics.ehl.fd.eliminate)
 and agree with the FE Newton solver's 129^2 answers; the FD films of 65^2, 129^2 and 257^2
 form a second-order grid sequence (docs/ehl_multigrid.md)."""
 
@@ -8,10 +8,11 @@ import numpy as np
 import pytest
 
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.fas import _steep
-from femgear.physics.ehl.fas_point import HIGH_ALPHA, HIGH_ALPHA_FROM, FasPoint
-from femgear.physics.ehl.point import FAS_ALPHA_MAX_SLENDER, default_domain, solve_point
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.fd.fas import _steep
+from femgear.physics.ehl.fd.point import HIGH_ALPHA, HIGH_ALPHA_FROM, FasPoint
+from femgear.physics.ehl.point import FAS_ALPHA_MAX_SLENDER, solve_point
 
 # the FE Newton solver's answers on 129^2 (solve_point(M, 20, level=3, method="newton"),
 # measured 2026-11-23 on this branch; regression references of another discretisation,

@@ -5,8 +5,9 @@ cold solves well within their error estimates, and the predictor does the work."
 import numpy as np
 import pytest
 
-from femgear.physics.ehl.fas_point import FasPoint, _PointPath
-from femgear.physics.ehl.point import default_domain, solve_point
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.fd.point import FasPoint, _PointPath
+from femgear.physics.ehl.point import solve_point
 
 
 def _loads(n: int) -> np.ndarray:

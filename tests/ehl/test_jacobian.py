@@ -3,10 +3,10 @@
 import numpy as np
 import pytest
 
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.grid import Domain, Grid
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.grid import Domain, Grid
+from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.fe.level import Level
 
 
 @pytest.mark.parametrize("kwargs", [

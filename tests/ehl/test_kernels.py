@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 from scipy.integrate import dblquad
 
-from femgear.physics.ehl.elastic import PointDeflection, cell_influence, line_influence
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.core.elastic import PointDeflection, cell_influence, line_influence
+from femgear.physics.ehl.core.rheology import Rheology
 
 
 def test_cell_influence_matches_quadrature():

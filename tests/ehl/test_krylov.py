@@ -1,9 +1,9 @@
-"""Right-preconditioned GMRES (femgear.physics.ehl.krylov): its stopping test is the true residual."""
+"""Right-preconditioned GMRES (femgear.physics.ehl.fe.krylov): its stopping test is the true residual."""
 
 import numpy as np
 import scipy.linalg as sla
 
-from femgear.physics.ehl.krylov import gmres_right
+from femgear.physics.ehl.fe.krylov import gmres_right
 
 
 def _system(n=60, seed=1):

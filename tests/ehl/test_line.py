@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from femgear.physics.contact.film import dowson_higginson_minimum, moes_line_central
-from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.fe.line import solve_line
 
 TWO_U = 1.0e-11  # Dowson-Higginson is not a function of (M, L) alone: fix U
 

@@ -6,12 +6,14 @@ import numpy as np
 import pytest
 
 from femgear.errors import ConvergenceError
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.grid import Grid, prolongation
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.newton import History, _stall_reason, newton_dense, newton_krylov
-from femgear.physics.ehl.point import default_domain, solve_point
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.core.grid import Grid, prolongation
+from femgear.physics.ehl.core.history import History
+from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.fe.level import Level
+from femgear.physics.ehl.fe.newton import _stall_reason, newton_dense, newton_krylov
+from femgear.physics.ehl.point import solve_point
 
 
 def test_stall_reason_reports_damped_steps_and_their_node():

@@ -4,7 +4,7 @@ With rigid surfaces and L = 0, H M^2 is independent of M (self-similarity of the
 and, on domains growing like R X_s, tends to its infinite-domain value as H_inf - C/R
 (P ~ r^-3 upstream).  The extrapolated value is checked against Brewe, Hamrock & Taylor
 (1979), 35.0 M^-2; NVM's fitted asymptote (41.3 M^-2) lies 17 % above it (see
-``studies/ehl_rigid_limit.py`` and the README)."""
+``studies/ehl/ehl_rigid_limit.py`` and the README)."""
 
 import sys
 from pathlib import Path
@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from studies import ehl_rigid_limit as study  # noqa: E402
+from studies.ehl import ehl_rigid_limit as study  # noqa: E402
 
 
 def test_brewe_hamrock_taylor_coefficient():

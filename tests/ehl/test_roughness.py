@@ -15,9 +15,7 @@ import numpy as np
 import pytest
 
 from femgear.errors import ArgumentError, SceneError
-from femgear.physics.ehl.line import solve_line
-from femgear.physics.ehl.point import solve_point
-from femgear.physics.ehl.surface import (
+from femgear.physics.ehl.core.surface import (
     correlation_length,
     harmonic,
     hertz_height,
@@ -25,6 +23,8 @@ from femgear.physics.ehl.surface import (
     random_surface,
     surface_speed,
 )
+from femgear.physics.ehl.fe.line import solve_line
+from femgear.physics.ehl.point import solve_point
 
 
 def _ripple(x, dP, lam, half=0.5):
@@ -46,11 +46,11 @@ def test_smooth_limit_is_bit_identical(smooth_line):
     contact's discrete problem (its gap on every level) bit-identical. Two point solves are
     compared to 1e-9 only: its Newton-Krylov rebuilds the preconditioner on measured
     timings, so even two smooth solves differ in the last digits."""
-    from femgear.physics.ehl.grid import Grid
-    from femgear.physics.ehl.level import Level
-    from femgear.physics.ehl.point import default_domain
-    from femgear.physics.ehl.rheology import Rheology
-    from femgear.physics.ehl.surface import apply_surface, evaluate
+    from femgear.physics.ehl.core.domain import default_domain
+    from femgear.physics.ehl.core.grid import Grid
+    from femgear.physics.ehl.core.rheology import Rheology
+    from femgear.physics.ehl.core.surface import apply_surface, evaluate
+    from femgear.physics.ehl.fe.level import Level
 
     r = solve_line(20.0, 10.0, level=6, surface=partial(paper_peak, amplitude=0.0, half_width=0.1))
     assert np.array_equal(r.P, smooth_line.P) and np.array_equal(r.H, smooth_line.H)
@@ -182,7 +182,7 @@ def test_scene_roughness_errors_name_the_key(overrides, key):
 def test_scene_features_in_hertzian_units():
     """[roughness.peak] in metres -> Hertzian profile: A_b R / b^2 at x0/b, zero beyond l_b;
     [roughness.synthetic] -> heights with Rq R / b^2 (within 10 % on a long sample)."""
-    from femgear.physics.ehl.surface import peak_feature, synthetic_feature
+    from femgear.physics.ehl.core.surface import peak_feature, synthetic_feature
 
     s = _scene("roughness.peak.amplitude=0.2e-6", "roughness.peak.wavelength=20e-6", "roughness.peak.x0=-1e-4",
                "roughness.synthetic.rq=0.1e-6", "roughness.synthetic.correlation_length=5e-6")
@@ -192,7 +192,7 @@ def test_scene_features_in_hertzian_units():
     g = synthetic_feature(s.roughness.synthetic, R, b, extent=(-50.0, 50.0), h=0.005)
     z = g(np.linspace(-50, 50, 20001))
     assert z.std() == pytest.approx(0.1e-6 * R / b**2, rel=0.10)
-    from femgear.physics.ehl.surface import scene_features
+    from femgear.physics.ehl.core.surface import scene_features
 
     feats = scene_features(s.roughness, R, b, extent=(-50.0, 50.0), h=0.005)
     assert [(m, mv) for _, m, mv in feats] == [("pinion", False), ("pinion", True)]

@@ -1,4 +1,4 @@
-"""The scene's [roughness] keys reach the EHL film along the gear path (studies/roughness_scene.py)."""
+"""The scene's [roughness] keys reach the EHL film along the gear path (studies/ehl/roughness_scene.py)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ def test_scene_peak_along_the_path():
     """Stationary peak (the paper's model) at the contact centre: flattened, so h_min moves by
     < 2 % while p_max rises by > 10 % at every position; the same peak carried through the
     contact in rolling thins the pitch-point film by > 5 %."""
-    from studies import roughness_scene
+    from studies.ehl import roughness_scene
 
     res = roughness_scene.run(positions=3)
     for r in res["rows"]:

@@ -5,8 +5,8 @@ import pytest
 from skfem import Basis, BilinearForm, ElementLineP1, ElementQuad1, LinearForm, MeshLine, MeshQuad, asm
 from skfem.helpers import dot, grad
 
-from femgear.physics.ehl.grid import Domain, Grid
-from femgear.physics.ehl.stencil import UniformElements
+from femgear.physics.ehl.core.grid import Domain, Grid
+from femgear.physics.ehl.fe.stencil import UniformElements
 
 
 @BilinearForm
@@ -62,9 +62,9 @@ def test_assembly_matches_skfem(kind):
 
 @pytest.mark.parametrize("sd", [0.0, 1.0])
 def test_residual_alone_equals_the_linearisation_residual(sd):
-    from femgear.physics.ehl import params as pr
-    from femgear.physics.ehl.level import Level
-    from femgear.physics.ehl.rheology import Rheology
+    from femgear.physics.ehl.core import params as pr
+    from femgear.physics.ehl.core.rheology import Rheology
+    from femgear.physics.ehl.fe.level import Level
 
     lv = Level(Rheology(9.9, viscosity="roelands", ph=1e9, compressible=True),
                pr.point_lam_bar(20.0), pr.POINT_LOAD, grid=Grid.build(Domain(), 1), sd_factor=sd)

@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from femgear.errors import ArgumentError
-from femgear.physics.ehl.line import solve_line
-from femgear.physics.ehl.surface import paper_peak
+from femgear.physics.ehl.core.surface import paper_peak
+from femgear.physics.ehl.fe.line import solve_line
 from femgear.physics.ehl.transient import (
     amplitude_reduction_fit,
     entering_waviness,

@@ -4,7 +4,7 @@ reproduces the cold solves and needs fewer Newton iterations."""
 import numpy as np
 import pytest
 
-from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.fe.line import solve_line
 
 
 def _path(n=6, ds=0.025):
@@ -33,7 +33,7 @@ def test_warm_path_reproduces_cold_solves_in_fewer_iterations():
 def test_secant_prediction_beats_the_previous_solution():
     """From the third position on, the predicted start is closer to the solution than the
     previous solution is (the predictor works, not only the Newton safeguards)."""
-    from femgear.physics.ehl.line import _PathHistory
+    from femgear.physics.ehl.fe.line import _PathHistory
 
     Ms, Ls = _path(4)
     prev, reuse = None, {}
@@ -62,7 +62,7 @@ def test_mesh_path_warm_equals_cold_with_few_factorisations(monkeypatch):
     preconditioned GMRES refactorised 2-3 times per position)."""
     import scipy.linalg as sla
 
-    import femgear.physics.ehl.newton as nw
+    import femgear.physics.ehl.fe.newton as nw
     from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
 
     oil = EHLOil(eta0=0.02, alpha=2.0e-8, viscosity="roelands", compressible=True)
@@ -101,7 +101,7 @@ def test_coarse_path_bad_predictions_restart_early():
     WARM_MAX_ITER iterations (it used to spend the full max_iter = 60), and still gives
     the cold answer."""
     from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
-    from femgear.physics.ehl.line import WARM_MAX_ITER
+    from femgear.physics.ehl.fe.line import WARM_MAX_ITER
 
     oil = EHLOil(eta0=0.02, alpha=2.0e-8, viscosity="roelands", compressible=True)
     w, R, ue = _mesh_path(11)

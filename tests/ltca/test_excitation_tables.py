@@ -51,7 +51,7 @@ def test_resolved_orders_and_band_limited_ltca_tables(coarse_model, baseline_for
 def test_rig_measure_is_the_largest_spectral_line_along_the_line_of_action():
     """Two mesh harmonics along the sensor axis plus a component across it: the FFT figure is the larger
     line (zero-to-peak), below the time peaks; the 5 kHz Butterworth passes both lines (≤ 600 Hz)."""
-    from studies.rig_conditions import rig_measures
+    from studies.paper.rig_conditions import rig_measures
 
     fm, fs = 258.3, 51_660.0
     t = np.arange(0, 60 / fm, 1 / fs)
@@ -69,7 +69,7 @@ def test_rig_measure_is_the_largest_spectral_line_along_the_line_of_action():
 
 def test_observed_order_recovers_the_order_of_a_power_law():
     """Three levels of f(h) = f* + C h^p with uneven spacing give back p (Roache's observed order)."""
-    from studies.ltca_study import observed_order
+    from studies.ltca.ltca_study import observed_order
 
     h = [1.0, 0.75, 0.6]
     for p in (0.8, 2.0, 3.1):

@@ -1,6 +1,6 @@
 """Face-resolved thermal growth in the LTCA re-run (``thermal = "fe3d"`` with ``wear.field = "face"``).
 
-The 3-D unit solutions (:mod:`femgear.physics.body.thermal3d`) vary over the face: a flank rise grows the
+The 3-D unit solutions (:mod:`femgear.physics.ltca.thermal`) vary over the face: a flank rise grows the
 flank less at the free outer end (ζ = 0) and more at the apex (ζ = b) than mid-face (README: −11 %,
 +5 % at body level 2).  With the face-resolved wear field the coupling re-runs the LTCA on
 wear − ζ_T(member, helix, u, ζ) instead of a face-uniform ζ_T(u).
@@ -11,9 +11,9 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from femgear.physics.body.thermal3d import Thermal3DUnits
 from femgear.physics.geometry import path_positions
 from femgear.physics.ltca.flank import roll_range
+from femgear.physics.ltca.thermal import Thermal3DUnits
 from femgear.physics.wear.face import face_mean
 from femgear.system.coupling.loop import _removed_deviation, _thermal
 from femgear.system.coupling.thermal import ThermalUnits, roll_distances
@@ -50,7 +50,7 @@ def test_face_field_mean_is_the_face_uniform_deviation(baseline_pair):
 @pytest.fixture(scope="module")
 def units_3d(baseline_scene, baseline_pair, grid):
     """Baseline pinion and gear at body level 0 on a 7 × 5 grid (≈ 10 s, not cached)."""
-    from femgear.physics.body.thermal3d import thermal_units_3d
+    from femgear.physics.ltca.thermal import thermal_units_3d
 
     m = baseline_scene.material
     bodies = tuple(thermal_units_3d(baseline_pair, j, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio,

@@ -117,7 +117,7 @@ def test_crowning_and_end_relief_amounts(baseline_pair):
 
 def test_regression_kernel_asymmetry_band_and_positive_self_terms(coarse_model):
     """Regression band: hat load vs point reading at depth are different functionals, so G is not symmetric
-    (measured 14–24 %, P1 and P2 alike, studies/ltca_element_order.py); the contact uses its symmetric part.
+    (measured 14–24 %, P1 and P2 alike, studies/ltca/ltca_element_order.py); the contact uses its symmetric part.
     Self terms are positive (a load pushes its own flank in)."""
     for member in (1, 2):
         c = coarse_model.kernels[member]

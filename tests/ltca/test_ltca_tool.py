@@ -32,7 +32,7 @@ def plain(coarse_model, baseline_pair):
 
 def test_te_and_harmonics_equal_the_study_functions(tool, coarse_model, baseline_pair):
     """TE p-p and mesh-order amplitudes are those of ``LTCAResult.lte_peak_to_peak``/``harmonics`` that the study
-    scripts print (studies/ltca_study.py), to 1e-9 of the p-p, at each torque; the refined check is the 2×-points
+    scripts print (studies/ltca/ltca_study.py), to 1e-9 of the p-p, at each torque; the refined check is the 2×-points
     cycle's."""
     from femgear.physics.ltca.analysis import mesh_cycle, normal_force
 

@@ -73,7 +73,7 @@ def test_unmodified_ltca_mean_intensity_is_close_to_the_winkler_map(plain, basel
     and +27 % at E on this coarse model, +43 % and +56 % on the level-1 model of the ``ltca`` level),
     so inside the path it carries less than the uniform Winkler layer: regression bands, measured
     −3.6 % on average (−4.0 % level 1) and −7.8 … +2.3 % pointwise (−9.2 … +2.1 %);
-    ``python studies/ltca_wear_load.py`` prints both."""
+    ``python studies/ltca/ltca_wear_load.py`` prints both."""
     p, u = baseline_pair, grid
     F = baseline_force / 2
     ltca = reference_load_map(p, u, F, np.zeros(u.size), C_L, _reference(p, u, plain))

@@ -64,7 +64,7 @@ def test_pem_mean_vs_iso_c_gamma_alpha(baseline_pair):
 
     ISO's c_γα carries the empirical C_M = 0.8; the theoretical PEM is stiffer by
     about 1/C_M.  Accepted band: ±25 % of c_γα/C_M, and PEM/ISO in [1, 1.6]
-    (reported by studies/mesh_stiffness.py).
+    (reported by studies/body/mesh_stiffness.py).
     """
     p = baseline_pair
     ms = mesh_stiffness(p, "pem", n_positions=100, n_slices=60, youngs_modulus=206e9)

@@ -7,7 +7,7 @@ mesh period for that pair (generated with ROSS; its first five values are the on
 test asserts).  ROSS integrates the transition curve and the involute separately with
 Sainsot's foundation; femgear integrates the generated outline (basic rack A: h_fP 1.25,
 ρ_fP 0.38, ROSS's addendum, root and cutter-tip radii).  Acceptance: min, mean and max
-within 5 %; ``studies/ross_pem.py`` prints the two curves side by side.
+within 5 %; ``studies/body/ross_pem.py`` prints the two curves side by side.
 """
 
 import json

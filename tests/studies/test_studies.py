@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from studies import _common as C
-from studies import dynamic_backlash, meshing_error, rig_conditions, temperature_rise, wear_cycles
+from studies.paper import dynamic_backlash, meshing_error, rig_conditions, temperature_rise, wear_cycles
 
 
 def _finite_amplitudes(row: dict) -> bool:
@@ -56,15 +56,17 @@ def test_wear_cycles_claims():
     depth = [r["max_wear_pinion_um"] for r in rows]
     assert depth[0] == 0.0 and depth[0] < depth[1] < depth[2]          # wear deepens with cycles
     assert 1.0 < depth[1] < 30.0                                       # µm after 1e6 cycles (K = 1e-6)
-    worn = res["cases"][1]
-    i_pitch = int(np.argmin(np.abs(worn["u"] - worn["u_pitch"])))
-    assert worn["wear"][0, i_pitch] < 0.2 * worn["wear"][0].max()      # least wear at the pitch point (Fig. 15)
+    worn = res["cases"][1]                                             # the typed RunResult of the 1e6 case
+    wear = worn.tribology.wear
+    i_pitch = int(np.argmin(np.abs(worn.case.path.u - worn.case.pair.u_pitch)))
+    assert wear[0, i_pitch] < 0.2 * wear[0].max()                      # least wear at the pitch point (Fig. 15)
     # wear acts on the drive flanks only, once (issue 13): the coast tables carry only the thermal
     # closing (≤ 0) and drive − coast is the contact-line mean of h1 + h2, within its extremes
-    assert np.all(worn["coast_deviation"] <= 0.0)
-    h, worn_table = worn["wear"].sum(axis=0), worn["drive_deviation"] - worn["coast_deviation"]
+    drive, coast = C.deviation_tables(worn)
+    assert np.all(coast <= 0.0)
+    h, worn_table = wear.sum(axis=0), drive - coast
     assert h.min() < worn_table.min() <= worn_table.max() < h.max()
-    mu = worn["mu"]
+    mu = worn.tribology.friction_coefficient
     assert mu[i_pitch] < 0.2 * mu.max()                                # U-shaped μ, minimum at the pitch point
 
 

@@ -1,5 +1,5 @@
 """Gear-typical loads (p_h 1–1.5 GPa, u_e = 10 m/s, Eyring oil) on the long inlet of
-studies/tehl_gupta.py (−8 b, level 5, 256 thermal cells)."""
+studies/ehl/tehl_gupta.py (−8 b, level 5, 256 thermal cells)."""
 
 import importlib.util
 import math

@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 import scipy.sparse.linalg
 
-from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.rheology import Rheology
 from femgear.physics.ehl.dimensional import solve_line_dimensional
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.rheology import Rheology
+from femgear.physics.ehl.fe.level import Level
 from femgear.physics.lubrication.flash import blok_flash_temperature
 from femgear.physics.lubrication.traction import gupta_thermal_factor
 from femgear.physics.tehl import solve_tehl_line

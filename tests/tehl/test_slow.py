@@ -29,7 +29,7 @@ def _phi(ph, ue, srr):
 
 
 def test_film_reduction_over_srr_against_gupta():
-    """φ vs Gupta (studies/tehl_gupta.py, p_h 0.5–1.5 GPa, u_e 5–10 m/s, Eyring and Newtonian).
+    """φ vs Gupta (studies/ehl/tehl_gupta.py, p_h 0.5–1.5 GPa, u_e 5–10 m/s, Eyring and Newtonian).
     Rolling agrees everywhere within 3.5 % (inlet −8 b: 1.034/1.017 at 0.5 GPa and 10/5 m/s,
     0.972/1.002 at 1 GPa, 0.990/1.015 at 1.5 GPa).  Sliding reduces femgear's film about half
     as much as the fit with S = SRR = (v1 − v2)/u_e: at 0.5 GPa, 10 m/s φ = 0.722/0.669/0.566

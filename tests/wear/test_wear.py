@@ -87,14 +87,14 @@ def test_bad_step_rule_is_refused(setup):
 
 
 def test_run_with_archard_wear_reports_depths(baseline_path, tmp_path):
-    from femgear.pipeline import run_scene
+    from femgear.edge.run import run_scene
     from femgear.scene import load_scene
 
     scene = load_scene(baseline_path, ['physics.wear="archard"', "wear.cycles=2e5", 'physics.dynamics="none"',
                                        'physics.coupling="one-way"'])
-    summary = run_scene(scene, tmp_path, plots=False).summary
-    assert summary["wear"]["cycles"] == pytest.approx(2e5)
-    assert 0 < summary["wear"]["max_depth_pinion"] < 1e-5
+    t = run_scene(scene, tmp_path, plots=False).result.tribology
+    assert t.wear_cycles == pytest.approx(2e5)
+    assert 0 < t.wear[0].max() < 1e-5
     assert (tmp_path / "wear_checkpoint.npz").exists()
 
 

@@ -1,4 +1,4 @@
-"""The cheap part of the zoo matrix (``studies/zoo_matrix.py``): every cell of every zoo scene is either a
+"""The cheap part of the zoo matrix (``studies/validation/zoo_matrix.py``): every cell of every zoo scene is either a
 valid scene or refused up front with one line naming a key; the force-balance invariant the full matrix
 checks holds on the cheapest real run.  The runs of all cells: ``make test-slow`` / the study itself."""
 
@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from studies import zoo_matrix as zm
+from studies.validation import zoo_matrix as zm
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = zm.scenes()

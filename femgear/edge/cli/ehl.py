@@ -75,7 +75,7 @@ def _point(args) -> int:
 
 def _line(args) -> int:
     _check_arguments(args, lowest_level=2)
-    from femgear.physics.ehl.line import solve_line
+    from femgear.physics.ehl.fe.line import solve_line
 
     return _run(args, lambda: solve_line(args.M, args.L, level=args.level, tol=args.tol,
                                          **_options(args)))

@@ -100,7 +100,7 @@ def print_key_figures(rows: list[tuple[str, str, str]], title: str) -> None:
 
 
 class CouplingProgress:
-    """Callback for :func:`femgear.pipeline.run_scene`: one line per coupling pass.
+    """Callback for :func:`femgear.edge.run.run_scene`: one line per coupling pass.
 
     On a terminal (stderr) and unless quiet, a rich status line is updated in place;
     every pass is also logged at INFO level (shown with ``-v``).

@@ -27,7 +27,7 @@ def register(sub) -> None:
 def _run(args: argparse.Namespace) -> int:
     from femgear.edge.cli.report import CouplingProgress, key_figures, print_key_figures
     from femgear.edge.io.paths import child_path, prepare_output_dir
-    from femgear.pipeline import run_scene
+    from femgear.edge.run import run_scene
 
     scene = load_scene_arg(args)
     if args.out is None:

@@ -4,7 +4,7 @@
 - ``runner``  resumable execution with atomic per-case outputs and a results table.
 """
 
-from femgear.edge.sweep.runner import SweepInterrupted, SweepResult, run_case, run_sweep
+from femgear.edge.sweep.runner import SweepInterrupted, SweepResult, run_sweep, run_sweep_case
 from femgear.edge.sweep.spec import Case, SweepSpec, parse_sweep
 
-__all__ = ["Case", "SweepInterrupted", "SweepResult", "SweepSpec", "parse_sweep", "run_case", "run_sweep"]
+__all__ = ["Case", "SweepInterrupted", "SweepResult", "SweepSpec", "parse_sweep", "run_sweep", "run_sweep_case"]

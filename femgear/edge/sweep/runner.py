@@ -32,9 +32,11 @@ from femgear.edge.sweep.spec import SweepSpec
 log = logging.getLogger("femgear.edge.sweep")
 
 
-def run_case(base: str, overrides: tuple[str, ...], case_dir: str, plots: bool = False) -> dict[str, Any]:
-    """Run one case (in a worker).  Never raises: returns a row with ``status`` and figures."""
-    from femgear.pipeline import run_scene
+def run_sweep_case(base: str, overrides: tuple[str, ...], case_dir: str, plots: bool = False) -> dict[str, Any]:
+    """Run one sweep case (in a worker) through :func:`femgear.edge.run.run_scene` (the pipeline's
+    :func:`femgear.pipeline.run_case`, then the writer).  Never raises: returns a row with ``status``
+    and figures."""
+    from femgear.edge.run import run_scene
     from femgear.scene import load_scene
 
     final = Path(case_dir)
@@ -114,7 +116,7 @@ def _submitter(workers: int, scheduler: str | None):
                           [f for f in futures if f.status == "pending"])
             client.close()
 
-        return (lambda *a: client.submit(run_case, *a, pure=False)), dask_completed, stop_dask
+        return (lambda *a: client.submit(run_sweep_case, *a, pure=False)), dask_completed, stop_dask
     pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
 
     def stop_pool(futures, abandon: bool) -> None:
@@ -125,7 +127,7 @@ def _submitter(workers: int, scheduler: str | None):
                 proc.terminate()
         pool.shutdown(wait=True, cancel_futures=True)
 
-    return (lambda *a: pool.submit(run_case, *a)), as_completed, stop_pool
+    return (lambda *a: pool.submit(run_sweep_case, *a)), as_completed, stop_pool
 
 
 def _rows_on_disk(cases_dir: Path, spec: SweepSpec, failed: dict[str, dict[str, Any]]) -> dict[str, dict[str, Any]]:

@@ -1,7 +1,7 @@
 """Steady heat conduction of a gear body with prescribed temperatures (scikit-fem, 2-D or 3-D).
 
 ∇·(k∇T) = 0 with Dirichlet data on named boundaries and zero flux elsewhere (insulated), the
-conduction model of :mod:`femgear.physics.body.thermal` (section) and :mod:`femgear.physics.body.thermal3d` (body).
+conduction model of :mod:`femgear.physics.body.thermal` (section) and :mod:`femgear.physics.ltca.thermal` (body).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from femgear.physics.body.forms import conduction
 def solve_temperature(mesh, conductivity: float, dirichlet: dict[str, float], order: int = 2):
     """Steady conduction ∇·(k∇T) = 0 with T prescribed on the named boundaries; others insulated.
 
-    Triangles (the 2-D section) or tetrahedra (the 3-D member body, :mod:`femgear.physics.body.thermal3d`).
+    Triangles (the 2-D section) or tetrahedra (the 3-D member body, :mod:`femgear.physics.ltca.thermal`).
     """
     from skfem import Basis, ElementTetP1, ElementTetP2, ElementTriP1, ElementTriP2, MeshTet, condense, solve
 

@@ -161,7 +161,7 @@ class Elastic3D:
     """K u = f on a ``MeshTet`` with P``order`` vector elements, ``clamped`` region fixed.
 
     ``clamped`` None: no region is clamped; ``fixed`` (DOF indices) are held at zero besides it
-    (e.g. a statically determinate support of a free body, :mod:`femgear.physics.body.thermal3d`).
+    (e.g. a statically determinate support of a free body, :mod:`femgear.physics.ltca.thermal`).
     """
 
     def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, order: int = 2,

@@ -20,7 +20,7 @@ Levels of the flank deviation (``physics.thermal``):
   insulated) on a gmsh section of 3 teeth, then plane-stress thermo-elasticity with
   rollers on the cut sides (cyclic symmetry of identical teeth), P2 elements, pyamg.
 - ``fe3d``: the same conduction and thermo-elasticity in 3-D on the LTCA's member body (both
-  helices, groove, ring, bore free), :mod:`femgear.physics.body.thermal3d`; along the path, the
+  helices, groove, ring, bore free), :mod:`femgear.physics.ltca.thermal`; along the path, the
   deviation averaged over the face of both helices.
 
 ζ is positive when material is added along the flank's outward normal (less
@@ -205,7 +205,7 @@ def flank_deviation(pair: GearPair, member: int, u, level: str, dT_flank: float,
                                   conductivity, bore_radius, h)
         return flank_displacement(res, pair, member, r) * cb
     if level == "fe3d":
-        from femgear.physics.body.thermal3d import thermal_units_3d
+        from femgear.physics.ltca.thermal import thermal_units_3d
 
         units = thermal_units_3d(pair, member, expansion, youngs_modulus, poisson_ratio, bore_radius, groove, stagger,
                                  level=body_level)

@@ -1,31 +1,27 @@
 """Isothermal elastohydrodynamic lubrication (EHL): point/elliptical and line contacts.
 
-Entry points: :func:`femgear.physics.ehl.point.solve_point`, :func:`femgear.physics.ehl.line.solve_line`
-(Moes groups in, :class:`femgear.physics.ehl.results.EHLResult` out) and
-:mod:`femgear.physics.ehl.dimensional` (SI in, metres and pascals out).
+Two discretisations on one shared core, which never import each other:
 
-Modules
--------
-params       Moes groups <-> Hertzian dimensionless parameters (lam_bar, alpha_bar, H scaling).
-rheology     Barus / Roelands viscosity, Dowson-Higginson density (dimensionless, with d/dP).
-grid         uniform nested node grids, bilinear prolongation.
-elastic      DC-FFT half-space deflection (point), log-kernel matrix (line).
-stencil      Q1/P1 element tables on the uniform grid; assembly by array arithmetic.
-reynolds     Q1/P1 Reynolds residual and Jacobian blocks with artificial diffusion and
-             streamline diffusion, both differentiated exactly.
-level        one discretisation level: film, complementarity (cavitation) residual, dense Jacobian.
-newton       dense Newton (coarse grids, line) and Newton-Krylov with a multilevel
-             preconditioner (fine grids); histories; ConvergenceError on failure.
-point, line  drivers: nested iteration, continuation strategies, result assembly.
-fd           finite-difference point operator (second-order upstream wedge) and grid transfers.
-relax        zebra line relaxation, Gauss-Seidel / distributive (Venner & Lubrecht 2000).
-fdnewton     dense semi-smooth Newton of one FD grid (the multigrid's coarsest-grid solver).
-fas          FAS cycles and full multigrid; fas_point: the point driver (method='fas').
-surface      roughness as a film term: the paper's single peak, waviness, seeded random surfaces.
-transient    transient Reynolds (squeeze term, BDF2) for roughness moving through a contact.
-assemble     EHLResult from solved fields (shared by the Newton and multigrid drivers).
-results      frozen EHLResult (with error_estimate, tol, flags) and centre-line quantities.
-accuracy     Richardson error estimates from the nested levels, flags, inlet adequacy.
-output       VTK (pyvista) and centre-line PNG (matplotlib), imported lazily.
-dimensional  SI entry for point and line contacts.
+core/  Moes groups <-> Hertzian parameters (``params``), Barus / Roelands viscosity and
+       Dowson-Higginson density (``rheology``), nested node grids and transfers (``grid``),
+       the DC-FFT half-space deflection and line log-kernel (``elastic``), the point-contact
+       domain and its checks (``domain``), the solver ``history``, the frozen
+       :class:`~femgear.physics.ehl.core.results.EHLResult` and its assembly (``assemble``), Richardson
+       error estimates and flags (``accuracy``), roughness as a film term (``surface``).
+fe/    finite elements, Newton–Krylov: Q1/P1 element tables (``stencil``), the stabilised
+       Galerkin Reynolds residual and exact Jacobian (``reynolds``), one level (``level``:
+       film, cavitation complementarity, dense Jacobian), dense Newton and Newton-Krylov with a
+       multilevel preconditioner (``newton``, ``krylov``), the nested point solve with its
+       fallbacks (``point``) and the line contact (``line``).
+fd/    finite differences, nonlinear multigrid (Venner & Lubrecht 2000): the FD operator with
+       the second-order upstream wedge and grid transfers (``operator``), zebra line relaxation
+       (``relax``), the coarsest grid's dense semi-smooth Newton (``newton``), outlet-spike
+       elimination (``eliminate``), FAS / FMG cycles (``fas``), the point driver (``point``).
+
+Entry points (this folder): :func:`femgear.physics.ehl.point.solve_point` (multigrid inside its
+validated range, Newton elsewhere or when the multigrid fails),
+:func:`femgear.physics.ehl.fe.line.solve_line`, :mod:`femgear.physics.ehl.dimensional` (SI in,
+metres and pascals out), :mod:`femgear.physics.ehl.transient` (roughness moving through the
+contact: FE time steps from the steady solve), :mod:`femgear.physics.ehl.path` (the ``ehl-line``
+lubrication level along the path) and ``output`` (files; leaves physics with issue 27).
 """

@@ -21,10 +21,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from femgear.physics.contact.film import moes_line, moes_point
-from femgear.physics.ehl.line import solve_line
+from femgear.physics.ehl.core.results import EHLResult
+from femgear.physics.ehl.core.rheology import ROELANDS_P0
+from femgear.physics.ehl.fe.line import solve_line
 from femgear.physics.ehl.point import solve_point
-from femgear.physics.ehl.results import EHLResult
-from femgear.physics.ehl.rheology import ROELANDS_P0
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.physics.ehl.results import EHLResult
+from femgear.physics.ehl.core.results import EHLResult
 
 
 def write_vtk(result: EHLResult, path: str | Path) -> Path:

@@ -7,7 +7,7 @@ gives the pressure and film fields; the sliding traction is the Ree–Eyring she
 temperature rise is Blok's flash temperature for that μ.  μ = ∫τ dx / w'.  (The thermal
 film and its feedback on the viscosity are the ``tehl`` level.)  Consecutive positions (or
 map points) are warm-started from the previous solution with the LU factors kept
-(:func:`femgear.physics.ehl.line.solve_line`'s ``start`` and ``reuse``).
+(:func:`femgear.physics.ehl.fe.line.solve_line`'s ``start`` and ``reuse``).
 """
 
 from __future__ import annotations

@@ -1,15 +1,15 @@
 """Transient line-contact EHL: moving roughness through the contact.
 
-Hertzian line scaling of :mod:`femgear.physics.ehl.line` with time T = t u_m / b (Venner &
+Hertzian line scaling of :mod:`femgear.physics.ehl.fe.line` with time T = t u_m / b (Venner &
 Lubrecht 2000, ch. 11; Venner, Couhier, Lubrecht & Greenwood 1997):
 
     d/dX(eps dP/dX) - d(rho H)/dX - d(rho H)/dT = 0,
     H(X, T) = H0(T) + X^2/2 + D[P](X) - R(X - c T),   int P dX = pi/2 at every T,
 
 where the roughness R is carried by a surface of speed u_s = c u_m (c = 1 +/- SRR/2,
-:func:`femgear.physics.ehl.surface.surface_speed`): c = 1 is pure rolling, c = 0 a roughness
+:func:`femgear.physics.ehl.core.surface.surface_speed`): c = 1 is pure rolling, c = 0 a roughness
 on a surface at rest (steady). Each time level is the steady problem of
-:class:`femgear.physics.ehl.level.Level` plus the squeeze term, solved by the same semi-smooth
+:class:`femgear.physics.ehl.fe.level.Level` plus the squeeze term, solved by the same semi-smooth
 Newton (cavitation as complementarity, Reynolds cavitation condition at each T).
 
 Time discretisation: second-order backward differences (BDF2),
@@ -44,22 +44,23 @@ import scipy.sparse as sp
 
 from femgear.errors import ArgumentError, ConvergenceError
 from femgear.physics.contact.film import moes_line_central
-from femgear.physics.ehl import params as pr
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.line import X0_DEFAULT, line_level, solve_line
-from femgear.physics.ehl.newton import newton_dense, newton_krylov
-from femgear.physics.ehl.point import default_domain, solve_point
-from femgear.physics.ehl.reynolds import Linearization
-from femgear.physics.ehl.rheology import Rheology
-from femgear.physics.ehl.surface import apply_surface
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.core.surface import apply_surface
+from femgear.physics.ehl.fe.level import Level
+from femgear.physics.ehl.fe.line import X0_DEFAULT, line_level, solve_line
+from femgear.physics.ehl.fe.newton import newton_dense, newton_krylov
+from femgear.physics.ehl.fe.reynolds import Linearization
+from femgear.physics.ehl.point import solve_point
 
 NEWTON_TOL = 1e-9
 STEP_RESIDUAL_TOL = 1e-9
 
 
 class _SqueezeReynolds:
-    """A :class:`femgear.physics.ehl.reynolds.ReynoldsFE` plus the discrete squeeze term
+    """A :class:`femgear.physics.ehl.fe.reynolds.ReynoldsFE` plus the discrete squeeze term
     Mc (a rho H + q_old), Mc the consistent mass matrix (int phi_i phi_j): ``a`` is the
     coefficient of the new level (1/dT Euler, 3/(2 dT) BDF2), ``q_old`` the old levels'
     part (nodal). Everything else is delegated."""
@@ -136,7 +137,7 @@ def solve_line_transient(M: float, L: float, feature: Callable, *, speed: float 
     (M, L)), from the steady smooth solution at T = 0 to ``T_end`` (Hertzian units;
     ``feature`` takes the surface coordinate at T = 0 and must vanish wherever the
     roughness has not yet entered, or the start is not smooth). ``speed`` c = u_s/u_m
-    (:func:`femgear.physics.ehl.surface.surface_speed`); ``dT`` default h/|c| (h at c = 0);
+    (:func:`femgear.physics.ehl.core.surface.surface_speed`); ``dT`` default h/|c| (h at c = 0);
     ``scheme`` 'bdf2' (default) or 'euler'. Raises ConvergenceError (with the step and
     its Newton history) when a time step does not converge; no NaN is returned."""
     _check(scheme, T_end)
@@ -167,7 +168,7 @@ def solve_point_transient(M: float, L: float, feature: Callable, *, speed: float
                           max_iter: int = 20) -> TransientLineResult:
     """Point-contact version of :func:`solve_line_transient` (Barus, incompressible):
     ``feature``(X - c T, Y) moves along X through the contact; each step is Newton-Krylov
-    on level ``level`` with the multilevel preconditioner of :mod:`femgear.physics.ehl.newton`,
+    on level ``level`` with the multilevel preconditioner of :mod:`femgear.physics.ehl.fe.newton`,
     its coarse factorisations kept across the steps (every level carries the squeeze
     term and the surface, so the preconditioner sees the transient Jacobian). Returns the
     same record (``x`` the flattened node X; snapshots flattened (ny nx))."""

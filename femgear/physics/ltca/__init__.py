@@ -12,4 +12,6 @@
                   (a frozen ``TEAnalysis``), each helix alone, the Harris map, the tool's input checks.
 - ``maps``        pressure and load maps of both members, each turned into its meshing position.
 - ``tool``        ``femgear ltca``: the LTCA alone at several torques (a frozen ``LTCAToolResult``).
+- ``thermal``     the 3-D thermo-elastic flank deviation ζ_T on the member body (``physics.thermal = "fe3d"``),
+                  read at the LTCA's flank points and cached with its disk cache.
 """

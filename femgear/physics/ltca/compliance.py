@@ -32,7 +32,7 @@ subtracting the half-space part it already holds):
   the solves) and gets its own kernels (``bulk_right``).
 
 Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, unmodified;
-``python studies/ltca_study.py``; member bodies down to the 20 mm shaft): P1 levels 1/2/3/4
+``python studies/ltca/ltca_study.py``; member bodies down to the 20 mm shaft): P1 levels 1/2/3/4
 (34 k … 139 k DOF pinion) give a mean mesh stiffness of 7.131/7.026/6.955/6.914e8 N/m and LTE
 p-p 0.5226/0.5275/0.5414/0.5415 µm (the two finest differ by 0.60 % and 0.03 %); Richardson
 puts level 1 at +4.9 % in stiffness.  P1 is the default (``order=1``, level 1: mesh +
@@ -41,7 +41,7 @@ stiff, as expected of linear tetrahedra in bending.  P2 converges much faster pe
 costs ≈ 21 s a unit load with SA-AMG on the bodies (176 k DOF at level 0): on a 5 × 7 grid P1
 level 1 / P1 level 3 / P2 level 0 give 7.119 / 6.954 / 6.742e8 N/m and LTE p-p 0.536 / 0.556 /
 0.564 µm (P1 level 1: +5.6 % / −4.9 % against P2; build 25 s / 183 s / 1503 s;
-``python studies/ltca_element_order.py --ltca``).
+``python studies/ltca/ltca_element_order.py --ltca``).
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
@@ -50,7 +50,7 @@ reading then converges to a different split at every level).  The split is insen
 to the depth where the FE is converged: one mid-flank unit load on the baseline pinion's body,
 P2 level 1 (252 k DOF), gives bulk = 10.93/10.91/11.04e-10 m/N at d = 0.7/0.9/1.2 mm, while P1
 at level 5 (206 k DOF) is still 9 % below at 1.2 mm (P1 tetrahedra are stiff in bending)
-(``python studies/ltca_element_order.py --split``).  Results are cached on disk (``out/cache/ltca`` or
+(``python studies/ltca/ltca_element_order.py --split``).  Results are cached on disk (``out/cache/ltca`` or
 ``$FEMGEAR_CACHE``) under a hash of geometry, material, mesh and grid.
 """
 

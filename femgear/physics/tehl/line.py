@@ -3,7 +3,7 @@
 Thermal loop outside the EHL Newton (Habchi 2008, thesis INSA Lyon; Habchi 2018, *Finite
 Element Modeling of Elastohydrodynamic Lubrication Problems*, Wiley, ch. 5):
 
-1. isothermal FE line EHL at the bulk temperature (:func:`femgear.physics.ehl.solve_line`);
+1. isothermal FE line EHL at the bulk temperature (:func:`femgear.physics.ehl.fe.line.solve_line`);
 2. energy equation of film and solids with the current pressure, film and viscosities
    (:func:`femgear.physics.tehl.energy.solve_energy`);
 3. if the film temperatures moved less than ``tol`` [K]: done; else relax them, pass the
@@ -22,7 +22,7 @@ smaller Reynolds residual, and it stops only on a fine state re-solved at its
 temperatures, with the same ``tol`` as a loop on the fine grid alone: the converged
 answers agree with that loop's to the thermal tolerance (tested).  The Newton LU factors
 of the isothermal start are kept for the re-solves (``reuse=`` of
-:func:`femgear.physics.ehl.solve_line`).  If the coarse stage fails, the loop is run on the fine
+:func:`femgear.physics.ehl.fe.line.solve_line`).  If the coarse stage fails, the loop is run on the fine
 grid alone.
 
 Hot contacts (``hot_stage``): when the first energy solve on the grid two levels down (the
@@ -55,17 +55,17 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from femgear.errors import ConvergenceError
-from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.rheology import ROELANDS_P0
 from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.newton import newton_dense
-from femgear.physics.ehl.rheology import ROELANDS_P0
+from femgear.physics.ehl.fe.level import Level
+from femgear.physics.ehl.fe.newton import newton_dense
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.tehl.energy import EnergyState, ThermalProps, jaeger_matrix, solve_energy
 from femgear.physics.tehl.loop import thermal_loop
 from femgear.physics.tehl.rheology import ThermalRheology
 
-X0, X1 = -4.5, 1.5  # domain in units of the Hertz half-width (as femgear.physics.ehl.solve_line)
+X0, X1 = -4.5, 1.5  # domain in units of the Hertz half-width (as femgear.physics.ehl.fe.line.solve_line)
 # the thermal loop starts on the next coarser grid from this level on (measured: at level 4 the
 # coarse stage on 129 nodes costs more than it saves, at levels 5 and 6 it halves the cost)
 NESTED_MIN_LEVEL = 5

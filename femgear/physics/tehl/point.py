@@ -2,7 +2,7 @@
 
 Elliptic contacts (R_y != R_x): the frame has X along the entrainment, across the major
 axis of the ellipse (for a gear pair: across the contact line), and the domain and the
-stretched grid of :func:`femgear.physics.ehl.point.default_domain`. The entrainment is taken
+stretched grid of :func:`femgear.physics.ehl.core.domain.default_domain`. The entrainment is taken
 normal to the contact line; the oblique entrainment of a helical pair (angle beta_b to
 that normal) is not modelled (see :mod:`femgear.physics.tehl.point_level`).
 
@@ -28,13 +28,13 @@ import numpy as np
 
 from femgear.errors import ConvergenceError, SceneError
 from femgear.physics.contact.film import nvm_central
-from femgear.physics.ehl import params as pr
+from femgear.physics.ehl.core import params as pr
+from femgear.physics.ehl.core.domain import default_domain
+from femgear.physics.ehl.core.grid import Grid
+from femgear.physics.ehl.core.surface import apply_surface, evaluate, scene_features
 from femgear.physics.ehl.dimensional import solve_point_dimensional
-from femgear.physics.ehl.grid import Grid
-from femgear.physics.ehl.level import Level
-from femgear.physics.ehl.newton import newton_krylov
-from femgear.physics.ehl.point import default_domain
-from femgear.physics.ehl.surface import apply_surface, evaluate, scene_features
+from femgear.physics.ehl.fe.level import Level
+from femgear.physics.ehl.fe.newton import newton_krylov
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.tehl.energy import ThermalProps, jaeger_matrix, solve_energy
 from femgear.physics.tehl.line import ehl_oil_at

@@ -1,6 +1,6 @@
 """Temperature field in the dimensionless EHL rheology: the thermal hook of the Reynolds operator.
 
-:class:`ThermalRheology` is a :class:`femgear.physics.ehl.rheology.Rheology` that also knows a
+:class:`ThermalRheology` is a :class:`femgear.physics.ehl.core.rheology.Rheology` that also knows a
 temperature field (held in ``state``: ``"node"`` values on the EHL nodes, ``"quad"``
 values at the quadrature points of the Reynolds assembly).  The Reynolds operator calls
 ``log_eta``/``density`` with nodal arrays (1-D) or quadrature arrays (2-D, elements x
@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from femgear.physics.ehl.rheology import ROELANDS_P0, Rheology
+from femgear.physics.ehl.core.rheology import ROELANDS_P0, Rheology
 
 
 @dataclass(frozen=True)

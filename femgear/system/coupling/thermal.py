@@ -26,7 +26,7 @@ class ThermalUnits:
     flank: np.ndarray   #: (2, n) pinion, gear
     shaft: np.ndarray   #: (2, n)
     #: ``thermal = "fe3d"``: the 3-D unit solutions of pinion and gear
-    #: (:class:`femgear.physics.body.thermal3d.Thermal3DUnits`), whose face means are ``flank`` and ``shaft``; None otherwise
+    #: (:class:`femgear.physics.ltca.thermal.Thermal3DUnits`), whose face means are ``flank`` and ``shaft``; None otherwise
     bodies: tuple | None = None
 
     def deviation(self, flank_rise: float, shaft_rise: float) -> np.ndarray:
@@ -41,7 +41,7 @@ class ThermalUnits:
     def face(self, rho: np.ndarray, grid: np.ndarray, flank_rise: float, shaft_rise: float) -> np.ndarray | None:
         """Face-resolved ζ_T (member, helix, u, ζ) [m] at the members' roll distances ``rho`` (2, n) (pinion
         ρ₁ = u, gear ρ₂ = T₁T₂ − u) and face coordinates ``grid`` (m,) of each helix, from the 3-D unit
-        solutions (:meth:`femgear.physics.body.thermal3d.Thermal3DUnits.face_field`); None without them.
+        solutions (:meth:`femgear.physics.ltca.thermal.Thermal3DUnits.face_field`); None without them.
 
         Its face mean over both helices (trapezoid on ``grid``) is :meth:`deviation` up to the bilinear
         reading of the units' ζ grid on ``grid`` (the same ρ interpolation: both are linear in ρ)."""
@@ -73,7 +73,7 @@ def thermal_units(case: Case) -> ThermalUnits | None:
 def _thermal_units_3d(case: Case, members) -> ThermalUnits:
     """``fe3d``: the members' 3-D unit solutions and their face means along the path (the values of
     :func:`femgear.physics.body.thermal.flank_deviation`, which reads the same cached solutions)."""
-    from femgear.physics.body.thermal3d import thermal_units_3d
+    from femgear.physics.ltca.thermal import thermal_units_3d
 
     m = case.material
     bodies = tuple(thermal_units_3d(case.pair, j, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, b,

@@ -28,10 +28,6 @@ def dof(body: str | int, direction: str) -> int:
     return 6 * b + DIRECTIONS.index(direction)
 
 
-def dof_labels() -> list[str]:
-    return [f"{b}.{d}" for b in BODIES for d in DIRECTIONS]
-
-
 def skew(r: np.ndarray) -> np.ndarray:
     """Matrix [r]× with [r]× a = r × a."""
     x, y, z = r

@@ -4,7 +4,7 @@
 coupling loop replaces friction and flank deviations with
 :func:`femgear.system.dynamics.build.with_friction` / ``with_deviation`` and re-runs) and
 returns a frozen :class:`DynamicsRun`.  Files are written at the edge, by
-:mod:`femgear.edge.io.dynamics` and :mod:`femgear.system.dynamics.plot`.
+:mod:`femgear.edge.io.dynamics` and :mod:`femgear.edge.plot.dynamics`.
 """
 
 from __future__ import annotations
@@ -96,7 +96,7 @@ def step_plan(model: GearRotorModel, steps_per_period: int = 200) -> tuple[int, 
 def default_step(model: GearRotorModel, method: str, steps_per_period: int = 200) -> float:
     """The default time step [s] while recording: T_m over the first count of :func:`step_plan`;
     ``rk4`` at most a quarter of its stability limit; ``newmark`` :data:`NEWMARK_STEP_FACTOR` times
-    finer.  ``studies/step_convergence.py`` prints the change when it is halved and
+    finer.  ``studies/dynamics/step_convergence.py`` prints the change when it is halved and
     ``studies/benchmarks/dynamics_speed.py`` the error against a converged small step."""
     h = model.mesh_period / step_plan(model, steps_per_period)[0]
     if method == "expo":
