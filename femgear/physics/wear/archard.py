@@ -25,6 +25,7 @@ of explicit schemes (Põdra & Andersson 1999; Flodin & Andersson 1997).
 
 from __future__ import annotations
 
+import math
 import os
 import tempfile
 from collections.abc import Iterator
@@ -54,10 +55,10 @@ class WearSetup:
     @classmethod
     def from_scene(cls, scene, kin: PathKinematics, pair: GearPair | None = None, n_phase: int = 64) -> WearSetup:
         """Static load sharing of the scene: each helix carries F_bn/2; c_l from ``[stiffness]``."""
-        from femgear.physics.contact.path import normal_force
-
         pair = pair or GearPair.from_scene(scene)
-        F_bn = normal_force(scene, pair)
+        op = scene.operating    # transitional: h27body removes this scene adapter (F_bn is case.operating's)
+        T1 = op.torque if op.driver == "pinion" else op.torque * scene.pinion.teeth / scene.gear.teeth
+        F_bn = T1 / (pair.rb1 * math.cos(pair.beta_b))
         c_l = scene.stiffness.mesh_stiffness_per_width * pair.b / pair.mean_contact_length
         return cls(pair=pair, kin=kin, force=F_bn / 2, c_l=c_l, coefficient=scene.wear.coefficient,
                    hardness=scene.material.hardness, n_phase=n_phase)
