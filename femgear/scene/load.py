@@ -87,9 +87,14 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     pair = GearPair.from_scene(scene)  # raises SceneError for an impossible gear
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
-    if warn:    # the lubrication level's range is checked where the case is bound (femgear.case.build_case); the
-        # Hertz pressure warning needs the run's contact pass (h27body moves it to the driver)
-        plausibility_warnings(scene, pair, None, earlier=range_warnings)
+    # transitional (h27body: load_scene only validates; the case's checks and the Hertz warning move up): binding
+    # the case checks the lubrication level's range (build_case), the contact pass gives the Hertz pressure
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+
+    case = build_case(scene, pair)
+    if warn:
+        plausibility_warnings(scene, pair, float(contact_pass(case).hertz_pressure.max()), earlier=range_warnings)
     return scene
 
 
