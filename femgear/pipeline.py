@@ -5,7 +5,7 @@ pressure, film thickness, sliding) and the mesh stiffness of the ``stiffness`` l
 
 Without dynamics (``dynamics = "none"``), the sub-models run once at the static load:
 friction and contact temperature from the ``lubrication`` level (the registry of
-:mod:`femgear.physics.lubrication.levels`), the thermal flank deviation (``thermal``) for
+:mod:`femgear.levels.lubrication`), the thermal flank deviation (``thermal``) for
 ``thermal.flank_temperature_rise`` and the wear depth after ``wear.cycles``.
 
 With dynamics, everything goes through the coupling loop of :mod:`femgear.system.coupling`:
@@ -32,9 +32,9 @@ from femgear.levels import coupling as coupling_levels
 from femgear.levels import dynamics as dynamics_levels
 from femgear.levels import stiffness as stiffness_levels
 from femgear.levels import wear as wear_levels
-from femgear.physics.contact.path import ContactPath, contact_along_path
-from femgear.physics.lubrication.films import level_film
-from femgear.physics.lubrication.levels import friction_along_path
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import Lubrication, friction_along_path, lubrication_solver
+from femgear.physics.contact.path import ContactPath
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.results import RunResult, Tribology
 from femgear.system.coupling.loop import (
@@ -53,28 +53,29 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
     t0 = time.perf_counter()
     stiffness = stiffness_levels.of(case)
-    contact = contact_along_path(case.scene, pair=case.pair, stiffness=stiffness, kin=case.path)
+    contact = contact_pass(case, stiffness=stiffness)
     contact_warnings(case, float(contact.hertz_pressure.max()))     # the scene's plausibility, on the run's pass
     te = transmission_error(case, stiffness)
     if not dynamics_levels.spec(case.levels.dynamics).is_dynamic:
-        tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
-        tribology = replace(tribology, film=level_film(case, tribology.load_per_length))
+        lubrication = lubrication_solver(case)
+        tribology = static_tribology(case, contact, stiffness, wear_checkpoint, lubrication)
+        tribology = replace(tribology, film=lubrication.film(tribology.load_per_length))
         return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0, transmission_error=te,
                          rating=case_rating(case, contact, tribology))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=not coupling_levels.spec(case.levels.coupling).iterates, progress=progress)
     st = coupled.state
-    levels, worn = case.levels, wear_levels.has_wear(case)
+    worn, lubricated = wear_levels.has_wear(case), setup.lubrication.friction
     tribology = Tribology(
         load_per_length=st.load_per_length,
-        friction_coefficient=st.mu if levels.lubrication != "none" else None,
-        temperature_rise=st.temperature_rise if levels.lubrication != "none" else None,
+        friction_coefficient=st.mu if lubricated else None,
+        temperature_rise=st.temperature_rise if lubricated else None,
         flank_temperature_rise=st.flank_temperature_rise,
         thermal_deviation=st.thermal_deviation if setup.thermal is not None else None,
         wear=st.wear if worn else None, wear_cycles=case.wear.cycles,
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if worn else None, st.thermal_face),
-        film=level_film(case, st.load_per_length, solver=setup.lubrication))
+        film=setup.lubrication.film(st.load_per_length))
     return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
                      transmission_error=te, rating=case_rating(case, contact, tribology))
 
@@ -105,15 +106,16 @@ def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
 
 
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,
-                     wear_checkpoint: Path | None = None) -> Tribology:
+                     wear_checkpoint: Path | None = None, lubrication: Lubrication | None = None) -> Tribology:
     """Friction, thermal deviation and wear once, at the static load: friction at the contact
     pass's shared line load w(u) (:mod:`femgear.physics.contact.sharing`), wear with the load shared
     along the contact lines by the local pair stiffness (:func:`line_stiffness`), with ``ltca`` as the
-    LTCA cycle shares it (:func:`ltca_reference`)."""
+    LTCA cycle shares it (:func:`ltca_reference`); ``lubrication``: the case's level (default: built here)."""
     w = np.asarray(contact.line_load, dtype=float)      # load sharing between the pairs in contact
     mu = dT = zeta = wear = None
-    if case.levels.lubrication != "none":
-        mu, dT = friction_along_path(case, w)
+    lubrication = lubrication or lubrication_solver(case)
+    if lubrication.friction:
+        mu, dT = friction_along_path(case, w, lubrication)
     units = thermal_units(case)
     if units is not None:
         zeta = units.deviation(case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)

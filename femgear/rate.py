@@ -14,7 +14,9 @@ import math
 
 import numpy as np
 
-from femgear.physics.contact.path import ContactPath, pinion_speed, pinion_torque
+from femgear.case import build_case, operating_point
+from femgear.levels.lubrication import lubrication_solver
+from femgear.physics.contact.path import ContactPath
 from femgear.physics.geometry import GearPair
 from femgear.physics.lubrication.flash import thermal_effusivity
 from femgear.physics.rating.bending import BendingInputs
@@ -47,11 +49,8 @@ def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperat
                 level: str | None, film=None) -> OwnFigures:
     """femgear's film, λ and contact temperature along the contact pass's path (``temperature_rise``: ΔT of the
     lubrication level ``level`` on the same positions; None: computed with the ``formula`` level; ``film``: the
-    :class:`femgear.physics.lubrication.films.LevelFilm` of the level that ran, else the contact pass's h_min)."""
-    if temperature_rise is None or level in (None, "none", "constant"):
-        from femgear.case import build_case
-        from femgear.physics.lubrication.levels import lubrication_solver
-
+    :class:`femgear.levels.lubrication.LevelFilm` of the level that ran, else the contact pass's h_min)."""
+    if temperature_rise is None or level is None or not lubrication_solver(build_case(scene, pair), level).heats:
         k = contact.kin
         w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
         solver = lubrication_solver(build_case(scene, pair), "formula")
@@ -70,7 +69,7 @@ def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperat
 def _fillets(scene, pair: GearPair):
     from femgear.physics.body.fillet import fillet_stress
 
-    force = pinion_torque(scene) / pair.r1 / pair.n_helices / (pair.b * math.cos(pair.alpha_wt))
+    force = operating_point(scene, pair).pinion_torque / pair.r1 / pair.n_helices / (pair.b * math.cos(pair.alpha_wt))
     points = (pair.u_start + pair.p_bt, pair.u_end - pair.p_bt)   # outer single contact of pinion, gear
     if pair.eps_alpha >= 2:
         points = (pair.u_end, pair.u_start)
@@ -122,7 +121,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
                            Ra=Ra, X_L=OIL_FACTOR[oil_type], K=K, X_S=1.2 if r.lubrication_method == "spray" else 1.0,
                            X_W=r.structural_factor)
     own = own_figures(scene, pair, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
-    rating = rate_pair(pair, scene_rating(scene, pair), pinion_torque(scene), pinion_speed(scene), bending, scuff,
+    rating = rate_pair(pair, scene_rating(scene, pair), operating_point(scene, pair).pinion_torque, scene.pinion_rpm, bending, scuff,
                        float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
     for flag in rating.flags:
         log.info("rating: %s; the factor is flagged", flag)

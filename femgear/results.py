@@ -13,9 +13,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.case import Case
+from femgear.levels.lubrication import LevelFilm
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.ltca.te import TEAnalysis
-from femgear.physics.lubrication.films import LevelFilm
 from femgear.physics.rating.suite import PairRating
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.system.coupling.loop import CoupledResult
@@ -37,7 +37,7 @@ class Tribology:
     face_grid: np.ndarray | None = None
     wear_face: np.ndarray | None = None         #: (member, helix, n, m) wear depth, ``wear.field = "face"`` [m]
     thermal_face: np.ndarray | None = None      #: (member, helix, n, m) ζ_T of ``thermal = "fe3d"`` [m]
-    #: the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.physics.lubrication.films`)
+    #: the film of the lubrication level that ran, at ``load_per_length`` (:meth:`femgear.levels.lubrication.Lubrication.film`)
     film: LevelFilm | None = None
 
 

@@ -12,7 +12,8 @@ from typing import Any
 
 import numpy as np
 
-from femgear.physics.contact.path import ContactPath, pinion_speed, pinion_torque
+from femgear.case import operating_point
+from femgear.physics.contact.path import ContactPath
 from femgear.physics.geometry import GearPair, mesh_frequency
 from femgear.physics.rating import (
     LoadFactors,
@@ -102,12 +103,12 @@ def scene_rating(scene, pair: GearPair) -> PittingRating:
     r = scene.rating
     factors = LoadFactors(K_A=r.application_factor, K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor,
                           K_Halpha=r.transverse_load_factor)
-    stress = contact_stress(pair, pinion_torque(scene), scene.material.youngs_modulus, scene.material.poisson_ratio,
+    stress = contact_stress(pair, operating_point(scene, pair).pinion_torque, scene.material.youngs_modulus, scene.material.poisson_ratio,
                             factors)
     limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
                             nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
                             Z_W=r.work_hardening_factor, Z_X=r.size_factor)
-    return _pitting_rating(pair, stress, pinion_speed(scene), limits)
+    return _pitting_rating(pair, stress, scene.pinion_rpm, limits)
 
 
 def rating_summary(rating: PittingRating) -> dict[str, Any]:
@@ -131,7 +132,7 @@ def path_friction(scene, pair: GearPair, contact: ContactPath) -> tuple[np.ndarr
     """μ along ``contact`` at the oil temperature, of the scene's lubrication level (levels beyond
     ``formula``, FE EHL and TEHL, are summarised with ``formula``; the returned level says which)."""
     from femgear.case import build_case
-    from femgear.physics.lubrication.levels import lubrication_solver
+    from femgear.levels.lubrication import lubrication_solver
 
     level = scene.physics.lubrication
     level = level if level in SUMMARY_FRICTION_LEVELS else "formula"
@@ -145,16 +146,18 @@ def path_friction(scene, pair: GearPair, contact: ContactPath) -> tuple[np.ndarr
 def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshPowerLoss, str]:
     """Mesh power loss on the positions of ``contact`` with μ of the scene's lubrication level
     (:func:`path_friction`); ``femgear run`` carries the level's own μ."""
-    from femgear.physics.contact.path import contact_along_path, zone_grid
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.physics.contact.path import zone_grid
 
     if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
         # the load jumps at B and D must lie on the grid for an exact path integral
-        contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, contact.kin.u.size))
+        contact = contact_pass(build_case(scene, pair), u=zone_grid(pair, contact.kin.u.size))
     k = contact.kin
     w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
     mu, level = path_friction(scene, pair, contact)
-    omega1 = pinion_speed(scene) * 2 * math.pi / 60
-    return mesh_power_loss(pair, k.u, mu, w, k.vs, pinion_torque(scene), omega1), level
+    omega1 = scene.pinion_rpm * 2 * math.pi / 60
+    return mesh_power_loss(pair, k.u, mu, w, k.vs, operating_point(scene, pair).pinion_torque, omega1), level
 
 
 def flash_summary(scene, pair: GearPair, contact: ContactPath) -> dict[str, Any]:
@@ -178,7 +181,7 @@ def stiffness_summary(scene, pair: GearPair) -> dict[str, Any]:
     scene's load F_t K_A / b (below 100 N/mm the standard reduces c')."""
     from femgear.physics.stiffness.iso6336 import iso6336_stiffness
 
-    F_t = pinion_torque(scene) / pair.r1
+    F_t = operating_point(scene, pair).pinion_torque / pair.r1
     line_load = F_t * scene.rating.application_factor / (pair.b * pair.n_helices)
     iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=scene.material.youngs_modulus)
     unit = 1e9  # N/(mm µm) -> N/m per m
@@ -203,7 +206,7 @@ def scene_summary(scene, pair: GearPair, contact: ContactPath, power_loss: bool 
     safety factors, each with femgear's own figures beside them."""
     out = {
         "scene": scene.meta.name,
-        "geometry": geometry_summary(pair, pinion_speed(scene)),
+        "geometry": geometry_summary(pair, scene.pinion_rpm),
         "contact": contact_summary(contact),
         "rating": rating_summary(scene_rating(scene, pair) if ratings is None else ratings.pitting),
         "stiffness_iso6336": stiffness_summary(scene, pair),

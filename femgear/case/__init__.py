@@ -34,6 +34,7 @@ from femgear.scene.schema import (
     Physics,
     Scene,
     Stiffness,
+    SurfaceRoughness,
     Thermal,
     Wear,
 )
@@ -91,6 +92,19 @@ class Case:
         return self.scene.oil
 
     @property
+    def oil_reference_temperature(self) -> float:
+        """Temperature at which ``oil.viscosity`` holds [K]."""
+        return self.scene.oil_reference_temperature
+
+    @property
+    def roughness(self) -> SurfaceRoughness:
+        return self.scene.roughness
+
+    @property
+    def modifications(self) -> Modifications:
+        return self.scene.modifications
+
+    @property
     def errors(self) -> Errors:
         return self.scene.errors
 
@@ -109,10 +123,6 @@ class Case:
     @property
     def thermal(self) -> Thermal:
         return self.scene.thermal
-
-    @property
-    def modifications(self) -> Modifications:
-        return self.scene.modifications
 
     @property
     def numerics(self) -> Numerics:

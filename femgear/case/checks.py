@@ -40,18 +40,10 @@ def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
 
 
 def check_lubrication_range(case: Case) -> None:
-    """Refuse the TEHL levels up front outside their validated range (h27lub's
-    ``femgear.levels.lubrication.check_range(case)`` replaces this on merge)."""
-    scene, pair = case.scene, case.pair
-    if scene.physics.lubrication in ("tehl", "tehl-point"):
-        from femgear.physics.tehl.solver import check_tehl_range
+    """Refuse the lubrication level up front outside its validated range (the checks its registry lists)."""
+    from femgear.levels.lubrication import check_range
 
-        check_tehl_range(scene, pair)
-    if scene.physics.lubrication == "tehl-point":
-        from femgear.physics.contact.crowning import check_point_range
-        from femgear.physics.geometry import kinematics, path_positions
-
-        check_point_range(scene, pair, kinematics(pair, path_positions(pair, 41), 1.0).R)
+    check_range(case)
 
 
 def check_wear_field(scene: Scene, pair: GearPair) -> None:

@@ -1,14 +1,370 @@
-"""Lubrication levels (the ``[physics] lubrication`` key): friction and contact temperature.
+"""Lubrication levels (the ``[physics] lubrication`` key): friction, contact temperature and the film.
 
-The names are the registry; factories are attached where a level is dispatched.
+Every level's factory returns a :class:`Lubrication`: a contact solver with the map signature
+``solver(w=, R=, ue=, srr=, T=) -> (μ, ΔT)`` (load per unit contact length [N/m], radius [m],
+entrainment speed [m/s], |slide-to-roll| [-], bulk temperature [K]), so that a
+:class:`femgear.physics.lubrication.map.FrictionMap` can stand in for any expensive level, and
+the film of the same level (:meth:`Lubrication.film`):
+
+| level      | solver                                                        | film                                  |
+|------------|---------------------------------------------------------------|---------------------------------------|
+| none       | μ = 0, no heating                                             | isothermal formulas (Moes h_c,        |
+| constant   | μ = ``friction.coefficient``, no heating                      | Dowson–Higginson h_min, Hertz p)      |
+| formula    | thermal Eyring traction of the Hertzian film                  |   "                                   |
+| ehl-line   | FE line EHL with Eyring traction, Blok flash temperature      | FE isothermal line EHL                |
+| tehl       | thermal EHL line solves; ``repeated``: a friction map of them | thermal line EHL, direct solves       |
+| tehl-point | thermal EHL of the crowned flanks' elliptic contacts          | the same solves (reused when they ran |
+|            |                                                               | at these inputs)                      |
+
+The factories read the Case's typed parts and build the physics' own typed objects from its tables
+(:func:`oil_law`, :func:`line_friction`, :func:`tehl_setup`); the physics never sees the scene.
+Imports of the physics are lazy: the scene schema imports this registry for the level names.
 """
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
 
 from femgear.levels.registry import Registry
 
+if TYPE_CHECKING:
+    from femgear.case import Case
+    from femgear.physics.contact.path import ContactPath
+    from femgear.physics.lubrication.oil import OilLaw
+    from femgear.physics.lubrication.path import LineFriction
+    from femgear.physics.tehl.solver import TEHLSetup
+
+Solver = Callable[..., tuple[np.ndarray, np.ndarray]]
+"""solver(w=, R=, ue=, srr=, T=) -> (mu, temperature_rise) — the signature of friction maps."""
+
 REGISTRY = Registry("lubrication", planned=('ehl-point',))
-REGISTRY.add("none", "dry contact: no friction, no flash temperature")
-REGISTRY.add("constant", "a constant friction coefficient (friction.coefficient) and Blok's flash temperature")
-REGISTRY.add("formula", "an empirical friction formula (friction.model) with the film formulas of Dowson-Higginson/Hamrock-Dowson")
-REGISTRY.add("ehl-line", "isothermal line-contact EHL (FE Reynolds, Newton-Krylov) with Eyring traction")
-REGISTRY.add("tehl", "thermal line-contact EHL (Reynolds + energy) tabulated in a friction map over the path")
-REGISTRY.add("tehl-point", "thermal point-contact EHL (crowned flank, multigrid) along the path")
+
+
+@dataclass(frozen=True)
+class LevelFilm:
+    """Film along the path of one lubrication level (arrays over the case's path positions)."""
+
+    level: str
+    """the ``physics.lubrication`` level that computed it"""
+    method: str
+    """the model, in words"""
+    central: np.ndarray
+    """central film thickness h_c [m]"""
+    minimum: np.ndarray
+    """minimum film thickness h_min [m]"""
+    pressure_max: np.ndarray
+    """pressure peak (Hertz p_0 for the formula films) [Pa]"""
+    temperature_rise: np.ndarray | None = None
+    """maximum film temperature rise (thermal levels) [K]"""
+
+
+FilmOf = Callable[[str, np.ndarray, float, Solver], LevelFilm]
+
+
+@dataclass(frozen=True)
+class Lubrication:
+    """The product of a lubrication level: its contact solver (call it like one) and its film."""
+
+    level: str
+    """the ``physics.lubrication`` level"""
+    solve: Solver = field(repr=False)
+    """``solve(w=, R=, ue=, srr=, T=) -> (μ, ΔT)``"""
+    film_of: FilmOf = field(repr=False)
+    """``film_of(level, w, T, solve) -> LevelFilm`` at the path positions (w broadcast to them)"""
+    path_shape: tuple[int, ...]
+    """shape of the case's path positions"""
+    ambient_temperature: float
+    """bulk temperature of the films by default [K]"""
+    friction: bool = True
+    """False for a dry contact: no friction and no contact heating to report"""
+    uniform: float | None = None
+    """μ of every contact where the level has one number (none, constant); None where μ varies [-]"""
+
+    @property
+    def heats(self) -> bool:
+        """Whether the level computes a contact temperature rise (the one-number levels give ΔT = 0)."""
+        return self.uniform is None
+
+    def __call__(self, w, R, ue, srr, T) -> tuple[np.ndarray, np.ndarray]:
+        return self.solve(w=w, R=R, ue=ue, srr=srr, T=T)
+
+    def film(self, load_per_length, temperature: float | None = None) -> LevelFilm:
+        """The film of this level at the loads ``load_per_length`` [N/m] along the path, at the bulk
+        ``temperature`` [K] (default: the ambient temperature).  Where the solver keeps its latest direct
+        solves (``tehl-point``) at these very inputs, they are reused."""
+        w = np.broadcast_to(np.asarray(load_per_length, dtype=float), self.path_shape)
+        T = self.ambient_temperature if temperature is None else temperature
+        film = self.film_of(self.level, w, T, self.solve)
+        for name in ("central", "minimum", "pressure_max"):
+            a = getattr(film, name)
+            if a.shape != w.shape or not np.all(np.isfinite(a)) or np.any(a <= 0):
+                raise FloatingPointError(f"{film.level} film: {name} is not positive and finite along the path")
+        return film
+
+
+def _product(case: Case, level: str, solve: Solver, film_of: FilmOf, **flags) -> Lubrication:
+    return Lubrication(level=level, solve=solve, film_of=film_of, path_shape=case.path.u.shape,
+                       ambient_temperature=case.operating.ambient_temperature, **flags)
+
+
+# ---------------------------------------------------------------- typed parts from the case's tables
+def oil_law(case: Case) -> OilLaw:
+    """The oil's viscosity and density laws (Roelands)."""
+    from femgear.physics.lubrication.oil import OilLaw
+
+    return OilLaw.from_table(case.oil, case.oil_reference_temperature)
+
+
+def line_friction(case: Case) -> LineFriction:
+    """The ``formula`` level's line-contact friction with the case's oil, steel, traction and roughness."""
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.physics.lubrication.mixed import Roughness
+    from femgear.physics.lubrication.path import LineFriction, solids_of
+
+    rough = case.roughness
+    return LineFriction(oil=oil_law(case), E_red=reduced_modulus_of(case), solids=solids_of(case.material, case.oil),
+                        tau0=case.oil.eyring_stress, limiting_shear=case.oil.limiting_shear_coeff,
+                        roughness=Roughness(rough.rq, rough.eta_beta_sigma, rough.sigma_over_beta)
+                        if rough.rq > 0 else None, boundary_coefficient=case.friction.boundary_coefficient)
+
+
+def tehl_setup(case: Case) -> TEHLSetup:
+    """Oil, solids and traction of the case's TEHL solves."""
+    from femgear.physics.tehl.solver import TEHLSetup
+
+    return TEHLSetup.from_tables(case.material, case.oil, case.oil_reference_temperature)
+
+
+def crowning(case: Case) -> tuple[float, float]:
+    """Lead crowning C_β of pinion and gear [m]."""
+    mods = case.modifications
+    return mods.member(1).crowning, mods.member(2).crowning
+
+
+def envelope_contact(case: Case, n: int = 21) -> ContactPath:
+    """The contact pass at ``n`` positions plus the pitch point that friction-map envelopes span (kinematics
+    and the mean load per length only: the load is not shared by the stiffness level)."""
+    from femgear.levels.contact import contact_pass
+
+    return contact_pass(case, n=n, shared=False)
+
+
+def tehl_axes(case: Case) -> dict[str, np.ndarray]:
+    """The ``tehl`` friction map's axes over the case's path (:func:`femgear.physics.tehl.solver.tehl_map_axes`)."""
+    from femgear.physics.tehl.solver import tehl_map_axes
+
+    return tehl_map_axes(envelope_contact(case), case.operating.ambient_temperature)
+
+
+# ---------------------------------------------------------------- films
+def _formula_film(case: Case) -> FilmOf:
+    def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
+        from femgear.levels.contact import reduced_modulus_of
+        from femgear.physics.contact.film import line_film
+        from femgear.physics.contact.hertz import hertz_line
+
+        k, oil, E_red = case.path, case.oil, reduced_modulus_of(case)
+        films = line_film(w, k.R, k.ue, E_red, oil.viscosity, oil.pressure_viscosity)
+        p = np.array([hertz_line(wi, R, E_red).max_pressure for wi, R in zip(w, k.R)])
+        return LevelFilm(level=level, method="isothermal formulas (Moes h_c, Dowson-Higginson h_min)",
+                         central=films.central_moes, minimum=films.minimum_dh, pressure_max=p)
+
+    return film
+
+
+def _ehl_line_film(case: Case) -> FilmOf:
+    def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
+        from femgear.levels.contact import reduced_modulus_of
+        from femgear.physics.ehl.path import ehl_line_films
+
+        grid = case.numerics.ehl_level
+        hc, hmin, pmax = ehl_line_films(w, case.path.R, case.path.ue, T, oil_law(case), reduced_modulus_of(case), grid)
+        return LevelFilm(level=level, method=f"FE isothermal line EHL, grid level {grid}", central=hc, minimum=hmin,
+                         pressure_max=pmax)
+
+    return film
+
+
+def _reused(solve: Solver, case: Case, w: np.ndarray, T: float) -> list | None:
+    """The results of ``solve``'s latest call when it was at exactly these path inputs (else None)."""
+    last = getattr(solve, "last", None)
+    if last is None:
+        return None
+    k = case.path
+    inputs = (w, k.R, k.ue, np.abs(k.srr), np.full(w.shape, T))
+    same = all(a.shape == b.shape and np.array_equal(a, b) for a, b in zip(last[0], inputs))
+    return last[1] if same else None
+
+
+def _thermal_film(case: Case, method: str, solve_one: Callable) -> FilmOf:
+    """The film of a thermal level: ``solve_one(w, R, ue, |srr|, T)`` per position, or the solver's own latest
+    solves at these inputs."""
+    def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
+        k = case.path
+        rs = _reused(solve, case, w, T) or [solve_one(float(wi), float(R), float(ue), abs(float(s)), T)
+                                            for wi, R, ue, s in zip(w, k.R, k.ue, k.srr)]
+        return LevelFilm(level=level, method=method, central=np.array([r.hc for r in rs]),
+                         minimum=np.array([r.hmin for r in rs]), pressure_max=np.array([r.pmax for r in rs]),
+                         temperature_rise=np.array([r.dT_max for r in rs]))
+
+    return film
+
+
+# ---------------------------------------------------------------- the levels
+def _uniform(mu0: float) -> Solver:
+    def constant(w, R, ue, srr, T):
+        shape = np.broadcast(w, R, ue, srr, T).shape
+        return np.full(shape, mu0), np.zeros(shape)
+
+    return constant
+
+
+@REGISTRY.register("none", "dry contact: no friction, no flash temperature")
+def _none(case: Case, repeated: bool = False) -> Lubrication:
+    return _product(case, "none", _uniform(0.0), _formula_film(case), friction=False, uniform=0.0)
+
+
+@REGISTRY.register("constant", "a constant friction coefficient (friction.coefficient) and Blok's flash temperature")
+def _constant(case: Case, repeated: bool = False) -> Lubrication:
+    mu0 = case.friction.coefficient
+    return _product(case, "constant", _uniform(mu0), _formula_film(case), uniform=mu0)
+
+
+@REGISTRY.register("formula", "an empirical friction formula (friction.model) with the film formulas of "
+                              "Dowson-Higginson/Hamrock-Dowson")
+def _formula(case: Case, repeated: bool = False) -> Lubrication:
+    from femgear.physics.lubrication.map import hertz_level_solver
+
+    return _product(case, "formula", hertz_level_solver(line_friction(case)), _formula_film(case))
+
+
+@REGISTRY.register("ehl-line", "isothermal line-contact EHL (FE Reynolds, Newton-Krylov) with Eyring traction")
+def _ehl_line(case: Case, repeated: bool = False) -> Lubrication:
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.physics.ehl.path import ehl_line_solver
+    from femgear.physics.lubrication.path import solids_of
+
+    solve = ehl_line_solver(oil_law(case), reduced_modulus_of(case), solids_of(case.material, case.oil),
+                            case.oil.eyring_stress, case.numerics.ehl_level)
+    return _product(case, "ehl-line", solve, _ehl_line_film(case))
+
+
+@REGISTRY.register("tehl", "thermal line-contact EHL (Reynolds + energy) tabulated in a friction map over the path")
+def _tehl(case: Case, repeated: bool = False) -> Lubrication:
+    """``repeated``: the solver will be queried many times (the coupling loop): a friction map of the direct
+    solves, built on first use."""
+    from femgear.physics.tehl.line import solve_tehl_line
+    from femgear.physics.tehl.solver import tehl_line_solver, tehl_map_solver
+
+    setup, grid = tehl_setup(case), case.numerics.ehl_level
+    solve = tehl_map_solver(setup, tehl_axes(case)) if repeated else tehl_line_solver(setup, grid)
+
+    def one(w, R, ue, srr, T):
+        return solve_tehl_line(w, R, ue, srr, T, level=grid, **setup.kwargs())
+
+    return _product(case, "tehl", solve, _thermal_film(case, f"thermal line EHL, grid level {grid}", one))
+
+
+@REGISTRY.register("tehl-point", "thermal point-contact EHL (crowned flank, multigrid) along the path")
+def _tehl_point(case: Case, repeated: bool = False) -> Lubrication:
+    """Direct solves also when ``repeated`` (a friction map of point solves would cost ~170 of them; the path's
+    21+ direct solves are cheaper)."""
+    from femgear.physics.tehl.point_level import POINT_LEVEL
+
+    solve, details = tehl_point_solver(case), []
+    point = tehl_point_solver(case, details=details)
+
+    def one(w, R, ue, srr, T):
+        point(w=w, R=R, ue=ue, srr=srr, T=T)
+        return details[-1]
+
+    method = f"thermal EHL of the crowned elliptic contacts, grid level {POINT_LEVEL}"
+    return _product(case, "tehl-point", solve, _thermal_film(case, method, one))
+
+
+def tehl_point_solver(case: Case, level: int | None = None, details: list | None = None, **options) -> Solver:
+    """The ``tehl-point`` direct solver of the case (:func:`femgear.physics.tehl.point_level.tehl_point_solver`):
+    its crowned contact, TEHL set-up and stationary roughness; ``level`` the point grid (default
+    :data:`~femgear.physics.tehl.point_level.POINT_LEVEL`), ``details`` receives each contact's result."""
+    from femgear.physics.contact.crowning import crowned_contact
+    from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
+
+    rough = case.roughness
+    return point_solver(crowned_contact(case.pair, crowning(case)), tehl_setup(case), case.numerics.ehl_level,
+                        roughness=rough if (rough.peak or rough.synthetic) else None, level=level, details=details,
+                        **options)
+
+
+# ---------------------------------------------------------------- the case's lubrication
+def lubrication_solver(case: Case, level: str | None = None, *, repeated: bool = False) -> Lubrication:
+    """The :class:`Lubrication` of ``level`` (default: the case's ``physics.lubrication``).
+
+    ``repeated``: the solver will be queried many times (the coupling loop): levels with
+    a costly direct solve return a friction map of it instead (``tehl``).
+    """
+    return REGISTRY.build(level or case.levels.lubrication, case, repeated=repeated)
+
+
+def friction_along_path(case: Case, w: np.ndarray, solver: Solver | None = None,
+                        T: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """μ and the contact temperature rise at the case's path positions for loads ``w`` [N/m]."""
+    k = case.path
+    solver = solver or lubrication_solver(case)
+    T = np.full(k.u.shape, case.operating.ambient_temperature) if T is None else T
+    mu, dT = solver(w=np.broadcast_to(w, k.u.shape), R=k.R, ue=k.ue, srr=np.abs(k.srr), T=T)
+    return np.asarray(mu, dtype=float), np.asarray(dT, dtype=float)
+
+
+def static_friction(case: Case) -> float | Callable[[np.ndarray], np.ndarray]:
+    """μ for the dynamics without coupling: the level's one number where it has one (0 for ``none``,
+    ``friction.coefficient`` for ``constant``), else μ(u) of the lubrication level at the static line load
+    of the contact pass (load shared between the tooth pairs in contact,
+    :func:`femgear.levels.contact.contact_pass`; U-shaped, zero at the pitch point), interpolated along the
+    path."""
+    from femgear.levels.contact import contact_pass
+
+    lubrication = lubrication_solver(case)
+    if lubrication.uniform is not None:
+        return lubrication.uniform
+    u = case.path.u
+    mu = friction_along_path(case, contact_pass(case).line_load, lubrication)[0]
+    return lambda x: np.interp(x, u, mu)
+
+
+# ---------------------------------------------------------------- ranges checked up front
+def _tehl_speed(case: Case) -> None:
+    from femgear.physics.tehl.solver import check_tehl_speed
+
+    check_tehl_speed(case.pair, case.operating.pinion_rpm, case.levels.lubrication)
+
+
+def _tehl_map_corner(case: Case) -> None:
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.physics.tehl.solver import check_map_corner
+
+    check_map_corner(tehl_axes(case), oil_law(case), reduced_modulus_of(case))
+
+
+def _point_range(case: Case) -> None:
+    from femgear.physics.contact.crowning import check_point_range
+    from femgear.physics.geometry import kinematics, path_positions
+
+    pair = case.pair
+    check_point_range(pair, crowning(case), kinematics(pair, path_positions(pair, 41), 1.0).R)
+
+
+#: what each level checks of a case before it runs (SceneError naming ``physics.lubrication``)
+RANGE_CHECKS: dict[str, tuple[Callable[[Case], None], ...]] = {
+    "tehl": (_tehl_speed, _tehl_map_corner),
+    "tehl-point": (_tehl_speed, _point_range),
+}
+
+
+def check_range(case: Case) -> None:
+    """Refuse the case's lubrication level up front where the case is outside its validated range."""
+    for check in RANGE_CHECKS.get(case.levels.lubrication, ()):
+        check(case)

@@ -53,7 +53,7 @@ def export_scene(scene, pair, source: str = "femgear") -> tuple[Model, list[str]
     could not be exported (one line each)."""
     from femgear.physics.lubrication.oil import OilLaw
 
-    law = OilLaw.from_scene(scene)
+    law = OilLaw.from_table(scene.oil, scene.oil_reference_temperature)
     b = _Builder()
     skipped: list[str] = []
     unit = b.add("gear_unit", scene.meta.name, {})

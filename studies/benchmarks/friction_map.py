@@ -16,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case import build_case
+from femgear.levels.lubrication import envelope_contact, line_friction
 from femgear.physics.lubrication.map import FrictionMap, envelope_axes, hertz_level_solver
 from femgear.scene import load_scene
 
@@ -23,14 +25,15 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def setup(scene_path: str | Path = ROOT / "studies" / "paper_baseline.toml"):
-    scene = load_scene(scene_path)
-    return scene, hertz_level_solver(scene)
+    case = build_case(load_scene(scene_path))
+    return case, hertz_level_solver(line_friction(case))
 
 
-def run(scene, solver, resolutions=(1, 2, 3)) -> list[dict]:
+def run(case, solver, resolutions=(1, 2, 3)) -> list[dict]:
     rows = []
+    contact = envelope_contact(case)
     for r in resolutions:
-        axes = envelope_axes(scene, r)
+        axes = envelope_axes(contact, case.operating.ambient_temperature, r)
         fmap = FrictionMap.build(solver, axes).validate(solver, samples=400)
         q = {k: np.full(20000, v[len(v) // 2]) for k, v in axes.items()}
         q["srr"] = np.linspace(-axes["srr"][-1], axes["srr"][-1], 20000)

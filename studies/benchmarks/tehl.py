@@ -88,8 +88,10 @@ def _line_rows(levels, repeats, setup, oil):
 
 
 def main() -> dict:
+    from femgear.case import build_case
+    from femgear.levels.lubrication import tehl_axes, tehl_setup
     from femgear.physics.tehl.line import ehl_oil_at
-    from femgear.physics.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes, tehl_setup
+    from femgear.physics.tehl.solver import tehl_line_solver, tehl_map
     from femgear.scene import load_scene
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -102,8 +104,8 @@ def main() -> dict:
     args = ap.parse_args()
     levels = [4] if args.quick else [int(v) for v in args.levels.split(",")]
     repeats = 1 if args.quick else args.repeats
-    scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    setup = tehl_setup(scene)
+    case = build_case(load_scene(ROOT / "studies" / "paper_baseline.toml"))
+    setup = tehl_setup(case).kwargs()
     oil = ehl_oil_at(setup["oil"], T0)
     rows = _line_rows(levels, repeats, setup, oil)
     if args.line_only:
@@ -124,12 +126,12 @@ def main() -> dict:
         print(f"point level {plev} SRR {srr:.2f}: iso {t_iso_p:.2f} s, tehl {t_p:.2f} s, ratio {t_p / t_iso_p:.2f}; "
               f"h_c {r.hc * 1e6:.3f} µm (iso {r.hc_isothermal * 1e6:.3f}; paper 0.82), dT {r.dT_max:.1f} K, "
               f"mu {r.mu:.4f} (paper 0.042)")
-    axes = tehl_map_axes(scene)
+    axes = tehl_axes(case)
     if args.quick:
         axes = {k: v[[0, -1]] if k != "srr" else v[[0, 2, -1]] for k, v in axes.items()}
-    fmap = tehl_map(scene, axes=axes, level=4)
+    fmap = tehl_map(tehl_setup(case), axes=axes, level=4)
     n = int(np.prod([v.size for v in axes.values()]))
-    err = fmap.validate(tehl_line_solver(scene, level=4), samples=args.samples).error
+    err = fmap.validate(tehl_line_solver(tehl_setup(case), level=4), samples=args.samples).error
     q = {k: np.array([float(np.mean(v))]) for k, v in axes.items()}
     t = time.perf_counter()
     for _ in range(1000):

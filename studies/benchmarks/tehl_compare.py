@@ -53,14 +53,15 @@ def main() -> dict:
     sys.path.insert(0, tmp.name)
     from femgear_base.tehl import solve_tehl_line as base_tehl_line
 
+    from femgear.case import build_case
+    from femgear.levels.lubrication import tehl_setup
     from femgear.physics.ehl.dimensional import solve_line_dimensional
     from femgear.physics.tehl import solve_tehl_line
     from femgear.physics.tehl.line import ehl_oil_at
-    from femgear.physics.tehl.solver import tehl_setup
     from femgear.scene import load_scene
 
-    setup = tehl_setup(load_scene(ROOT / "studies" / "paper_baseline.toml"))
-    oil = ehl_oil_at(setup["oil"], T0)
+    setup = tehl_setup(build_case(load_scene(ROOT / "studies" / "paper_baseline.toml")))
+    oil = ehl_oil_at(setup.oil, T0)
     solvers = {"base": base_tehl_line, "new": solve_tehl_line}
     rows = []
     print(f"level {args.level}, base {args.base}, {args.pairs} pairs: TEHL / isothermal (median of pairs)")
@@ -70,10 +71,10 @@ def main() -> dict:
         for rnd in range(args.pairs):
             for name in (list(solvers) if rnd % 2 == 0 else list(solvers)[::-1]):
                 t = time.perf_counter()
-                solve_line_dimensional(W, R, UE, setup["E_red"], oil, level=args.level)
+                solve_line_dimensional(W, R, UE, setup.E_red, oil, level=args.level)
                 t_iso = time.perf_counter() - t
                 t = time.perf_counter()
-                last[name] = solvers[name](W, R, UE, srr, T0, level=args.level, **setup)
+                last[name] = solvers[name](W, R, UE, srr, T0, level=args.level, **setup.kwargs())
                 ratios[name].append((time.perf_counter() - t) / t_iso)
         b, n = last["base"], last["new"]
         row = {"srr": srr, "base_ratio": float(np.median(ratios["base"])), "new_ratio": float(np.median(ratios["new"])),

@@ -4,9 +4,9 @@
 
 The paper baseline (studies/paper_baseline.toml) with a lead crowning C_beta = 10 um on both
 members (chosen before any run; ``--crowning``) and ``physics.lubrication = "tehl-point"``:
-the scene's lubrication solver (:func:`femgear.physics.lubrication.levels.lubrication_solver`) at
+the scene's lubrication solver (:func:`femgear.levels.lubrication.lubrication_solver`) at
 every position of the case's path (``numerics.path_points`` + the pitch point) under the
-line load of the load sharing, as :func:`femgear.physics.lubrication.levels.static_friction` does for
+line load of the load sharing, as :func:`femgear.levels.lubrication.static_friction` does for
 the dynamics. Prints the wall time of the whole path (target <= 60 s, >= 21 positions), the
 grid level, and its accuracy: mu, dT, h_c against grid level +1 at ``--check`` positions
 (ends and pitch point). One JSON line at the end.
@@ -27,9 +27,9 @@ from pathlib import Path
 import numpy as np
 
 from femgear.case import build_case
-from femgear.physics.contact.path import contact_along_path
-from femgear.physics.lubrication.levels import friction_along_path, lubrication_solver
-from femgear.physics.tehl.point_level import POINT_LEVEL, tehl_point_solver
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import friction_along_path, lubrication_solver, tehl_point_solver
+from femgear.physics.tehl.point_level import POINT_LEVEL
 from femgear.scene import scene_from_dict
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -51,7 +51,7 @@ def check_level(case, w, idx, level: int) -> list[dict]:
         for lv in (level, level + 1):
             det: list = []
             t0 = time.perf_counter()
-            tehl_point_solver(case.scene, level=lv, pair=case.pair, details=det)(
+            tehl_point_solver(case, level=lv, details=det)(
                 w=w[i], R=k.R[i], ue=k.ue[i], srr=abs(k.srr[i]), T=T)
             r = det[-1]
             row[lv] = {"mu": r.mu, "dT": r.dT_max, "hc_um": r.hc * 1e6, "hmin_um": r.hmin * 1e6,
@@ -68,7 +68,7 @@ def main() -> None:
     scene = crowned_scene(args.crowning)
     case = build_case(scene)
     k = case.path
-    cp = contact_along_path(scene, pair=case.pair, u=k.u)
+    cp = contact_pass(case)
     w = cp.line_load
     t0 = time.perf_counter()
     solver = lubrication_solver(case)

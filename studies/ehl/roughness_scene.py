@@ -30,13 +30,14 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case import build_case
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import oil_law
 from femgear.physics.contact.hertz import reduced_modulus
-from femgear.physics.contact.path import contact_along_path
 from femgear.physics.ehl.core.surface import scene_features, surface_speed
 from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
 from femgear.physics.ehl.fe.line import X0_DEFAULT
 from femgear.physics.ehl.transient import solve_line_transient
-from femgear.physics.lubrication.oil import OilLaw
 from femgear.scene.load import read_toml, scene_from_dict
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -48,7 +49,7 @@ LEVEL = 6
 
 
 def _oil(scene, T: float) -> EHLOil:
-    law = OilLaw.from_scene(scene)
+    law = oil_law(build_case(scene))
     return EHLOil(eta0=float(law.viscosity(0.0, T)), alpha=law.alpha, viscosity="roelands", compressible=True)
 
 
@@ -95,7 +96,7 @@ def setup(overrides: tuple[str, ...] = ()):
 
 def run(positions: int = 9, overrides: tuple[str, ...] = ()) -> dict:
     scene = setup(overrides)
-    cp = contact_along_path(scene, n=positions)
+    cp = contact_pass(build_case(scene), n=positions)
     E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
     w = cp.line_load if cp.line_load is not None else np.full(cp.kin.u.shape, cp.load_per_length)
     T = scene.operating.ambient_temperature

@@ -42,15 +42,17 @@ def setup(argv: list[str] | None = None) -> argparse.Namespace:
 
 def run(args: argparse.Namespace) -> tuple:
     """TEHL at ``args.n`` positions of the baseline path and the formula level beside it: (path, formula, summary)."""
-    from femgear.physics.contact.path import contact_along_path
-    from femgear.physics.lubrication.path import friction_along_path
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import line_friction, tehl_setup
     from femgear.physics.tehl.path import tehl_along_path
     from femgear.scene import load_scene
 
-    scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    contact = contact_along_path(scene, n=args.n)
-    path = tehl_along_path(scene, contact, level=args.level)
-    formula = friction_along_path(scene, contact)
+    case = build_case(load_scene(ROOT / "studies" / "paper_baseline.toml"))
+    T0 = case.operating.ambient_temperature
+    contact = contact_pass(case, n=args.n)
+    path = tehl_along_path(contact, tehl_setup(case), T0, level=args.level)
+    formula = line_friction(case).along(contact, T0)
     s = path.s
     i_pitch = int(np.argmin(np.abs(s)))
     print(f"{'s [mm]':>8} {'SRR':>7} {'h_c [nm]':>9} {'p_max [GPa]':>11} {'dT [K]':>7} {'dT_s [K]':>8} "

@@ -32,11 +32,12 @@ from pathlib import Path
 
 from scipy.optimize import brentq
 
+from femgear.case import build_case
+from femgear.levels.lubrication import tehl_setup
 from femgear.physics.contact.film import hamrock_dowson_central
 from femgear.physics.ehl.dimensional import solve_point_dimensional
 from femgear.physics.tehl.line import ehl_oil_at
 from femgear.physics.tehl.point import solve_tehl_point
-from femgear.physics.tehl.solver import tehl_setup
 from femgear.scene import load_scene
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -61,9 +62,9 @@ def setup(argv: list[str] | None = None) -> argparse.Namespace:
 def run(args: argparse.Namespace) -> dict:
     """The paper's §4.3 point contact: Hamrock-Dowson, the isothermal FE film and TEHL at each SRR."""
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml")
-    ts = tehl_setup(scene)
-    oil = ehl_oil_at(ts["oil"], T)
-    E = ts["E_red"]
+    ts = tehl_setup(build_case(scene))
+    oil = ehl_oil_at(ts.oil, T)
+    E = ts.E_red
     hd = hd_central(args.R, oil.eta0, oil.alpha, E)
     R_paper = brentq(lambda r: hd_central(r, oil.eta0, oil.alpha, E) - PAPER["hc_um"] * 1e-6, 1e-3, 10.0)
     iso = solve_point_dimensional(F, args.R, None, UE, E, oil, level=args.level + 1)
@@ -76,7 +77,7 @@ def run(args: argparse.Namespace) -> dict:
     rows = []
     print(f"  {'SRR':>5} {'h_c um':>7} {'vs HD':>7} {'vs 0.82':>8} {'h_min':>6} {'mu':>7} {'vs 0.042':>8} {'dT K':>6}")
     for srr in args.srr:
-        r = solve_tehl_point(F, args.R, UE, srr, T, level=args.level, **ts)
+        r = solve_tehl_point(F, args.R, UE, srr, T, level=args.level, **ts.kwargs())
         row = {"srr": srr, "hc_um": r.hc * 1e6, "hmin_um": r.hmin * 1e6, "mu": r.mu, "dT": r.dT_max,
                "hc_vs_hd": r.hc / hd - 1, "hc_vs_paper": r.hc * 1e6 / PAPER["hc_um"] - 1,
                "mu_vs_paper": r.mu / PAPER["mu"] - 1}

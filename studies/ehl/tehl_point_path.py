@@ -31,19 +31,19 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from tehl_point import crowned_scene
 
 from femgear.case import build_case
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import crowning, tehl_point_solver
 from femgear.physics.contact.crowning import crowned_contact
-from femgear.physics.contact.path import contact_along_path
-from femgear.physics.tehl.point_level import tehl_point_solver
 
 
 def along_path(scene, level: int) -> dict:
     case = build_case(scene)
     k = case.path
-    cp = contact_along_path(scene, pair=case.pair, u=k.u)
+    cp = contact_pass(case)
     det: list = []
-    solver = tehl_point_solver(scene, level=level, pair=case.pair, details=det)
+    solver = tehl_point_solver(case, level=level, details=det)
     mu, dT = solver(w=cp.line_load, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=case.operating.ambient_temperature)
-    geo = crowned_contact(scene, case.pair)
+    geo = crowned_contact(case.pair, crowning(case))
     Rx, Ry = geo.radii(k.R)
     pitch = int(np.argmin(np.abs(k.srr)))
     return {"u_mm": (k.u - k.u[pitch]) * 1e3, "mu": mu, "dT": dT, "srr": k.srr, "load_N": geo.load(cp.line_load),

@@ -43,10 +43,10 @@ def setup(rq: float, cycles: float) -> list[str]:
 
 def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
     from femgear.case import build_case
+    from femgear.levels.lubrication import oil_law
     from femgear.physics.contact.hertz import reduced_modulus
     from femgear.physics.geometry import kinematics
     from femgear.physics.lubrication.mixed import Roughness, jgp_split
-    from femgear.physics.lubrication.oil import OilLaw
     from femgear.physics.lubrication.path import solids_of
     from femgear.physics.lubrication.traction import thermal_central_film
     from femgear.scene import load_scene
@@ -57,7 +57,7 @@ def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
     cases = C.run_cases(jobs, coarse=coarse, workers=workers)
     scene = load_scene(C.BASELINE, [f"roughness.rq={rq!r}"])
     case = build_case(scene)
-    oil, solids = OilLaw.from_scene(scene), solids_of(scene)
+    oil, solids = oil_law(case), solids_of(case.material, case.oil)
     E = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
     rough = Roughness(rq, scene.roughness.eta_beta_sigma, scene.roughness.sigma_over_beta)
     rows = []

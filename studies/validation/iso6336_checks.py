@@ -16,8 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
-from femgear.physics.contact.path import contact_along_path
+from femgear.levels.contact import contact_pass
 from femgear.physics.contact.sharing import single_contact_bounds
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.rating import LoadFactors, MaterialLimits, contact_stress, pitting_rating
@@ -48,7 +49,7 @@ def fzg_table(torque: float = 200.0) -> dict:
     scene = load_scene(ROOT / "studies" / "fzg_c14.toml", [f"operating.torque={torque}"])
     pair = pair_from_scene(scene)
     u_B = single_contact_bounds(pair)[0]
-    c = contact_along_path(scene, u=np.array([u_B, pair.u_pitch]))
+    c = contact_pass(build_case(scene, pair), u=np.array([u_B, pair.u_pitch]))
     # hand calculation from the drawing data (as in tests/contact/test_sharing.py)
     m, z1, z2, a_w, b, al = 4.5e-3, 16, 24, 91.5e-3, 14e-3, math.radians(20)
     rb1 = z1 * m / 2 * math.cos(al)

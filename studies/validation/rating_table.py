@@ -17,8 +17,6 @@ import math
 import sys
 from pathlib import Path
 
-from femgear.case.pair import pair_from_scene
-
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -31,13 +29,16 @@ def setup() -> list[Path]:
 
 
 def rate(path: Path, fillet: bool):
-    from femgear.physics.contact.path import contact_along_path, zone_grid
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.physics.contact.path import zone_grid
     from femgear.rate import rate_case
     from femgear.scene import load_scene
 
     scene = load_scene(path, ["rating.fillet_fe=true"] if fillet else [])
-    pair = pair_from_scene(scene)
-    contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
+    case = build_case(scene)
+    pair = case.pair
+    contact = contact_pass(case, u=zone_grid(pair, scene.numerics.path_points))
     return scene, pair, rate_case(scene, pair, contact)
 
 

@@ -80,20 +80,28 @@ def thermal(scene, quick: bool, repeats: int) -> list[dict]:
 
 
 def lubrication(scene, quick: bool, repeats: int) -> list[dict]:
-    from femgear.physics.contact.path import contact_along_path
+    from femgear.case import build_case
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.levels.lubrication import envelope_contact, line_friction, oil_law, tehl_setup
     from femgear.physics.ehl.path import ehl_line_solver
     from femgear.physics.lubrication.map import hertz_level_solver
+    from femgear.physics.lubrication.path import solids_of
 
-    c = contact_along_path(scene, n=11)
+    case = build_case(scene)
+    c = envelope_contact(case, n=11)      # only its kinematics and mean load per length are used
     k = c.kin
     args = dict(w=np.full(k.u.shape, c.load_per_length), R=k.R, ue=k.ue, srr=np.abs(k.srr),
                 T=np.full(k.u.shape, scene.operating.ambient_temperature))
     levels = [3, 4, 6] if quick else [3, 4, 5, 6, 8]
     from femgear.physics.tehl.solver import tehl_line_solver
 
-    cases = [("formula", lambda: hertz_level_solver(scene)(**args)[0]),
-             ("tehl (thermal, not a resolution of ehl-line)", lambda: tehl_line_solver(scene)(**args)[0])]
-    cases += [(f"ehl-line level {lv}", lambda lv=lv: ehl_line_solver(scene, lv)(**args)[0]) for lv in levels]
+    E_red, solids = reduced_modulus_of(case), solids_of(case.material, case.oil)
+    cases = [("formula", lambda: hertz_level_solver(line_friction(case))(**args)[0]),
+             ("tehl (thermal, not a resolution of ehl-line)",
+              lambda: tehl_line_solver(tehl_setup(case), case.numerics.ehl_level)(**args)[0])]
+    cases += [(f"ehl-line level {lv}",
+               lambda lv=lv: ehl_line_solver(oil_law(case), E_red, solids, case.oil.eyring_stress, lv)(**args)[0])
+              for lv in levels]
     return _rows("lubrication μ(u)", cases, lambda a, r: np.max(np.abs(a - r)) / np.max(r), repeats)
 
 

@@ -59,6 +59,13 @@ def _load(path: Path, overrides=()):
     return load_scene(path, list(overrides))
 
 
+def _bind(path: Path, overrides=()):
+    """The bound case: the checks that need the pair (the lubrication level's range) run here."""
+    from femgear.case import build_case
+
+    return build_case(_load(path, overrides))
+
+
 def cells(path: Path) -> dict[str, list[str]]:
     """Column name -> overrides of the scene at ``path``."""
     from femgear.scene.levels import AVAILABLE, LEVELS
@@ -93,7 +100,7 @@ def full_fidelity(path: Path) -> list[str]:
         else ["modifications.crowning=10e-6"]
     for level, extra in (("tehl-point", crown), ("tehl", []), ("ehl-line", [])):
         try:
-            _load(path, base + extra + [f'physics.lubrication="{level}"'])
+            _bind(path, base + extra + [f'physics.lubrication="{level}"'])
             return base + extra + [f'physics.lubrication="{level}"']
         except SceneError:
             continue
@@ -143,14 +150,14 @@ def hand_figures(path: Path) -> dict:
     single-contact zone (s_B, s_D) of a spur pair (None for helical), the formula film at the pitch point
     and the formula-level contact temperature."""
     from femgear.case import build_case
-    from femgear.physics.contact.path import contact_along_path
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import friction_along_path
     from femgear.physics.contact.sharing import single_contact_bounds
-    from femgear.physics.lubrication.levels import friction_along_path
 
     scene = _load(path, ['physics.lubrication="formula"'])
     case = build_case(scene)
     pair = case.pair
-    contact = contact_along_path(scene, pair=pair, u=case.path.u)
+    contact = contact_pass(case)
     _, dT = friction_along_path(case, contact.line_load)
     u_B, u_D = single_contact_bounds(pair)
     return {"force": case.operating.normal_force / pair.n_helices,
@@ -191,7 +198,7 @@ def dry_run(name: str, path: Path, column: str, overrides: list[str]) -> dict:
     from femgear.errors import SceneError
 
     try:
-        _load(path, overrides)
+        _bind(path, overrides)
         return {"scene": name, "cell": column, "verdict": "valid", "seconds": 0.0}
     except SceneError as exc:
         return {"scene": name, "cell": column, "verdict": f"refused: {exc}", "seconds": 0.0}

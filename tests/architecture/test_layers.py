@@ -73,18 +73,6 @@ ORDER: dict[str, list[list[str]]] = {
 # Upward edges other helpers of issue 27 are removing, as (importer, imported) module pairs.
 # The lead empties this set as their branches merge; nothing may be added to it.
 PENDING = {
-    # h27lub: the lubrication registry and the line films move to femgear/levels/lubrication.py
-    ("femgear.physics.lubrication.films", "femgear.case"),
-    ("femgear.physics.lubrication.levels", "femgear.case"),
-    ("femgear.physics.lubrication.films", "femgear.physics.ehl.dimensional"),
-    ("femgear.physics.lubrication.levels", "femgear.physics.ehl.path"),
-    ("femgear.physics.lubrication.films", "femgear.physics.tehl.line"),
-    ("femgear.physics.lubrication.films", "femgear.physics.tehl.point_level"),
-    ("femgear.physics.lubrication.films", "femgear.physics.tehl.solver"),
-    ("femgear.physics.lubrication.levels", "femgear.physics.tehl.point_level"),
-    ("femgear.physics.lubrication.levels", "femgear.physics.tehl.solver"),
-    ("femgear.physics.contact.crowning", "femgear.case.pair"),      # h27body's transitional binding
-    ("femgear.physics.contact.path", "femgear.case.pair"),
     # h27edge: the rating is computed in the driver (rate/pipeline), summary only formats
     ("femgear.rate", "femgear.summary"),
     # h27edge: figures are written by edge/io's one writer, not by plot

@@ -7,8 +7,9 @@ import numpy as np
 import pytest
 from scipy.integrate import trapezoid
 
+from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
-from femgear.physics.contact.path import contact_along_path
+from femgear.levels.contact import contact_pass
 from femgear.physics.contact.sharing import load_sharing, single_contact_bounds
 from femgear.physics.geometry.gear import GearPair
 from femgear.scene import load_scene
@@ -47,7 +48,7 @@ def test_fzg_c14_single_pair_hertz_against_hand(fzg_c14):
     hand = _hand_fzg_c14(200.0)
     pair = pair_from_scene(fzg_c14)
     u_B, _ = single_contact_bounds(pair)
-    c = contact_along_path(fzg_c14, u=np.array([u_B, pair.u_pitch]))
+    c = contact_pass(build_case(fzg_c14), u=np.array([u_B, pair.u_pitch]))
     for i, name in enumerate(("B", "C")):
         rho1, p_hand, b_hand = hand[name]
         assert c.kin.u[i] == pytest.approx(rho1, rel=1e-3)
@@ -60,7 +61,7 @@ def test_fzg_c14_single_pair_hertz_against_hand(fzg_c14):
 
 
 def test_fzg_c14_default_grid_pitch_point(fzg_c14):
-    c = contact_along_path(fzg_c14)
+    c = contact_pass(build_case(fzg_c14))
     assert c.hertz_pressure[c.pitch_index] == pytest.approx(_hand_fzg_c14(200.0)["C"][1], rel=0.01)
     assert c.n_helices == 1
 

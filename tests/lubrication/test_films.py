@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.physics.contact.path import contact_along_path
-from femgear.physics.lubrication.films import level_film
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import lubrication_solver
 from femgear.scene import load_scene
 
 
@@ -18,8 +18,8 @@ def _case(path, *overrides):
 
 def test_the_formula_film_is_the_contact_pass_film(baseline_path):
     case = _case(baseline_path)
-    contact = contact_along_path(case.scene, pair=case.pair, u=case.path.u)
-    film = level_film(case, contact.line_load)
+    contact = contact_pass(case)
+    film = lubrication_solver(case).film(contact.line_load)
     assert film.level == "formula" and "Moes" in film.method
     assert np.allclose(film.central, contact.film_central, rtol=1e-12)
     assert np.allclose(film.minimum, contact.film_minimum, rtol=1e-12)
@@ -31,13 +31,13 @@ def test_the_fe_line_film_is_close_to_moes_and_the_thermal_film_is_thinner(basel
     on the baseline; the Barus solver itself is held to Moes in tests/ehl); the thermal line EHL below the isothermal FE
     film (inlet shear heating thins the film: Murch & Wilson's reduction) but within a factor 2."""
     iso = _case(baseline_path, 'physics.lubrication="ehl-line"')
-    contact = contact_along_path(iso.scene, pair=iso.pair, u=iso.path.u)
+    contact = contact_pass(iso)
     w = contact.line_load
-    fe = level_film(iso, w)
+    fe = lubrication_solver(iso).film(w)
     assert fe.level == "ehl-line" and np.all(fe.minimum < fe.central)
     ratio = fe.central / contact.film_central
     assert np.all((ratio > 0.75) & (ratio < 1.0))
-    hot = level_film(_case(baseline_path, 'physics.lubrication="tehl"'), w)
+    hot = lubrication_solver(_case(baseline_path, 'physics.lubrication="tehl"')).film(w)
     assert hot.level == "tehl" and hot.temperature_rise is not None and np.all(hot.temperature_rise > 0)
     assert np.all(hot.central < fe.central) and np.all(hot.central > 0.5 * fe.central)
 
@@ -63,12 +63,11 @@ def test_the_point_film_reuses_the_runs_last_solves(baseline_path, monkeypatch):
     """tehl-point: the film of the run's last pass comes from that pass's solves (no second set of point
     solves); at other inputs it is solved afresh."""
     import femgear.physics.tehl.point_level as pl
-    from femgear.physics.lubrication.levels import lubrication_solver
 
     case = _case(baseline_path, 'physics.lubrication="tehl-point"', "modifications.crowning=10e-6",
                  "numerics.path_points=3")
     k, T = case.path, case.operating.ambient_temperature
-    w = contact_along_path(case.scene, pair=case.pair, u=k.u).line_load
+    w = contact_pass(case).line_load
     solver = lubrication_solver(case, repeated=True)
     mu, dT = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(w.shape, T))
 
@@ -76,7 +75,7 @@ def test_the_point_film_reuses_the_runs_last_solves(baseline_path, monkeypatch):
         raise AssertionError("solved again")
 
     monkeypatch.setattr(pl, "solve_tehl_point", no_solve)
-    film = level_film(case, w, solver=solver)
+    film = solver.film(w)
     assert film.level == "tehl-point" and np.allclose(film.temperature_rise, dT, rtol=0, atol=0)
     with pytest.raises(AssertionError, match="solved again"):
-        level_film(case, 1.1 * w, solver=solver)
+        solver.film(1.1 * w)

@@ -6,7 +6,9 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from femgear.physics.contact.path import contact_along_path
+from femgear.case import build_case
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import line_friction
 from femgear.physics.lubrication import (
     OilLaw,
     Solids,
@@ -16,7 +18,6 @@ from femgear.physics.lubrication import (
     gupta_thermal_factor,
     hertz_traction,
 )
-from femgear.physics.lubrication.path import friction_along_path
 
 OIL = OilLaw(eta0=0.08, alpha=22e-9, beta_t=0.042, T0=313.0)
 STEEL = Solids(B1=math.sqrt(46 * 7850 * 470), B2=math.sqrt(46 * 7850 * 470), k_oil=0.14)
@@ -87,8 +88,9 @@ def test_gupta_factor_limits():
 
 
 def test_friction_along_the_baseline_path_is_u_shaped_with_its_minimum_at_the_pitch(baseline_scene):
-    c = contact_along_path(baseline_scene)
-    r = friction_along_path(baseline_scene, c)
+    case = build_case(baseline_scene)
+    c = contact_pass(case)
+    r = line_friction(case).along(c, case.operating.ambient_temperature)
     assert np.argmin(r.mu) == c.pitch_index
     assert r.mu[c.pitch_index] < 0.2 * r.mu.max()
     assert 0.01 < r.mu.max() < 0.1

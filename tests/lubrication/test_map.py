@@ -3,6 +3,8 @@
 import numpy as np
 import pytest
 
+from femgear.case import build_case
+from femgear.levels.lubrication import envelope_contact, line_friction
 from femgear.physics.lubrication.map import FrictionMap, envelope_axes, hertz_level_solver
 
 AXES = dict(w=np.geomspace(1e4, 1e5, 3), R=np.geomspace(0.01, 0.02, 2), ue=np.geomspace(0.5, 2.0, 3),
@@ -40,7 +42,9 @@ def test_bad_axes_are_refused():
 
 
 def test_baseline_formula_map_error_is_small(baseline_scene):
-    solver = hertz_level_solver(baseline_scene)
-    fmap = FrictionMap.build(solver, envelope_axes(baseline_scene, 1)).validate(solver, samples=150)
+    case = build_case(baseline_scene)
+    solver = hertz_level_solver(line_friction(case))
+    axes = envelope_axes(envelope_contact(case), case.operating.ambient_temperature, 1)
+    fmap = FrictionMap.build(solver, axes).validate(solver, samples=150)
     assert fmap.error.mu_max_abs < 3e-3        # μ itself is 0.01–0.05 here
     assert fmap.error.dT_max_abs < 1.0

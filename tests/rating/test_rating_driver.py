@@ -9,8 +9,9 @@ from pathlib import Path
 
 import pytest
 
+from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
-from femgear.physics.contact.path import contact_along_path
+from femgear.levels.contact import contact_pass
 from femgear.physics.rating.suite import PairRating
 from femgear.rate import rate_case
 from femgear.scene import load_scene
@@ -24,7 +25,7 @@ ALL_KEYS = ["rating.bending_stress_limit=5.0e8", "rating.root_roughness_rz=[1e-5
 def _rate(overrides=()):
     scene = load_scene(FZG, list(overrides))
     pair = pair_from_scene(scene)
-    return rate_case(scene, pair, contact_along_path(scene, pair=pair))
+    return rate_case(scene, pair, contact_pass(build_case(scene, pair)))
 
 
 def test_defaults_are_said_in_one_line(caplog):
@@ -62,7 +63,7 @@ def test_out_of_range_warns_with_key_and_limit(caplog):
 def test_marine_pair_flags_the_helix_angle():
     scene = load_scene(ROOT / "studies" / "zoo" / "marine.toml")
     pair = pair_from_scene(scene)
-    r = rate_case(scene, pair, contact_along_path(scene, pair=pair))
+    r = rate_case(scene, pair, contact_pass(build_case(scene, pair)))
     assert math.degrees(pair.beta) > 25
     assert r.flagged("S_lambda") and any("helix_angle_deg" in f and "25°" in f for f in r.flags)
     assert all(math.isfinite(v) and v > 0 for v in r.safety_factors.values())

@@ -7,8 +7,9 @@ from pathlib import Path
 
 import pytest
 
+from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
-from femgear.physics.contact.path import contact_along_path
+from femgear.levels.contact import contact_pass
 from femgear.scene import load_scene
 from femgear.summary import scene_power_loss, scene_rating
 
@@ -29,7 +30,7 @@ def test_power_loss_constant_mu_is_ohlendorf_on_any_grid():
     """Constant μ: the summary's loss is μ P_in H_V whatever grid the contact pass used (the B, D jumps are added)."""
     scene = load_scene(FZG, ["physics.lubrication=constant", "friction.coefficient=0.05"])
     pair = pair_from_scene(scene)
-    loss, level = scene_power_loss(scene, pair, contact_along_path(scene, pair=pair))
+    loss, level = scene_power_loss(scene, pair, contact_pass(build_case(scene, pair)))
     assert level == "constant"
     assert loss.equivalent_mu == pytest.approx(0.05, rel=1e-6)
     assert loss.efficiency == pytest.approx(1 - 0.05 * loss.ohlendorf_HV, rel=1e-9)

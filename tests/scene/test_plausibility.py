@@ -56,10 +56,10 @@ def test_implausible_inputs_are_accepted_with_a_warning_naming_the_key(baseline_
 
 def _bind_and_contact(path, overrides=()):
     """What a run does before its sub-models: load, bind, the contact pass and its plausibility warning."""
-    from femgear.physics.contact.path import contact_along_path
+    from femgear.levels.contact import contact_pass
 
     case = build_case(load_scene(path, overrides))
-    contact = contact_along_path(case.scene, pair=case.pair)
+    contact = contact_pass(case)
     return case, contact_warnings(case, float(contact.hertz_pressure.max()))
 
 

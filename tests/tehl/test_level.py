@@ -6,9 +6,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.physics.contact.path import contact_along_path
+from femgear.case import build_case
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import tehl_axes, tehl_setup
 from femgear.physics.tehl.path import tehl_along_path, write_thermal_vtk
-from femgear.physics.tehl.solver import tehl_line_solver, tehl_map, tehl_map_axes
+from femgear.physics.tehl.solver import tehl_line_solver, tehl_map
 from femgear.scene import load_scene
 from femgear.scene.levels import check_level
 
@@ -20,20 +22,25 @@ def scene():
     return load_scene(BASELINE, ["physics.lubrication=tehl", "numerics.ehl_level=3"])
 
 
-def test_level_is_available_and_selected(scene):
-    from femgear.case import build_case
-    from femgear.physics.lubrication.levels import lubrication_solver
+@pytest.fixture(scope="module")
+def case(scene):
+    return build_case(scene)
+
+
+def test_level_is_available_and_selected(case):
+    from femgear.levels.lubrication import lubrication_solver
 
     assert check_level("lubrication", "tehl") is None
-    solve = lubrication_solver(build_case(scene), repeated=True)
-    assert hasattr(solve, "cache") and "map" not in solve.cache   # a lazily built TEHL map
+    lub = lubrication_solver(case, repeated=True)
+    assert lub.level == "tehl" and lub.friction and lub.heats
+    assert hasattr(lub.solve, "cache") and "map" not in lub.solve.cache   # a lazily built TEHL map
 
 
-def test_map_of_tehl_solves_and_its_measured_error(scene):
-    axes = tehl_map_axes(scene)
+def test_map_of_tehl_solves_and_its_measured_error(case):
+    axes = tehl_axes(case)
     axes = {k: v[[0, -1]] for k, v in axes.items()}
-    solver = tehl_line_solver(scene, level=3)
-    fmap = tehl_map(scene, axes=axes, level=3, validate=2)
+    solver = tehl_line_solver(tehl_setup(case), level=3)
+    fmap = tehl_map(tehl_setup(case), axes=axes, level=3, validate=2)
     assert fmap.mu.shape == (2, 2, 2, 2, 2) and np.all(np.isfinite(fmap.mu))
     assert fmap.error.samples == 2 and fmap.error.mu_max_abs < 0.02
     mu, dT = fmap(**{k: v[:1] for k, v in axes.items()})
@@ -41,9 +48,9 @@ def test_map_of_tehl_solves_and_its_measured_error(scene):
     assert mu == pytest.approx(mu_ref, abs=1e-12) and dT == pytest.approx(dT_ref, abs=1e-9)
 
 
-def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, tmp_path):
-    contact = contact_along_path(scene, n=5)
-    path = tehl_along_path(scene, contact, level=3)
+def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, case, tmp_path):
+    contact = contact_pass(case, n=5)
+    path = tehl_along_path(contact, tehl_setup(case), case.operating.ambient_temperature, level=3)
     i_pitch = int(np.argmin(np.abs(path.s)))
     assert int(np.argmin(path.mu)) == i_pitch
     assert np.all(np.diff(path.mu[: i_pitch + 1]) < 0) and np.all(np.diff(path.mu[i_pitch:]) > 0)
@@ -56,11 +63,10 @@ def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, tmp_path):
 
 def test_static_pass_reports_tehl_figures(scene):
     """The lubrication registry's ``tehl`` level (direct solves) equals the TEHL path solver."""
-    from femgear.case import build_case
-    from femgear.physics.lubrication.levels import friction_along_path
+    from femgear.levels.lubrication import friction_along_path
 
     case = build_case(scene.model_copy(update={"numerics": scene.numerics.model_copy(update={"path_points": 3})}))
-    contact = contact_along_path(scene, n=3)
+    contact = contact_pass(case, n=3)
     mu, dT = friction_along_path(case, np.full(case.path.u.size, contact.load_per_length))
-    direct = tehl_along_path(scene, contact, level=3)
+    direct = tehl_along_path(contact, tehl_setup(case), case.operating.ambient_temperature, level=3)
     assert mu == pytest.approx(direct.mu) and dT == pytest.approx(direct.dT_max)

@@ -10,9 +10,9 @@ import pytest
 
 from femgear.case import build_case
 from femgear.errors import SceneError
+from femgear.levels.contact import contact_pass
+from femgear.levels.lubrication import crowning, lubrication_solver, tehl_point_solver, tehl_setup
 from femgear.physics.contact.crowning import CrownedContact, crowned_contact
-from femgear.physics.contact.path import contact_along_path
-from femgear.physics.lubrication.levels import lubrication_solver
 from femgear.physics.tehl.point import solve_tehl_point
 from femgear.scene import scene_from_dict
 
@@ -21,19 +21,20 @@ from ._case import E_RED, OIL, PROPS, TAU0
 BASE = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
 
 
-def _scene(crowning=None, lubrication="tehl-point"):
+def _scene(crown=None, lubrication="tehl-point"):
     d = tomllib.loads(BASE.read_text())
-    if crowning is not None:
-        d["modifications"] = {"crowning": crowning}
+    if crown is not None:
+        d["modifications"] = {"crowning": crown}
     d["physics"]["lubrication"] = lubrication
-    return scene_from_dict(d)
+    return build_case(scene_from_dict(d))
 
 
 def test_uncrowned_flank_refused_naming_the_key():
     with pytest.raises(SceneError, match=r"modifications\.crowning"):     # when the case is bound
         build_case(_scene(None))
     with pytest.raises(SceneError, match=r"modifications\.crowning"):
-        crowned_contact(_scene(None, lubrication="formula"))
+        case = _scene(None, lubrication="formula")
+        crowned_contact(case.pair, crowning(case))
 
 
 def test_crowning_radii_spur_and_helical():
@@ -55,17 +56,16 @@ def test_crowning_radii_spur_and_helical():
 def test_baseline_crowned_contact_and_level():
     """10 um on both members of the paper's pair: slender ellipses (lambda ~ 0.005), the load
     of one tooth pair; the registered level solves one position (grid level 1)."""
-    scene = _scene(10e-6)
-    case = build_case(scene)
-    geo = crowned_contact(scene, case.pair)
+    case = _scene(10e-6)
+    geo = crowned_contact(case.pair, crowning(case))
     assert geo.kappa == pytest.approx(8 * 20e-6 / case.pair.b**2)
     Rx, Ry = geo.radii(case.path.R)
     assert np.all((Rx / Ry > 0.003) & (Rx / Ry < 0.006))
-    cp = contact_along_path(scene, pair=case.pair, u=case.path.u)
+    cp = contact_pass(case)
     i = int(np.argmax(np.abs(case.path.srr)))
     solver = lubrication_solver(case)
     mu, dT = solver(w=cp.line_load[i], R=case.path.R[i], ue=case.path.ue[i], srr=abs(case.path.srr[i]),
-                    T=scene.operating.ambient_temperature)
+                    T=case.operating.ambient_temperature)
     assert 0.005 < float(mu[0]) < 0.1 and 1.0 < float(dT[0]) < 100.0
 
 
@@ -85,9 +85,8 @@ def test_a_contact_the_point_solver_cannot_hold_is_solved_as_a_line_contact(monk
     import femgear.physics.tehl.point_level as pl
     from femgear.errors import ConvergenceError
     from femgear.physics.tehl.line import solve_tehl_line
-    from femgear.physics.tehl.solver import tehl_setup
 
-    scene = _scene(10e-6)
+    case = _scene(10e-6)
 
     def fail(*args, **kw):
         raise ConvergenceError("ehl point", "load continuation failed")
@@ -95,9 +94,9 @@ def test_a_contact_the_point_solver_cannot_hold_is_solved_as_a_line_contact(monk
     monkeypatch.setattr(pl, "solve_tehl_point", fail)
     w, R, ue, srr, T = 9.0e4, 0.0123, 1.0, 0.3, 313.0
     with caplog.at_level("WARNING", logger="femgear.physics.tehl"):
-        mu, dT = pl.tehl_point_solver(scene)(w=w, R=R, ue=ue, srr=srr, T=T)
-    Rx, _ = crowned_contact(scene).radii(R)
-    line = solve_tehl_line(w, float(Rx), ue, srr, T, level=scene.numerics.ehl_level, **tehl_setup(scene))
+        mu, dT = tehl_point_solver(case)(w=w, R=R, ue=ue, srr=srr, T=T)
+    Rx, _ = crowned_contact(case.pair, crowning(case)).radii(R)
+    line = solve_tehl_line(w, float(Rx), ue, srr, T, level=case.numerics.ehl_level, **tehl_setup(case).kwargs())
     assert mu[0] == pytest.approx(line.mu, rel=1e-12) and dT[0] == pytest.approx(line.dT_max, rel=1e-12)
     assert "solved as a line contact" in caplog.text
 
@@ -110,7 +109,8 @@ def test_the_tehl_levels_are_refused_above_their_speed_range():
     zoo = BASE.parents[0] / "zoo"
     for level in ("tehl", "tehl-point"):
         with pytest.raises(SceneError, match=r'above 100 m/s.*"ehl-line"') as info:
-            build_case(load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"', "modifications.crowning=20e-6"]))
+            build_case(load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"',
+                                                       "modifications.crowning=20e-6"]))
         assert info.value.key == "physics.lubrication"
     assert build_case(load_scene(zoo / "marine.toml", ['physics.lubrication="tehl"'])).levels.lubrication == "tehl"
 
@@ -118,11 +118,14 @@ def test_the_tehl_levels_are_refused_above_their_speed_range():
 def test_tehl_is_refused_where_its_map_leaves_the_line_solvers_range():
     """The wind stage's map corner reaches Moes M = 346 at L = 4.3, where the line solve does not start: refused
     before computing, pointing to the direct ehl-line; the FZG C pair's corner (127) is accepted."""
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.levels.lubrication import oil_law, tehl_axes
     from femgear.physics.tehl.solver import map_corner_moes
     from femgear.scene import load_scene
 
     zoo = BASE.parents[0] / "zoo"
     with pytest.raises(SceneError, match=r"Moes M = 346.*\"ehl-line\""):
         build_case(load_scene(zoo / "wind.toml", ['physics.lubrication="tehl"']))
-    assert map_corner_moes(load_scene(zoo / "fzg_c14.toml"))[0] == pytest.approx(126.8, rel=1e-3)
+    fzg = build_case(load_scene(zoo / "fzg_c14.toml"))
+    assert map_corner_moes(tehl_axes(fzg), oil_law(fzg), reduced_modulus_of(fzg))[0] == pytest.approx(126.8, rel=1e-3)
     build_case(load_scene(zoo / "fzg_c14.toml", ['physics.lubrication="tehl"']))

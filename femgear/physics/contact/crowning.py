@@ -63,15 +63,10 @@ class CrownedContact:
         return np.asarray(w, dtype=float) * self.contact_length
 
 
-def crowned_contact(scene, pair=None) -> CrownedContact:
-    """:class:`CrownedContact` of a scene; an uncrowned pair raises SceneError naming
-    ``modifications.crowning``."""
-    if pair is None:
-        from femgear.case.pair import pair_from_scene  # transitional (h27lub removes this scene adapter)
-
-        pair = pair_from_scene(scene)
-    mods = scene.modifications
-    c1, c2 = mods.member(1).crowning, mods.member(2).crowning
+def crowned_contact(pair, crowning: tuple[float, float]) -> CrownedContact:
+    """:class:`CrownedContact` of ``pair`` with the lead crownings C_β of pinion and gear [m]
+    (``modifications.crowning``, per member); an uncrowned pair raises SceneError naming that key."""
+    c1, c2 = crowning
     if c1 + c2 <= 0.0:
         raise SceneError("modifications.crowning", "physics.lubrication = \"tehl-point\" needs a lead crowning > 0 "
                          "(an uncrowned involute flank has no curvature along the contact line: a line contact, "
@@ -89,20 +84,20 @@ def crowned_contact(scene, pair=None) -> CrownedContact:
 MIN_POINT_RATIO = 4.0e-3
 
 
-def check_point_range(scene, pair, R: np.ndarray) -> None:
+def check_point_range(pair, crowning: tuple[float, float], R: np.ndarray) -> None:
     """Refuse ``physics.lubrication = "tehl-point"`` up front where the crowned contact is too slender for the
-    point solver (R_x/R_y < :data:`MIN_POINT_RATIO` somewhere on the path, radii ``R``): one line naming the key,
-    the ratio, the limit, and the level or the crowning that would run."""
-    geo = crowned_contact(scene, pair)
+    point solver (R_x/R_y < :data:`MIN_POINT_RATIO` somewhere on the path, radii ``R``; ``crowning`` as
+    :func:`crowned_contact`): one line naming the key, the ratio, the limit, and the level or the crowning that
+    would run."""
+    geo = crowned_contact(pair, crowning)
     Rx, Ry = geo.radii(R)
     ratio = float(np.min(Rx / Ry))
     if ratio >= MIN_POINT_RATIO:
         return
-    mods = scene.modifications
-    crowning = mods.member(1).crowning + mods.member(2).crowning
-    needed = crowning * MIN_POINT_RATIO / ratio
+    total = crowning[0] + crowning[1]
+    needed = total * MIN_POINT_RATIO / ratio
     raise SceneError("physics.lubrication",
                      f'"tehl-point": the crowned contact\'s R_x/R_y = {ratio:.2g} is below {MIN_POINT_RATIO:g}, the '
                      f"most slender ellipse the point solver is validated for (b = {pair.b * 1e3:.0f} mm, crowning "
-                     f"{crowning * 1e6:.3g} µm summed); it is a line contact: use \"tehl\" (or a summed crowning "
+                     f"{total * 1e6:.3g} µm summed); it is a line contact: use \"tehl\" (or a summed crowning "
                      f"≥ {needed * 1e6:.0f} µm)")

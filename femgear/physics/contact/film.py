@@ -12,6 +12,7 @@ Every function returns a film thickness made dimensionless as its source does; t
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -123,21 +124,29 @@ def moes_line_central(M, L):
 
 
 # ----------------------------------------------------------------- dimensional wrappers
-def line_film(w, R, ue, E_red: float, eta0: float, alpha: float) -> dict[str, np.ndarray]:
-    """Line-contact films [m] at load w' [N/m], radius R [m], entrainment speed u_e [m/s].
+@dataclass(frozen=True)
+class LineFilm:
+    """Isothermal films of line contacts by the published formulas (arrays over the contacts)."""
 
-    Returns ``central_dt`` (Dowson–Toyoda), ``minimum_dh`` (Dowson–Higginson),
-    ``central_moes`` (Moes 1992) and the Moes groups ``M``, ``L``.
-    """
+    central_dt: np.ndarray
+    """central film h_c, Dowson–Toyoda (1979) [m]"""
+    minimum_dh: np.ndarray
+    """minimum film h_min, Dowson–Higginson [m]"""
+    central_moes: np.ndarray
+    """central film h_c, Moes (1992) line fit [m]"""
+    M: np.ndarray
+    """Moes load parameter M = W'(2U)^(−1/2) [-]"""
+    L: np.ndarray
+    """Moes lubricant parameter L = G(2U)^(1/4) [-]"""
+
+
+def line_film(w, R, ue, E_red: float, eta0: float, alpha: float) -> LineFilm:
+    """Line-contact films [m] at load w' [N/m], radius R [m], entrainment speed u_e [m/s],
+    with the Moes groups M, L (:class:`LineFilm`)."""
     w, R, ue = (np.asarray(v, dtype=float) for v in (w, R, ue))
     U = eta0 * ue / (E_red * R)
     G = alpha * E_red
     Wl = w / (E_red * R)
     M, L = moes_line(Wl, U, G)
-    return {
-        "central_dt": dowson_toyoda_central(U, G, Wl) * R,
-        "minimum_dh": dowson_higginson_minimum(U, G, Wl) * R,
-        "central_moes": moes_to_h(moes_line_central(M, L), U, R),
-        "M": M,
-        "L": L,
-    }
+    return LineFilm(central_dt=dowson_toyoda_central(U, G, Wl) * R, minimum_dh=dowson_higginson_minimum(U, G, Wl) * R,
+                    central_moes=moes_to_h(moes_line_central(M, L), U, R), M=M, L=L)

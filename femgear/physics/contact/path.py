@@ -1,11 +1,11 @@
-"""The quasi-static contact pass along the path of contact of a scene's gear pair.
+"""The quasi-static contact pass along the path of contact of a gear pair.
 
 The normal force F_bn = T1/(r_b1 cos β_b) is shared by the helices (two for a
 double-helical pair).  Along the path, the load per unit contact-line length
 ``line_load`` w(u) comes from the load sharing between the tooth pairs in contact
-(:mod:`femgear.physics.contact.sharing`, with the pair stiffness k'(u) of the scene's
-mesh-stiffness level): the single-pair load F_n/b in the single-contact zone of a spur
-pair, contact-line sharing for helical pairs.  Each position is then a Hertz line
+(:mod:`femgear.physics.contact.sharing`, with the pair stiffness k'(u) of the run's
+mesh-stiffness level, :func:`femgear.levels.contact.contact_pass`): the single-pair load
+F_n/b in the single-contact zone of a spur pair, contact-line sharing for helical pairs.  Each position is then a Hertz line
 contact of radius R (normal section) under w(u) with the film formulas of
 :mod:`femgear.physics.contact.film`.  ``load_per_length`` keeps the time mean over the path,
 w̄' = F_n / L̄ with L̄ = ε_α b / cos β_b (ISO 6336's uniform load), for the callers that
@@ -20,9 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.physics.contact.film import line_film
-from femgear.physics.contact.hertz import hertz_line, reduced_modulus
+from femgear.physics.contact.hertz import hertz_line
 from femgear.physics.contact.sharing import LoadSharing, StiffnessPerWidth, load_sharing, single_contact_bounds
-from femgear.physics.geometry import GearPair, PathKinematics, kinematics, path_positions
+from femgear.physics.geometry import GearPair, PathKinematics, path_positions
 
 
 @dataclass(frozen=True)
@@ -51,22 +51,6 @@ class ContactPath:
         return int(np.argmin(np.abs(self.kin.u - u)))
 
 
-def pinion_speed(scene) -> float:
-    """Pinion speed [rev/min] from the driving member's speed."""
-    return scene.pinion_rpm
-
-
-def pinion_torque(scene) -> float:
-    """Torque on the pinion [N m] (losses neglected)."""
-    op = scene.operating
-    return op.torque if op.driver == "pinion" else op.torque * scene.pinion.teeth / scene.gear.teeth
-
-
-def normal_force(scene, pair: GearPair) -> float:
-    """Normal mesh force of the pair, all helices: F_bn = T1 / (r_b1 cos β_b) [N]."""
-    return pinion_torque(scene) / (pair.rb1 * math.cos(pair.beta_b))
-
-
 def zone_grid(pair: GearPair, n: int) -> np.ndarray:
     """``n`` positions from A to E plus the pitch point and, for a spur pair, both sides of the
     load jumps at B and D (the outer side 1e-7 p_bt away), so that path integrals of the
@@ -79,52 +63,16 @@ def zone_grid(pair: GearPair, n: int) -> np.ndarray:
     return np.unique(u)
 
 
-def pair_stiffness_curve(scene, pair: GearPair, stiffness=None) -> StiffnessPerWidth | None:
-    """k'(u) of the scene's mesh-stiffness level for load sharing (None: uniform).
+def contact_along_path(pair: GearPair, kin: PathKinematics, normal_force: float, E_red: float, eta0: float,
+                       alpha: float, stiffness: StiffnessPerWidth | None = None) -> ContactPath:
+    """Hertz pressure, films and velocities at the positions of ``kin`` (:func:`femgear.physics.geometry.kinematics`).
 
-    ``constant`` and ``iso6336`` are uniform along the path.  ``pem`` is evaluated here;
-    ``fe`` uses the FE curve of a given :class:`femgear.physics.stiffness.MeshStiffness` and falls
-    back to PEM without one (the FE tooth solves are not repeated for the static pass).
+    ``normal_force`` F_bn of the pair, all helices [N]; ``E_red`` the reduced modulus [Pa]; ``eta0``,
+    ``alpha`` the oil's viscosity [Pa s] and Barus coefficient [1/Pa] for the film formulas;
+    ``stiffness`` the pair stiffness per unit width k'(u) for the load sharing (None: uniform).
     """
-    level = scene.physics.stiffness
-    if level in ("constant", "iso6336"):
-        return None
-    from femgear.physics.stiffness.tvms import tabulated
-
-    info = getattr(stiffness, "info", None) or {}
-    if "u" in info and "k_pair_per_width" in info:
-        return tabulated(pair, info["u"], info["k_pair_per_width"])
-    from femgear.physics.stiffness.pem import pair_stiffness_per_width
-
-    u = np.linspace(pair.u_start, pair.u_end, 81)
-    m = scene.material
-    k = pair_stiffness_per_width(pair, u, m.youngs_modulus, m.poisson_ratio,
-                                 (scene.pinion.bore_radius, scene.gear.bore_radius))
-    return tabulated(pair, u, k)
-
-
-def contact_along_path(scene, n: int | None = None, pair: GearPair | None = None, u: np.ndarray | None = None,
-                       stiffness=None, kin: PathKinematics | None = None) -> ContactPath:
-    """Hertz pressure, films and velocities at ``n`` positions from A to E (plus the pitch point).
-
-    ``u`` replaces the positions [m]; ``stiffness`` (a :class:`MeshStiffness` of the
-    scene's level) supplies k'(u) for the load sharing instead of recomputing it.
-    """
-    if pair is None:   # transitional (h27lub replaces this scene adapter by femgear.levels.contact)
-        from femgear.case.pair import pair_from_scene
-
-        pair = pair_from_scene(scene)
-    if u is None and kin is None:
-        n = n or scene.numerics.path_points
-        # include the pitch point exactly so that pitch-point figures are not interpolated
-        u = np.unique(np.append(path_positions(pair, n), pair.u_pitch))
-    if kin is None:     # transitional (h27lub): the case's path is passed as ``kin``
-        kin = kinematics(pair, np.asarray(u, float), pinion_speed(scene) * 2 * math.pi / 60)
-    u = np.asarray(kin.u, float)
-    F_bn = normal_force(scene, pair)
-    share = load_sharing(pair, u, F_bn / pair.n_helices, pair_stiffness_curve(scene, pair, stiffness))
-    E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
-    return _contact(pair, kin, F_bn, share, E_red, scene.oil.viscosity, scene.oil.pressure_viscosity)
+    share = load_sharing(pair, np.asarray(kin.u, float), normal_force / pair.n_helices, stiffness)
+    return _contact(pair, kin, normal_force, share, E_red, eta0, alpha)
 
 
 def _contact(pair: GearPair, kin: PathKinematics, F_bn: float, share: LoadSharing, E_red: float,
@@ -136,8 +84,8 @@ def _contact(pair: GearPair, kin: PathKinematics, F_bn: float, share: LoadSharin
         kin=kin, normal_force=F_bn, load_per_length=share.mean_line_load,
         hertz_half_width=np.array([h.half_width for h in hertz]),
         hertz_pressure=np.array([h.max_pressure for h in hertz]),
-        film_central=films["central_moes"], film_central_dt=films["central_dt"],
-        film_minimum=films["minimum_dh"], moes_M=films["M"], moes_L=films["L"],
+        film_central=films.central_moes, film_central_dt=films.central_dt,
+        film_minimum=films.minimum_dh, moes_M=films.M, moes_L=films.L,
         pitch_index=int(np.argmin(np.abs(kin.u - pair.u_pitch))),
         line_load=w, line_load_max=share.line_load_max, load_fraction=share.fraction,
         single_contact=single_contact_bounds(pair), n_helices=pair.n_helices,

@@ -15,21 +15,16 @@ from __future__ import annotations
 import numpy as np
 
 from femgear.errors import SceneError
-from femgear.physics.contact.hertz import reduced_modulus
 from femgear.physics.ehl.dimensional import EHLOil, solve_line_dimensional
 from femgear.physics.lubrication.flash import blok_flash_temperature
 from femgear.physics.lubrication.oil import OilLaw
-from femgear.physics.lubrication.path import solids_of
-from femgear.physics.lubrication.traction import shear_stress
+from femgear.physics.lubrication.traction import Solids, shear_stress
 
 
-def ehl_line_solver(scene, level: int | None = None):
-    """The ``ehl-line`` contact solver of a scene in the map signature (w, R, ue, srr, T) -> (μ, ΔT)."""
-    oil = OilLaw.from_scene(scene)
-    solids = solids_of(scene)
-    E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
-    level = scene.numerics.ehl_level if level is None else level
-    tau0 = scene.oil.eyring_stress
+def ehl_line_solver(oil: OilLaw, E_red: float, solids: Solids, tau0: float, level: int):
+    """The ``ehl-line`` contact solver in the map signature (w, R, ue, srr, T) -> (μ, ΔT): FE line EHL on grid
+    ``level`` with ``oil``, reduced modulus ``E_red`` [Pa], ``solids`` (Blok's flash temperature) and the
+    Eyring stress ``tau0`` [Pa]."""
 
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr, T)))
@@ -52,3 +47,17 @@ def ehl_line_solver(scene, level: int | None = None):
         return mu, dT
 
     return solve
+
+
+def ehl_line_films(w, R, ue, T: float, oil: OilLaw, E_red: float, level: int) -> tuple[np.ndarray, ...]:
+    """Central film, minimum film [m] and pressure peak [Pa] of the isothermal FE line EHL at each contact
+    (arrays ``w``, ``R``, ``ue`` over the contacts; inlet viscosity η(0, ``T``)), each warm-started from the
+    previous one."""
+    ehl = EHLOil(eta0=float(oil.viscosity(0.0, T)), alpha=oil.alpha, viscosity="roelands", compressible=True)
+    out, prev = [], None
+    for wi, Ri, ui in zip(w, R, ue):
+        r = solve_line_dimensional(float(wi), float(Ri), float(ui), E_red, ehl, level=level, start=prev)
+        prev = r.result
+        out.append((r.hc, r.hmin, r.pmax))
+    hc, hmin, pmax = np.array(out).T
+    return hc, hmin, pmax

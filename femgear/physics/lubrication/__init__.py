@@ -4,7 +4,7 @@
 - ``flash``     Blok's flash temperature and the Jaeger band integral.
 - ``traction``  Newtonian / Ree–Eyring traction of Hertzian EHL contacts with the
                 temperature–traction fixed point; Gupta's thermal film factor.
-- ``path``      friction and temperature along the path of contact of a scene.
+- ``path``      friction of line contacts with the oil, solids and traction bound (``LineFriction``).
 """
 
 from femgear.physics.lubrication.flash import (

@@ -108,11 +108,9 @@ class FrictionMap:
         return FrictionMap(self.axes, self.mu, self.temperature_rise, self.build_seconds, e)
 
 
-def hertz_level_solver(scene) -> Solver:
-    """The ``formula``-level contact solver of a scene, in the map's signature."""
-    from femgear.physics.lubrication.path import scene_line_friction
-
-    friction = scene_line_friction(scene)
+def hertz_level_solver(friction) -> Solver:
+    """The ``formula``-level contact solver in the map's signature: μ and the film temperature rise of
+    ``friction`` (a :class:`femgear.physics.lubrication.path.LineFriction`)."""
 
     def solve(w, R, ue, srr, T):
         r = friction(w, R, ue, srr, T)
@@ -121,24 +119,22 @@ def hertz_level_solver(scene) -> Solver:
     return solve
 
 
-def envelope_axes(scene, resolution: int = 1, load_range: tuple[float, float] = (0.25, 3.0),
-                  temperature_span: float = 60.0) -> dict[str, np.ndarray]:
-    """Map axes covering a scene's path of contact, with room for dynamic loads.
+def envelope_axes(contact, ambient_temperature: float, resolution: int = 1,
+                  load_range: tuple[float, float] = (0.25, 3.0), temperature_span: float = 60.0) -> dict[str, np.ndarray]:
+    """Map axes covering the path of contact of a contact pass (a
+    :class:`femgear.physics.contact.path.ContactPath`), with room for dynamic loads.
 
-    Loads span ``load_range`` times the nominal w', temperatures ambient … ambient +
-    ``temperature_span``; SRR axes are graded towards 0 where μ has its knee.
+    Loads span ``load_range`` times the nominal w', temperatures ``ambient_temperature`` … ambient +
+    ``temperature_span`` [K]; SRR axes are graded towards 0 where μ has its knee.
     ``resolution`` ≥ 1 multiplies the number of points per axis.
     """
-    from femgear.physics.contact.path import contact_along_path
-
     if resolution < 1:
         raise ValueError(f"resolution must be ≥ 1 (got {resolution})")
-    c = contact_along_path(scene, n=21)
-    k, r = c.kin, resolution
-    T0 = scene.operating.ambient_temperature
+    k, r = contact.kin, resolution
+    T0 = ambient_temperature
     srr_max = 1.05 * float(np.max(np.abs(k.srr)))
     return {
-        "w": c.load_per_length * np.geomspace(*load_range, 3 + 3 * r),
+        "w": contact.load_per_length * np.geomspace(*load_range, 3 + 3 * r),
         "R": np.geomspace(0.98 * k.R.min(), 1.02 * k.R.max(), 1 + 2 * r),
         "ue": np.geomspace(0.95 * k.ue.min(), 1.05 * k.ue.max(), 1 + 2 * r),
         "srr": np.r_[0.0, np.geomspace(1e-3 * srr_max, srr_max, 4 + 4 * r)],

@@ -45,11 +45,11 @@ class OilLaw:
             raise ValueError("Roelands needs T0 > 138 K")
 
     @classmethod
-    def from_scene(cls, scene, model: str = "roelands") -> OilLaw:
-        oil = scene.oil
+    def from_table(cls, oil, reference_temperature: float, model: str = "roelands") -> OilLaw:
+        """The law of an ``[oil]`` table (viscosity, pressure_viscosity, temperature_viscosity, density,
+        thermal_expansion) whose viscosity holds at ``reference_temperature`` [K]."""
         return cls(eta0=oil.viscosity, alpha=oil.pressure_viscosity, beta_t=oil.temperature_viscosity,
-                   T0=scene.oil_reference_temperature, rho0=oil.density, expansion=oil.thermal_expansion,
-                   model=model)
+                   T0=reference_temperature, rho0=oil.density, expansion=oil.thermal_expansion, model=model)
 
     @property
     def z0(self) -> float:

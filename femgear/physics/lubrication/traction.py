@@ -155,5 +155,5 @@ def thermal_central_film(w, R, ue, srr, T_bulk, oil: OilLaw, E_red, solids: Soli
     b = np.sqrt(8 * w * R / (np.pi * E_red))
     p_h = 2 * w / (np.pi * b)
     eta_in = oil.viscosity(0.0, T_bulk)
-    h = line_film(w, R, ue, E_red, eta_in, oil.alpha)["central_moes"]
+    h = line_film(w, R, ue, E_red, eta_in, oil.alpha).central_moes
     return h * gupta_thermal_factor(p_h, E_red, srr, ue, eta_in, oil.beta_t, solids.k_oil), b, p_h

@@ -1,4 +1,4 @@
-"""TEHL along the path of contact of a scene: h_c, p_max, max ΔT and μ per position
+"""TEHL along the path of contact: h_c, p_max, max ΔT and μ per position
 (the seed paper's Fig. 16 analogue), and VTK of the thermal fields.
 
 Positions, load per length, radii, entrainment speeds and SRR come from
@@ -15,7 +15,7 @@ import numpy as np
 
 from femgear.errors import ConvergenceError
 from femgear.physics.tehl.line import TEHLResult, solve_tehl_line
-from femgear.physics.tehl.solver import tehl_setup
+from femgear.physics.tehl.solver import TEHLSetup
 
 
 @dataclass(frozen=True)
@@ -32,22 +32,18 @@ class TEHLPath:
     results: list = field(repr=False, default_factory=list)
 
 
-def tehl_along_path(scene, contact=None, n: int | None = None, level: int | None = None,
-                    load_per_length=None, T_bulk: float | None = None, **options) -> TEHLPath:
-    """TEHL at the positions of ``contact`` (default :func:`contact_along_path` with ``n``)."""
-    from femgear.physics.contact.path import contact_along_path
-
-    contact = contact or contact_along_path(scene, n=n)
+def tehl_along_path(contact, setup: TEHLSetup, T_bulk: float, level: int, load_per_length=None,
+                    **options) -> TEHLPath:
+    """TEHL (grid ``level``, oil bulk temperature ``T_bulk`` [K]) at the positions of a contact pass
+    (:class:`femgear.physics.contact.path.ContactPath`), at its mean load per length or ``load_per_length``."""
     k = contact.kin
     w = np.broadcast_to(contact.load_per_length if load_per_length is None else load_per_length, k.R.shape)
-    T = scene.operating.ambient_temperature if T_bulk is None else T_bulk
-    level = scene.numerics.ehl_level if level is None else level
-    setup = {**tehl_setup(scene), **options}
+    kw = {**setup.kwargs(), **options}
     results: list[TEHLResult] = []
     for i in range(k.R.size):
         try:
-            results.append(solve_tehl_line(float(w[i]), float(k.R[i]), float(k.ue[i]), float(k.srr[i]), T,
-                                           level=level, **setup))
+            results.append(solve_tehl_line(float(w[i]), float(k.R[i]), float(k.ue[i]), float(k.srr[i]), T_bulk,
+                                           level=level, **kw))
         except ConvergenceError as exc:
             raise ConvergenceError(f"tehl path position {i} (s = {k.s[i]:.4g} m)", str(exc), exc.history) from exc
 

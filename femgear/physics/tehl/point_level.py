@@ -6,8 +6,8 @@ the lead crowning ``modifications.crowning``; the load of one tooth pair from th
 load of the load sharing times its mean contact-line length). The contact is solved by
 :func:`femgear.physics.tehl.point.solve_tehl_point` (isothermal nested start, then the strip-wise
 energy loop) in the map signature of every lubrication level
-(:mod:`femgear.physics.lubrication.levels`): ``solver(w=, R=, ue=, srr=, T=) -> (mu, dT)``, μ the
-sliding (Couette) friction, dT the largest film temperature rise.  The scene's stationary
+(:mod:`femgear.levels.lubrication`): ``solver(w=, R=, ue=, srr=, T=) -> (mu, dT)``, μ the
+sliding (Couette) friction, dT the largest film temperature rise.  The stationary
 roughness (``[roughness.peak]`` fixed at x0, the paper's model; ``[roughness.synthetic]``)
 enters each contact's film (:func:`femgear.physics.tehl.point.rough_levels`).
 
@@ -38,24 +38,25 @@ import logging
 import numpy as np
 
 from femgear.errors import ConvergenceError
-from femgear.physics.contact.crowning import crowned_contact
+from femgear.physics.contact.crowning import CrownedContact
 from femgear.physics.tehl.point import solve_tehl_point
-from femgear.physics.tehl.solver import tehl_setup
+from femgear.physics.tehl.solver import TEHLSetup
 
 POINT_LEVEL = 1
 log = logging.getLogger("femgear.physics.tehl")
 
 
-def tehl_point_solver(scene, level: int | None = None, pair=None, details: list | None = None, **options):
+def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, roughness=None, level: int | None = None,
+                      details: list | None = None, **options):
     """Direct thermal point-EHL solves (one per query point) in the map signature.
 
+    ``geo``: the crowned contact of the pair (:func:`femgear.physics.contact.crowning.crowned_contact`);
+    ``setup``: oil, solids and traction; ``roughness``: a ``[roughness]`` table with stationary features, or
+    None (smooth); ``line_level``: the grid level of the line-contact fallback (:func:`_line_contact`).
     ``details``: a list that receives each :class:`femgear.physics.tehl.point.TEHLPointResult`
     (films, pressure, temperature for studies); ``solve.last`` holds the inputs and results of the
-    latest call (the film of the run's last pass, :func:`femgear.physics.lubrication.films.level_film`).
-    An uncrowned pair raises SceneError naming ``modifications.crowning``."""
-    geo = crowned_contact(scene, pair)
-    rough = scene.roughness if (scene.roughness.peak or scene.roughness.synthetic) else None
-    setup = {**tehl_setup(scene), "roughness": rough, **options}
+    latest call (the film of the run's last pass, :meth:`femgear.levels.lubrication.Lubrication.film`)."""
+    kw = {**setup.kwargs(), "roughness": roughness, **options}
     level = POINT_LEVEL if level is None else level
 
     def solve(w, R, ue, srr, T):
@@ -68,9 +69,9 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
         for i in np.ndindex(w.shape):
             args = (float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]))
             try:
-                r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **setup)
+                r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **kw)
             except ConvergenceError as exc:
-                r = _line_contact(float(w[i]), args, scene, exc)
+                r = _line_contact(float(w[i]), args, setup, line_level, exc)
             mu[i], dT[i] = r.mu, r.dT_max
             results.append(r)
         if details is not None:
@@ -83,13 +84,14 @@ def tehl_point_solver(scene, level: int | None = None, pair=None, details: list 
     return solve
 
 
-def _line_contact(w: float, args: tuple, scene, exc: ConvergenceError):
-    """The line-contact TEHL solve of a contact the point solver could not hold (R_x/R_y → 0 limit: the
-    same load per unit length on the radius R_x across the line), logged as a warning naming the contact."""
+def _line_contact(w: float, args: tuple, setup: TEHLSetup, level: int, exc: ConvergenceError):
+    """The line-contact TEHL solve (grid ``level``) of a contact the point solver could not hold (R_x/R_y → 0
+    limit: the same load per unit length on the radius R_x across the line), logged as a warning naming the
+    contact."""
     from femgear.physics.tehl.line import solve_tehl_line
 
     F, Rx, ue, srr, T = args
     log.warning("tehl-point: the point solver failed at F = %.4g N, R_x = %.4g m (%s); this contact is solved "
                 "as a line contact (physics.lubrication = \"tehl\" there)", F, Rx,
                 str(exc).split(": ", 1)[-1].split(" (last:")[0][:100])
-    return solve_tehl_line(w, Rx, ue, srr, T, level=scene.numerics.ehl_level, **tehl_setup(scene))
+    return solve_tehl_line(w, Rx, ue, srr, T, level=level, **setup.kwargs())

@@ -8,13 +8,17 @@ The isothermal start is shared between points that differ only in SRR (cached pe
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
+
 import numpy as np
 
-from femgear.errors import ConvergenceError
+from femgear.errors import ConvergenceError, SceneError
 from femgear.physics.contact.hertz import reduced_modulus
 from femgear.physics.lubrication.map import FrictionMap
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.path import solids_of
+from femgear.physics.lubrication.traction import Solids
 from femgear.physics.tehl.energy import ThermalProps
 from femgear.physics.tehl.line import solve_tehl_line
 
@@ -37,24 +41,46 @@ def map_progress(stage: str, total: int, seconds_each: float):
     return Progress(stage, total, est.seconds)
 
 
-def thermal_props(scene) -> ThermalProps:
-    """Oil conductivity and specific heat, solid effusivities of a scene (same steel both)."""
-    s = solids_of(scene)
-    return ThermalProps(k_oil=s.k_oil, c_oil=scene.oil.specific_heat, B1=s.B1, B2=s.B2)
+def thermal_props(solids: Solids, oil_specific_heat: float) -> ThermalProps:
+    """Oil conductivity and specific heat [J/(kg K)], solid effusivities of :class:`Solids`."""
+    return ThermalProps(k_oil=solids.k_oil, c_oil=oil_specific_heat, B1=solids.B1, B2=solids.B2)
 
 
-def tehl_setup(scene) -> dict:
-    """Keyword arguments of :func:`solve_tehl_line` taken from a scene."""
-    return {"oil": OilLaw.from_scene(scene), "props": thermal_props(scene),
-            "E_red": reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio),
-            "tau0": scene.oil.eyring_stress, "limiting_shear": scene.oil.limiting_shear_coeff}
+@dataclass(frozen=True)
+class TEHLSetup:
+    """The oil, solids and traction parameters of the TEHL solves (:func:`solve_tehl_line`,
+    :func:`femgear.physics.tehl.point.solve_tehl_point`)."""
+
+    oil: OilLaw
+    """viscosity and density laws of the oil"""
+    props: ThermalProps
+    """oil conductivity and specific heat, solid effusivities"""
+    E_red: float
+    """reduced modulus E' [Pa]"""
+    tau0: float
+    """Eyring stress τ0 [Pa]"""
+    limiting_shear: float
+    """limiting shear stress coefficient Λ (τ_L = Λ p; 0: none) [-]"""
+
+    @classmethod
+    def from_tables(cls, material, oil, reference_temperature: float) -> TEHLSetup:
+        """The set-up of a ``[material]`` (one steel, both members) and an ``[oil]`` table whose viscosity
+        holds at ``reference_temperature`` [K]."""
+        return cls(oil=OilLaw.from_table(oil, reference_temperature), props=thermal_props(solids_of(material, oil),
+                                                                                         oil.specific_heat),
+                   E_red=reduced_modulus(material.youngs_modulus, material.poisson_ratio), tau0=oil.eyring_stress,
+                   limiting_shear=oil.limiting_shear_coeff)
+
+    def kwargs(self) -> dict:
+        """The keyword arguments of :func:`solve_tehl_line` and ``solve_tehl_point`` it sets."""
+        return {"oil": self.oil, "props": self.props, "E_red": self.E_red, "tau0": self.tau0,
+                "limiting_shear": self.limiting_shear}
 
 
-def tehl_line_solver(scene, level: int | None = None, **options):
-    """Direct TEHL solves (one per point) in the map signature; ``options`` go to
+def tehl_line_solver(setup: TEHLSetup, level: int, **options):
+    """Direct TEHL solves (one per point, grid ``level``) in the map signature; ``options`` go to
     :func:`solve_tehl_line` (e.g. ``cells``, ``nz``, ``model``)."""
-    setup = {**tehl_setup(scene), **options}
-    level = scene.numerics.ehl_level if level is None else level
+    kw = {**setup.kwargs(), **options}
 
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
@@ -65,40 +91,39 @@ def tehl_line_solver(scene, level: int | None = None, **options):
             progress(n)
             args = (float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), float(T[i]))
             try:
-                r = solve_tehl_line(*args, level=level, **setup)
+                r = solve_tehl_line(*args, level=level, **kw)
             except ConvergenceError:     # a slowly settling thermal loop (heavy, hot envelope corners)
-                r = solve_tehl_line(*args, level=level, **{**setup, **DAMPED})
+                r = solve_tehl_line(*args, level=level, **{**kw, **DAMPED})
             mu[i], dT[i] = r.mu, r.dT_max
         return mu, dT
 
     return solve
 
 
-def tehl_map_axes(scene, load_range=(0.5, 2.0), temperature_span: float = 40.0) -> dict[str, np.ndarray]:
-    """Small map axes over a scene's path (3 x 2 x 2 x 7 x 2 = 168 TEHL solves)."""
-    from femgear.physics.contact.path import contact_along_path
-
-    c = contact_along_path(scene, n=21)
-    k = c.kin
-    T0 = scene.operating.ambient_temperature
+def tehl_map_axes(contact, ambient_temperature: float, load_range=(0.5, 2.0),
+                  temperature_span: float = 40.0) -> dict[str, np.ndarray]:
+    """Small map axes over the path of a contact pass (:class:`femgear.physics.contact.path.ContactPath`;
+    3 x 2 x 2 x 7 x 2 = 168 TEHL solves); oil from ``ambient_temperature`` to ``temperature_span`` above [K]."""
+    k = contact.kin
+    T0 = ambient_temperature
     smax = 1.05 * float(np.max(np.abs(k.srr)))
-    return {"w": c.load_per_length * np.geomspace(*load_range, 3),
+    return {"w": contact.load_per_length * np.geomspace(*load_range, 3),
             "R": np.array([0.98 * k.R.min(), 1.02 * k.R.max()]),
             "ue": np.array([0.95 * k.ue.min(), 1.05 * k.ue.max()]),
             "srr": np.r_[0.0, smax * np.array([0.01, 0.04, 0.12, 0.3, 0.6, 1.0])],
             "T": np.array([T0, T0 + temperature_span])}
 
 
-def tehl_map(scene, axes: dict | None = None, level: int = 4, validate: int = 0, seed: int = 0) -> FrictionMap:
-    """A :class:`FrictionMap` of TEHL solves (grid ``level``); ``validate`` > 0 measures its
+def tehl_map(setup: TEHLSetup, axes: dict, level: int = 4, validate: int = 0, seed: int = 0) -> FrictionMap:
+    """A :class:`FrictionMap` of TEHL solves (grid ``level``) over ``axes``; ``validate`` > 0 measures its
     error against that many fresh TEHL solves at random envelope points."""
-    solver = tehl_line_solver(scene, level=level)
-    fmap = FrictionMap.build(solver, axes or tehl_map_axes(scene))
+    solver = tehl_line_solver(setup, level=level)
+    fmap = FrictionMap.build(solver, axes)
     return fmap.validate(solver, samples=validate, seed=seed) if validate else fmap
 
 
-def tehl_map_solver(scene, level: int = 4, axes: dict | None = None):
-    """The ``tehl`` level for the coupling loop: a :func:`tehl_map` built on first use
+def tehl_map_solver(setup: TEHLSetup, axes: dict, level: int = 4):
+    """The ``tehl`` level for the coupling loop: a :func:`tehl_map` over ``axes`` built on first use
     (≈ 170 TEHL solves), queried by interpolation.  Queries outside the envelope are
     clamped to its edges (the dynamic load may leave the 0.5–2 × nominal band briefly
     at the ends of the path)."""
@@ -106,7 +131,7 @@ def tehl_map_solver(scene, level: int = 4, axes: dict | None = None):
 
     def solve(w, R, ue, srr, T):
         if "map" not in cache:
-            cache["map"] = tehl_map(scene, axes=axes, level=level)
+            cache["map"] = tehl_map(setup, axes=axes, level=level)
         fmap = cache["map"]
         args = [np.clip(np.abs(a) if k == "srr" else np.asarray(a, dtype=float), fmap.axes[k][0], fmap.axes[k][-1])
                 for k, a in zip(("w", "R", "ue", "srr", "T"), (w, R, ue, srr, T))]
@@ -128,34 +153,31 @@ MAX_MAP_M = 200.0
 MAX_TEHL_SPEED = 100.0
 
 
-def check_tehl_range(scene, pair) -> None:
-    """Refuse ``tehl``/``tehl-point`` up front above :data:`MAX_TEHL_SPEED`, with the levels that run there."""
-    import math
-
-    from femgear.errors import SceneError
-
-    v = 2.0 * math.pi * pair.rw1 * scene.pinion_rpm / 60.0
+def check_tehl_speed(pair, pinion_rpm: float, level: str) -> None:
+    """Refuse the TEHL ``level`` up front above :data:`MAX_TEHL_SPEED` (pitch-line speed of ``pair`` at
+    ``pinion_rpm``), naming the levels that run there."""
+    v = 2.0 * math.pi * pair.rw1 * pinion_rpm / 60.0
     if v > MAX_TEHL_SPEED:
-        raise SceneError("physics.lubrication", f'"{scene.physics.lubrication}": the pitch-line speed {v:.0f} m/s is '
+        raise SceneError("physics.lubrication", f'"{level}": the pitch-line speed {v:.0f} m/s is '
                          f"above {MAX_TEHL_SPEED:g} m/s, where the TEHL thermal loop does not settle; use "
                          '"ehl-line" or "formula"')
-    if scene.physics.lubrication == "tehl":
-        M, L = map_corner_moes(scene)
-        if M > MAX_MAP_M:
-            raise SceneError("physics.lubrication", f'"tehl": its friction map reaches Moes M = {M:.0f} (L = {L:.2g}) '
-                             f"at twice the load and +40 K, above M = {MAX_MAP_M:g}, the largest at which the line "
-                             'EHL solver is validated and starts; use "ehl-line" (direct solves at the path\'s loads)')
 
 
-def map_corner_moes(scene) -> tuple[float, float]:
+def check_map_corner(axes: dict, oil: OilLaw, E_red: float) -> None:
+    """Refuse the ``tehl`` map up front where its heaviest corner (:func:`map_corner_moes`) is above
+    :data:`MAX_MAP_M`."""
+    M, L = map_corner_moes(axes, oil, E_red)
+    if M > MAX_MAP_M:
+        raise SceneError("physics.lubrication", f'"tehl": its friction map reaches Moes M = {M:.0f} (L = {L:.2g}) '
+                         f"at twice the load and +40 K, above M = {MAX_MAP_M:g}, the largest at which the line "
+                         'EHL solver is validated and starts; use "ehl-line" (direct solves at the path\'s loads)')
+
+
+def map_corner_moes(axes: dict, oil: OilLaw, E_red: float) -> tuple[float, float]:
     """Moes (M, L) of the map envelope's heaviest corner: the largest load, smallest radius and entrainment
-    speed and the hottest oil of :func:`tehl_map_axes` (M grows and L falls with each)."""
+    speed and the hottest oil of the map ``axes`` (:func:`tehl_map_axes`; M grows and L falls with each)."""
     from femgear.physics.contact.film import moes_line
 
-    axes = tehl_map_axes(scene)
-    oil = OilLaw.from_scene(scene)
-    E = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
     w, R, ue, T = axes["w"].max(), axes["R"].min(), axes["ue"].min(), axes["T"].max()
     eta = float(oil.viscosity(0.0, T))
-    return tuple(float(x) for x in moes_line(w / (E * R), eta * ue / (E * R), oil.alpha * E))
-
+    return tuple(float(x) for x in moes_line(w / (E_red * R), eta * ue / (E_red * R), oil.alpha * E_red))

@@ -47,7 +47,7 @@ import numpy as np
 from femgear.case import Case
 from femgear.errors import ConvergenceError
 from femgear.levels import wear as wear_levels
-from femgear.physics.lubrication.levels import Lubrication, lubrication_solver
+from femgear.levels.lubrication import Lubrication, lubrication_solver
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.physics.wear.face import FaceReference
 from femgear.physics.wear.load_sharing import ReferenceLoad, load_map, reference_load_map

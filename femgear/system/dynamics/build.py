@@ -208,7 +208,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     is "none").  ``stiffness``: a :class:`StiffnessTable`, "constant" (c_γ b),
     "contact-line", or a level of :mod:`femgear.physics.stiffness` (default ``physics.stiffness``).
     ``friction``: μ as a number or a callable μ(u) of the path position u [m] (default:
-    :func:`femgear.physics.lubrication.levels.static_friction`, the lubrication level's μ at the
+    :func:`femgear.levels.lubrication.static_friction`, the lubrication level's μ at the
     static load; the coupling passes its own μ(u)).
     The other keywords override the scene keys of the same meaning: ``<member>.bearing_span``,
     ``<member>.shaft_diameter``, ``stiffness.rayleigh_ratio``, ``stiffness.damping_ratio``,
@@ -267,7 +267,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         load_stiffness=load_stiffness, base_deviation=tooth_contact_deviation(source),
     )
     if friction is None:
-        from femgear.physics.lubrication.levels import static_friction
+        from femgear.levels.lubrication import static_friction
 
         friction = static_friction(case)
     return with_deviation(with_friction(model, friction), deviation)
