@@ -1,0 +1,153 @@
+"""Field documentation of typed results: meaning and unit under each dataclass field.
+
+Every field of a result dataclass carries an attribute docstring directly under it whose
+text ends with its unit in square brackets (``[-]`` for a dimensionless number)::
+
+    @document_fields
+    @dataclass(frozen=True)
+    class Tribology:
+        load_per_length: np.ndarray
+        \"\"\"passage-mean load per unit contact-line length along the path [N/m]\"\"\"
+
+:func:`document_fields` reads those strings from the class's source (statically: the module is
+parsed once with :mod:`ast`, nothing is executed or instantiated), refuses a field without a
+docstring or without a trailing unit (:class:`FieldDocError`, naming the class and the field),
+stores them and appends a "Fields" list to the class ``__doc__`` so that ``help()`` shows them.
+:func:`field_docs` returns ``{name: FieldDoc(doc, unit)}`` (the docs site and the ``units``
+table of ``results.json`` read it).
+
+Python keeps no attribute docstrings at run time; where the source cannot be read (a frozen
+application without ``.py`` files) the decorator leaves the class as it is and
+:func:`field_docs` returns ``{}``.
+"""
+
+from __future__ import annotations
+
+import ast
+import dataclasses
+import functools
+import inspect
+import linecache
+import re
+from typing import NamedTuple
+
+_UNIT = re.compile(r"\[([^\[\]]+)\]\s*$")
+_ATTR = "__field_docs__"
+
+
+class FieldDocError(TypeError):
+    """A dataclass field without an attribute docstring, or one whose docstring does not end with a unit."""
+
+
+class FieldDoc(NamedTuple):
+    """One field's documentation: its meaning (``doc``, without the unit) and its ``unit`` (``-``: dimensionless)."""
+
+    doc: str
+    unit: str
+
+
+@functools.lru_cache(maxsize=None)
+def _module_tree(filename: str) -> ast.Module | None:
+    lines = linecache.getlines(filename)
+    return ast.parse("".join(lines), filename) if lines else None
+
+
+def _class_node(cls: type) -> ast.ClassDef | None:
+    """The ``ClassDef`` of ``cls`` in its module's source (followed along ``__qualname__``), None without source."""
+    try:
+        filename = inspect.getsourcefile(cls)
+    except TypeError:       # built-in or defined in __main__ without a file
+        return None
+    if filename is None:
+        return None
+    tree = _module_tree(filename)
+    if tree is None:
+        return None
+    body: list[ast.stmt] = tree.body
+    node = None
+    for part in cls.__qualname__.split("."):
+        if part == "<locals>":          # a class made inside a function: search that function's body
+            continue
+        found = [n for n in body if isinstance(n, (ast.ClassDef, ast.FunctionDef)) and n.name == part]
+        if not found:
+            found = [n for n in ast.walk(ast.Module(body=body, type_ignores=[]))
+                     if isinstance(n, (ast.ClassDef, ast.FunctionDef)) and n.name == part]
+        if not found:
+            return None
+        node = found[-1]
+        body = node.body
+    return node if isinstance(node, ast.ClassDef) else None
+
+
+def _attribute_docstrings(node: ast.ClassDef) -> dict[str, str]:
+    """{name: docstring} of the annotated assignments in a class body followed directly by a string."""
+    out: dict[str, str] = {}
+    body = node.body
+    for stmt, nxt in zip(body, body[1:]):
+        if (isinstance(stmt, ast.AnnAssign) and isinstance(stmt.target, ast.Name)
+                and isinstance(nxt, ast.Expr) and isinstance(nxt.value, ast.Constant)
+                and isinstance(nxt.value.value, str)):
+            out[stmt.target.id] = " ".join(inspect.cleandoc(nxt.value.value).split())
+    return out
+
+
+def _parse(cls: type) -> dict[str, FieldDoc] | None:
+    """The field docs of dataclass ``cls`` from its source (base classes' fields from theirs); None without source."""
+    texts: dict[str, str] = {}
+    seen_source = False
+    for klass in reversed(cls.__mro__):
+        if klass is object or not dataclasses.is_dataclass(klass):
+            continue
+        node = _class_node(klass)
+        if node is not None:
+            seen_source = True
+            texts.update(_attribute_docstrings(node))
+    if not seen_source:
+        return None
+    out: dict[str, FieldDoc] = {}
+    for f in dataclasses.fields(cls):
+        text = texts.get(f.name)
+        if not text:
+            raise FieldDocError(f"{cls.__module__}.{cls.__qualname__}.{f.name}: no attribute docstring under the "
+                                f"field (write its meaning and unit, e.g. \"\"\"normal load [N]\"\"\")")
+        unit = _UNIT.search(text)
+        if unit is None:
+            raise FieldDocError(f"{cls.__module__}.{cls.__qualname__}.{f.name}: its docstring {text!r} does not end "
+                                f"with a unit in square brackets ([-] for a dimensionless number)")
+        out[f.name] = FieldDoc(text[:unit.start()].rstrip(" ,;:"), unit.group(1).strip())
+    return out
+
+
+def _fields_section(docs: dict[str, FieldDoc]) -> str:
+    items = "\n".join(f"    {name} [{d.unit}]\n        {d.doc}" for name, d in docs.items())
+    return f"Fields (name [unit], meaning):\n\n{items}\n"
+
+
+def document_fields(cls: type) -> type:
+    """Class decorator (above ``@dataclass``): check and record each field's docstring and unit and list them
+    in the class ``__doc__``; raises :class:`FieldDocError` naming a field without a docstring or unit."""
+    if not dataclasses.is_dataclass(cls):
+        raise TypeError(f"document_fields: {cls.__qualname__} is not a dataclass (put @dataclass below it)")
+    docs = _parse(cls)
+    if docs is None:
+        return cls
+    setattr(cls, _ATTR, docs)
+    head = inspect.cleandoc(cls.__doc__ or "")
+    if head.startswith(cls.__name__ + "("):      # the signature dataclass writes for a class without a docstring
+        head = ""
+    cls.__doc__ = (head + "\n\n" if head else "") + _fields_section(docs)
+    return cls
+
+
+def field_docs(cls: type) -> dict[str, FieldDoc]:
+    """``{field name: FieldDoc(doc, unit)}`` of a dataclass, in field order (read from the source if ``cls`` is
+    not decorated with :func:`document_fields`; ``{}`` without source)."""
+    docs = cls.__dict__.get(_ATTR)
+    if docs is None:
+        docs = _parse(cls) or {}
+    return dict(docs)
+
+
+def is_documented(cls: type) -> bool:
+    """Whether ``cls`` went through :func:`document_fields` (its own fields, not only a base class's)."""
+    return _ATTR in cls.__dict__
