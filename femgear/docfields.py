@@ -46,7 +46,7 @@ class FieldDoc(NamedTuple):
     unit: str
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _module_tree(filename: str) -> ast.Module | None:
     lines = linecache.getlines(filename)
     return ast.parse("".join(lines), filename) if lines else None

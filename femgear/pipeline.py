@@ -76,7 +76,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
     """The :class:`femgear.physics.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
-    ltca = stiffness.info.get("ltca") if stiffness.level == "ltca" else None
+    ltca = None if stiffness.ltca is None else stiffness.ltca.result
     if ltca is None or not ltca.line_load:
         return None
     from femgear.physics.ltca.te import analyse_cycle
@@ -119,16 +119,16 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         pair = case.pair
         k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
             case.stiffness.mesh_stiffness_per_width * pair.b
-        info = {} if stiffness is None else stiffness.info
-        ref = ltca_reference(pair, case.path.u, info, np.zeros(case.path.u.size)) \
-            if "ltca" in info and pair.beta_b > 0 else None     # spur: the Winkler sharing (see coupling.loop)
+        cycle = None if stiffness is None else stiffness.ltca
+        ref = ltca_reference(pair, case.path.u, cycle, np.zeros(case.path.u.size)) \
+            if cycle is not None and pair.beta_b > 0 else None     # spur: the Winkler sharing (see coupling.loop)
         setup = WearSetup(pair=pair, kin=case.path, force=case.operating.normal_force / pair.n_helices,
                           c_l=line_stiffness(case, k_mean, stiffness),
                           coefficient=case.wear.coefficient, hardness=case.material.hardness, reference=ref)
         if case.wear.field == "face" and ref is not None:     # face-resolved (femgear.physics.wear.face); no checkpoint
             from femgear.physics.wear.face import run_face_wear
 
-            face = ltca_face_reference(pair, case.path.u, info, np.zeros(case.path.u.size), n_zeta=case.wear.face_points)
+            face = ltca_face_reference(pair, case.path.u, cycle, np.zeros(case.path.u.size), n_zeta=case.wear.face_points)
             state = run_face_wear(setup, face, case.wear.cycles)
             wear = state.path_mean(face.grid)
             faces = {"grid": face.grid, "wear_face": np.array([state.h1, state.h2])}

@@ -118,7 +118,7 @@ def _te_summary(result: RunResult) -> dict[str, Any]:
     from femgear.edge.io.ltca import UNITS, te_summary
 
     out = te_summary(result.transmission_error, math.cos(result.case.pair.beta_b))
-    out["resolved_orders"] = result.stiffness.info.get("resolved_orders")
+    out["resolved_orders"] = result.stiffness.resolved_orders
     if result.coupled is not None and math.isfinite(result.coupled.state.lte_peak_to_peak):
         out["lte_peak_to_peak_deviated"] = result.coupled.state.lte_peak_to_peak
     out["units"] = {k: UNITS[k] for k in out if k in UNITS} | {"lte_peak_to_peak_deviated": "m"}

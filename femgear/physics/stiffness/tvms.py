@@ -26,27 +26,81 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.iso6336 import IsoStiffness
+
+if TYPE_CHECKING:
+    from femgear.physics.ltca.cycle import LTCACycle
 
 LEVELS = ("constant", "iso6336", "pem", "fe", "ltca")
 
 
+@document_fields
+@dataclass(frozen=True)
+class FESamples:
+    """The ``fe`` level's tooth-pair stiffness samples from the 2-D FE teeth in series with Hertz."""
+
+    u: np.ndarray
+    """path positions of the FE samples, measured from T1 (the pinion's base tangent point) [m]"""
+    k: np.ndarray
+    """transverse tooth-pair stiffness per unit face width at ``u`` [N/m²]"""
+    compliance: tuple[np.ndarray, np.ndarray]
+    """bending/shear/foundation compliance per unit face width of the pinion and the gear tooth at ``u`` [m²/N]"""
+    ndofs: tuple[int, ...]
+    """degrees of freedom of the pinion's and the gear's FE model [-]"""
+    h: float | None
+    """element size of the FE models at the flank [m]"""
+    seconds: float
+    """wall time of both members' FE models and solves [s]"""
+
+
+@document_fields
 @dataclass(frozen=True)
 class MeshStiffness:
-    """Mesh stiffness of both helices over one mesh period (normal line of action, N/m)."""
+    """Mesh stiffness of both helices over one mesh period, along the normal line of action.
+
+    The typed by-products of a level (its tooth-pair stiffness along the path, the ISO figures,
+    the FE samples, the LTCA cycle) are None where the level has none."""
 
     level: str
-    phase: np.ndarray      #: sample phases in [0, 1) [base pitches]
-    k_left: np.ndarray     #: [N/m]
-    k_right: np.ndarray    #: [N/m]
-    stagger: float         #: right helix offset [base pitches]
+    """the stiffness level that computed it (``constant``, ``iso6336``, ``pem``, ``fe``, ``ltca``) [-]"""
+    phase: np.ndarray
+    """sample phases over one mesh period, [0, 1); phase 0: the front of a contact line enters the path at A
+    [base pitches]"""
+    k_left: np.ndarray
+    """stiffness of the left helix at ``phase``, along the normal line of action (F_n = k δ_n) [N/m]"""
+    k_right: np.ndarray
+    """stiffness of the right helix at ``phase`` (0 for a single-helical or spur pair) [N/m]"""
+    stagger: float
+    """offset of the right helix against the left one: k_right(φ) = k_left(φ + stagger) [base pitches]"""
     n_slices: int
-    seconds: float         #: wall time to compute [s]
-    info: dict = field(default_factory=dict)
+    """transverse slices per helix of the sliced levels (``pem``, ``fe``; 1 for spur; 0: not sliced) [-]"""
+    seconds: float
+    """wall time to compute [s]"""
+    _: KW_ONLY
+    u: np.ndarray | None = None
+    """``pem``, ``fe``: path positions of ``k_pair_per_width``, measured from T1 (the pinion's base tangent point)
+    [m]"""
+    k_pair_per_width: np.ndarray | None = None
+    """``pem``, ``fe``: transverse stiffness of one tooth pair per unit face width at ``u`` (the shape of the
+    contact-line stiffness along the path) [N/m²]"""
+    iso: IsoStiffness | None = None
+    """``iso6336``: the ISO 6336-1 Method B single and mesh stiffnesses the level's constant comes from [-]"""
+    fe: FESamples | None = None
+    """``fe``: the FE samples of the tooth-pair stiffness that ``k_pair_per_width`` interpolates [-]"""
+    ltca: LTCACycle | None = None
+    """``ltca``: the loaded tooth contact analysis cycle whose secant stiffnesses are ``k_left``/``k_right`` [-]"""
+
+    @property
+    def resolved_orders(self) -> int | None:
+        """``ltca``: the mesh orders its contact discretisation resolves (the dynamics keeps those); else None."""
+        return None if self.ltca is None else self.ltca.resolved_orders
 
     @property
     def k_total(self) -> np.ndarray:
@@ -130,7 +184,7 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
     ``fe`` (sliced, tooth compliance from the 2-D FE of :mod:`femgear.physics.body.compliance`
     at ``fe_options['n_fe']`` path positions, Hertz as in PEM), ``ltca`` (secant stiffness
     per helix from the loaded tooth contact analysis of :mod:`femgear.physics.ltca` at
-    ``ltca_options['force']``; its TE tables are in ``info``).
+    ``ltca_options['force']``; the cycle, with its TE tables, is ``MeshStiffness.ltca``).
     """
     if level not in LEVELS:
         raise ValueError(f"level must be one of {', '.join(LEVELS)}, got {level!r}")
@@ -144,14 +198,15 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
         if not ltca_options or "force" not in ltca_options:
             raise ValueError("level 'ltca' needs ltca_options={'force': normal force [N], ...}")
         t0 = time.perf_counter()
-        res, info = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
-                               poisson_ratio=poisson_ratio, **ltca_options)
+        cycle = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
+                           poisson_ratio=poisson_ratio, **ltca_options)
+        res = cycle.result
         return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger, 0,
-                             time.perf_counter() - t0, info)
+                             time.perf_counter() - t0, ltca=cycle)
     t0 = time.perf_counter()
     phases = np.arange(n_positions) / n_positions
-    info: dict = {}
     if level in ("constant", "iso6336"):
+        iso = None
         if level == "constant":
             k = constant_per_width * pair.b
         else:
@@ -159,11 +214,11 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
 
             iso = iso6336_stiffness(pair, youngs_modulus=youngs_modulus)
             k = iso.k("c_gamma_alpha") / math.cos(pair.beta_b) ** 2
-            info["iso"] = iso
         kl = np.full(n_positions, k)
         kr = kl.copy() if pair.n_helices == 2 else np.zeros(n_positions)
-        return MeshStiffness(level, phases, kl, kr, stagger, 0, time.perf_counter() - t0, info)
+        return MeshStiffness(level, phases, kl, kr, stagger, 0, time.perf_counter() - t0, iso=iso)
     u_grid = np.linspace(pair.u_start, pair.u_end, 161)
+    fe = None
     if level == "pem":
         from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
@@ -176,14 +231,15 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
         u_fe = np.linspace(pair.u_start, pair.u_end, n_fe)
         k_fe, fe_info = fe_pair_stiffness_per_width(pair, u_fe, youngs_modulus, poisson_ratio,
                                                     bore_radius=bore_radius, **opts)
-        info.update(fe_info, u_fe=u_fe, k_fe=k_fe)
+        fe = FESamples(u=u_fe, k=k_fe, compliance=(fe_info["c1"], fe_info["c2"]), ndofs=tuple(fe_info["ndofs"]),
+                       h=fe_info["h"], seconds=fe_info["seconds"])
         k_grid = tabulated(pair, u_fe, k_fe)(u_grid)
-    info.update(u=u_grid, k_pair_per_width=k_grid)
     k_unit = tabulated(pair, u_grid, k_grid)
     n_slices = 1 if pair.beta_b == 0 else n_slices     # spur: every slice sees the same position
     kl = helix_stiffness(pair, k_unit, phases, n_slices)
     kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
-    return MeshStiffness(level, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)
+    return MeshStiffness(level, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, u=u_grid,
+                         k_pair_per_width=k_grid, fe=fe)
 
 
 def mesh_stiffness_from_scene(scene, level: str | None = None, **kw) -> MeshStiffness:
