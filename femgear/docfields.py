@@ -29,6 +29,7 @@ import functools
 import inspect
 import linecache
 import re
+import textwrap
 from typing import NamedTuple
 
 _UNIT = re.compile(r"\[([^\[\]]+)\]\s*$")
@@ -119,7 +120,9 @@ def _parse(cls: type) -> dict[str, FieldDoc] | None:
 
 
 def _fields_section(docs: dict[str, FieldDoc]) -> str:
-    items = "\n".join(f"    {name} [{d.unit}]\n        {d.doc}" for name, d in docs.items())
+    items = "\n".join(f"    {name} [{d.unit}]\n" + textwrap.fill(d.doc, 100, initial_indent=" " * 8,
+                                                                 subsequent_indent=" " * 8, break_on_hyphens=False)
+                      for name, d in docs.items())
     return f"Fields (name [unit], meaning):\n\n{items}\n"
 
 

@@ -75,3 +75,52 @@ def test_inherited_fields_keep_their_base_docs():
 def test_not_a_dataclass_is_refused():
     with pytest.raises(TypeError, match="not a dataclass"):
         document_fields(type("Plain", (), {}))
+
+
+#: result types whose fields are inputs documented elsewhere: the Case (the scene schema documents its keys),
+#: the gear pair it holds, and the dynamic model built from it; the walk stops there
+INPUT_TYPES = ("Case", "GearPair", "GearRotorModel")
+
+
+def _reachable_result_types():
+    import dataclasses
+    import typing
+
+    from femgear.physics.ltca.cycle import LTCACycle
+    from femgear.results import RunResult
+
+    def types_in(tp):
+        args = typing.get_args(tp)
+        return [tp] if not args else [t for a in args for t in types_in(a)]
+
+    seen: dict[type, str] = {}
+
+    def walk(cls, path):
+        if cls in seen or cls.__name__ in INPUT_TYPES:
+            return
+        seen[cls] = path
+        hints = typing.get_type_hints(cls, localns={"LTCACycle": LTCACycle})
+        for f in dataclasses.fields(cls):
+            for t in types_in(hints[f.name]):
+                if isinstance(t, type) and dataclasses.is_dataclass(t):
+                    walk(t, f"{path}.{f.name}")
+
+    walk(RunResult, "RunResult")
+    return seen
+
+
+def test_every_field_reachable_from_run_result_has_a_doc_and_a_unit():
+    import dataclasses
+
+    types = _reachable_result_types()
+    names = {c.__name__ for c in types}
+    # the walk reaches the typed products of every sub-model (a broken walk would check nothing)
+    assert {"RunResult", "Tribology", "ContactPath", "MeshStiffness", "LTCACycle", "LTCAResult", "CouplingState",
+            "CoupledResult", "DynamicsRun", "Response", "TEAnalysis", "PairRating", "LevelFilm"} <= names
+    missing = [f"{path} ({c.__qualname__})" for c, path in types.items() if not is_documented(c)]
+    assert not missing, f"not decorated with @document_fields: {missing}"
+    for cls, path in types.items():
+        docs = field_docs(cls)
+        assert list(docs) == [f.name for f in dataclasses.fields(cls)], path
+        for name, d in docs.items():
+            assert d.doc and d.unit, f"{path}.{name}"

@@ -23,18 +23,27 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.case import Case
+from femgear.docfields import document_fields
 
 
+@document_fields
 @dataclass(frozen=True)
 class LevelFilm:
     """Film along the path of one lubrication level (arrays over the case's path positions)."""
 
-    level: str                  #: the ``physics.lubrication`` level that computed it
-    method: str                 #: the model, in words
-    central: np.ndarray         #: central film thickness h_c [m]
-    minimum: np.ndarray         #: minimum film thickness h_min [m]
-    pressure_max: np.ndarray    #: pressure peak [Pa] (Hertz p_0 for the formula films)
-    temperature_rise: np.ndarray | None = None  #: maximum film temperature rise [K] (thermal levels)
+    level: str
+    """the ``physics.lubrication`` level that computed it [-]"""
+    method: str
+    """the film model, in words (e.g. "isothermal formulas (Moes h_c, Dowson-Higginson h_min)") [-]"""
+    central: np.ndarray
+    """central film thickness h_c [m]"""
+    minimum: np.ndarray
+    """minimum film thickness h_min [m]"""
+    pressure_max: np.ndarray
+    """pressure peak at each path position (the Hertz p_0 for the formula films, the EHL pressure spike or peak for the
+    numerical levels) [Pa]"""
+    temperature_rise: np.ndarray | None = None
+    """maximum film temperature rise at each path position (thermal levels only, else None) [K]"""
 
 
 def _formula(case: Case, w: np.ndarray, T: float, solver=None) -> LevelFilm:

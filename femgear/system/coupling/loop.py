@@ -45,6 +45,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from femgear.case import Case
+from femgear.docfields import document_fields
 from femgear.errors import ConvergenceError
 from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.lubrication.levels import Lubrication, lubrication_solver
@@ -152,31 +153,46 @@ def _face_reference(case: Case, ltca: LTCACycle | None, n_phase: int) -> FaceRef
                                n_zeta=case.wear.face_points)
 
 
+@document_fields
 @dataclass(frozen=True)
 class CouplingState:
     """The loop after ``iteration`` passes; arrays over the path positions unless noted."""
 
     iteration: int
-    mesh_force: np.ndarray          #: (2, n_phase) dynamic mesh force per helix over one mesh period [N]
-    load_per_length: np.ndarray     #: passage-mean w̄' [N/m]
-    mu: np.ndarray                  #: friction coefficient [-]
-    temperature_rise: np.ndarray    #: contact (oil) temperature rise [K]
-    flank_temperature_rise: float   #: bulk temperature rise used for the thermal expansion [K]
-    thermal_deviation: np.ndarray   #: (2, n) ζ_T of pinion and gear [m]
-    wear: np.ndarray                #: (2, n) wear depth of pinion and gear [m]
-    mesh_force_change: float = math.nan   #: max relative change of the mesh force against the previous pass
-    mu_change: float = math.nan           #: max absolute change of μ against the previous pass
-    dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)   #: the pass's run
-    lte_peak_to_peak: float = math.nan    #: loaded TE p-p of the deviated flanks (``ltca`` only) [m]
+    """passes of the loop so far (0: the quasi-static start) [-]"""
+    mesh_force: np.ndarray
+    """(2, n_phase) dynamic mesh force of the left (row 0) and right (row 1) helix over one mesh period, along the
+    normal line of action, at phases i / n_phase [N]"""
+    load_per_length: np.ndarray
+    """passage-mean load per unit contact-line length w̄' at the path positions (measured from T1) [N/m]"""
+    mu: np.ndarray
+    """friction coefficient μ at the path positions (relaxed) [-]"""
+    temperature_rise: np.ndarray
+    """contact (flash) temperature rise at the path positions [K]"""
+    flank_temperature_rise: float
+    """bulk temperature rise used for the thermal expansion [K]"""
+    thermal_deviation: np.ndarray
+    """(2, n) thermal growth ζ_T of the pinion (row 0) and gear (row 1) flank along the path (relaxed) [m]"""
+    wear: np.ndarray
+    """(2, n) wear depth of the pinion (row 0) and gear (row 1) flank along the path (relaxed) [m]"""
+    mesh_force_change: float = math.nan
+    """largest change of the mesh force against the previous pass, relative to its largest value (NaN at the start) [-]"""
+    mu_change: float = math.nan
+    """largest absolute change of μ against the previous pass (NaN at the start) [-]"""
+    dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)
+    """the pass's dynamics run: settings, simulation, response, modes (None at the start) [-]"""
+    lte_peak_to_peak: float = math.nan
+    """peak-to-peak loaded TE (normal approach) of the pass's deviated LTCA cycle (``ltca`` only, else NaN) [m]"""
     seconds: float = 0.0
-    #: wall time of the pass's parts [s]: ``ltca`` (the deviated cycle), ``dynamics`` (with it), ``wear``, ``contact``
+    """wall time of the pass [s]"""
     timings: Mapping[str, float] = field(default_factory=dict, compare=False)
-    #: ``wear.field = "face"``: (member, helix, u, ζ) wear depth on the setup's face grid [m]; ``wear`` is
-    #: then its face mean over both helices
+    """wall time of the pass's parts: ``ltca`` (the deviated cycle), ``dynamics`` (with it), ``wear``, ``contact`` [s]"""
     wear_face: np.ndarray | None = field(default=None, repr=False, compare=False)
-    #: ``wear.field = "face"`` with ``thermal = "fe3d"``: (member, helix, u, ζ) ζ_T on the face grid [m]
-    #: (:meth:`ThermalUnits.face`); ``thermal_deviation`` is its face mean (to the grid's interpolation)
+    """``wear.field = "face"``: (member, helix, u, ζ) wear depth on the setup's face grid; ``wear`` is then its face
+    mean over both helices (else None) [m]"""
     thermal_face: np.ndarray | None = field(default=None, repr=False, compare=False)
+    """``wear.field = "face"`` with ``thermal = "fe3d"``: (member, helix, u, ζ) ζ_T on the face grid
+    (:meth:`ThermalUnits.face`); ``thermal_deviation`` is its face mean (else None) [m]"""
 
     @property
     def removed(self) -> np.ndarray:
@@ -443,22 +459,32 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
         yield state
 
 
+@document_fields
 @dataclass(frozen=True)
 class CouplingHistory:
     """Per-pass convergence measures (iteration 0 is the quasi-static start)."""
 
     iteration: tuple[int, ...]
+    """pass number of each entry (0: the quasi-static start) [-]"""
     mesh_force_change: tuple[float, ...]
+    """relative mesh-force change of each pass (None/NaN at the start) [-]"""
     mu_change: tuple[float, ...]
+    """absolute μ change of each pass (None/NaN at the start) [-]"""
     seconds: tuple[float, ...]
+    """wall time of each pass [s]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class CoupledResult:
     state: CouplingState
+    """the last state of the loop (the converged one, or the first dynamic pass of a one-way run) [-]"""
     history: CouplingHistory
+    """the per-pass convergence measures [-]"""
     converged: bool
+    """whether the loop met its tolerances (a one-way run counts as converged) [-]"""
     seconds: float
+    """wall time of the whole loop [s]"""
 
 
 def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1e-6, max_iter: int = 30,
