@@ -29,11 +29,14 @@ import functools
 import inspect
 import linecache
 import re
+import sys
 import textwrap
+import typing
 from typing import NamedTuple
 
 _UNIT = re.compile(r"\[([^\[\]]+)\]\s*$")
 _ATTR = "__field_docs__"
+_REGISTRY: dict[str, list[type]] = {}     # documented classes by name: resolves annotations imported for typing only
 
 
 class FieldDocError(TypeError):
@@ -135,6 +138,7 @@ def document_fields(cls: type) -> type:
     if docs is None:
         return cls
     setattr(cls, _ATTR, docs)
+    _REGISTRY.setdefault(cls.__name__, []).append(cls)
     head = inspect.cleandoc(cls.__doc__ or "")
     if head.startswith(cls.__name__ + "("):      # the signature dataclass writes for a class without a docstring
         head = ""
@@ -154,3 +158,66 @@ def field_docs(cls: type) -> dict[str, FieldDoc]:
 def is_documented(cls: type) -> bool:
     """Whether ``cls`` went through :func:`document_fields` (its own fields, not only a base class's)."""
     return _ATTR in cls.__dict__
+
+
+def _field_types(cls: type) -> dict[str, list[type]]:
+    """{field: the dataclass types in its annotation} (``X | None``, ``tuple[X, X]`` …).  Names that the defining
+    module imports for typing only (``if TYPE_CHECKING:``) resolve to the documented class of that name."""
+    registry = {name: classes[0] for name, classes in _REGISTRY.items() if len(classes) == 1}
+    namespaces = [vars(sys.modules[k.__module__]) for k in cls.__mro__ if k.__module__ in sys.modules]
+    out: dict[str, list[type]] = {}
+    for f in dataclasses.fields(cls):
+        tp = f.type
+        if isinstance(tp, str):
+            ns = {**registry}
+            for module_ns in reversed(namespaces):
+                ns.update(module_ns)
+            try:
+                tp = eval(tp, ns)       # an annotation of femgear's own source
+            except Exception:           # an annotation naming what is not importable here: not a documented type
+                continue
+        out[f.name] = [t for t in _leaves(tp) if isinstance(t, type) and dataclasses.is_dataclass(t)]
+    return out
+
+
+def _leaves(tp) -> list:
+    args = typing.get_args(tp)
+    return [tp] if not args else [t for a in args for t in _leaves(a)]
+
+
+def field_tree(cls: type, stop: tuple[str, ...] = ()) -> dict[type, str]:
+    """Every dataclass reachable from ``cls`` through its fields' annotations, with the first field path that
+    reaches it (``"RunResult.stiffness.ltca"``); classes named in ``stop`` (inputs documented elsewhere) and
+    what lies behind them are left out."""
+    seen: dict[type, str] = {}
+
+    def walk(klass: type, path: str) -> None:
+        if klass in seen or klass.__name__ in stop:
+            return
+        seen[klass] = path
+        for name, types in _field_types(klass).items():
+            for t in types:
+                walk(t, f"{path}.{name}")
+
+    walk(cls, cls.__name__)
+    return seen
+
+
+def units_table(cls: type, stop: tuple[str, ...] = ()) -> dict[str, str]:
+    """``{field path: unit}`` of every documented leaf field reachable from ``cls`` (``"contact.hertz_pressure":
+    "Pa"``); a field holding a documented dataclass is replaced by that class's fields.  ``stop`` as in
+    :func:`field_tree`."""
+    out: dict[str, str] = {}
+
+    def walk(klass: type, prefix: str, trail: tuple[type, ...]) -> None:
+        types = _field_types(klass)
+        for name, doc in field_docs(klass).items():
+            nested = [t for t in types.get(name, []) if t.__name__ not in stop and t not in trail]
+            if nested:
+                for t in dict.fromkeys(nested):
+                    walk(t, f"{prefix}{name}.", trail + (t,))
+            elif not any(t.__name__ in stop for t in types.get(name, [])):
+                out[f"{prefix}{name}"] = doc.unit
+
+    walk(cls, "", (cls,))
+    return out

@@ -82,3 +82,9 @@ class RunResult:
     rating: PairRating | None = None
     """ISO 6336-2/-3, ISO/TS 6336-20/21/22 ratings beside femgear's own figures (:func:`femgear.rate.rate_case`); None
     when the rating could not be computed (logged) [-]"""
+
+
+#: types reachable from :class:`RunResult` whose fields are inputs documented elsewhere (the Case and its gear pair:
+#: the scene schema; the gear-rotor model the dynamics builds from them): the field docs and the ``units`` table of
+#: ``results.json`` (:func:`femgear.docfields.units_table`) stop there
+INPUT_TYPES = ("Case", "GearPair", "GearRotorModel")

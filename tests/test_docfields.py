@@ -77,42 +77,14 @@ def test_not_a_dataclass_is_refused():
         document_fields(type("Plain", (), {}))
 
 
-#: result types whose fields are inputs documented elsewhere: the Case (the scene schema documents its keys),
-#: the gear pair it holds, and the dynamic model built from it; the walk stops there
-INPUT_TYPES = ("Case", "GearPair", "GearRotorModel")
-
-
-def _reachable_result_types():
-    import dataclasses
-    import typing
-
-    from femgear.physics.ltca.cycle import LTCACycle
-    from femgear.results import RunResult
-
-    def types_in(tp):
-        args = typing.get_args(tp)
-        return [tp] if not args else [t for a in args for t in types_in(a)]
-
-    seen: dict[type, str] = {}
-
-    def walk(cls, path):
-        if cls in seen or cls.__name__ in INPUT_TYPES:
-            return
-        seen[cls] = path
-        hints = typing.get_type_hints(cls, localns={"LTCACycle": LTCACycle})
-        for f in dataclasses.fields(cls):
-            for t in types_in(hints[f.name]):
-                if isinstance(t, type) and dataclasses.is_dataclass(t):
-                    walk(t, f"{path}.{f.name}")
-
-    walk(RunResult, "RunResult")
-    return seen
-
-
 def test_every_field_reachable_from_run_result_has_a_doc_and_a_unit():
     import dataclasses
 
-    types = _reachable_result_types()
+    import femgear.pipeline  # noqa: F401  (imports every sub-model's result type)
+    from femgear.docfields import field_tree
+    from femgear.results import INPUT_TYPES, RunResult
+
+    types = field_tree(RunResult, stop=INPUT_TYPES)
     names = {c.__name__ for c in types}
     # the walk reaches the typed products of every sub-model (a broken walk would check nothing)
     assert {"RunResult", "Tribology", "ContactPath", "MeshStiffness", "LTCACycle", "LTCAResult", "CouplingState",
@@ -124,3 +96,15 @@ def test_every_field_reachable_from_run_result_has_a_doc_and_a_unit():
         assert list(docs) == [f.name for f in dataclasses.fields(cls)], path
         for name, d in docs.items():
             assert d.doc and d.unit, f"{path}.{name}"
+
+
+def test_the_units_table_lists_leaf_fields_by_path():
+    import femgear.pipeline  # noqa: F401
+    from femgear.edge.io.run import result_units
+
+    units = result_units()
+    assert units["contact.hertz_pressure"] == "Pa" and units["stiffness.k_left"] == "N/m"
+    assert units["stiffness.ltca.result.lte"] == "m"           # through an annotation imported for typing only
+    assert units["tribology.friction_coefficient"] == "-" and units["seconds"] == "s"
+    assert units["rating.own.fillet.max_principal"] == "Pa"    # through tuple[FilletStress, FilletStress]
+    assert "stiffness.ltca" not in units and not any(k.startswith("case.") for k in units)
