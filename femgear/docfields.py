@@ -30,7 +30,6 @@ import inspect
 import linecache
 import re
 import sys
-import textwrap
 import typing
 from typing import NamedTuple
 
@@ -56,6 +55,22 @@ def _module_tree(filename: str) -> ast.Module | None:
     return ast.parse("".join(lines), filename) if lines else None
 
 
+def _top_level_class(filename: str, name: str) -> ast.ClassDef | None:
+    """The ``ClassDef`` of the top-level class ``name`` parsed from its own lines only (cheap: no module parse)."""
+    lines = linecache.getlines(filename)
+    head = re.compile(rf"class {re.escape(name)}\b")
+    starts = [i for i, line in enumerate(lines) if head.match(line)]
+    if len(starts) != 1:
+        return None
+    end = next((j for j in range(starts[0] + 1, len(lines))
+                if lines[j].strip() and not lines[j][0].isspace() and not lines[j].startswith(("#", ")"))), len(lines))
+    try:
+        node = ast.parse("".join(lines[starts[0]:end])).body[0]
+    except SyntaxError:
+        return None
+    return node if isinstance(node, ast.ClassDef) and node.name == name else None
+
+
 def _class_node(cls: type) -> ast.ClassDef | None:
     """The ``ClassDef`` of ``cls`` in its module's source (followed along ``__qualname__``), None without source."""
     try:
@@ -64,6 +79,10 @@ def _class_node(cls: type) -> ast.ClassDef | None:
         return None
     if filename is None:
         return None
+    if "." not in cls.__qualname__:
+        node = _top_level_class(filename, cls.__name__)
+        if node is not None:
+            return node
     tree = _module_tree(filename)
     if tree is None:
         return None
@@ -122,9 +141,20 @@ def _parse(cls: type) -> dict[str, FieldDoc] | None:
     return out
 
 
+def _wrap(text: str, width: int = 92) -> list[str]:
+    """``text`` in lines of at most ``width`` characters (greedy, at spaces; a longer word stays whole)."""
+    lines, line = [], ""
+    for word in text.split():
+        if line and len(line) + 1 + len(word) > width:
+            lines.append(line)
+            line = word
+        else:
+            line = f"{line} {word}" if line else word
+    return lines + [line] if line else lines
+
+
 def _fields_section(docs: dict[str, FieldDoc]) -> str:
-    items = "\n".join(f"    {name} [{d.unit}]\n" + textwrap.fill(d.doc, 100, initial_indent=" " * 8,
-                                                                 subsequent_indent=" " * 8, break_on_hyphens=False)
+    items = "\n".join(f"    {name} [{d.unit}]" + "".join(f"\n        {line}" for line in _wrap(d.doc))
                       for name, d in docs.items())
     return f"Fields (name [unit], meaning):\n\n{items}\n"
 
