@@ -93,7 +93,7 @@ def test_too_few_resolved_orders_refine_the_contact_lines(coarse_model, baseline
     monkeypatch.setattr(level, "MIN_RESOLVED_ORDERS", h4 + 1)
     cycle = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
     assert cycle.n_line >= 8 and cycle.resolved_orders >= min(h8, h4 + 1)
-    assert cycle.result.k_secant.size == 64 and cycle.result.info["n_line"] == cycle.n_line
+    assert cycle.result.k_secant.size == 64 and cycle.result.n_line == cycle.n_line
     monkeypatch.setattr(level, "MIN_RESOLVED_ORDERS", 1)
     cycle = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
     assert cycle.n_line == 4 and cycle.resolved_orders == h4

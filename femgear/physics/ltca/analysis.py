@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -130,9 +130,12 @@ class LTCAResult:
     """per phase: the contact-line segment length Δℓ of each point [m]"""
     seconds: float = 0.0
     """wall time of the cycle's contact solves [s]"""
-    info: dict = field(default_factory=dict)
-    """the cycle's discretisation: ``n_line`` (points per contact line), ``stagger`` [base pitches] and ``groove``
-    (width of the member body's groove [m]) [-]"""
+    n_line: int = 0
+    """points per contact line the cycle was solved with [-]"""
+    stagger: float = 0.0
+    """offset of the right helix against the left one the cycle was solved with [base pitches]"""
+    groove: float = 0.0
+    """width of the member bodies' groove between the helices [m]"""
 
     @property
     def nlte(self) -> np.ndarray:
@@ -337,5 +340,5 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
             lengths.append(pts.length)
     return LTCAResult(phases, force, cols["lte"], cols["nl"], cols["nr"], cols["fl"], cols["fr"], cols["ksl"],
                       cols["ksr"], cols["ktl"], cols["ktr"], cols["pl"], cols["pr"], cols["err"], tuple(lines),
-                      tuple(lengths), time.perf_counter() - t0, {"n_line": n_line, "stagger": stagger,
-                                                        "groove": float(model.kernels[1].groove)})
+                      tuple(lengths), time.perf_counter() - t0, n_line=n_line, stagger=stagger,
+                      groove=float(model.kernels[1].groove))

@@ -61,8 +61,8 @@ class LTCACycle:
         """The cycle of ``result`` (force, phases, stagger and points per line read from it) on ``model``
         (needed by :meth:`deviated` only) with its ``modifications`` (those it was run with)."""
         return cls(result=result, model=model, force=float(result.force), modifications=modifications,
-                   n_phases=int(result.phase.size), stagger=float(result.info.get("stagger", 0.0)),
-                   n_line=int(result.info["n_line"]), resolved_orders=resolved_orders, harmonic_change=harmonic_change)
+                   n_phases=int(result.phase.size), stagger=float(result.stagger), n_line=int(result.n_line),
+                   resolved_orders=resolved_orders, harmonic_change=harmonic_change)
 
     @functools.cached_property
     def excitation(self) -> dict[str, np.ndarray]:

@@ -216,14 +216,14 @@ def analyse_cycle(result, pair: GearPair, youngs_modulus: float, poisson_ratio: 
 def helix_alone_te(model, result, modifications=None, extra=None) -> tuple[np.ndarray, np.ndarray]:
     """(left, right): the normal approach of each helix carrying its cycle-mean share of ``result``'s load alone.
 
-    The same contact points, separations and compliance as ``result`` (``result.info``: n_line, stagger),
+    The same contact points, separations and compliance as ``result`` (``result.n_line``, ``result.stagger``),
     restricted to one helix (:func:`femgear.physics.ltca.contact.solve_phase` on its points; the other helix unloaded,
     so the cross-helix compliance does not act).  NaN for a helix with no mean load."""
     from femgear.physics.ltca.contact import ContactPoints, phase_points, solve_phase
     from femgear.physics.ltca.separation import separation
 
     pair, E, nu = model.pair, model.youngs_modulus, model.poisson_ratio
-    n_line, stagger = int(result.info["n_line"]), float(result.info["stagger"])
+    n_line, stagger = int(result.n_line), float(result.stagger)
     share = (float(np.mean(result.force_left)), float(np.mean(result.force_right)))
     out = np.full((2, result.phase.size), np.nan)
     for i, ph in enumerate(result.phase):
