@@ -110,3 +110,38 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
     same, none, cycle = _deviated_model(setup, SimpleNamespace(wear=0 * wear, thermal_deviation=0 * zeta,
                                                               wear_face=None, thermal_face=None))
     assert same is model and none is None and cycle is unworn
+
+
+def test_worn_orders_records_the_smaller_band_in_both_cycles(unworn, baseline_pair, monkeypatch):
+    """Face-resolved wear: the resolution check on the worn flanks sets the band of both cycles (the fewer of the
+    two) without touching the unworn cycle the setup holds; a failed check keeps mesh order 1 and its message."""
+    import femgear.physics.ltca.level as level
+    from femgear.errors import ConvergenceError
+    from femgear.physics.ltca.separation import path_deviation
+    from femgear.system.coupling.loop import _worn_orders
+
+    u = path_positions(baseline_pair, 41)
+    extra = path_deviation(baseline_pair, u, np.full((2, u.size), 0.5e-6))
+    base = replace(unworn, resolved_orders=6)
+    worn = base.deviated(extra)
+    seen = {}
+
+    def orders(model, force, mods, stagger, n_line, dev):
+        seen.update(model=model, force=force, mods=mods, n_line=n_line, extra=dev)
+        return 4, np.arange(3.0)
+
+    monkeypatch.setattr(level, "resolved_orders", orders)
+    a, b = _worn_orders(base, worn, extra)
+    assert seen == {"model": base.model, "force": base.force, "mods": base.modifications, "n_line": 8, "extra": extra}
+    assert (a.resolved_orders, b.resolved_orders, base.resolved_orders) == (4, 4, 6)
+    assert a.result is base.result and b.result is worn.result and np.array_equal(b.harmonic_change, np.arange(3.0))
+    monkeypatch.setattr(level, "resolved_orders", lambda *a: (9, None))
+    assert [c.resolved_orders for c in _worn_orders(base, worn, extra)] == [6, 6]     # never more than unworn
+
+    def fails(*a):
+        raise ConvergenceError("LTCA phase 0.5", "no convergence")
+
+    monkeypatch.setattr(level, "resolved_orders", fails)
+    a, b = _worn_orders(base, worn, extra)
+    assert (a.resolved_orders, b.resolved_orders, b.harmonic_change) == (1, 1, None)
+    assert "no convergence" in b.orders_check and a.orders_check is None
