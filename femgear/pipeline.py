@@ -82,7 +82,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
     """The :class:`femgear.physics.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
-    ltca = stiffness.info.get("ltca")
+    ltca = None if stiffness.ltca is None else stiffness.ltca.result
     if ltca is None or not ltca.line_load:
         return None
     from femgear.physics.ltca.te import analyse_cycle
@@ -125,15 +125,15 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         pair = case.pair
         k_mean = float(np.mean(stiffness.k_left)) if stiffness is not None else \
             case.stiffness.mesh_stiffness_per_width * pair.b
-        info = {} if stiffness is None else stiffness.info
-        ref = ltca_reference(pair, case.path.u, info, np.zeros(case.path.u.size)) \
-            if "ltca" in info and pair.beta_b > 0 else None     # spur: the Winkler sharing (see coupling.loop)
+        cycle = None if stiffness is None else stiffness.ltca
+        ref = ltca_reference(pair, case.path.u, cycle, np.zeros(case.path.u.size)) \
+            if cycle is not None and pair.beta_b > 0 else None     # spur: the Winkler sharing (see coupling.loop)
         setup = wear_model.setup(pair, case.path, case.operating.normal_force / pair.n_helices,
                                  line_stiffness(case, k_mean, stiffness), reference=ref)
         if wear_model.face and ref is not None:     # face-resolved (femgear.physics.wear.face); no checkpoint
             from femgear.physics.wear.face import run_face_wear
 
-            face = ltca_face_reference(pair, case.path.u, info, np.zeros(case.path.u.size),
+            face = ltca_face_reference(pair, case.path.u, cycle, np.zeros(case.path.u.size),
                                        n_zeta=wear_model.face_points)
             state = run_face_wear(setup, face, wear_model.cycles)
             wear = state.path_mean(face.grid)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.case import Case
+from femgear.docfields import document_fields
 from femgear.levels.lubrication import LevelFilm
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.ltca.te import TEAnalysis
@@ -21,39 +22,69 @@ from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.system.coupling.loop import CoupledResult
 
 
+@document_fields
 @dataclass(frozen=True)
 class Tribology:
     """Lubrication, thermal expansion and wear along the case's path grid (None: level off)."""
 
-    load_per_length: np.ndarray                 #: w̄' [N/m] (static: the time-mean w')
-    friction_coefficient: np.ndarray | None     #: μ [-]
-    temperature_rise: np.ndarray | None         #: contact temperature rise [K]
-    flank_temperature_rise: float               #: bulk temperature rise driving the expansion [K]
-    thermal_deviation: np.ndarray | None        #: (2, n) ζ_T pinion, gear [m]
-    wear: np.ndarray | None                     #: (2, n) wear depth pinion, gear [m]
-    wear_cycles: float = 0.0                    #: pinion revolutions of accumulated wear
-    wear_steps: int = 0                         #: update steps of the wear integration
-    #: face grid ζ (m,) of each helix [m] of the face-resolved fields (``wear.field = "face"`` or ``thermal = "fe3d"``)
+    load_per_length: np.ndarray
+    """passage-mean load per unit contact-line length w̄' at the case's path positions case.path.u (measured from T1),
+    per helix; static runs: the contact pass's shared line load [N/m]"""
+    friction_coefficient: np.ndarray | None
+    """friction coefficient μ of the lubrication level at each path position (None: lubrication off) [-]"""
+    temperature_rise: np.ndarray | None
+    """contact (flash) temperature rise ΔT of the lubrication level at each path position (None: lubrication off) [K]"""
+    flank_temperature_rise: float
+    """bulk (body) temperature rise of both flanks that drives the thermal expansion [K]"""
+    thermal_deviation: np.ndarray | None
+    """(2, n) thermal growth ζ_T of the pinion (row 0) and gear (row 1) flank along the path, normal to the flank, + =
+    material added (None: thermal off) [m]"""
+    wear: np.ndarray | None
+    """(2, n) wear depth of the pinion (row 0) and gear (row 1) flank along the path, normal to the flank (None: wear
+    off) [m]"""
+    wear_cycles: float = 0.0
+    """pinion revolutions of accumulated wear [rev]"""
+    wear_steps: int = 0
+    """update steps the wear integration took [-]"""
     face_grid: np.ndarray | None = None
-    wear_face: np.ndarray | None = None         #: (member, helix, n, m) wear depth, ``wear.field = "face"`` [m]
-    thermal_face: np.ndarray | None = None      #: (member, helix, n, m) ζ_T of ``thermal = "fe3d"`` [m]
-    #: the film of the lubrication level that ran, at ``load_per_length`` (:meth:`femgear.levels.lubrication.Lubrication.film`)
+    """(m,) face coordinate ζ of the face-resolved fields, 0 … b of each helix (``wear.field = "face"`` or ``thermal =
+    "fe3d"``; else None) [m]"""
+    wear_face: np.ndarray | None = None
+    """(member, helix, n, m) wear depth over path position and face grid, ``wear.field = "face"`` (else None) [m]"""
+    thermal_face: np.ndarray | None = None
+    """(member, helix, n, m) thermal growth ζ_T over path position and face grid, ``thermal = "fe3d"`` (else None) [m]"""
     film: LevelFilm | None = None
+    """the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.physics.lubrication.films`;
+    None: lubrication off) [-]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class RunResult:
     """Everything one run computed."""
 
     case: Case
+    """the case the run computed: pair, operating point, path positions, levels (its inputs are documented by the scene
+    schema) [-]"""
     contact: ContactPath
+    """the quasi-static contact pass along the path of contact: Hertz pressure, films, kinematics, load sharing [-]"""
     stiffness: MeshStiffness
+    """the mesh stiffness of the ``stiffness`` level over one mesh period, along the normal line of action [-]"""
     tribology: Tribology
-    coupled: CoupledResult | None = None        #: with a dynamics level
+    """friction, temperatures, thermal growth and wear along the path (static, or the coupled loop's last state) [-]"""
+    coupled: CoupledResult | None = None
+    """with a dynamics level: the coupling loop's last state, its history and convergence (else None) [-]"""
     seconds: float = 0.0
-    #: ``stiffness = "ltca"``: loaded TE, its harmonics, stiffness, load share and peak pressure of the LTCA
-    #: cycle of the stiffness level (new flanks with the scene's modifications, operating torque)
+    """wall time of the whole run [s]"""
     transmission_error: TEAnalysis | None = None
-    #: ISO 6336-2/-3, ISO/TS 6336-20/21/22 ratings beside femgear's own figures (:func:`femgear.rate.rate_case`);
-    #: None when the rating could not be computed (logged)
+    """``stiffness = "ltca"``: loaded TE, its harmonics, stiffness, load share and peak pressure of the LTCA cycle of
+    the stiffness level (new flanks with the scene's modifications, operating torque); else None [-]"""
     rating: PairRating | None = None
+    """ISO 6336-2/-3, ISO/TS 6336-20/21/22 ratings beside femgear's own figures (:func:`femgear.rate.rate_case`); None
+    when the rating could not be computed (logged) [-]"""
+
+
+#: types reachable from :class:`RunResult` whose fields are inputs documented elsewhere (the Case and its gear pair:
+#: the scene schema; the gear-rotor model the dynamics builds from them): the field docs and the ``units`` table of
+#: ``results.json`` (:func:`femgear.docfields.units_table`) stop there
+INPUT_TYPES = ("Case", "GearPair", "GearRotorModel")

@@ -33,9 +33,8 @@ def pair_stiffness_curve(case: Case, stiffness=None) -> StiffnessPerWidth | None
     from femgear.physics.stiffness.tvms import tabulated
 
     pair = case.pair
-    info = getattr(stiffness, "info", None) or {}
-    if "u" in info and "k_pair_per_width" in info:
-        return tabulated(pair, info["u"], info["k_pair_per_width"])
+    if getattr(stiffness, "k_pair_per_width", None) is not None:
+        return tabulated(pair, stiffness.u, stiffness.k_pair_per_width)
     from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
     u = np.linspace(pair.u_start, pair.u_end, 81)

@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.levels.registry import Registry
 
 if TYPE_CHECKING:
@@ -44,22 +45,24 @@ Solver = Callable[..., tuple[np.ndarray, np.ndarray]]
 REGISTRY = Registry("lubrication", planned=('ehl-point',))
 
 
+@document_fields
 @dataclass(frozen=True)
 class LevelFilm:
     """Film along the path of one lubrication level (arrays over the case's path positions)."""
 
     level: str
-    """the ``physics.lubrication`` level that computed it"""
+    """the ``physics.lubrication`` level that computed it [-]"""
     method: str
-    """the model, in words"""
+    """the film model, in words (e.g. "isothermal formulas (Moes h_c, Dowson-Higginson h_min)") [-]"""
     central: np.ndarray
     """central film thickness h_c [m]"""
     minimum: np.ndarray
     """minimum film thickness h_min [m]"""
     pressure_max: np.ndarray
-    """pressure peak (Hertz p_0 for the formula films) [Pa]"""
+    """pressure peak at each path position (the Hertz p_0 for the formula films, the EHL pressure spike or peak for the
+    numerical levels) [Pa]"""
     temperature_rise: np.ndarray | None = None
-    """maximum film temperature rise (thermal levels) [K]"""
+    """maximum film temperature rise at each path position (thermal levels only, else None) [K]"""
 
 
 FilmOf = Callable[[str, np.ndarray, float, Solver], LevelFilm]

@@ -39,7 +39,7 @@ def _iso6336(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, young
 
     t0 = time.perf_counter()
     k, iso = iso6336_helix_stiffness(pair, youngs_modulus)
-    return uniform_mesh_stiffness(pair, k, "iso6336", n_positions, stagger, t0=t0, info={"iso": iso})
+    return uniform_mesh_stiffness(pair, k, "iso6336", n_positions, stagger, t0=t0, iso=iso)
 
 
 def _pem(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
@@ -64,7 +64,7 @@ def _fe(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: 
 
     from femgear.physics.body.compliance import fe_pair_stiffness_per_width
     from femgear.physics.stiffness import sliced_mesh_stiffness
-    from femgear.physics.stiffness.tvms import path_samples, tabulated
+    from femgear.physics.stiffness.tvms import FESamples, path_samples, tabulated
 
     t0 = time.perf_counter()
     opts = dict(fe_options or {})
@@ -74,23 +74,26 @@ def _fe(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: 
                                                 **opts)
     u_grid = path_samples(pair)
     return sliced_mesh_stiffness(pair, u_grid, tabulated(pair, u_fe, k_fe)(u_grid), "fe", n_positions, stagger,
-                                 n_slices, t0=t0, info={**fe_info, "u_fe": u_fe, "k_fe": k_fe})
+                                 n_slices, t0=t0,
+                                 fe=FESamples(u=u_fe, k=k_fe, compliance=(fe_info["c1"], fe_info["c2"]),
+                                              ndofs=tuple(fe_info["ndofs"]), h=fe_info["h"], seconds=fe_info["seconds"]))
 
 
 def _ltca(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, youngs_modulus: float = 210e9,
           poisson_ratio: float = 0.3, ltca_options: dict | None = None, **_: Any) -> MeshStiffness:
     """Secant stiffness per helix of the loaded tooth contact analysis at ``ltca_options['force']`` (its TE
-    tables in ``info``)."""
+    tables and cycle in ``MeshStiffness.ltca``)."""
     from femgear.physics.ltca.level import ltca_cycle
     from femgear.physics.stiffness import MeshStiffness
 
     if not ltca_options or "force" not in ltca_options:
         raise ValueError("level 'ltca' needs ltca_options={'force': normal force [N], ...}")
     t0 = time.perf_counter()
-    res, info = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
-                           poisson_ratio=poisson_ratio, **ltca_options)
+    cycle = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
+                       poisson_ratio=poisson_ratio, **ltca_options)
+    res = cycle.result
     return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger, 0,
-                         time.perf_counter() - t0, info)
+                         time.perf_counter() - t0, ltca=cycle)
 
 
 #: level name -> the level's function of a bare pair (the keywords of :func:`mesh_stiffness`)
@@ -119,7 +122,7 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
     ``fe`` (sliced, tooth compliance from the 2-D FE of :mod:`femgear.physics.body.compliance`
     at ``fe_options['n_fe']`` path positions, Hertz as in PEM), ``ltca`` (secant stiffness
     per helix from the loaded tooth contact analysis of :mod:`femgear.physics.ltca` at
-    ``ltca_options['force']``; its TE tables are in ``info``).
+    ``ltca_options['force']``; the cycle, with its TE tables, is ``MeshStiffness.ltca``).
     """
     build = PAIR_LEVELS.get(level)
     if build is None:

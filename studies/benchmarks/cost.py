@@ -82,11 +82,11 @@ def one(kind: str, scene_path: str, level: int) -> dict:
         ms = stiffness_levels.of(build_case(scene), kind)
         out = {"seconds": time.perf_counter() - t0, "k_mean": ms.mean}
         if kind == "ltca":
-            out["lte_pp_um"] = ms.info["lte_peak_to_peak"] * 1e6
-            out["resolved_orders"] = ms.info["resolved_orders"]
-            out["dofs"] = [int(k.ndofs) for k in ms.info["model"].kernels.values()]
+            out["lte_pp_um"] = ms.ltca.lte_peak_to_peak * 1e6
+            out["resolved_orders"] = ms.resolved_orders
+            out["dofs"] = [int(k.ndofs) for k in ms.ltca.model.kernels.values()]
         else:
-            out["dofs"] = [int(n) for n in ms.info["ndofs"]]
+            out["dofs"] = [int(n) for n in ms.fe.ndofs]
         return {**out, **_usage()}
     if kind == "fidelity":
         from femgear.edge.cli import main as cli

@@ -41,7 +41,7 @@ def run(scene, coarse: bool = False) -> dict:
         "pem": stiffness_levels.of(build_case(scene), level="pem"),
         "fe": stiffness_levels.of(build_case(scene), level="fe", fe_options=fe_opts),
     }
-    fe = levels["fe"].info
+    fe = {"u_fe": levels["fe"].fe.u, "k_fe": levels["fe"].fe.k}
     from femgear.physics.stiffness.pem import pair_stiffness_per_width
 
     k_pem = pair_stiffness_per_width(pair, fe["u_fe"], scene.material.youngs_modulus, scene.material.poisson_ratio)

@@ -61,7 +61,6 @@ def load_profile(res, b: float, n: int = 8) -> dict:
 def compare(setup) -> dict:
     """The deviated LTCA cycle on −ζ_T face-resolved and face-uniform, from the loop's own functions."""
     from femgear.errors import ConvergenceError
-    from femgear.physics.ltca.level import deviated_cycle
     from femgear.system.coupling.loop import _removed_deviation, _thermal
 
     n = setup.kin.u.size
@@ -71,12 +70,12 @@ def compare(setup) -> dict:
     for name, field in (("face-resolved", face), ("face-uniform", None)):
         t0 = time.perf_counter()
         try:
-            info = deviated_cycle(setup.ltca, _removed_deviation(setup, wear, zeta, wear_face, field))
+            cycle = setup.ltca.deviated(_removed_deviation(setup, wear, zeta, wear_face, field))
         except ConvergenceError as exc:
             rows[name] = {"error": str(exc), "seconds": time.perf_counter() - t0}
             continue
-        res = info["ltca"]
-        rows[name] = {"lte_um": 1e6 * info["lte_peak_to_peak"], "force_left": float(np.mean(res.force_left)),
+        res = cycle.result
+        rows[name] = {"lte_um": 1e6 * cycle.lte_peak_to_peak, "force_left": float(np.mean(res.force_left)),
                       "force_right": float(np.mean(res.force_right)), "seconds": time.perf_counter() - t0,
                       **load_profile(res, setup.pair.b)}
     grid = setup.face.grid
@@ -84,7 +83,7 @@ def compare(setup) -> dict:
     return {"rise": rise, "rows": rows, "zeta_face": face, "zeta": zeta, "grid": grid,
             "face_mean_error": float(np.max(np.abs(mean - zeta)) / np.max(np.abs(zeta))),
             "apex_to_outer": float(np.median(face[:, :, :, -1] / face[:, :, :, 0])),
-            "unworn_lte_um": 1e6 * setup.ltca["lte_peak_to_peak"]}
+            "unworn_lte_um": 1e6 * setup.ltca.lte_peak_to_peak}
 
 
 def passes(setup) -> dict:

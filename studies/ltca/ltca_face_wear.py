@@ -85,8 +85,8 @@ def worn_orders(setup, case) -> int:
     from femgear.system.coupling.loop import _removed_deviation
 
     wear, zeta, face = C.wear(case), C.thermal_deviation(case), case.tribology.wear_face
-    o, info = setup.ltca["options"], setup.ltca
-    return resolved_orders(info["model"], info["force"], info["modifications"], o["stagger"], o["n_line"],
+    c = setup.ltca
+    return resolved_orders(c.model, c.force, c.modifications, c.stagger, c.n_line,
                            _removed_deviation(setup, wear, zeta, face))[0]
 
 
@@ -140,7 +140,7 @@ def run(coarse: bool = False, workers: int = 2) -> dict:
     for r, c in zip(rows.values(), cases):
         r["change_percent"] = {k: 100 * (r[k] / new[k] - 1) for k in ("gear_y_um", "gear_vy")}
         r["worn_orders"] = worn_orders(coupling, c)
-        r["unworn_orders"] = int(coupling.ltca["resolved_orders"])
+        r["unworn_orders"] = int(coupling.ltca.resolved_orders)
     out = {"coarse": coarse, "rows": rows, "cost": step_cost(coupling)}
     out["png"] = str(_plot(dict(zip(names, cases))))
     return out

@@ -41,6 +41,7 @@ MODELS = {"level 0 (tests)": ({"level": 0, "order": 1, "n_rho": 5, "n_z": 5, "n_
 def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
     from femgear.physics.geometry import kinematics, path_positions
     from femgear.physics.ltca.analysis import build_model, mesh_cycle, normal_force
+    from femgear.physics.ltca.cycle import LTCACycle
     from femgear.physics.wear import WearState, wear_rates
     from femgear.physics.wear.load_sharing import load_map, reference_load_map, reference_loads, trapezoid_weights
     from femgear.scene.schema import FlankModification, Modifications
@@ -54,8 +55,7 @@ def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
     out, refs = {}, {}
     for name, m in (("plain", None), ("relief", mods)):
         res = mesh_cycle(model, F, m, n_phases=n_phases, stagger=scene.pair.stagger, n_line=n_line)
-        refs[name] = ltca_reference(pair, u, {"ltca": res, "options": {"stagger": scene.pair.stagger},
-                                              "modifications": m}, np.zeros(u.size))
+        refs[name] = ltca_reference(pair, u, LTCACycle.from_result(res, model, m), np.zeros(u.size))
         if name == "plain":
             own = np.array([res.force_left, res.force_right])
             w = reference_loads(pair, u, own, np.zeros(u.size), 1.5e10, refs[name])

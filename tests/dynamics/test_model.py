@@ -1,6 +1,7 @@
 """Tier 1: the assembled model — symmetry, action = reaction, kinematics, statics."""
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -187,7 +188,8 @@ def test_ltca_excitation_enters_as_the_drive_flank_deviation(baseline_scene):
 
     class FakeLTCA:                 # the MeshStiffness interface the ltca level returns
         level = "ltca"
-        info = {"excitation": {"e_left": e, "e_right": e, "k_secant_left": k, "k_secant_right": k}}
+        ltca = SimpleNamespace(excitation={"e_left": e, "e_right": e, "k_secant_left": k, "k_secant_right": k},
+                               resolved_orders=None)
 
         def __call__(self, phase):
             from femgear.system.dynamics.mesh import periodic_interp

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from femgear.physics.geometry import path_positions
+from femgear.physics.ltca.cycle import LTCACycle
 
 
 @pytest.fixture(scope="module")
@@ -21,9 +22,7 @@ def unworn(coarse_model, baseline_force):
     mods = Modifications(tip_relief=3e-6, tip_relief_length=2.5e-3, crowning=5e-6)
     options = {"n_phases": 16, "stagger": 0.0, "n_line": 8}
     res = mesh_cycle(coarse_model, baseline_force, mods, keep_lines=False, **options)
-    return {"model": coarse_model, "force": baseline_force, "modifications": mods, "options": options,
-            "resolved_orders": None, "ltca": res, "excitation": res.excitation(),
-            "lte_peak_to_peak": res.lte_peak_to_peak()}
+    return LTCACycle.from_result(res, coarse_model, mods)
 
 
 def test_path_deviation_reads_each_member_at_its_roll_distance(baseline_pair):
@@ -46,36 +45,36 @@ def test_path_deviation_reads_each_member_at_its_roll_distance(baseline_pair):
 
 
 def test_uniform_removal_moves_the_te_by_its_depth_and_keeps_the_loads(unworn, baseline_pair):
-    from femgear.physics.ltca.level import deviated_cycle
     from femgear.physics.ltca.separation import path_deviation
 
     u = path_positions(baseline_pair, 41)
     depth = 2e-6 + 1e-6                        # pinion 2 µm, gear 1 µm
-    worn = deviated_cycle(unworn, path_deviation(baseline_pair, u, np.array([np.full(u.size, 2e-6),
+    worn = unworn.deviated(path_deviation(baseline_pair, u, np.array([np.full(u.size, 2e-6),
                                                                                np.full(u.size, 1e-6)])))
-    a, b = unworn["excitation"], worn["excitation"]
+    a, b = unworn.excitation, worn.excitation
     for h in ("left", "right"):
         assert np.allclose(b[f"force_{h}"], a[f"force_{h}"], rtol=1e-9)
         assert np.allclose(b[f"k_secant_{h}"], a[f"k_secant_{h}"], rtol=1e-7)
         assert np.allclose(b[f"lte_{h}"] - a[f"lte_{h}"], depth, rtol=1e-7)
         assert np.allclose(b[f"e_{h}"] - a[f"e_{h}"], depth, rtol=1e-6)
-    assert worn["lte_peak_to_peak"] == pytest.approx(unworn["lte_peak_to_peak"], rel=1e-6)
+    assert worn.lte_peak_to_peak == pytest.approx(unworn.lte_peak_to_peak, rel=1e-6)
+    assert (worn.force, worn.n_line, worn.model, worn.modifications) == (unworn.force, 8, unworn.model,
+                                                                         unworn.modifications)
 
 
 def test_a_worn_cycle_excites_the_drive_flanks_once_and_keeps_the_stiffness(unworn, baseline_pair, baseline_scene):
     """with_deviated_tooth_contact: e'_s = LTE − F_s/k_s,0 on the drive flanks (here e_s + depth), the unworn
     coast flanks and the unworn stiffness table (the integrators' propagators stay valid)."""
     from femgear.case import build_case
-    from femgear.physics.ltca.level import deviated_cycle
     from femgear.physics.ltca.separation import path_deviation
     from femgear.system.dynamics.build import build_model, with_deviated_tooth_contact
 
     class Source:
-        info = unworn
+        ltca = unworn
 
     model = build_model(build_case(baseline_scene), stiffness=Source, friction=0.0)
     u = path_positions(baseline_pair, 41)
-    worn = deviated_cycle(unworn, path_deviation(baseline_pair, u, np.full((2, u.size), 0.5e-6)))
+    worn = unworn.deviated(path_deviation(baseline_pair, u, np.full((2, u.size), 0.5e-6)))
     new = with_deviated_tooth_contact(model, unworn, worn)
     assert new.stiffness is model.stiffness
     assert np.allclose(new.base_deviation.drive - model.base_deviation.drive, 1e-6, rtol=1e-6)
@@ -94,7 +93,7 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
     from femgear.system.dynamics.build import build_model
 
     class Source:
-        info = unworn
+        ltca = unworn
 
     case = build_case(baseline_scene)
     model = build_model(case, stiffness=Source, friction=0.0)
@@ -107,7 +106,42 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
     base, extra, worn = _deviated_model(setup, state)
     assert np.allclose(base.base_deviation.drive - model.base_deviation.drive, 1e-6 - 0.4e-6, rtol=1e-6)
     assert np.all(extra.drive == 0) and np.allclose(extra.coast, -0.4e-6, rtol=1e-12)
-    assert worn["lte_peak_to_peak"] == pytest.approx(unworn["lte_peak_to_peak"], rel=1e-6)
+    assert worn.lte_peak_to_peak == pytest.approx(unworn.lte_peak_to_peak, rel=1e-6)
     same, none, cycle = _deviated_model(setup, SimpleNamespace(wear=0 * wear, thermal_deviation=0 * zeta,
                                                               wear_face=None, thermal_face=None))
     assert same is model and none is None and cycle is unworn
+
+
+def test_worn_orders_records_the_smaller_band_in_both_cycles(unworn, baseline_pair, monkeypatch):
+    """Face-resolved wear: the resolution check on the worn flanks sets the band of both cycles (the fewer of the
+    two) without touching the unworn cycle the setup holds; a failed check keeps mesh order 1 and its message."""
+    import femgear.physics.ltca.level as level
+    from femgear.errors import ConvergenceError
+    from femgear.physics.ltca.separation import path_deviation
+    from femgear.system.coupling.loop import _worn_orders
+
+    u = path_positions(baseline_pair, 41)
+    extra = path_deviation(baseline_pair, u, np.full((2, u.size), 0.5e-6))
+    base = replace(unworn, resolved_orders=6)
+    worn = base.deviated(extra)
+    seen = {}
+
+    def orders(model, force, mods, stagger, n_line, dev):
+        seen.update(model=model, force=force, mods=mods, n_line=n_line, extra=dev)
+        return 4, np.arange(3.0)
+
+    monkeypatch.setattr(level, "resolved_orders", orders)
+    a, b = _worn_orders(base, worn, extra)
+    assert seen == {"model": base.model, "force": base.force, "mods": base.modifications, "n_line": 8, "extra": extra}
+    assert (a.resolved_orders, b.resolved_orders, base.resolved_orders) == (4, 4, 6)
+    assert a.result is base.result and b.result is worn.result and np.array_equal(b.harmonic_change, np.arange(3.0))
+    monkeypatch.setattr(level, "resolved_orders", lambda *a: (9, None))
+    assert [c.resolved_orders for c in _worn_orders(base, worn, extra)] == [6, 6]     # never more than unworn
+
+    def fails(*a):
+        raise ConvergenceError("LTCA phase 0.5", "no convergence")
+
+    monkeypatch.setattr(level, "resolved_orders", fails)
+    a, b = _worn_orders(base, worn, extra)
+    assert (a.resolved_orders, b.resolved_orders, b.harmonic_change) == (1, 1, None)
+    assert "no convergence" in b.orders_check and a.orders_check is None

@@ -5,6 +5,8 @@ import math
 import numpy as np
 import pytest
 
+from femgear.physics.ltca.cycle import LTCACycle
+
 
 def test_band_limited_reproduces_a_trigonometric_polynomial_and_adds_no_orders():
     from femgear.system.dynamics.build import band_limited
@@ -37,7 +39,7 @@ def test_resolved_orders_and_band_limited_ltca_tables(coarse_model, baseline_for
     res = mesh_cycle(coarse_model, baseline_force, mods, n_phases=32, n_line=8, keep_lines=False)
 
     class Source:
-        info = {"excitation": res.excitation(), "resolved_orders": H}
+        ltca = LTCACycle.from_result(res, resolved_orders=H)
 
     table, dev = ltca_table(Source), tooth_contact_deviation(Source)
     n = table.k_left.size
@@ -89,9 +91,9 @@ def test_too_few_resolved_orders_refine_the_contact_lines(coarse_model, baseline
     h4, _ = level.resolved_orders(coarse_model, baseline_force, mods, n_line=4)
     h8, _ = level.resolved_orders(coarse_model, baseline_force, mods, n_line=8)
     monkeypatch.setattr(level, "MIN_RESOLVED_ORDERS", h4 + 1)
-    res, info = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
-    assert info["options"]["n_line"] >= 8 and info["resolved_orders"] >= min(h8, h4 + 1)
-    assert res.k_secant.size == 64
+    cycle = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
+    assert cycle.n_line >= 8 and cycle.resolved_orders >= min(h8, h4 + 1)
+    assert cycle.result.k_secant.size == 64 and cycle.result.n_line == cycle.n_line
     monkeypatch.setattr(level, "MIN_RESOLVED_ORDERS", 1)
-    _, info = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
-    assert info["options"]["n_line"] == 4 and info["resolved_orders"] == h4
+    cycle = level.ltca_cycle(baseline_pair, baseline_force, mods, n_line=4)
+    assert cycle.n_line == 4 and cycle.resolved_orders == h4

@@ -14,6 +14,7 @@ import pytest
 from femgear.case import build_case
 from femgear.levels.wear import static_setup
 from femgear.physics.geometry import kinematics, path_positions
+from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.wear import WearState, run_wear, wear_rates
 from femgear.physics.wear.face import (
     FaceReference,
@@ -45,8 +46,7 @@ def _analysis(model, force, pair, u, mods=None):
     from femgear.system.coupling.loop import ltca_face_reference
 
     res = mesh_cycle(model, force, mods, n_phases=32, stagger=0.0, n_line=8)
-    info = {"ltca": res, "options": {"stagger": 0.0}, "modifications": mods}
-    return res, ltca_face_reference(pair, u, info, np.zeros(u.size), n_zeta=N_ZETA)
+    return res, ltca_face_reference(pair, u, LTCACycle.from_result(res, model, mods), np.zeros(u.size), n_zeta=N_ZETA)
 
 
 def _mods(**kw):

@@ -8,6 +8,7 @@ import pytest
 
 from femgear.case.pair import pair_from_scene
 from femgear.errors import ArgumentError, SceneError
+from femgear.physics.ltca.cycle import LTCACycle
 from femgear.scene.schema import Modifications
 
 RELIEF = Modifications(tip_relief=10e-6, tip_relief_length=2.5e-3)
@@ -217,7 +218,7 @@ def test_main_job_summary_and_key_figures_carry_the_loaded_te(coarse_model, base
     result = run_case(case)
     assert result.transmission_error is None and "transmission_error" not in run_summary(result)
     r = mesh_cycle(coarse_model, baseline_force, None, n_phases=16, n_line=8)
-    ms = dataclasses.replace(result.stiffness, level="ltca", info={"ltca": r, "resolved_orders": 7})
+    ms = dataclasses.replace(result.stiffness, level="ltca", ltca=LTCACycle.from_result(r, resolved_orders=7))
     result = dataclasses.replace(result, stiffness=ms, transmission_error=transmission_error(case, ms))
     te = run_summary(result)["transmission_error"]
     assert te["lte_peak_to_peak"] == r.lte_peak_to_peak() and np.allclose(te["lte_harmonics"], r.harmonics(5))

@@ -6,6 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from femgear.physics.ltca.cycle import LTCACycle
 from femgear.scene.schema import Modifications
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -107,7 +108,7 @@ def test_the_main_job_writes_the_pressure_map_with_the_ltca_level(symmetric_cycl
     result = run_case(build_case(scene))
     assert "ltca_pressure_vtu" not in write_run_paraview(result, tmp_path / "iso")
     ltca = dataclasses.replace(result, stiffness=dataclasses.replace(result.stiffness, level="ltca",
-                                                                     info={"ltca": symmetric_cycle}))
+                                                                     ltca=LTCACycle.from_result(symmetric_cycle)))
     files = write_run_paraview(ltca, tmp_path / "ltca")
     assert files["ltca_pressure_vtu"] == tmp_path / "ltca" / "ltca_pressure.vtu"
     m = meshio.read(files["ltca_pressure_vtu"])

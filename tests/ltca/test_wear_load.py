@@ -17,6 +17,7 @@ from femgear.case import build_case
 from femgear.levels.wear import static_setup
 from femgear.physics.geometry import kinematics, path_positions
 from femgear.physics.geometry.lines import line_weights
+from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.wear.load_sharing import load_map, reference_load_map, reference_loads
 
 C_L = 1.5e10        #: a Winkler line stiffness of the order of the baseline's [N/m²]
@@ -38,7 +39,7 @@ def _reference(pair, u, res, deviation=None, mods=None, extra=None):
     from femgear.system.coupling.loop import ltca_reference
 
     dev = np.zeros(u.size) if deviation is None else deviation
-    return ltca_reference(pair, u, {"ltca": res, "options": {"stagger": 0.0}, "modifications": mods}, dev, extra)
+    return ltca_reference(pair, u, LTCACycle.from_result(res, modifications=mods), dev, extra)
 
 
 @pytest.fixture(scope="module")
@@ -152,7 +153,7 @@ def test_a_coupling_pass_shares_the_wear_and_the_contact_load_like_its_ltca_cycl
     wear = np.array([2e-6 * ((u - p.u_pitch) / np.ptp(u)) ** 2, np.zeros(u.size)])
     zeta = np.full((2, u.size), 0.3e-6)
     worn = _cycle(coarse_model, baseline_force, extra=path_deviation(p, u, wear - zeta))
-    unworn_info, worn_info = ({"ltca": r, "options": {"stagger": 0.0}} for r in (plain, worn))
+    unworn_info, worn_info = (LTCACycle.from_result(r) for r in (plain, worn))
     setup = SimpleNamespace(pair=p, kin=SimpleNamespace(u=u), ltca=unworn_info, wear_anchor="unworn", n_phase=64)
     ref_wear, ref_contact = _references(setup, worn_info, wear, zeta)
     assert np.array_equal(ref_contact.load, worn.path_load(p, u, scaled=True))

@@ -10,6 +10,7 @@ from femgear.levels import stiffness as stiffness_levels
 from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry import double_helical_contact
 from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.pem import hertz_compliance
 from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness
 
 
@@ -79,4 +80,6 @@ def test_fe_level_mean_close_to_pem(baseline_pair):
                         fe_options={"n_fe": 3, "h": baseline_pair.m_n / 2.5, "refine_ratio": 0.5})
     pem = mesh_stiffness(baseline_pair, "pem", n_positions=40, n_slices=40)
     assert fe.mean == pytest.approx(pem.mean, rel=0.10)
-    assert fe.info["k_fe"].shape == (3,) and all(n > 3000 for n in fe.info["ndofs"])   # graded whole gears
+    assert fe.fe.k.shape == (3,) and all(n > 3000 for n in fe.fe.ndofs)   # graded whole gears
+    assert np.allclose(fe.fe.k, 1 / (fe.fe.compliance[0] + fe.fe.compliance[1] + hertz_compliance(210e9, 0.3)))
+    assert fe.ltca is None and fe.iso is None and fe.k_pair_per_width.shape == fe.u.shape

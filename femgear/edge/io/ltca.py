@@ -145,7 +145,8 @@ def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, 
     """Write the pressure map on the 3-D pinion flanks of both helices, in the pinion's body frame, as VTK
     unstructured quads (``.vtu``; :func:`femgear.physics.ltca.vtk.flank_pressure_map`).
 
-    The body's groove width and stagger come from ``result.info`` (:func:`femgear.physics.ltca.analysis.mesh_cycle`).
+    The body's groove width and stagger come from ``result.groove`` and ``result.stagger``
+    (:func:`femgear.physics.ltca.analysis.mesh_cycle`).
     Point data: ``p_max`` [Pa], ``w_mean`` [N/m], ``rho``, ``zeta`` [m], ``helix`` (0 left, 1 right),
     ``edge`` (1 on the flank's edges, where ``p_max`` is an edge contact and not a Hertz pressure).
     Both members in mesh: :func:`write_maps`, :func:`write_maps_vtu`.
@@ -155,8 +156,7 @@ def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, 
     from femgear.physics.ltca.vtk import flank_pressure_map, helix_flank_quads
 
     fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
-    pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.info.get("groove", 0.0),
-                                   result.info.get("stagger", 0.0))
+    pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.groove, result.stagger)
     R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
     data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), 2),
             "zeta": np.tile(Z.ravel(), 2), "helix": np.repeat([0, 1], R.size).astype(np.int32),

@@ -167,7 +167,8 @@ def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path
     ``flank_face.vtu`` (:func:`face_mesh`)."""
     out_dir = Path(out_dir)
     files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
-    ltca = result.stiffness.info.get("ltca") if result.stiffness is not None else None
+    cycle = None if result.stiffness is None else result.stiffness.ltca
+    ltca = None if cycle is None else cycle.result
     if ltca is not None and ltca.line_load:
         from femgear.edge.io.ltca import write_maps_vtu
         from femgear.physics.ltca.maps import load_maps

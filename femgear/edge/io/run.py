@@ -22,6 +22,9 @@ Layout (the contract; keys are added, never renamed without a README note):
   the lubrication level that ran (``summary.film``: level, method, pitch and minimum values), the
   formula films stay as ``film_*_formula``; ``specific_film`` λ = h_min / R_a (R_a the mean of both
   flanks, ``rating.roughness_ra`` or its default by ``rating.finishing``);
+- ``units``: ``{field path: unit}`` of every field of the typed result (``"contact.hertz_pressure": "Pa"``,
+  ``"stiffness.k_left": "N/m"``; "-" dimensionless), generated from the field docs (:func:`result_units`);
+  the keys above take the unit of the field they are written from;
 - ``mesh_stiffness`` (phase, k_left, k_right) and, with dynamics,
   ``mesh_force_per_phase`` (left, right); with ``ltca`` ``transmission_error_per_phase``
   (:func:`femgear.edge.io.ltca.te_curves`: phase, lte, nlte, force_left/right, k_total).
@@ -35,8 +38,9 @@ from typing import Any
 
 import numpy as np
 
+from femgear.docfields import units_table
 from femgear.edge.io.results import write_json
-from femgear.results import RunResult, Tribology
+from femgear.results import INPUT_TYPES, RunResult, Tribology
 from femgear.summary import scene_summary
 
 
@@ -118,7 +122,7 @@ def _te_summary(result: RunResult) -> dict[str, Any]:
     from femgear.edge.io.ltca import UNITS, te_summary
 
     out = te_summary(result.transmission_error, math.cos(result.case.pair.beta_b))
-    out["resolved_orders"] = result.stiffness.info.get("resolved_orders")
+    out["resolved_orders"] = result.stiffness.resolved_orders
     if result.coupled is not None and math.isfinite(result.coupled.state.lte_peak_to_peak):
         out["lte_peak_to_peak_deviated"] = result.coupled.state.lte_peak_to_peak
     out["units"] = {k: UNITS[k] for k in out if k in UNITS} | {"lte_peak_to_peak_deviated": "m"}
@@ -151,6 +155,7 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tup
     payload: dict[str, Any] = {
         "summary": summary, "scene": result.case.scene.model_dump(), "along_path": along_path(result),
         "mesh_stiffness": {"phase": ms.phase, "k_left": ms.k_left, "k_right": ms.k_right},
+        "units": result_units(),
     }
     if result.coupled is not None:
         force = result.coupled.state.mesh_force
@@ -161,6 +166,12 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tup
         payload["transmission_error_per_phase"] = te_curves(result.transmission_error)
     write_json(files["results"], payload)
     return summary, files
+
+
+def result_units() -> dict[str, str]:
+    """``{field path: unit}`` of every documented field of :class:`RunResult` (:func:`femgear.docfields.units_table`;
+    the Case's inputs are the scene's, documented by its schema)."""
+    return units_table(RunResult, stop=INPUT_TYPES)
 
 
 def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:

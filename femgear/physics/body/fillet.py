@@ -16,22 +16,32 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.body.forms import lame
 from femgear.physics.geometry.gear import GearPair
 
 
+@document_fields
 @dataclass(frozen=True)
 class FilletStress:
     """Largest principal fillet stress of one member under one load (SI)."""
 
     member: int
-    u: float                 #: load position on the path [m]
-    force: float             #: normal load per unit face width [N/m]
-    max_principal: float     #: [Pa]
-    radius: float            #: radius of the maximum [m]
-    tangent_angle: float     #: angle of the fillet tangent to the tooth centre line there [rad]
-    mesh_size: float         #: h of the section mesh (h·refine_ratio near the tooth) [m]
+    """the member: 1 pinion, 2 gear [-]"""
+    u: float
+    """load position on the path, measured from T1 [m]"""
+    force: float
+    """normal load per unit face width [N/m]"""
+    max_principal: float
+    """largest principal stress in the fillet [Pa]"""
+    radius: float
+    """radius of the maximum [m]"""
+    tangent_angle: float
+    """angle of the fillet tangent to the tooth centre line there [rad]"""
+    mesh_size: float
+    """h of the section mesh (h·refine_ratio near the tooth) [m]"""
     ndofs: int
+    """degrees of freedom of the section's FE model [-]"""
 
 
 def fillet_stress(pair: GearPair, member: int, u: float, force: float, youngs_modulus: float,

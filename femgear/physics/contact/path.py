@@ -19,32 +19,52 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.contact.film import line_film
 from femgear.physics.contact.hertz import hertz_line
 from femgear.physics.contact.sharing import LoadSharing, StiffnessPerWidth, load_sharing, single_contact_bounds
 from femgear.physics.geometry import GearPair, PathKinematics, path_positions
 
 
+@document_fields
 @dataclass(frozen=True)
 class ContactPath:
     """Contact quantities along the path of contact (arrays over positions)."""
 
     kin: PathKinematics
-    normal_force: float        #: F_bn, all helices [N]
-    load_per_length: float     #: time mean over the path w̄' = F_n/L̄ per helix [N/m]
-    hertz_half_width: np.ndarray  #: b_H [m]
-    hertz_pressure: np.ndarray    #: p_H [Pa]
-    film_central: np.ndarray      #: h_c, Moes line formula [m]
-    film_central_dt: np.ndarray   #: h_c, Dowson–Toyoda [m]
-    film_minimum: np.ndarray      #: h_min, Dowson–Higginson [m]
+    """the path positions u (measured from T1 along the transverse line of action) with radii, curvatures and speeds [-]"""
+    normal_force: float
+    """total normal force F_bn of all helices (driver torque / r_b / cos β_b) [N]"""
+    load_per_length: float
+    """time mean over the path of the load per unit contact-line length, w̄' = F_n / L̄ per helix [N/m]"""
+    hertz_half_width: np.ndarray
+    """Hertz half-width b_H of the line contact at each path position [m]"""
+    hertz_pressure: np.ndarray
+    """Hertz peak pressure p_H at each path position, under the shared line load ``line_load`` [Pa]"""
+    film_central: np.ndarray
+    """central film thickness h_c at each path position, Moes line-contact formula [m]"""
+    film_central_dt: np.ndarray
+    """central film thickness h_c at each path position, Dowson–Toyoda [m]"""
+    film_minimum: np.ndarray
+    """minimum film thickness h_min at each path position, Dowson–Higginson [m]"""
     moes_M: np.ndarray
+    """Moes dimensionless load parameter M at each path position [-]"""
     moes_L: np.ndarray
-    pitch_index: int              #: index of the position nearest the pitch point
-    line_load: np.ndarray | None = None      #: w(u) from load sharing (Hertz and films use it) [N/m]
-    line_load_max: np.ndarray | None = None  #: helical: the largest w over the phases at u [N/m]
-    load_fraction: np.ndarray | None = None  #: share of one helix's force on the line through u [-]
-    single_contact: tuple[float, float] = (math.nan, math.nan)  #: (u_B, u_D), inner points of single contact [m]
+    """Moes dimensionless lubricant parameter L at each path position [-]"""
+    pitch_index: int
+    """index into the path positions of the one nearest the pitch point C [-]"""
+    line_load: np.ndarray | None = None
+    """load per unit contact-line length w(u) from the load sharing between the pairs in contact (Hertz and films use
+    it) [N/m]"""
+    line_load_max: np.ndarray | None = None
+    """helical: the largest w over the mesh phases at each u [N/m]"""
+    load_fraction: np.ndarray | None = None
+    """share of one helix's force carried by the contact line through u [-]"""
+    single_contact: tuple[float, float] = (math.nan, math.nan)
+    """(u_B, u_D): the inner points of single tooth-pair contact, measured from T1 (NaN for helical pairs without one)
+    [m]"""
     n_helices: int = 2
+    """helices of the pair: 2 double-helical, 1 single-helical or spur [-]"""
 
     def at(self, u: float) -> int:
         """Index of the position nearest ``u`` [m]."""

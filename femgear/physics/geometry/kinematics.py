@@ -20,27 +20,44 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 
 
+@document_fields
 @dataclass(frozen=True)
 class PathKinematics:
     """Quantities at positions ``u`` along the path of contact (arrays of equal shape)."""
 
-    u: np.ndarray        #: distance from T1 along the transverse line of action [m]
-    s: np.ndarray        #: signed distance from the pitch point, + towards the pinion tip [m]
-    r1: np.ndarray       #: radius of the contact point on the pinion [m]
-    r2: np.ndarray       #: radius of the contact point on the gear [m]
-    rho1: np.ndarray     #: transverse radii of curvature [m]
+    u: np.ndarray
+    """distance of each position from T1 (the pinion's base tangent point) along the transverse line of action; the
+    pitch point is at pair.u_pitch = T1C [m]"""
+    s: np.ndarray
+    """signed distance from the pitch point, u − T1C, + towards the pinion tip [m]"""
+    r1: np.ndarray
+    """radius of the contact point on the pinion [m]"""
+    r2: np.ndarray
+    """radius of the contact point on the gear [m]"""
+    rho1: np.ndarray
+    """transverse radius of curvature of the pinion flank, ρ1 = u [m]"""
     rho2: np.ndarray
-    R1: np.ndarray       #: normal-section radii of curvature ρ/cos β_b [m]
+    """transverse radius of curvature of the gear flank, ρ2 = T1T2 − u [m]"""
+    R1: np.ndarray
+    """normal-section radius of curvature of the pinion flank, ρ1 / cos β_b [m]"""
     R2: np.ndarray
-    R: np.ndarray        #: equivalent radius R1 R2/(R1 + R2) [m]
-    v1: np.ndarray       #: rolling (surface) speeds across the contact line [m/s]
+    """normal-section radius of curvature of the gear flank, ρ2 / cos β_b [m]"""
+    R: np.ndarray
+    """equivalent radius R1 R2/(R1 + R2) [m]"""
+    v1: np.ndarray
+    """rolling (surface) speed of the pinion flank across the contact line, ω1 ρ1 [m/s]"""
     v2: np.ndarray
-    ue: np.ndarray       #: entrainment speed (v1 + v2)/2 [m/s]
-    vs: np.ndarray       #: sliding speed v1 − v2 [m/s]
-    srr: np.ndarray      #: slide-to-roll ratio vs/ue [-]
+    """rolling (surface) speed of the gear flank across the contact line, ω2 ρ2 [m/s]"""
+    ue: np.ndarray
+    """entrainment speed (v1 + v2)/2 [m/s]"""
+    vs: np.ndarray
+    """sliding speed v1 − v2 [m/s]"""
+    srr: np.ndarray
+    """slide-to-roll ratio vs/ue [-]"""
 
 
 def path_positions(pair: GearPair, n: int) -> np.ndarray:

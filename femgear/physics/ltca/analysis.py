@@ -23,10 +23,11 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.geometry.lines import hat_integrals
 from femgear.physics.ltca.compliance import MemberCompliance, member_compliance
@@ -36,17 +37,26 @@ from femgear.physics.ltca.separation import Deviation, check_modification, separ
 from femgear.physics.mesh.segment import default_spec
 
 
+@document_fields
 @dataclass(frozen=True)
 class LTCAModel:
     """Pair, material and the bulk kernels of both members (build once, reuse)."""
 
     pair: GearPair
+    """the gear pair the member bodies were built for [-]"""
     youngs_modulus: float
+    """Young's modulus of both members [Pa]"""
     poisson_ratio: float
-    kernels: dict          #: {1: MemberCompliance, 2: MemberCompliance}
+    """Poisson's ratio of both members [-]"""
+    kernels: dict
+    """bulk flank compliance of each member body, {1: pinion, 2: gear}
+    (:class:`femgear.physics.ltca.compliance.MemberCompliance`) [-]"""
     level: int
+    """body resolution level the member bodies were meshed at (``numerics.body_level``) [-]"""
     seconds: float
-    stagger: float = 0.0   #: the stagger the member bodies were built with [base pitches]
+    """wall time to build (or read from the disk cache) both kernels [s]"""
+    stagger: float = 0.0
+    """the stagger the member bodies were built with [base pitches]"""
 
 
 def build_model(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int = 1, order: int = 1,
@@ -73,28 +83,53 @@ def build_model(pair: GearPair, youngs_modulus: float, poisson_ratio: float, lev
     return LTCAModel(pair, youngs_modulus, poisson_ratio, kernels, level, time.perf_counter() - t0, stagger)
 
 
+@document_fields
 @dataclass(frozen=True)
 class LTCAResult:
     """LTCA of one mesh cycle (arrays over ``phase`` in base pitches, [0, 1))."""
 
     phase: np.ndarray
-    force: float                 #: total normal force [N]
-    lte: np.ndarray              #: loaded TE, normal approach δ [m]
+    """mesh phases of the cycle over one mesh period, [0, 1) [base pitches]"""
+    force: float
+    """total normal force of both helices the cycle carries [N]"""
+    lte: np.ndarray
+    """loaded transmission error: the rigid normal approach δ of the flanks along the normal line of action at each
+    phase (on the transverse base tangent δ / cos β_b) [m]"""
     nlte_left: np.ndarray
+    """unloaded (kinematic) TE of the left helix: min ε over its contact lines at each phase [m]"""
     nlte_right: np.ndarray
+    """unloaded (kinematic) TE of the right helix at each phase [m]"""
     force_left: np.ndarray
+    """normal load carried by the left helix at each phase [N]"""
     force_right: np.ndarray
+    """normal load carried by the right helix at each phase [N]"""
     k_secant_left: np.ndarray
+    """secant stiffness of the left helix, F_left / (δ − NLTE_left), along the normal line of action [N/m]"""
     k_secant_right: np.ndarray
+    """secant stiffness of the right helix, F_right / (δ − NLTE_right), along the normal line of action [N/m]"""
     k_tangent_left: np.ndarray
+    """tangent stiffness of the left helix dF/dδ by a +0.1 % load step [N/m]"""
     k_tangent_right: np.ndarray
+    """tangent stiffness of the right helix dF/dδ by a +0.1 % load step [N/m]"""
     p_max_left: np.ndarray
+    """largest Hertz pressure √(w E′/(2πR)) on the left helix at each phase [Pa]"""
     p_max_right: np.ndarray
-    load_error: np.ndarray       #: |Σf − F| / F per phase
-    line_load: tuple = ()        #: per phase: array (n, 5) of helix, line, u, ζ, w [N/m]
-    line_length: tuple = ()      #: per phase: segment length Δℓ of each point [m]
+    """largest Hertz pressure on the right helix at each phase [Pa]"""
+    load_error: np.ndarray
+    """relative force balance error |Σf − F| / F at each phase [-]"""
+    line_load: tuple = ()
+    """per phase: array (n, 5) of helix (0 left, 1 right), line index, u from T1 [m], ζ [m], load per length w [N/m] of
+    every contact point (empty unless kept) [-]"""
+    line_length: tuple = ()
+    """per phase: the contact-line segment length Δℓ of each point [m]"""
     seconds: float = 0.0
-    info: dict = field(default_factory=dict)
+    """wall time of the cycle's contact solves [s]"""
+    n_line: int = 0
+    """points per contact line the cycle was solved with [-]"""
+    stagger: float = 0.0
+    """offset of the right helix against the left one the cycle was solved with [base pitches]"""
+    groove: float = 0.0
+    """width of the member bodies' groove between the helices [m]"""
 
     @property
     def nlte(self) -> np.ndarray:
@@ -299,5 +334,5 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
             lengths.append(pts.length)
     return LTCAResult(phases, force, cols["lte"], cols["nl"], cols["nr"], cols["fl"], cols["fr"], cols["ksl"],
                       cols["ksr"], cols["ktl"], cols["ktr"], cols["pl"], cols["pr"], cols["err"], tuple(lines),
-                      tuple(lengths), time.perf_counter() - t0, {"n_line": n_line, "stagger": stagger,
-                                                        "groove": float(model.kernels[1].groove)})
+                      tuple(lengths), time.perf_counter() - t0, n_line=n_line, stagger=stagger,
+                      groove=float(model.kernels[1].groove))

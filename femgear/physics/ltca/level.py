@@ -1,10 +1,11 @@
 """The ``ltca`` stiffness level: one LTCA mesh cycle for :func:`femgear.levels.stiffness.mesh_stiffness`.
 
-tvms wraps the result as a ``MeshStiffness``: ``k_left``/``k_right`` are the secant
+tvms wraps the cycle as a ``MeshStiffness``: ``k_left``/``k_right`` are the secant
 stiffnesses F_h/(δ − NLTE_h) of each helix along the normal line of action at the
-operating load; ``info['ltca']`` is the whole :class:`femgear.physics.ltca.analysis.LTCAResult`
-and ``info['excitation']`` its per-helix tables (loaded/unloaded TE, tangent stiffness,
-e_s = LTE − F_s/k_s).  (This module does not import tvms: no import cycle.)
+operating load; ``MeshStiffness.ltca`` is the whole :class:`femgear.physics.ltca.cycle.LTCACycle`
+(its ``result``, the :class:`femgear.physics.ltca.analysis.LTCAResult`, and ``excitation``, its per-helix
+tables: loaded/unloaded TE, tangent stiffness, e_s = LTE − F_s/k_s).  (This module does not import tvms:
+no import cycle.)
 
 Resolved mesh orders.  The contact lines are cut into a whole number of points, so the
 secant stiffness carries a discretisation noise floor (≈ 1e-4 of the mean here) at every
@@ -12,7 +13,7 @@ mesh order; at low speed the orders 50–100 of that floor fall on the 2.6–5 k
 the rotor model and dominate the bearing accelerations.  :func:`resolved_orders` finds
 the mesh orders the contact discretisation resolves — the orders up to the first band
 whose stiffness harmonics change by more than :data:`RESOLUTION_TOLERANCE` of themselves
-when the points per contact line are doubled (64 phases) — and ``info['resolved_orders']`` tells
+when the points per contact line are doubled (64 phases) — and ``LTCACycle.resolved_orders`` tells
 the dynamics to keep only those (:func:`femgear.system.dynamics.build.ltca_table`).  Where fewer
 than :data:`MIN_RESOLVED_ORDERS` are resolved, :func:`ltca_cycle` doubles the points per
 contact line (up to :data:`MAX_LINE_POINTS`): a tip relief near the load it takes up
@@ -70,15 +71,16 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
 def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: int = 64, stagger: float = 0.0,
                youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, level: int = 1, n_line: int = 16,
                extra=None, body: dict | None = None):
-    """(LTCAResult, info) of one mesh cycle at the total normal force ``force`` [N].
+    """The :class:`~femgear.physics.ltca.cycle.LTCACycle` at the total normal force ``force`` [N].
 
     The line loads are kept (:meth:`LTCAResult.path_load`: the wear and lubrication load map of
     the ``ltca`` level, :func:`femgear.system.coupling.loop.ltca_reference`).  ``body``: ``bore_radius``
     and ``groove_width`` of the member bodies (:func:`femgear.levels.stiffness.body_options`).
     ``n_line`` points per contact line, doubled while fewer than :data:`MIN_RESOLVED_ORDERS`
-    mesh orders are resolved (``info['options']['n_line']`` is the one used).
+    mesh orders are resolved (``LTCACycle.n_line`` is the one used).
     """
     from femgear.physics.ltca.analysis import build_model, mesh_cycle
+    from femgear.physics.ltca.cycle import LTCACycle
 
     body = {k: v for k, v in (body or {}).items() if k != "stagger"}
     check_body_memory(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
@@ -89,11 +91,7 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
         n_line *= 2
         orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra, spectra=spectra)
     res = mesh_cycle(model, force, modifications, n_phases=n_positions, stagger=stagger, n_line=n_line, extra=extra)
-    info = {"ltca": res, "excitation": res.excitation(), "model_seconds": model.seconds,
-            "lte_peak_to_peak": res.lte_peak_to_peak(), "force": force, "resolved_orders": orders,
-            "harmonic_change": change, "model": model, "modifications": modifications,
-            "options": {"n_phases": n_positions, "stagger": stagger, "n_line": n_line}}
-    return res, info
+    return LTCACycle.from_result(res, model, modifications, resolved_orders=orders, harmonic_change=change)
 
 
 def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int, stagger: float = 0.0,
@@ -142,15 +140,3 @@ def check_body_memory(pair: GearPair, youngs_modulus: float, poisson_ratio: floa
     raise ResourceError("numerics.body_level", worst.memory_bytes, budget, f"{worst.stage} at level {level}; {hint}")
 
 
-def deviated_cycle(info: dict, extra) -> dict:
-    """The LTCA ``info`` of :func:`ltca_cycle` re-run with the flank deviation ``extra`` (wear, thermal growth).
-
-    The same model (its compliance is reused: no FE solve), force, modifications, phases and
-    contact points; the resolved mesh orders are kept from the unworn cycle (the contact
-    discretisation, which sets them, does not change).  ``extra``: a
-    :data:`femgear.physics.ltca.separation.Deviation` added to the modifications' separation.
-    """
-    from femgear.physics.ltca.analysis import mesh_cycle
-
-    res = mesh_cycle(info["model"], info["force"], info["modifications"], extra=extra, **info["options"])
-    return {**info, "ltca": res, "excitation": res.excitation(), "lte_peak_to_peak": res.lte_peak_to_peak()}

@@ -33,6 +33,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.errors import ArgumentError, SceneError
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.ltca.halfspace import hertz_pressure, reduced_modulus
@@ -41,49 +42,81 @@ MAX_NOMINAL_CONTACT_STRESS = 4.0e9   #: [Pa] σ_H0 above which a torque is refus
 MAX_TORQUES = 50                     #: torques one ``femgear ltca`` call accepts
 
 
+@document_fields
 @dataclass(frozen=True)
 class PressurePeak:
     """The largest contact pressure of a cycle and where it sits."""
 
-    pressure: float          #: largest Hertz pressure over all points and phases [Pa]
-    phase: float             #: phase of that point [base pitches]
-    helix: str               #: "left" or "right"
-    u: float                 #: path position (pinion roll distance ρ₁) [m]
-    zeta: float              #: face coordinate of the helix (groove / apex end at ζ = b) [m]
-    edge: bool               #: the point is a contact line's end on an edge of the active flank
-    where: str               #: "interior", "pinion tip", "gear tip", "outer face end", "groove face end"
-    interior_pressure: float #: largest pressure away from the flank edges [Pa]
+    pressure: float
+    """largest Hertz pressure over all contact points and phases of the cycle [Pa]"""
+    phase: float
+    """mesh phase of that point [base pitches]"""
+    helix: str
+    """the helix of that point, "left" or "right" [-]"""
+    u: float
+    """path position of that point, measured from T1 (= the pinion roll distance ρ₁; the pitch point is at T1C) [m]"""
+    zeta: float
+    """face coordinate of the helix (groove / apex end at ζ = b) [m]"""
+    edge: bool
+    """whether the point is a contact line's end on an edge of the active flank (tip or face end: the Hertz line contact
+    does not hold there) [-]"""
+    where: str
+    """where the point sits: "interior", "pinion tip", "gear tip", "outer face end" or "groove face end" [-]"""
+    interior_pressure: float
+    """largest pressure away from the flank edges (not on a contact line's end point) [Pa]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class TEAnalysis:
     """Loaded and unloaded TE, stiffness, load share and peak pressure of one LTCA cycle (SI)."""
 
-    torque: float                 #: driver torque [N m]
-    force: float                  #: total normal force, both helices [N]
-    phase: np.ndarray             #: phases of one mesh period [base pitches]
-    lte: np.ndarray               #: loaded TE, common normal approach δ [m]
-    lte_left: np.ndarray | None   #: left helix alone at its mean load share [m] (None: not computed)
-    lte_right: np.ndarray | None  #: right helix alone [m]
-    nlte: np.ndarray              #: unloaded TE, min over both helices [m]
-    force_left: np.ndarray        #: normal load of each helix [N]
+    torque: float
+    """driver torque of the cycle [N m]"""
+    force: float
+    """total normal force of both helices, T / r_b / cos β_b [N]"""
+    phase: np.ndarray
+    """phases of one mesh period, [0, 1) [base pitches]"""
+    lte: np.ndarray
+    """loaded TE: the common normal approach δ of both helices along the normal line of action at each phase [m]"""
+    lte_left: np.ndarray | None
+    """loaded TE of the left helix carrying its cycle-mean share of the load alone (None: not computed) [m]"""
+    lte_right: np.ndarray | None
+    """loaded TE of the right helix carrying its cycle-mean share of the load alone (None: not computed) [m]"""
+    nlte: np.ndarray
+    """unloaded (kinematic) TE: min ε over the contact lines of both helices at each phase [m]"""
+    force_left: np.ndarray
+    """normal load carried by the left helix at each phase [N]"""
     force_right: np.ndarray
-    k_total: np.ndarray           #: total secant mesh stiffness [N/m]
-    peak_to_peak: float           #: loaded TE peak-to-peak [m]
-    harmonics: np.ndarray         #: loaded TE amplitudes at mesh orders 1…N [m]
-    nlte_peak_to_peak: float      #: unloaded TE peak-to-peak [m]
-    stiffness_mean: float         #: [N/m]
-    stiffness_ripple: float       #: peak-to-peak over mean [-]
-    share_left: float             #: cycle mean of F_left / F [-]
+    """normal load carried by the right helix at each phase [N]"""
+    k_total: np.ndarray
+    """total secant mesh stiffness k_s,left + k_s,right along the normal line of action at each phase [N/m]"""
+    peak_to_peak: float
+    """loaded TE peak-to-peak over the cycle [m]"""
+    harmonics: np.ndarray
+    """loaded TE amplitudes 2|c_h| at mesh orders 1…N (single-sided, peak) [m]"""
+    nlte_peak_to_peak: float
+    """unloaded TE peak-to-peak over the cycle [m]"""
+    stiffness_mean: float
+    """cycle mean of the total secant mesh stiffness, along the normal line of action [N/m]"""
+    stiffness_ripple: float
+    """peak-to-peak of the total secant mesh stiffness over its mean [-]"""
+    share_left: float
+    """cycle mean of F_left / F [-]"""
     share_right: float
-    balance_error: float          #: max over the phases of |F_left + F_right − F| / F [-]
+    """cycle mean of F_right / F [-]"""
+    balance_error: float
+    """largest relative force balance error over the phases, |F_left + F_right − F| / F [-]"""
     pressure: PressurePeak
-    worst_phase: int              #: index of the phase holding the largest pressure
-    #: (2, n_phases) normal load of each helix away from the flank edges (not on a contact line's end point) [N]
+    """the largest contact pressure of the cycle and where it sits [-]"""
+    worst_phase: int
+    """index into ``phase`` of the phase holding the largest pressure [-]"""
     interior_force: np.ndarray | None = None
-    #: loaded TE amplitudes with twice the points per contact line (None: no refinement run) [m]
+    """(2, n_phases) normal load of each helix away from the flank edges (not on a contact line's end point) [N]"""
     harmonics_refined: np.ndarray | None = None
+    """loaded TE amplitudes with twice the points per contact line (None: no refinement run) [m]"""
     peak_to_peak_refined: float | None = None
+    """loaded TE peak-to-peak with twice the points per contact line (None: no refinement run) [m]"""
 
     @property
     def harmonics_change(self) -> np.ndarray | None:
@@ -183,14 +216,14 @@ def analyse_cycle(result, pair: GearPair, youngs_modulus: float, poisson_ratio: 
 def helix_alone_te(model, result, modifications=None, extra=None) -> tuple[np.ndarray, np.ndarray]:
     """(left, right): the normal approach of each helix carrying its cycle-mean share of ``result``'s load alone.
 
-    The same contact points, separations and compliance as ``result`` (``result.info``: n_line, stagger),
+    The same contact points, separations and compliance as ``result`` (``result.n_line``, ``result.stagger``),
     restricted to one helix (:func:`femgear.physics.ltca.contact.solve_phase` on its points; the other helix unloaded,
     so the cross-helix compliance does not act).  NaN for a helix with no mean load."""
     from femgear.physics.ltca.contact import ContactPoints, phase_points, solve_phase
     from femgear.physics.ltca.separation import separation
 
     pair, E, nu = model.pair, model.youngs_modulus, model.poisson_ratio
-    n_line, stagger = int(result.info["n_line"]), float(result.info["stagger"])
+    n_line, stagger = int(result.n_line), float(result.stagger)
     share = (float(np.mean(result.force_left)), float(np.mean(result.force_right)))
     out = np.full((2, result.phase.size), np.nan)
     for i, ph in enumerate(result.phase):

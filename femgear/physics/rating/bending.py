@@ -46,66 +46,106 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair, inv
 from femgear.physics.stiffness.iso6336 import virtual_teeth
 
 
+@document_fields
 @dataclass(frozen=True)
 class RootGeometry:
     """The 30°-tangent root section of one member's virtual spur gear (SI)."""
 
-    z_n: float       #: virtual number of teeth [-]
-    theta: float     #: the auxiliary angle θ of the 30° tangent [rad]
-    s_Fn: float      #: tooth root chord at the 30° tangents [m]
-    rho_F: float     #: root fillet radius at the 30° tangent [m]
-    h_Fe: float      #: bending moment arm, load at the outer point of single contact [m]
-    alpha_Fen: float  #: load direction angle at that point [rad]
-    d_en: float      #: diameter of the outer point of single contact (virtual gear) [m]
+    z_n: float
+    """virtual number of teeth [-]"""
+    theta: float
+    """the auxiliary angle θ of the 30° tangent [rad]"""
+    s_Fn: float
+    """tooth root chord at the 30° tangents [m]"""
+    rho_F: float
+    """root fillet radius at the 30° tangent [m]"""
+    h_Fe: float
+    """bending moment arm, load at the outer point of single contact [m]"""
+    alpha_Fen: float
+    """load direction angle at that point [rad]"""
+    d_en: float
+    """diameter of the outer point of single contact (virtual gear) [m]"""
 
     @property
     def q_s(self) -> float:
         return self.s_Fn / (2 * self.rho_F)
 
 
+@document_fields
 @dataclass(frozen=True)
 class BendingInputs:
     """Inputs of the root rating (SI; defaults: case-carburised steel, reference conditions)."""
 
-    sigma_Flim: float = 5.0e8          #: nominal stress number (bending) [Pa] (ISO 6336-5 MQ: 500 N/mm²)
+    sigma_Flim: float = 5.0e8
+    """nominal stress number for bending σ_Flim (ISO 6336-5 MQ: 500 N/mm²) [Pa]"""
     S_Fmin: float = 1.0
+    """minimum required bending safety factor S_Fmin [-]"""
     K_A: float = 1.0
+    """application factor K_A [-]"""
     K_v: float = 1.0
-    K_Hbeta: float = 1.0               #: K_Fβ follows from it (ISO 6336-1 eq. 67)
+    """dynamic factor K_v [-]"""
+    K_Hbeta: float = 1.0
+    """face load factor K_Hβ; K_Fβ follows from it (ISO 6336-1 eq. 67) [-]"""
     K_Falpha: float = 1.0
-    life_hours: float | None = None    #: None: Y_NT = 1
-    root_Rz: tuple[float, float] = (1.0e-5, 1.0e-5)  #: root roughness R_z of pinion, gear [m]
-    rim_ratio: tuple[float, float] = (math.inf, math.inf)  #: s_R/h_t of pinion, gear (∞: solid)
+    """transverse load factor for bending K_Fα [-]"""
+    life_hours: float | None = None
+    """required life L_h (None: Y_NT = 1) [h]"""
+    root_Rz: tuple[float, float] = (1.0e-5, 1.0e-5)
+    """root roughness R_z of pinion, gear [m]"""
+    rim_ratio: tuple[float, float] = (math.inf, math.inf)
+    """rim thickness over tooth height s_R/h_t of pinion, gear (∞: solid) [-]"""
     Y_DT: float = 1.0
+    """deep-tooth factor Y_DT as given (1: not applied) [-]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class BendingRating:
     """ISO 6336-3 method B root stress and safety of pinion and gear (tuples: pinion, gear)."""
 
-    F_t: float                          #: nominal tangential load at the reference circle, all helices [N]
+    F_t: float
+    """nominal tangential load at the reference circle, all helices [N]"""
     root: tuple[RootGeometry, RootGeometry]
+    """the 30°-tangent root section of the pinion's and the gear's virtual spur gear [-]"""
     Y_F: tuple[float, float]
+    """form factor Y_F of pinion, gear [-]"""
     Y_S: tuple[float, float]
+    """stress correction factor Y_S of pinion, gear [-]"""
     Y_beta: float
+    """helix angle factor Y_β [-]"""
     Y_B: tuple[float, float]
+    """rim thickness factor Y_B of pinion, gear [-]"""
     Y_DT: float
+    """deep-tooth factor Y_DT [-]"""
     K_Fbeta: float
-    sigma_F0: tuple[float, float]       #: [Pa]
-    sigma_F: tuple[float, float]        #: [Pa]
+    """face load factor for bending K_Fβ [-]"""
+    sigma_F0: tuple[float, float]
+    """nominal tooth-root stress σ_F0 of pinion, gear [Pa]"""
+    sigma_F: tuple[float, float]
+    """tooth-root stress σ_F = σ_F0 K_A K_v K_Fβ K_Fα of pinion, gear [Pa]"""
     N_L: tuple[float, float] | None
+    """load cycles of pinion, gear over the required life (None: no life given) [-]"""
     Y_NT: tuple[float, float]
+    """life factor Y_NT of pinion, gear [-]"""
     Y_deltarelT: tuple[float, float]
+    """relative notch sensitivity factor Y_δrelT of pinion, gear [-]"""
     Y_RrelT: tuple[float, float]
+    """relative surface factor Y_RrelT of pinion, gear [-]"""
     Y_X: float
-    sigma_FG: tuple[float, float]       #: [Pa]
-    sigma_FP: tuple[float, float]       #: [Pa]
+    """size factor Y_X [-]"""
+    sigma_FG: tuple[float, float]
+    """tooth-root stress limit σ_FG of pinion, gear [Pa]"""
+    sigma_FP: tuple[float, float]
+    """permissible bending stress σ_FP = σ_FG / S_Fmin of pinion, gear [Pa]"""
     S_F: tuple[float, float]
+    """bending safety factor S_F = σ_FG / σ_F of pinion, gear [-]"""
     inputs: BendingInputs
+    """the inputs of the rating [-]"""
 
 
 def root_geometry(pair: GearPair, member: int) -> RootGeometry:

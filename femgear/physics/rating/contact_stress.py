@@ -20,18 +20,24 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness.iso6336 import virtual_teeth
 
 
+@document_fields
 @dataclass(frozen=True)
 class LoadFactors:
     """K_A, K_v, K_Hβ, K_Hα (defaults 1: give the application's values)."""
 
     K_A: float = 1.0
+    """application factor K_A [-]"""
     K_v: float = 1.0
+    """dynamic factor K_v [-]"""
     K_Hbeta: float = 1.0
+    """face load factor for contact stress K_Hβ [-]"""
     K_Halpha: float = 1.0
+    """transverse load factor for contact stress K_Hα [-]"""
 
     def __post_init__(self):
         for name in ("K_A", "K_v", "K_Hbeta", "K_Halpha"):
@@ -44,23 +50,37 @@ class LoadFactors:
         return self.K_A * self.K_v * self.K_Hbeta * self.K_Halpha
 
 
+@document_fields
 @dataclass(frozen=True)
 class ContactStress:
     """ISO 6336-2 method B contact stress of a pair (both members; SI)."""
 
-    F_t: float          #: nominal tangential load at the reference circle, all helices [N]
-    z_n: tuple[float, float]  #: virtual numbers of teeth [-]
+    F_t: float
+    """nominal tangential load at the reference circle, all helices [N]"""
+    z_n: tuple[float, float]
+    """virtual numbers of teeth [-]"""
     Z_H: float
-    Z_E: float          #: [√Pa]
+    """zone factor Z_H [-]"""
+    Z_E: float
+    """elasticity factor Z_E [√Pa]"""
     Z_eps: float
+    """contact ratio factor Z_ε [-]"""
     Z_beta: float
+    """helix angle factor Z_β [-]"""
     Z_B: float
+    """single pair tooth contact factor of the pinion Z_B [-]"""
     Z_D: float
+    """single pair tooth contact factor of the gear Z_D [-]"""
     M_1: float
+    """auxiliary M_1 of Z_B (ISO 6336-2 eq. 12) [-]"""
     M_2: float
-    sigma_H0: float     #: nominal contact stress at the pitch point [Pa]
-    sigma_H: tuple[float, float]  #: contact stress of pinion (Z_B) and gear (Z_D) [Pa]
+    """auxiliary M_2 of Z_D (ISO 6336-2 eq. 13) [-]"""
+    sigma_H0: float
+    """nominal contact stress at the pitch point [Pa]"""
+    sigma_H: tuple[float, float]
+    """contact stress of the pinion (with Z_B) and gear (with Z_D), σ_H = Z_B,D σ_H0 √(K_A K_v K_Hβ K_Hα) [Pa]"""
     factors: LoadFactors
+    """the load factors K_A, K_v, K_Hβ, K_Hα [-]"""
 
 
 def zone_factor(pair: GearPair) -> float:

@@ -25,6 +25,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.rating.scuffing import ScuffingInputs, flash_path, fzg_torque
 
@@ -34,20 +35,31 @@ FZG_C = dict(z1=16, z2=24, m_n=4.5e-3, alpha_n=math.radians(20), beta=0.0, b=0.0
 T38 = 311.15
 
 
+@document_fields
 @dataclass(frozen=True)
 class MicropittingRating:
     """Local film and specific film thickness along the path, and S_λ (SI)."""
 
-    u: np.ndarray                 #: path positions [m]
-    film: np.ndarray              #: h_Y [m]
-    lambda_GF: np.ndarray         #: λ_GF,Y [-]
+    u: np.ndarray
+    """path positions, measured from T1 (the pinion's transverse roll length) [m]"""
+    film: np.ndarray
+    """local film thickness h_Y along the path [m]"""
+    lambda_GF: np.ndarray
+    """local specific film thickness λ_GF,Y along the path [-]"""
     lambda_GFmin: float
-    u_min: float                  #: position of λ_GF,min [m]
-    lambda_GFT: float             #: of the FZG C test gear at the failure load stage [-]
+    """smallest local specific film thickness λ_GF,min [-]"""
+    u_min: float
+    """path position of λ_GF,min, measured from T1 [m]"""
+    lambda_GFT: float
+    """λ_GF of the FZG C test gear at the oil's failure load stage [-]"""
     lambda_GFP: float
+    """permissible specific film thickness λ_GFP [-]"""
     S_lambda: float
-    theta_M: float                #: bulk temperature [K]
-    stage: float                  #: GF-C/8.3/90 failure load stage of the oil
+    """micropitting safety factor S_λ = λ_GF,min / λ_GFP (ISO/TS 6336-22) [-]"""
+    theta_M: float
+    """bulk temperature [K]"""
+    stage: float
+    """the oil's GF-C/8.3/90 failure load stage [-]"""
 
 
 def local_film(pair: GearPair, pinion_torque: float, pinion_rpm: float, inputs: ScuffingInputs,

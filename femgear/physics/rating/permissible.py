@@ -18,37 +18,57 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.rating.contact_stress import ContactStress
 
 
+@document_fields
 @dataclass(frozen=True)
 class MaterialLimits:
     """Inputs of the permissible stress (SI; None: the factor is 1)."""
 
-    sigma_Hlim: float = 1.5e9        #: allowable stress number [Pa]
+    sigma_Hlim: float = 1.5e9
+    """allowable stress number for contact σ_Hlim [Pa]"""
     S_Hmin: float = 1.0
-    life_hours: float | None = None  #: L_h [h]
-    nu40: float | None = None        #: oil kinematic viscosity at 40 °C [mm²/s]
-    Rz: tuple[float, float] | None = None  #: flank roughness R_z of pinion, gear [m]
+    """minimum required pitting safety factor S_Hmin [-]"""
+    life_hours: float | None = None
+    """required life L_h (None: Z_NT = 1) [h]"""
+    nu40: float | None = None
+    """oil kinematic viscosity at 40 °C (None: Z_L = 1) [mm²/s]"""
+    Rz: tuple[float, float] | None = None
+    """flank roughness R_z of pinion, gear (None: Z_R = 1) [m]"""
     Z_W: float = 1.0
+    """work-hardening factor Z_W [-]"""
     Z_X: float = 1.0
+    """size factor Z_X [-]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class PittingRating:
     """Permissible contact stress and safety of pinion and gear."""
 
     stress: ContactStress
+    """the ISO 6336-2 contact stress of both members [-]"""
     limits: MaterialLimits
-    pitch_line_velocity: float       #: v at the reference circle [m/s]
-    N_L: tuple[float, float] | None  #: load cycles [-]
+    """the material and lubrication inputs of the permissible stress [-]"""
+    pitch_line_velocity: float
+    """circumferential speed v at the reference circle [m/s]"""
+    N_L: tuple[float, float] | None
+    """load cycles of pinion, gear over the required life (None: no life given) [-]"""
     Z_NT: tuple[float, float]
+    """life factor Z_NT of pinion, gear [-]"""
     Z_L: float
+    """lubricant factor Z_L [-]"""
     Z_v: float
+    """velocity factor Z_v [-]"""
     Z_R: float
-    sigma_HP: tuple[float, float]    #: [Pa]
+    """roughness factor Z_R [-]"""
+    sigma_HP: tuple[float, float]
+    """permissible contact stress σ_HP of pinion, gear [Pa]"""
     S_H: tuple[float, float]
+    """pitting safety factor S_H = σ_HP / σ_H of pinion, gear [-]"""
 
     @property
     def safe(self) -> bool:

@@ -39,6 +39,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.lubrication.flash import blok_flash_temperature
 
@@ -82,15 +83,21 @@ class ScuffingInputs:
     X_W: float = 1.0                #: structural factor of the application's material relative to the test
 
 
+@document_fields
 @dataclass(frozen=True)
 class FlashPath:
     """Flash temperature along the path (arrays over u, SI, temperatures in K)."""
 
-    u: np.ndarray                   #: transverse roll length of the pinion contact point [m]
-    load_sharing: np.ndarray        #: X_Γ [-]
-    line_load: np.ndarray           #: w_n [N/m]
-    mu_m: float                     #: mean friction coefficient [-]
-    flash: np.ndarray               #: θ_fl [K]
+    u: np.ndarray
+    """path positions, measured from T1 (the pinion's transverse roll length ρ₁) [m]"""
+    load_sharing: np.ndarray
+    """load sharing factor X_Γ along the path [-]"""
+    line_load: np.ndarray
+    """normal load per unit face width w_n along the path [N/m]"""
+    mu_m: float
+    """mean friction coefficient [-]"""
+    flash: np.ndarray
+    """flash temperature θ_fl along the path [K]"""
 
     @property
     def mean_flash(self) -> float:
@@ -98,21 +105,33 @@ class FlashPath:
         return float(np.trapezoid(self.flash, self.u) / (self.u[-1] - self.u[0]))
 
 
+@document_fields
 @dataclass(frozen=True)
 class ScuffingRating:
     """Both scuffing methods for one pair (temperatures in K; ratios as the TS defines them)."""
 
     path: FlashPath
+    """the flash temperature along the path of the flash temperature method [-]"""
     theta_oil: float
-    theta_M: float                  #: bulk temperature of the flash method [K]
-    contact_temperature: np.ndarray  #: θ_B = θ_M + θ_fl along the path [K]
-    theta_S: float                  #: scuffing temperature [K]
+    """oil (supply) temperature θ_oil [K]"""
+    theta_M: float
+    """bulk temperature of the flash method [K]"""
+    contact_temperature: np.ndarray
+    """θ_B = θ_M + θ_fl along the path [K]"""
+    theta_S: float
+    """scuffing temperature [K]"""
     S_B: float
-    theta_M_int: float              #: bulk temperature of the integral method [K]
-    theta_int: float                #: integral temperature [K]
-    theta_intS: float               #: permissible integral temperature [K]
+    """scuffing safety factor of the flash temperature method S_B (ISO/TS 6336-20) [-]"""
+    theta_M_int: float
+    """bulk temperature of the integral method [K]"""
+    theta_int: float
+    """integral temperature [K]"""
+    theta_intS: float
+    """permissible integral temperature [K]"""
     S_intS: float
-    fzg_stage: float                #: the oil's FZG A/8.3/90 failure load stage
+    """scuffing safety factor of the integral temperature method S_intS (ISO/TS 6336-21) [-]"""
+    fzg_stage: float
+    """the oil's FZG A/8.3/90 failure load stage [-]"""
 
     @property
     def max_contact_temperature(self) -> float:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.body.fillet import FilletStress
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.rating.bending import BendingInputs, BendingRating, bending_rating
@@ -23,17 +24,26 @@ from femgear.physics.rating.permissible import PittingRating
 from femgear.physics.rating.scuffing import ScuffingInputs, ScuffingRating, scuffing_rating
 
 
+@document_fields
 @dataclass(frozen=True)
 class OwnFigures:
     """femgear's own physics beside the ISO figures (None where not computed)."""
 
-    u: np.ndarray                           #: path positions of the contact pass [m]
-    film: np.ndarray                        #: minimum film thickness of the contact pass [m]
-    film_level: str                         #: which film ("formula: Dowson–Higginson h_min", …)
-    specific_film: np.ndarray               #: λ = h / R_a (R_a the mean of both flanks) [-]
-    temperature: np.ndarray | None          #: contact temperature θ_oil + ΔT of the lubrication level [K]
-    temperature_level: str | None           #: the lubrication level that gave ΔT
-    fillet: tuple[FilletStress, FilletStress] | None = None   #: FE max principal fillet stress per member
+    u: np.ndarray
+    """path positions of the contact pass, measured from T1 along the transverse line of action [m]"""
+    film: np.ndarray
+    """minimum film thickness of the contact pass [m]"""
+    film_level: str
+    """which film the figures use, in words ("formula: h_min of …", or the contact pass's Dowson–Higginson h_min) [-]"""
+    specific_film: np.ndarray
+    """specific film thickness λ = h / R_a along the path (R_a the mean of both flanks) [-]"""
+    temperature: np.ndarray | None
+    """contact temperature along the path: ambient (oil supply) + flank bulk rise + contact rise ΔT of the lubrication
+    level (None: not computed) [K]"""
+    temperature_level: str | None
+    """the lubrication level that gave ΔT (None: not computed) [-]"""
+    fillet: tuple[FilletStress, FilletStress] | None = None
+    """FE largest principal fillet stress of the pinion and the gear (None: not computed) [-]"""
 
     @property
     def lambda_min(self) -> float:
@@ -44,17 +54,25 @@ class OwnFigures:
         return None if self.temperature is None else float(np.max(self.temperature))
 
 
+@document_fields
 @dataclass(frozen=True)
 class PairRating:
     """Pitting, bending, scuffing and micropitting of one pair (all frozen results)."""
 
     pitting: PittingRating
+    """ISO 6336-2 pitting: contact stress, permissible stress and safety S_H [-]"""
     bending: BendingRating
+    """ISO 6336-3 tooth-root bending: root stress, permissible stress and safety S_F [-]"""
     scuffing: ScuffingRating
+    """ISO/TS 6336-20/21 scuffing: flash and integral temperatures and safeties S_B, S_intS [-]"""
     micropitting: MicropittingRating
+    """ISO/TS 6336-22 micropitting: specific film thickness and safety S_λ [-]"""
     flags: tuple[str, ...] = ()
-    defaults: tuple[str, ...] = ()          #: the ``[rating]`` keys that took their documented default
+    """inputs outside a standard's range, each prefixed with the safety factor it concerns ("S_F: …") [-]"""
+    defaults: tuple[str, ...] = ()
+    """the ``[rating]`` keys that took their documented default [-]"""
     own: OwnFigures | None = None
+    """femgear's own film, specific film, contact temperature and FE fillet stress beside the ISO figures [-]"""
 
     @property
     def safety_factors(self) -> dict[str, float]:

@@ -14,23 +14,32 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 
 #: ISO 6336-1 Table 9 (Method B) coefficients of q' [mm·µm/N]
 _C = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
 
 
+@document_fields
 @dataclass(frozen=True)
 class IsoStiffness:
     """ISO 6336-1 stiffness values of one helix (per unit face width, N/(mm·µm))."""
 
-    q_prime: float    #: minimum flexibility of a tooth pair [mm·µm/N]
-    c_th: float       #: theoretical single stiffness c'_th
-    c_prime: float    #: single stiffness c'
+    q_prime: float
+    """minimum flexibility of a tooth pair [mm·µm/N]"""
+    c_th: float
+    """theoretical single stiffness c'_th = 1/q' per unit face width [N/(mm·µm)]"""
+    c_prime: float
+    """single stiffness c' of one tooth pair per unit face width (ISO 6336-1 Method B) [N/(mm·µm)]"""
     c_gamma_alpha: float
+    """mesh stiffness c_γα = c' (0.75 ε_α + 0.25) per unit face width (transverse) [N/(mm·µm)]"""
     c_gamma_beta: float
+    """mesh stiffness c_γβ = 0.85 c_γα per unit face width (for K_Hβ) [N/(mm·µm)]"""
     eps_alpha: float
-    face_width: float  #: [m]
+    """transverse contact ratio ε_α used in c_γα [-]"""
+    face_width: float
+    """face width of the helix the values are per unit of (``k()`` multiplies by it) [m]"""
 
     def k(self, which: str = "c_gamma_alpha") -> float:
         """The named value times the face width, in N/m."""

@@ -26,27 +26,80 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.iso6336 import IsoStiffness
+
+if TYPE_CHECKING:
+    from femgear.physics.ltca.cycle import LTCACycle
 
 U_SAMPLES = 161   #: path positions A..E at which the sliced levels sample k'(u)
 
 
+@document_fields
+@dataclass(frozen=True)
+class FESamples:
+    """The ``fe`` level's tooth-pair stiffness samples from the 2-D FE teeth in series with Hertz."""
+
+    u: np.ndarray
+    """path positions of the FE samples, measured from T1 (the pinion's base tangent point) [m]"""
+    k: np.ndarray
+    """transverse tooth-pair stiffness per unit face width at ``u`` [N/m²]"""
+    compliance: tuple[np.ndarray, np.ndarray]
+    """bending/shear/foundation compliance per unit face width of the pinion and the gear tooth at ``u`` [m²/N]"""
+    ndofs: tuple[int, ...]
+    """degrees of freedom of the pinion's and the gear's FE model [-]"""
+    h: float | None
+    """element size of the FE models at the flank [m]"""
+    seconds: float
+    """wall time of both members' FE models and solves [s]"""
+
+
+@document_fields
 @dataclass(frozen=True)
 class MeshStiffness:
-    """Mesh stiffness of both helices over one mesh period (normal line of action, N/m)."""
+    """Mesh stiffness of both helices over one mesh period, along the normal line of action.
+
+    The typed by-products of a level (its tooth-pair stiffness along the path, the ISO figures,
+    the FE samples, the LTCA cycle) are None where the level has none."""
 
     level: str
-    phase: np.ndarray      #: sample phases in [0, 1) [base pitches]
-    k_left: np.ndarray     #: [N/m]
-    k_right: np.ndarray    #: [N/m]
-    stagger: float         #: right helix offset [base pitches]
+    """the stiffness level that computed it (``constant``, ``iso6336``, ``pem``, ``fe``, ``ltca``) [-]"""
+    phase: np.ndarray
+    """sample phases over one mesh period, [0, 1); phase 0: the front of a contact line enters the path at A [base
+    pitches]"""
+    k_left: np.ndarray
+    """stiffness of the left helix at ``phase``, along the normal line of action (F_n = k δ_n) [N/m]"""
+    k_right: np.ndarray
+    """stiffness of the right helix at ``phase`` (0 for a single-helical or spur pair) [N/m]"""
+    stagger: float
+    """offset of the right helix against the left one: k_right(φ) = k_left(φ + stagger) [base pitches]"""
     n_slices: int
-    seconds: float         #: wall time to compute [s]
-    info: dict = field(default_factory=dict)
+    """transverse slices per helix of the sliced levels (``pem``, ``fe``; 1 for spur; 0: not sliced) [-]"""
+    seconds: float
+    """wall time to compute [s]"""
+    _: KW_ONLY
+    u: np.ndarray | None = None
+    """``pem``, ``fe``: path positions of ``k_pair_per_width``, measured from T1 (the pinion's base tangent point) [m]"""
+    k_pair_per_width: np.ndarray | None = None
+    """``pem``, ``fe``: transverse stiffness of one tooth pair per unit face width at ``u`` (the shape of the
+    contact-line stiffness along the path) [N/m²]"""
+    iso: IsoStiffness | None = None
+    """``iso6336``: the ISO 6336-1 Method B single and mesh stiffnesses the level's constant comes from [-]"""
+    fe: FESamples | None = None
+    """``fe``: the FE samples of the tooth-pair stiffness that ``k_pair_per_width`` interpolates [-]"""
+    ltca: LTCACycle | None = None
+    """``ltca``: the loaded tooth contact analysis cycle whose secant stiffnesses are ``k_left``/``k_right`` [-]"""
+
+    @property
+    def resolved_orders(self) -> int | None:
+        """``ltca``: the mesh orders its contact discretisation resolves (the dynamics keeps those); else None."""
+        return None if self.ltca is None else self.ltca.resolved_orders
 
     @property
     def k_total(self) -> np.ndarray:
@@ -154,15 +207,15 @@ def path_samples(pair: GearPair) -> np.ndarray:
 
 def sliced_mesh_stiffness(pair: GearPair, u_grid: np.ndarray, k_grid: np.ndarray, label: str,
                           n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
-                          t0: float | None = None, info: dict | None = None) -> MeshStiffness:
+                          t0: float | None = None, fe: FESamples | None = None) -> MeshStiffness:
     """Mesh stiffness of both helices from the pair stiffness per width ``k_grid`` at path positions ``u_grid``
     (the ``pem`` and ``fe`` levels): k'(u) interpolated, each helix cut into ``n_slices`` slices (one for spur).
-    ``info``: the level's other records; ``t0``: when the level started (for ``seconds``)."""
+    ``fe``: the ``fe`` level's FE samples; ``t0``: when the level started (for ``seconds``)."""
     t0 = time.perf_counter() if t0 is None else t0
     phases = check_period(n_positions, stagger)
     k_unit = tabulated(pair, u_grid, k_grid)
     n_slices = 1 if pair.beta_b == 0 else n_slices     # spur: every slice sees the same position
     kl = helix_stiffness(pair, k_unit, phases, n_slices)
     kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
-    info = {**(info or {}), "u": u_grid, "k_pair_per_width": k_grid}
-    return MeshStiffness(label, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, info)
+    return MeshStiffness(label, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, u=u_grid,
+                         k_pair_per_width=k_grid, fe=fe)

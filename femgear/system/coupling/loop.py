@@ -45,9 +45,11 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from femgear.case import Case
+from femgear.docfields import document_fields
 from femgear.errors import ConvergenceError
 from femgear.levels import wear as wear_levels
 from femgear.levels.lubrication import Lubrication, lubrication_solver
+from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.physics.wear.face import FaceReference
 from femgear.physics.wear.load_sharing import ReferenceLoad, load_map, reference_load_map
@@ -74,10 +76,9 @@ def line_stiffness(case: Case, mean_helix_stiffness: float, stiffness: MeshStiff
     ends than at the pitch point), else uniform (a number).
     """
     c_bar = mean_helix_stiffness / case.pair.mean_contact_length
-    info = {} if stiffness is None else stiffness.info
-    if "k_pair_per_width" not in info:
+    if stiffness is None or stiffness.k_pair_per_width is None:
         return c_bar
-    k = np.interp(case.path.u, info["u"], info["k_pair_per_width"])
+    k = np.interp(case.path.u, stiffness.u, stiffness.k_pair_per_width)
     return c_bar * k / k.mean()
 
 
@@ -94,7 +95,7 @@ class CouplingSetup:
     static_force: float            #: normal force per helix [N]
     n_phase: int = 128
     method: str | None = None      #: integrator; None: the dynamics' default for the model
-    ltca: dict | None = None       #: the unworn LTCA cycle of an ``ltca`` stiffness (re-run on deviated flanks)
+    ltca: LTCACycle | None = None  #: the unworn LTCA cycle of an ``ltca`` stiffness (re-run on deviated flanks)
     #: ``ltca``: the LTCA cycles the wear integration of a pass shares the load like: ``"unworn"`` (the
     #: unworn cycle, moved by the wear grown through the Winkler layer c_l) or ``"pass"`` (blended from
     #: the unworn cycle to the pass's deviated one).  ``"pass"`` reproduces the deviated LTCA at the
@@ -134,15 +135,14 @@ class CouplingSetup:
         source = stiffness_source(case, stiffness)
         model = build_model(case, stiffness=source, friction=0.0)
         c_l = line_stiffness(case, float(np.mean(model.stiffness.k_left)), stiffness)
-        info = getattr(source, "info", None) or {}
-        ltca = info if "model" in info and "excitation" in info else None
+        ltca = getattr(source, "ltca", None)
         return cls(case=case, model=model, modal=modal_analysis(model),
                    lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
                    c_l=c_l, static_force=case.operating.normal_force / case.pair.n_helices, n_phase=n_phase, method=method,
                    ltca=ltca, wear_anchor=wear_anchor, face=_face_reference(case, ltca, n_phase))
 
 
-def _face_reference(case: Case, ltca: dict | None, n_phase: int) -> FaceReference | None:
+def _face_reference(case: Case, ltca: LTCACycle | None, n_phase: int) -> FaceReference | None:
     """The unworn cycle's :class:`FaceReference` for ``wear.field = "face"`` (None for ``"path"``)."""
     if case.wear.field != "face":
         return None
@@ -154,31 +154,46 @@ def _face_reference(case: Case, ltca: dict | None, n_phase: int) -> FaceReferenc
                                n_zeta=case.wear.face_points)
 
 
+@document_fields
 @dataclass(frozen=True)
 class CouplingState:
     """The loop after ``iteration`` passes; arrays over the path positions unless noted."""
 
     iteration: int
-    mesh_force: np.ndarray          #: (2, n_phase) dynamic mesh force per helix over one mesh period [N]
-    load_per_length: np.ndarray     #: passage-mean w̄' [N/m]
-    mu: np.ndarray                  #: friction coefficient [-]
-    temperature_rise: np.ndarray    #: contact (oil) temperature rise [K]
-    flank_temperature_rise: float   #: bulk temperature rise used for the thermal expansion [K]
-    thermal_deviation: np.ndarray   #: (2, n) ζ_T of pinion and gear [m]
-    wear: np.ndarray                #: (2, n) wear depth of pinion and gear [m]
-    mesh_force_change: float = math.nan   #: max relative change of the mesh force against the previous pass
-    mu_change: float = math.nan           #: max absolute change of μ against the previous pass
-    dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)   #: the pass's run
-    lte_peak_to_peak: float = math.nan    #: loaded TE p-p of the deviated flanks (``ltca`` only) [m]
+    """passes of the loop so far (0: the quasi-static start) [-]"""
+    mesh_force: np.ndarray
+    """(2, n_phase) dynamic mesh force of the left (row 0) and right (row 1) helix over one mesh period, along the
+    normal line of action, at phases i / n_phase [N]"""
+    load_per_length: np.ndarray
+    """passage-mean load per unit contact-line length w̄' at the path positions (measured from T1) [N/m]"""
+    mu: np.ndarray
+    """friction coefficient μ at the path positions (relaxed) [-]"""
+    temperature_rise: np.ndarray
+    """contact (flash) temperature rise at the path positions [K]"""
+    flank_temperature_rise: float
+    """bulk temperature rise used for the thermal expansion [K]"""
+    thermal_deviation: np.ndarray
+    """(2, n) thermal growth ζ_T of the pinion (row 0) and gear (row 1) flank along the path (relaxed) [m]"""
+    wear: np.ndarray
+    """(2, n) wear depth of the pinion (row 0) and gear (row 1) flank along the path (relaxed) [m]"""
+    mesh_force_change: float = math.nan
+    """largest change of the mesh force against the previous pass, relative to its largest value (NaN at the start) [-]"""
+    mu_change: float = math.nan
+    """largest absolute change of μ against the previous pass (NaN at the start) [-]"""
+    dynamics: DynamicsRun | None = field(default=None, repr=False, compare=False)
+    """the pass's dynamics run: settings, simulation, response, modes (None at the start) [-]"""
+    lte_peak_to_peak: float = math.nan
+    """peak-to-peak loaded TE (normal approach) of the pass's deviated LTCA cycle (``ltca`` only, else NaN) [m]"""
     seconds: float = 0.0
-    #: wall time of the pass's parts [s]: ``ltca`` (the deviated cycle), ``dynamics`` (with it), ``wear``, ``contact``
+    """wall time of the pass [s]"""
     timings: Mapping[str, float] = field(default_factory=dict, compare=False)
-    #: ``wear.field = "face"``: (member, helix, u, ζ) wear depth on the setup's face grid [m]; ``wear`` is
-    #: then its face mean over both helices
+    """wall time of the pass's parts: ``ltca`` (the deviated cycle), ``dynamics`` (with it), ``wear``, ``contact`` [s]"""
     wear_face: np.ndarray | None = field(default=None, repr=False, compare=False)
-    #: ``wear.field = "face"`` with ``thermal = "fe3d"``: (member, helix, u, ζ) ζ_T on the face grid [m]
-    #: (:meth:`ThermalUnits.face`); ``thermal_deviation`` is its face mean (to the grid's interpolation)
+    """``wear.field = "face"``: (member, helix, u, ζ) wear depth on the setup's face grid; ``wear`` is then its face
+    mean over both helices (else None) [m]"""
     thermal_face: np.ndarray | None = field(default=None, repr=False, compare=False)
+    """``wear.field = "face"`` with ``thermal = "fe3d"``: (member, helix, u, ζ) ζ_T on the face grid
+    (:meth:`ThermalUnits.face`); ``thermal_deviation`` is its face mean (else None) [m]"""
 
     @property
     def removed(self) -> np.ndarray:
@@ -190,21 +205,21 @@ class CouplingState:
         return {} if self.dynamics is None else self.dynamics.amplitudes
 
 
-def ltca_reference(pair, u: np.ndarray, info: dict, deviation: np.ndarray, extra=None,
+def ltca_reference(pair, u: np.ndarray, cycle: LTCACycle, deviation: np.ndarray, extra=None,
                    n_phase: int | None = None) -> ReferenceLoad:
-    """The load map of the ``ltca`` cycle ``info`` (:func:`femgear.physics.ltca.level.ltca_cycle` or
-    :func:`~femgear.physics.ltca.level.deviated_cycle`, run with the extra deviation ``extra``) at the path
+    """The load map of the ``ltca`` cycle (:func:`femgear.physics.ltca.level.ltca_cycle` or
+    :meth:`~femgear.physics.ltca.cycle.LTCACycle.deviated`, run with the extra deviation ``extra``) at the path
     positions ``u``, computed under the flank deviation ``deviation`` (h1 + h2, or h1 + h2 − ζ_T1 −
     ζ_T2: what its user passes as deviation), with its elastic approach δ − ε (the secant stiffness
     by which a deviation change moves its loads, :meth:`ReferenceLoad.stiffness`).
 
     ``n_phase``: keep every k-th phase of the cycle, k = ⌈phases / n_phase⌉ (the wear integration
     solves each kept phase of both helices at every step; None keeps all)."""
-    res = info["ltca"]
+    res = cycle.result
     k = _phase_stride(res, n_phase)
     return ReferenceLoad(phases=res.phase[::k], load=res.path_load(pair, u, scaled=True)[:, ::k],
-                         deviation=np.asarray(deviation, dtype=float), offsets=(0.0, float(info["options"]["stagger"])),
-                         approach=res.path_approach(pair, u, info.get("modifications"), extra)[:, ::k])
+                         deviation=np.asarray(deviation, dtype=float), offsets=(0.0, float(cycle.stagger)),
+                         approach=res.path_approach(pair, u, cycle.modifications, extra)[:, ::k])
 
 
 def _phase_stride(res, n_phase: int | None) -> int:
@@ -212,16 +227,15 @@ def _phase_stride(res, n_phase: int | None) -> int:
     return 1 if n_phase is None else max(1, math.ceil(res.phase.size / n_phase))
 
 
-def ltca_face_reference(pair, u: np.ndarray, info: dict, deviation, extra=None, n_phase: int | None = None,
+def ltca_face_reference(pair, u: np.ndarray, cycle: LTCACycle, deviation, extra=None, n_phase: int | None = None,
                         n_zeta: int = 21):
     """:func:`ltca_reference` with the face coordinate of each sample and a uniform face grid of ``n_zeta``
     points: the input of the face-resolved wear (:class:`femgear.physics.wear.face.FaceReference`), the load averaged
     over the cycle's point spacing b / n_line in ζ (its face resolution, :func:`femgear.physics.wear.face.face_load`)."""
-    ref = ltca_reference(pair, u, info, deviation, extra, n_phase)
-    k = _phase_stride(info["ltca"], n_phase)
-    n_line = info["ltca"].info.get("n_line") or info.get("options", {}).get("n_line")
-    return FaceReference(ref=ref, zeta=info["ltca"].path_zeta(pair, u)[:, ::k], grid=np.linspace(0.0, pair.b, n_zeta),
-                         window=pair.b / n_line if n_line else 0.0)
+    ref = ltca_reference(pair, u, cycle, deviation, extra, n_phase)
+    k = _phase_stride(cycle.result, n_phase)
+    return FaceReference(ref=ref, zeta=cycle.result.path_zeta(pair, u)[:, ::k], grid=np.linspace(0.0, pair.b, n_zeta),
+                         window=pair.b / cycle.n_line)
 
 
 def _removed_deviation(setup: CouplingSetup, wear: np.ndarray, zeta: np.ndarray, wear_face: np.ndarray | None = None,
@@ -238,9 +252,9 @@ def _removed_deviation(setup: CouplingSetup, wear: np.ndarray, zeta: np.ndarray,
     return face_deviation(setup.pair, setup.kin.u, setup.face.grid, wear_face - thermal)
 
 
-def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta: np.ndarray,
+def _references(setup: CouplingSetup, cycle: LTCACycle | None, wear: np.ndarray, zeta: np.ndarray,
                 wear_face: np.ndarray | None = None, thermal_face: np.ndarray | None = None):
-    """(wear, contact) reference load maps for the pass whose LTCA cycle ``info`` ran on the deviation
+    """(wear, contact) reference load maps for the pass whose LTCA cycle ``cycle`` ran on the deviation
     wear − ζ_T (None, None without ``ltca``).
 
     The contact response sees h1 + h2 − ζ_T = that deviation: the cycle's own loads.  The wear
@@ -249,17 +263,17 @@ def _references(setup: CouplingSetup, info: dict | None, wear: np.ndarray, zeta:
     (``wear_anchor = "unworn"``); with ``"pass"`` the reference ends at the pass's cycle (at h =
     Σ wear), blended along the way by the wear's progress towards Σ wear (see :class:`CouplingSetup`).
     """
-    if info is None or setup.pair.beta_b == 0:
+    if cycle is None or setup.pair.beta_b == 0:
         # spur: a contact line is the whole face at one u, and the pairs in contact share the load by the
         # Winkler layer of the level's pair stiffness (the spur load map); the LTCA's per-line reference
         # reads helical lines
         return None, None
     h, z = wear.sum(axis=0), zeta.sum(axis=0)
     extra = None
-    if info is not setup.ltca:
+    if cycle is not setup.ltca:
         extra = _removed_deviation(setup, wear, zeta, wear_face, thermal_face)
-    ref = ltca_reference(setup.pair, setup.kin.u, info, h, extra, setup.n_phase)
-    if info is setup.ltca:
+    ref = ltca_reference(setup.pair, setup.kin.u, cycle, h, extra, setup.n_phase)
+    if cycle is setup.ltca:
         return ref, replace(ref, deviation=h - z)
     unworn = ltca_reference(setup.pair, setup.kin.u, setup.ltca, z, n_phase=setup.n_phase)
     if setup.wear_anchor == "unworn":
@@ -326,20 +340,20 @@ def _deviated_model(setup: CouplingSetup, state: CouplingState):
         return setup.model, deviation, None
     if deviation is None:
         return setup.model, None, setup.ltca
-    from femgear.physics.ltca.level import deviated_cycle
-
     face = state.wear_face
     extra = _removed_deviation(setup, wear, zeta, face, state.thermal_face)
-    worn = deviated_cycle(setup.ltca, extra)
-    unworn = setup.ltca if face is None else _worn_orders(setup.ltca, worn, extra)
+    worn = setup.ltca.deviated(extra)
+    unworn = setup.ltca
+    if face is not None:
+        unworn, worn = _worn_orders(setup.ltca, worn, extra)
     coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)
     return with_deviated_tooth_contact(setup.model, unworn, worn), coast_only, worn
 
 
-def _worn_orders(unworn: dict, worn: dict, extra) -> dict:
-    """``unworn`` with the mesh orders that the contact discretisation resolves on the worn flanks too
-    (:func:`femgear.physics.ltca.level.resolved_orders` with the deviation ``extra``; the fewer of the two), also
-    recorded in ``worn``: the dynamics keeps only those (face-resolved wear).
+def _worn_orders(unworn: LTCACycle, worn: LTCACycle, extra) -> tuple[LTCACycle, LTCACycle]:
+    """(``unworn``, ``worn``) with the mesh orders that the contact discretisation resolves on the worn flanks too
+    (:func:`femgear.physics.ltca.level.resolved_orders` with the deviation ``extra``; the fewer of the two), in
+    both: the dynamics keeps only those (face-resolved wear).
 
     A face-resolved worn field moves load along the lines point by point, and the LTCA re-run on it
     resolves fewer orders than on the unworn flanks: on the rig's test gear after 1e6 cycles 4 (face
@@ -348,36 +362,35 @@ def _worn_orders(unworn: dict, worn: dict, extra) -> dict:
     orders 2, 3, 6, 9, 10 changed by 64–530 %.  ≈ 1.5 s a pass (two cycles of 64 phases without line
     loads).  Where the refined cycle of the check does not converge (its Hertz-width fixed point on the
     crowned baseline's face-worn flanks, 32 points per line), the resolution is unknown: only the mesh
-    order 1 is kept, with a warning, and ``worn['orders_check']`` holds the solver's message."""
+    order 1 is kept, with a warning, and ``worn.orders_check`` holds the solver's message."""
     import logging
 
     from femgear.errors import ConvergenceError
     from femgear.physics.ltca.level import resolved_orders
 
-    o = unworn["options"]
+    check = None
     try:
-        orders, change = resolved_orders(unworn["model"], unworn["force"], unworn.get("modifications"),
-                                         o["stagger"], o["n_line"], extra)
+        orders, change = resolved_orders(unworn.model, unworn.force, unworn.modifications, unworn.stagger,
+                                         unworn.n_line, extra)
     except ConvergenceError as exc:
         logging.getLogger(__name__).warning("worn-flank resolution check failed (%s): keeping mesh order 1", exc)
-        orders, change = 1, None
-        worn["orders_check"] = str(exc)
-    orders = min(orders, unworn["resolved_orders"])
-    worn.update(resolved_orders=orders, harmonic_change=change)
-    return {**unworn, "resolved_orders": orders}
+        orders, change, check = 1, None, str(exc)
+    orders = min(orders, unworn.resolved_orders)
+    return (replace(unworn, resolved_orders=orders),
+            worn.with_orders(orders, change, check))
 
 
-def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, dict | None]:
+def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, LTCACycle | None]:
     """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the pass's LTCA cycle)."""
     u_tab, mu_tab = setup.kin.u, state.mu
     mu = (lambda u: np.interp(u, u_tab, mu_tab)) if np.any(mu_tab > 0) else 0.0
-    base, deviation, info = _deviated_model(setup, state)
+    base, deviation, cycle = _deviated_model(setup, state)
     model = with_deviation(with_friction(base, mu), deviation)
     num = setup.case.numerics
     run = run_dynamics(model, method=setup.method or num.dynamics_method, cycles=num.dynamics_cycles,
                        transient_cycles=num.transient_cycles, steps_per_period=num.steps_per_mesh_period,
                        modal=setup.modal)
-    return phase_average(run.response, setup.n_phase), run, info
+    return phase_average(run.response, setup.n_phase), run, cycle
 
 
 def phase_average(res, n_phase: int) -> np.ndarray:
@@ -414,51 +427,65 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
     wear, face = _wear(setup, force, ref_wear)
     w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact)
     rise, zeta, zeta_face = _thermal(setup, dT)
-    state = CouplingState(0, force, w, mu, dT, rise, zeta, wear, seconds=time.perf_counter() - t0, wear_face=face,
-                          thermal_face=zeta_face)
+    state = CouplingState(iteration=0, mesh_force=force, load_per_length=w, mu=mu, temperature_rise=dT,
+                          flank_temperature_rise=rise, thermal_deviation=zeta, wear=wear,
+                          seconds=time.perf_counter() - t0, wear_face=face, thermal_face=zeta_face)
     yield state
     while True:
         t0 = time.perf_counter()
-        force, run, info = _dynamics(setup, state)
+        force, run, cycle = _dynamics(setup, state)
         t1 = time.perf_counter()
-        ref_wear, ref_contact = _references(setup, info, state.wear, state.thermal_deviation, state.wear_face,
+        ref_wear, ref_contact = _references(setup, cycle, state.wear, state.thermal_deviation, state.wear_face,
                                             state.thermal_face)
         wear_new, face_new = _wear(setup, force, ref_wear)
         t2 = time.perf_counter()
         w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact)
         rise, zeta_new, zeta_face = _thermal(setup, dT)
         mix = lambda old, new: old + relax * (new - old)  # noqa: E731
-        lte = math.nan if info is None else info["lte_peak_to_peak"]
-        rerun = 0.0 if info is None or info is setup.ltca else info["ltca"].seconds
+        lte = math.nan if cycle is None else cycle.lte_peak_to_peak
+        rerun = 0.0 if cycle is None or cycle is setup.ltca else cycle.seconds
         timings = {"ltca": rerun, "dynamics": t1 - t0, "wear": t2 - t1, "contact": time.perf_counter() - t2}
-        state = CouplingState(state.iteration + 1, force, w, mix(state.mu, mu_new), dT, rise,
-                              mix(state.thermal_deviation, zeta_new), mix(state.wear, wear_new),
-                              float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
-                              float(np.max(np.abs(mu_new - state.mu))), run, lte, time.perf_counter() - t0, timings,
-                              None if face_new is None else mix(state.wear_face, face_new),
-                              None if zeta_face is None else mix(state.thermal_face, zeta_face))
+        state = replace(
+            state, iteration=state.iteration + 1, mesh_force=force, load_per_length=w, mu=mix(state.mu, mu_new),
+            temperature_rise=dT, flank_temperature_rise=rise, thermal_deviation=mix(state.thermal_deviation, zeta_new),
+            wear=mix(state.wear, wear_new),
+            mesh_force_change=float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
+            mu_change=float(np.max(np.abs(mu_new - state.mu))), dynamics=run, lte_peak_to_peak=lte,
+            seconds=time.perf_counter() - t0, timings=timings,
+            wear_face=None if face_new is None else mix(state.wear_face, face_new),
+            thermal_face=None if zeta_face is None else mix(state.thermal_face, zeta_face))
         for name, value in (("mesh_force", force), ("mu", state.mu), ("wear", state.wear)):
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError("coupling", f"non-finite {name} in iteration {state.iteration}")
         yield state
 
 
+@document_fields
 @dataclass(frozen=True)
 class CouplingHistory:
     """Per-pass convergence measures (iteration 0 is the quasi-static start)."""
 
     iteration: tuple[int, ...]
+    """pass number of each entry (0: the quasi-static start) [-]"""
     mesh_force_change: tuple[float, ...]
+    """relative mesh-force change of each pass (None/NaN at the start) [-]"""
     mu_change: tuple[float, ...]
+    """absolute μ change of each pass (None/NaN at the start) [-]"""
     seconds: tuple[float, ...]
+    """wall time of each pass [s]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class CoupledResult:
     state: CouplingState
+    """the last state of the loop (the converged one, or the first dynamic pass of a one-way run) [-]"""
     history: CouplingHistory
+    """the per-pass convergence measures [-]"""
     converged: bool
+    """whether the loop met its tolerances (a one-way run counts as converged) [-]"""
     seconds: float
+    """wall time of the whole loop [s]"""
 
 
 def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1e-6, max_iter: int = 30,

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.linalg import eigh
@@ -35,6 +36,9 @@ from femgear.system.dynamics.mesh import (
 )
 from femgear.system.dynamics.model import GearRotorModel, MeshDeviation
 from femgear.system.dynamics.structure import assemble_structure
+
+if TYPE_CHECKING:
+    from femgear.physics.ltca.cycle import LTCACycle
 
 Friction = float | Callable[[np.ndarray], np.ndarray]
 """μ as a number, or a callable μ(u) of the path position u [m]."""
@@ -105,13 +109,13 @@ def band_limited(samples: np.ndarray, n: int, orders: int | None = None) -> np.n
 
 def ltca_table(source) -> StiffnessTable | None:
     """The secant stiffness of an ``ltca`` level as a table band-limited to the mesh orders its contact
-    discretisation resolves (``info['resolved_orders']``, :func:`femgear.physics.ltca.level.resolved_orders`);
+    discretisation resolves (``LTCACycle.resolved_orders``, :func:`femgear.physics.ltca.level.resolved_orders`);
     None for other levels."""
-    info = getattr(source, "info", None) or {}
-    exc = info.get("excitation")
-    if exc is None:
+    cycle = getattr(source, "ltca", None)
+    if cycle is None:
         return None
-    n, H = max(LTCA_TABLE_SAMPLES, exc["k_secant_left"].size), info.get("resolved_orders")
+    exc = cycle.excitation
+    n, H = max(LTCA_TABLE_SAMPLES, exc["k_secant_left"].size), cycle.resolved_orders
     return StiffnessTable(band_limited(exc["k_secant_left"], n, H), band_limited(exc["k_secant_right"], n, H),
                           label=f"ltca:{H}")
 
@@ -127,20 +131,21 @@ def tooth_contact_deviation(source) -> MeshDeviation | None:
     is the drive table: exact for the uniform part, the coast flanks seldom touch).
     Band-limited like :func:`ltca_table`, on the same phase grid and to the same orders.
     """
-    info = getattr(source, "info", None) or {}
-    exc = info.get("excitation")
-    if exc is None:
+    cycle = getattr(source, "ltca", None)
+    if cycle is None:
         return None
-    n, H = max(LTCA_TABLE_SAMPLES, exc["e_left"].size), info.get("resolved_orders")
+    exc = cycle.excitation
+    n, H = max(LTCA_TABLE_SAMPLES, exc["e_left"].size), cycle.resolved_orders
     e = np.array([band_limited(exc["e_left"], n, H), band_limited(exc["e_right"], n, H)])
     return MeshDeviation(drive=e, coast=e.copy())
 
 
-def with_deviated_tooth_contact(model: GearRotorModel, unworn: dict, deviated: dict) -> GearRotorModel:
+def with_deviated_tooth_contact(model: GearRotorModel, unworn: LTCACycle, deviated: LTCACycle) -> GearRotorModel:
     """``model`` (built on the ``ltca`` cycle ``unworn``) excited by the LTCA of deviated flanks ``deviated``.
 
-    ``unworn``/``deviated``: the ``info`` of :func:`femgear.physics.ltca.level.ltca_cycle` and of
-    :func:`femgear.physics.ltca.level.deviated_cycle` (wear, thermal growth).  The stiffness table
+    ``unworn``/``deviated``: the :class:`~femgear.physics.ltca.cycle.LTCACycle` of
+    :func:`femgear.physics.ltca.level.ltca_cycle` and its :meth:`~femgear.physics.ltca.cycle.LTCACycle.deviated`
+    (wear, thermal growth).  The stiffness table
     stays the unworn secant k_s,0 (the structure, its modes and the integrators'
     propagators stay valid); the drive-flank deviation becomes e'_s = LTE − F_s/k_s,0 of
     the deviated cycle, so that the mesh law N_s = k_s,0 (δ − e'_s) reproduces the deviated
@@ -153,8 +158,8 @@ def with_deviated_tooth_contact(model: GearRotorModel, unworn: dict, deviated: d
         raise ValueError("with_deviated_tooth_contact: the model was not built on an ltca stiffness")
     from femgear.physics.ltca.analysis import unloaded_te
 
-    k0, exc = unworn["excitation"], deviated["excitation"]
-    n, H = model.base_deviation.drive.shape[1], unworn.get("resolved_orders")
+    k0, exc = unworn.excitation, deviated.excitation
+    n, H = model.base_deviation.drive.shape[1], unworn.resolved_orders
     rows = [band_limited(unloaded_te(exc[f"lte_{h}"], exc[f"force_{h}"], k0[f"k_secant_{h}"]), n, H)
             for h in ("left", "right")]
     return replace(model, base_deviation=MeshDeviation(drive=np.array(rows), coast=model.base_deviation.coast))

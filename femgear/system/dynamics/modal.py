@@ -17,16 +17,22 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import eigh
 
+from femgear.docfields import document_fields
 from femgear.system.dynamics.model import GearRotorModel
 
 GROUP_KINDS = {"lateral": (0, 1), "axial": (2,), "tilt": (3, 4), "torsion": (5,)}
 
 
+@document_fields
 @dataclass(frozen=True)
 class ModalResult:
-    frequencies: np.ndarray   #: natural frequencies [Hz], ascending (rigid modes ≈ 0)
-    shapes: np.ndarray        #: (24, m) mode shapes in full DOFs
-    energy: dict              #: group name -> (m,) kinetic-energy fractions; "mesh" -> strain fractions
+    frequencies: np.ndarray
+    """natural frequencies, ascending (rigid-body modes ≈ 0) [Hz]"""
+    shapes: np.ndarray
+    """(24, m) mode shapes in the full DOFs, mass-normalised [-]"""
+    energy: dict
+    """group name → (m,) kinetic-energy fraction of each mode in the group; "mesh" → the mesh's strain-energy fraction
+    [-]"""
 
     def dominant_group(self, mode: int) -> str:
         groups = {k: v[mode] for k, v in self.energy.items() if k != "mesh"}

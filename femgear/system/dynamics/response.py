@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.system.dynamics.integrate import Simulation
 from femgear.system.dynamics.layout import BODIES
 
@@ -74,18 +75,28 @@ class Amplitudes(Mapping[str, float]):
         return (Amplitudes, (self._values,))
 
 
+@document_fields
 @dataclass(frozen=True)
 class Response:
     """Steady-state time histories and their summary values."""
 
-    t: np.ndarray                 #: [s] (after the transient)
-    displacement: np.ndarray      #: (n_t, 24) full DOFs [m, rad]
-    velocity: np.ndarray          #: (n_t, 24) [m/s, rad/s]
-    delta: np.ndarray             #: (n_t, 2) mesh deflections [m]
-    mesh_force: np.ndarray        #: (n_t, 2) dynamic normal mesh forces [N]
-    bearing_acceleration: np.ndarray  #: (n_t, 4, 3) pinion-L/R, gear-L/R bearing stations [m/s^2]
+    t: np.ndarray
+    """recorded times after the transient [s]"""
+    displacement: np.ndarray
+    """(n_t, 24) displacements of the full DOFs (translations x, y, z and rotations of the four helix halves) [m, rad]"""
+    velocity: np.ndarray
+    """(n_t, 24) velocities of the full DOFs [m/s, rad/s]"""
+    delta: np.ndarray
+    """(n_t, 2) mesh deflection of the left and right helix along the normal line of action [m]"""
+    mesh_force: np.ndarray
+    """(n_t, 2) dynamic normal mesh force of the left and right helix, N_s = k_s f(δ_s) + c_s δ̇_s [N]"""
+    bearing_acceleration: np.ndarray
+    """(n_t, 4, 3) acceleration of the shaft at the pinion-L/R and gear-L/R bearing stations, x, y, z [m/s²]"""
     mesh_frequency: float
-    amplitudes: Amplitudes = field(default_factory=Amplitudes)   #: see :class:`Amplitudes`
+    """mesh frequency f_m = z1 n1 / 60 [Hz]"""
+    amplitudes: Amplitudes = field(default_factory=Amplitudes)
+    """steady-state figures by name (:class:`Amplitudes`; amplitudes are half peak-to-peak, SI by quantity: displacement
+    m, velocity m/s, acceleration m/s², force N) [m, m/s, m/s², N]"""
 
     @property
     def dte(self) -> np.ndarray:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+from femgear.docfields import document_fields
 from femgear.system.dynamics.expo import default_substeps
 from femgear.system.dynamics.integrate import Simulation, expo_step, simulate, stability_limit
 from femgear.system.dynamics.modal import ModalResult, mesh_mode_limit, modal_analysis
@@ -24,22 +25,32 @@ NEWMARK_STEP_FACTOR = 8
 STEPS_PER_MODE_PERIOD = 8
 
 
+@document_fields
 @dataclass(frozen=True)
 class DynamicsSettings:
     """Integrator, step and duration of a run (mesh periods)."""
 
     method: str
+    """the time integrator that ran (e.g. ``expo``, ``newmark``) [-]"""
     dt: float
+    """time step [s]"""
     cycles: float
+    """recorded mesh periods after the transient [mesh periods]"""
     transient_cycles: float
+    """mesh periods integrated and discarded before recording [mesh periods]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class DynamicsRun:
     settings: DynamicsSettings
+    """integrator, step and duration of the run [-]"""
     simulation: Simulation
+    """the recorded time history in reduced coordinates, with its model [-]"""
     response: Response
+    """the steady-state response: full-DOF histories, mesh forces, bearing accelerations, amplitudes [-]"""
     modal: ModalResult
+    """natural frequencies and mode shapes of the mean system [-]"""
 
     @property
     def model(self) -> GearRotorModel:

@@ -6,22 +6,33 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.system.dynamics.model import GearRotorModel
 
 
+@document_fields
 @dataclass(frozen=True)
 class Simulation:
     """Recorded time history (reduced coordinates)."""
 
     model: GearRotorModel
+    """the gear-rotor model that was integrated (built from the case; its inputs are the scene's) [-]"""
     method: str
+    """the time integrator [-]"""
     dt: float
-    t: np.ndarray        #: recorded times [s]
-    q: np.ndarray        #: (n_rec, n) displacements
-    v: np.ndarray        #: (n_rec, n) velocities
-    seconds: float       #: wall time of the integration loop [s]
+    """time step [s]"""
+    t: np.ndarray
+    """recorded times [s]"""
+    q: np.ndarray
+    """(n_rec, n) displacements in the model's reduced coordinates (full = T q: translations and rotations) [m, rad]"""
+    v: np.ndarray
+    """(n_rec, n) velocities in the reduced coordinates [m/s, rad/s]"""
+    seconds: float
+    """wall time of the integration loop [s]"""
     steps: int
+    """time steps integrated [-]"""
     info: dict = field(default_factory=dict, compare=False)
+    """the integrator's counters: steps per mesh period, set-up seconds, contact switches, solves … (by integrator) [-]"""
 
 
 def inputs(model: GearRotorModel, t: np.ndarray):
