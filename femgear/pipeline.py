@@ -99,7 +99,7 @@ def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
 
     try:
         return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
-                         tribology.film)
+                         tribology.film, case=case)
     except ValueError as exc:
         logging.getLogger("femgear.physics.rating").warning("rating: not computed: %s", exc)
         return None

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from femgear.case import build_case, operating_point
+from femgear.case import build_case
 from femgear.levels.lubrication import lubrication_solver
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.geometry import GearPair
@@ -45,15 +45,16 @@ def viscosity_law(scene):
     return lambda T: oil.viscosity * math.exp(-oil.temperature_viscosity * (T - T0))
 
 
-def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperature_rise: np.ndarray | None,
+def own_figures(case, contact: ContactPath, Ra: float, temperature_rise: np.ndarray | None,
                 level: str | None, film=None) -> OwnFigures:
     """femgear's film, λ and contact temperature along the contact pass's path (``temperature_rise``: ΔT of the
     lubrication level ``level`` on the same positions; None: computed with the ``formula`` level; ``film``: the
     :class:`femgear.levels.lubrication.LevelFilm` of the level that ran, else the contact pass's h_min)."""
-    if temperature_rise is None or level is None or not lubrication_solver(build_case(scene, pair), level).heats:
+    scene = case.scene
+    if temperature_rise is None or level is None or not lubrication_solver(case, level).heats:
         k = contact.kin
         w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
-        solver = lubrication_solver(build_case(scene, pair), "formula")
+        solver = lubrication_solver(case, "formula")
         _, temperature_rise = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
                                      T=np.full(k.u.shape, scene.operating.ambient_temperature))
         level = "formula"
@@ -66,10 +67,11 @@ def own_figures(scene, pair: GearPair, contact: ContactPath, Ra: float, temperat
                       temperature=bulk + np.asarray(temperature_rise, float), temperature_level=level)
 
 
-def _fillets(scene, pair: GearPair):
+def _fillets(case):
     from femgear.physics.body.fillet import fillet_stress
 
-    force = operating_point(scene, pair).pinion_torque / pair.r1 / pair.n_helices / (pair.b * math.cos(pair.alpha_wt))
+    scene, pair = case.scene, case.pair
+    force = case.operating.pinion_torque / pair.r1 / pair.n_helices / (pair.b * math.cos(pair.alpha_wt))
     points = (pair.u_start + pair.p_bt, pair.u_end - pair.p_bt)   # outer single contact of pinion, gear
     if pair.eps_alpha >= 2:
         points = (pair.u_end, pair.u_start)
@@ -82,8 +84,9 @@ def _fillets(scene, pair: GearPair):
 
 
 def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.ndarray | None = None,
-              level: str | None = None, film=None) -> PairRating:
-    """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them.
+              level: str | None = None, film=None, case=None) -> PairRating:
+    """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them
+    (``case``: the run's bound case, else bound here from ``scene`` and ``pair``).
 
     The defaults line and the range flags are logged at INFO (``-v``) and carried in the result
     (``defaults``, ``flags``), which ``femgear info`` prints and results.json holds; stderr keeps the
@@ -92,6 +95,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
 
     from femgear.summary import scene_rating
 
+    case = case if case is not None else build_case(scene, pair)
     r, used = scene.rating, []
     sigma_Flim = _value(r, "bending_stress_limit", used)
     root_rz = _value(r, "root_roughness_rz", used)
@@ -120,11 +124,12 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
                            effusivity=thermal_effusivity(mat.conductivity, mat.density, mat.specific_heat),
                            Ra=Ra, X_L=OIL_FACTOR[oil_type], K=K, X_S=1.2 if r.lubrication_method == "spray" else 1.0,
                            X_W=r.structural_factor)
-    own = own_figures(scene, pair, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
-    rating = rate_pair(pair, scene_rating(scene, pair), operating_point(scene, pair).pinion_torque, scene.pinion_rpm, bending, scuff,
+    own = own_figures(case, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
+    T1 = case.operating.pinion_torque
+    rating = rate_pair(pair, scene_rating(scene, pair, T1), T1, scene.pinion_rpm, bending, scuff,
                        float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
     for flag in rating.flags:
         log.info("rating: %s; the factor is flagged", flag)
     if r.fillet_fe:
-        rating = replace(rating, own=replace(own, fillet=_fillets(scene, pair)))
+        rating = replace(rating, own=replace(own, fillet=_fillets(case)))
     return rating

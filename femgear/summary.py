@@ -98,13 +98,14 @@ def _single_contact(result: ContactPath) -> dict[str, Any]:
     return out
 
 
-def scene_rating(scene, pair: GearPair) -> PittingRating:
-    """ISO 6336-2 method B rating of a scene's pair at its operating point and ``[rating]`` table."""
+def scene_rating(scene, pair: GearPair, pinion_torque: float | None = None) -> PittingRating:
+    """ISO 6336-2 method B rating of a scene's pair at its operating point (``pinion_torque`` [N m]: the bound
+    case's, else derived here) and ``[rating]`` table."""
     r = scene.rating
     factors = LoadFactors(K_A=r.application_factor, K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor,
                           K_Halpha=r.transverse_load_factor)
-    stress = contact_stress(pair, operating_point(scene, pair).pinion_torque, scene.material.youngs_modulus, scene.material.poisson_ratio,
-                            factors)
+    T1 = operating_point(scene, pair).pinion_torque if pinion_torque is None else pinion_torque
+    stress = contact_stress(pair, T1, scene.material.youngs_modulus, scene.material.poisson_ratio, factors)
     limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
                             nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
                             Z_W=r.work_hardening_factor, Z_X=r.size_factor)

@@ -26,7 +26,7 @@ def _info(args: argparse.Namespace) -> int:
     scene, pair = case.scene, case.pair
     contact = contact_pass(case, u=zone_grid(pair, scene.numerics.path_points))
     contact_warnings(case, float(contact.hertz_pressure.max()))
-    summary = scene_summary(scene, pair, contact, ratings=rate_case(scene, pair, contact))
+    summary = scene_summary(scene, pair, contact, ratings=rate_case(scene, pair, contact, case=case))
     if args.json:
         emit_json(summary)
     else:
