@@ -277,15 +277,15 @@ def _fast_path_inputs(mats: tuple, steps: int, Fe, ecols, dcols, Bw, Gz, AB):
     Ph, W0, Wh, W1, U = mats
     per, m = Ph.shape[0], Bw.shape[0]
     aug = np.vstack([np.eye(m), Gz])
-    known = np.empty((steps, m + 4))
     Fd = Fe + dcols @ Bw[:, :2].T
-    for j in range(min(per, steps)):
-        idx = np.arange(j, steps, per)
-        i0, ih, i1 = 2 * idx, 2 * idx + 1, 2 * idx + 2
-        kn = Fd[i0] @ W0[j].T + Fd[ih] @ Wh[j].T + Fd[i1] @ W1[j].T \
-            + np.concatenate([ecols[i0, :1], ecols[ih, :1], ecols[i1, :1], ecols[i0, 1:], ecols[ih, 1:], ecols[i1, 1:]],
-                             axis=1) @ U[j].T
-        known[idx] = kn @ aug.T
+    cyc = -(-steps // per)                    # whole mesh periods of steps, the last one padded
+    X = np.zeros((cyc * per, 3 * m + 6))      # every step's inputs: F at the three nodes, u_s at the three nodes
+    for o in range(3):
+        X[:steps, o * m:(o + 1) * m] = Fd[o:o + 2 * steps:2]
+        X[:steps, 3 * m + o] = ecols[o:o + 2 * steps:2, 0]
+        X[:steps, 3 * m + 3 + o] = ecols[o:o + 2 * steps:2, 1]
+    WU = aug @ np.concatenate([W0, Wh, W1, U], axis=-1)           # (per, 2n+4, 3m+6)
+    known = np.einsum("jab,cjb->cja", WU, X.reshape(cyc, per, -1), optimize=True).reshape(cyc * per, m + 4)[:steps]
     if AB is None:
         return aug @ Ph, known, None
     A, B = AB
