@@ -52,9 +52,10 @@ def setup(scene: str, rpm: float):
     return build_model(build_case(load_scene(SCENES[scene], [f"operating.speed_rpm={rpm!r}"])))
 
 
-def job_seconds(scene: str, rpm: float) -> dict:
-    """Wall time of the main job in a fresh process (outputs in a temporary folder)."""
-    env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+def job_seconds(scene: str, rpm: float, tree: Path = ROOT) -> dict:
+    """Wall time of the main job in a fresh process (outputs in a temporary folder), with the femgear of
+    ``tree`` (default: this one; ``--reference`` names another checkout, e.g. the commit before a change)."""
+    env = {**os.environ, "PYTHONPATH": str(tree) + os.pathsep + os.environ.get("PYTHONPATH", "")}
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [sys.executable, "-m", "femgear", "run", str(SCENES[scene]), "--set", f"operating.speed_rpm={rpm!r}",
                "--out", tmp, "--no-plots", "--no-vtk", "--json"]
@@ -105,32 +106,44 @@ def accuracy(scene: str, rpm: float) -> dict:
 
 
 def run(scenes=("baseline", "marine"), speeds=SPEEDS, repeats: int = 1, jobs: bool = True,
-        acc: bool = True) -> dict:
-    out: dict = {"speeds": list(speeds), "repeats": repeats, "jobs": {}, "accuracy": []}
+        acc: bool = True, reference: Path | None = None) -> dict:
+    out: dict = {"speeds": list(speeds), "repeats": repeats, "jobs": {}, "accuracy": [], "load": _load()}
+    trees = {"": ROOT, **({"reference:": reference} if reference else {})}
     if jobs:
-        samples = {(s, r): [] for s in scenes for r in speeds}
+        samples = {(p, s, r): [] for p in trees for s in scenes for r in speeds}
         for _ in range(repeats):
             for s in scenes:
                 for r in speeds:
-                    samples[(s, r)].append(job_seconds(s, r)["seconds"])
-        for s in scenes:
-            med = {r: statistics.median(samples[(s, r)]) for r in speeds}
-            out["jobs"][s] = {"seconds": {str(r): med[r] for r in speeds},
-                              "all": {str(r): samples[(s, r)] for r in speeds}}
-            if 100.0 in med and 500.0 in med:
-                out["jobs"][s]["ratio_100_500"] = med[100.0] / med[500.0]
+                    for p, tree in trees.items():        # interleaved: the reference in the same minutes
+                        samples[(p, s, r)].append(job_seconds(s, r, tree)["seconds"])
+        for p, tree in trees.items():
+            for s in scenes:
+                med = {r: statistics.median(samples[(p, s, r)]) for r in speeds}
+                out["jobs"][p + s] = {"tree": str(tree), "seconds": {str(r): med[r] for r in speeds},
+                                      "all": {str(r): samples[(p, s, r)] for r in speeds}}
+                if 100.0 in med and 500.0 in med:
+                    out["jobs"][p + s]["ratio_100_500"] = med[100.0] / med[500.0]
+        out["load"] += " → " + _load()
     if acc:
         out["accuracy"] = [accuracy(s, r) for s in scenes for r in speeds]
     return out
 
 
+def _load() -> str:
+    """The machine's load average (``/proc/loadavg``: 1, 5, 15 min), stated with every timing."""
+    try:
+        return " ".join(Path("/proc/loadavg").read_text().split()[:3])
+    except OSError:
+        return "unknown"
+
+
 def _table(res: dict) -> None:
     if res["jobs"]:
-        print("main job (femgear run, fresh process), median wall time [s]")
-        print(f"{'scene':>9s} " + " ".join(f"{r:>8.0f}" for r in res["speeds"]) + "  t100/t500")
+        print(f"main job (femgear run, fresh process), median wall time [s]; load average {res['load']}")
+        print(f"{'scene':>19s} " + " ".join(f"{r:>8.0f}" for r in res["speeds"]) + "  t100/t500")
         for s, j in res["jobs"].items():
             ratio = j.get("ratio_100_500")
-            print(f"{s:>9s} " + " ".join(f"{j['seconds'][str(r)]:8.2f}" for r in res["speeds"])
+            print(f"{s:>19s} " + " ".join(f"{j['seconds'][str(r)]:8.2f}" for r in res["speeds"])
                   + (f"  {ratio:8.2f}" if ratio is not None else ""))
     if res["accuracy"]:
         print("\ndefault step against expo at 4x its recording steps (x2 vs x4 = the reference's own change)")
@@ -151,8 +164,11 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--repeats", type=int, default=1)
     p.add_argument("--no-jobs", action="store_true", help="skip the main-job timings")
     p.add_argument("--no-accuracy", action="store_true", help="skip the accuracy against the small step")
+    p.add_argument("--reference", type=Path, default=None,
+                   help="another checkout (e.g. `git archive COMMIT | tar -x -C DIR`) timed interleaved with this one")
     args = p.parse_args(argv)
-    res = run(tuple(args.scenes), tuple(args.speeds), args.repeats, not args.no_jobs, not args.no_accuracy)
+    res = run(tuple(args.scenes), tuple(args.speeds), args.repeats, not args.no_jobs, not args.no_accuracy,
+              args.reference)
     _table(res)
     from femgear.io.results import write_json
 
