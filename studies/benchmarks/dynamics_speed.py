@@ -60,7 +60,7 @@ def job_seconds(scene: str, rpm: float, tree: Path = ROOT) -> dict:
         cmd = [sys.executable, "-m", "femgear", "run", str(SCENES[scene]), "--set", f"operating.speed_rpm={rpm!r}",
                "--out", tmp, "--no-plots", "--no-vtk", "--json"]
         t0 = time.perf_counter()
-        proc = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=ROOT)
+        proc = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=tree)
         seconds = time.perf_counter() - t0
     if proc.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}): {proc.stderr.strip()[-500:]}")
