@@ -162,10 +162,50 @@ def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: 
             print(f"{name}: fe {json.dumps(rec['fe'])}", file=sys.stderr, flush=True)
         if "refusal" not in skip:
             rec["refusal"] = refusal(paths[name])
+        rec["richardson"] = mesh_errors(rec)
         out["pairs"][name] = rec
     if "fidelity" not in skip:
         out["fidelity"] = child("fidelity", paths["baseline"], 1, cap_gb)
     return out
+
+
+def mesh_errors(rec: dict) -> dict | None:
+    """Richardson-extrapolated error of every level run (:func:`femgear.ltca.level.richardson` on the three
+    finest levels, h = the flank element size), on the mean stiffness and the LTE p-p; None for a
+    quantity not in its asymptotic range, and None with fewer than three levels."""
+    from femgear.ltca.level import richardson
+
+    done = [lv for lv in rec["levels"] if "k_mean" in rec.get(f"ltca_{lv}", {})][-3:]
+    if len(done) < 3:
+        return None
+    h = [rec[f"size_{lv}"]["flank_h_tooth_mn"] for lv in done]
+    out: dict = {"levels": done, "h_mn": h}
+    for key in ("k_mean", "lte_pp_um"):
+        r = richardson(h, [rec[f"ltca_{lv}"][key] for lv in done])
+        if r is not None:    # the coarser levels' errors against the same extrapolation
+            r["errors_all"] = {str(lv): rec[f"ltca_{lv}"][key] / r["extrapolated"] - 1
+                               for lv in rec["levels"] if "k_mean" in rec.get(f"ltca_{lv}", {})}
+        out[key] = r
+    return out
+
+
+def _richardson_rows(r: dict) -> list[str]:
+    rows = []
+    for name, rec in r["pairs"].items():
+        m = rec.get("richardson")
+        if not m:
+            continue
+        for key, label in (("k_mean", "mean stiffness"), ("lte_pp_um", "LTE p-p")):
+            x = m[key]
+            if x is None:
+                rows.append(f"- {name}, {label}: levels {m['levels']} not in the asymptotic range (differences grow "
+                            "or change sign): no Richardson estimate")
+                continue
+            errs = ", ".join(f"level {lv} {100 * e:+.2f} %{' FLAGGED' if abs(e) > 0.02 else ''}"
+                             for lv, e in x["errors_all"].items())
+            rows.append(f"- {name}, {label}: Richardson from levels {m['levels']} (order {x['order']:.2f}, "
+                        f"extrapolated {x['extrapolated']:.5g}): {errs}")
+    return rows
 
 
 def _fmt(x, spec=".3g") -> str:
@@ -202,6 +242,7 @@ def table(r: dict) -> list[str]:
             rows.append(f"| {name} / baseline DOF at level 1 | | {_fmt(d / ref_dofs if d else None, '.2f')} × | "
                         "| | | | | | |")
     rows.append("")
+    rows.extend(_richardson_rows(r))
     for name, rec in r["pairs"].items():
         fe = rec.get("fe")
         if fe:
