@@ -178,7 +178,8 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                 rigid: bool = False, ad_factor: float = 1.0, sd_factor: float = 1.0,
                 tol: float | None = None, newton_tol: float = 1e-5, max_level: int = MAX_LEVEL,
                 residual_tol: float = RESIDUAL_TOL, max_iter: int = 40, method: str = "auto",
-                start: EHLResult | None = None, surface=None, reuse: dict | None = None) -> EHLResult:
+                start: EHLResult | None = None, surface=None, reuse: dict | None = None,
+                dense_reuse: bool = False) -> EHLResult:
     """Isothermal point-contact EHL in Moes groups (M, L); returns :class:`EHLResult`.
 
     ``level`` is the finest grid (``16 * 2**level`` intervals along X), ``coarse_level``
@@ -205,6 +206,11 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
     non-default ``ad_factor``/``sd_factor`` selects it); 'auto' (default) multigrid inside
     its validated range (:func:`fas_suits`), Newton elsewhere. A failed multigrid solve
     falls back to Newton; ``history['fallback']`` then holds the reason.
+
+    ``dense_reuse``: the dense Newton steps on the coarse level keep the LU factors of an earlier
+    Jacobian of this solve and take GMRES steps preconditioned by them
+    (:func:`femgear.ehl.newton.newton_dense` ``reuse=``), refactorising when GMRES needs more
+    than 12 iterations; the converged answer is set by the residual test alone.
 
     ``surface``: stationary roughness R(X, Y) in Hertzian units (:mod:`femgear.ehl.surface`),
     a callable f(X, Y) evaluated on every level's nodes; the film is H0 + G + D - R. None
@@ -237,7 +243,7 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                           tol=tol, rigid=rigid, ad_factor=ad_factor, sd_factor=sd_factor, t0=t0,
                           surface=surface, rheology=rheology,
                           newton=dict(max_iter=max_iter, tol=newton_tol, case=case,
-                                      residual_tol=residual_tol))
+                                      residual_tol=residual_tol), dense_reuse=dense_reuse)
     if method == "auto":
         method = "fas" if surface is None and fas_suits(M, L, level, rigid, viscosity, compressible, ratio) else "newton"
     if method == "fas" and surface is not None:
@@ -304,7 +310,7 @@ class _NestedPoint:
 
     def __init__(self, M: float, L: float, *, ratio: float, dom: Domain, coarse_level: int,
                  level: int, tol: float | None, rigid: bool, ad_factor: float, sd_factor: float,
-                 t0: float, rheology: dict, newton: dict, surface=None):
+                 t0: float, rheology: dict, newton: dict, surface=None, dense_reuse: bool = False):
         self.M, self.L, self.ratio, self.dom = M, L, ratio, dom
         self.surface = surface
         self.coarse_level, self.level, self.tol = coarse_level, level, tol
@@ -314,6 +320,7 @@ class _NestedPoint:
         self.hist = History()
         self.last_failure = ""  # reason of the last failed Newton attempt (for the error)
         self.factorised: dict = {}  # Level -> factorised preconditioner level, kept across levels
+        self.dense = {} if dense_reuse else None   # LU factors of the dense Newton steps, kept across them
         self.levels = _LazyLevels(lambda k: self.make(M, 1.0, k), coarse_level, level)
 
     def make(self, M_: float, frac: float, lev: int, stab: float = 1.0) -> Level:
@@ -337,7 +344,7 @@ class _NestedPoint:
         """(PI, H0) solved on the finest of ``lvs`` (dense Newton on one level), or None."""
         try:
             if len(lvs) == 1:
-                PI, H0, h = newton_dense(lvs[0], PI, H0, **self.newton)
+                PI, H0, h = newton_dense(lvs[0], PI, H0, **self.newton, reuse=self.dense)
             else:
                 PI, H0, h = newton_krylov(lvs, PI, H0, reuse=self.factorised, **self.newton,
                                           **_krylov_cap(self.ratio))
