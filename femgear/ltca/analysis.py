@@ -30,7 +30,7 @@ import numpy as np
 from femgear.geometry.gear import GearPair
 from femgear.geometry.lines import hat_integrals
 from femgear.ltca.compliance import MemberCompliance, member_compliance
-from femgear.ltca.contact import phase_points, solve_phase
+from femgear.ltca.contact import phase_matrix, phase_points, solve_phase
 from femgear.ltca.halfspace import hertz_pressure, reduced_modulus
 from femgear.ltca.separation import Deviation, check_modification, separation
 from femgear.mesh.segment import default_spec
@@ -283,8 +283,9 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
         pts = phase_points(pair, ph, stagger, n_line)
         eps = _eps(pair, modifications, pts, extra)
         case = f"LTCA phase {ph:.4f}"
-        sol, _, _ = solve_phase(pair, model.kernels, pts, eps, force, E, nu, case=case)
-        up, _, _ = solve_phase(pair, model.kernels, pts, eps, force * 1.001, E, nu, case=case)
+        base = phase_matrix(pair, model.kernels, pts, E, nu)
+        sol, _, _ = solve_phase(pair, model.kernels, pts, eps, force, E, nu, case=case, base=base)
+        up, _, _ = solve_phase(pair, model.kernels, pts, eps, force * 1.001, E, nu, case=case, base=base)
         nl, nr = _nlte(pair, modifications, stagger, ph, extra, n_line)
         left = pts.helix == 0
         w = sol.load / pts.length

@@ -225,17 +225,23 @@ def solve_contact(C: np.ndarray, eps: np.ndarray, force: float, case: str = "LTC
     raise ConvergenceError(case, f"active set did not settle in {max_iter} iterations", {"violation": hist})
 
 
+def phase_matrix(pair: GearPair, kernels, pts: ContactPoints, E: float, nu: float) -> np.ndarray:
+    """The load-independent part of the phase's compliance: bulk kernels and the surface coupling of H₀."""
+    return bulk_matrix(pair, kernels, pts) + local_coupling(pair, pts, E, nu, getattr(kernels[1], "groove", 0.0),
+                                                            getattr(kernels[1], "cross", None) is not None)
+
+
 def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, force: float, E: float, nu: float,
-                tol: float = 1e-6, max_pass: int = 80, case: str = "LTCA phase"):
+                tol: float = 1e-6, max_pass: int = 80, case: str = "LTCA phase", base: np.ndarray | None = None):
     """Contact solution with the Hertz strip width updated to the loads; returns (solution, C, passes).
 
     The fixed point converges linearly; on a face-resolved worn flank (the rig's test gear after 3e6
     cycles) it took more than 12 passes (load change 1.2e-6 after 12), hence up to 30; on the uncrowned
     baseline under the face-resolved 3-D thermal growth of a 30 K flank rise (``thermal = "fe3d"``,
     ``wear.field = "face"``) one phase contracts by 0.73 a pass and needs 49, hence up to 80.  A solve
-    that converged within fewer passes returns the same solution as before."""
-    Cb = bulk_matrix(pair, kernels, pts) + local_coupling(pair, pts, E, nu, getattr(kernels[1], "groove", 0.0),
-                                                          getattr(kernels[1], "cross", None) is not None)
+    that converged within fewer passes returns the same solution as before.  ``base``: :func:`phase_matrix` of
+    these points when the caller already has it (a second force at the same phase)."""
+    Cb = phase_matrix(pair, kernels, pts, E, nu) if base is None else base
     diag = np.diag_indices(pts.size)
     load = np.full(pts.size, force / pts.size)
     active = None
