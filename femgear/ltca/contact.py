@@ -232,7 +232,8 @@ def phase_matrix(pair: GearPair, kernels, pts: ContactPoints, E: float, nu: floa
 
 
 def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, force: float, E: float, nu: float,
-                tol: float = 1e-6, max_pass: int = 80, case: str = "LTCA phase", base: np.ndarray | None = None):
+                tol: float = 1e-6, max_pass: int = 80, case: str = "LTCA phase", base: np.ndarray | None = None,
+                load0: np.ndarray | None = None):
     """Contact solution with the Hertz strip width updated to the loads; returns (solution, C, passes).
 
     The fixed point converges linearly; on a face-resolved worn flank (the rig's test gear after 3e6
@@ -240,11 +241,14 @@ def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, fo
     baseline under the face-resolved 3-D thermal growth of a 30 K flank rise (``thermal = "fe3d"``,
     ``wear.field = "face"``) one phase contracts by 0.73 a pass and needs 49, hence up to 80.  A solve
     that converged within fewer passes returns the same solution as before.  ``base``: :func:`phase_matrix` of
-    these points when the caller already has it (a second force at the same phase)."""
+    these points when the caller already has it (a second force at the same phase).  ``load0``: the start of
+    the fixed point and of the active set (default: the force spread evenly, no active set), e.g. the solution
+    of the same points on flanks that differ a little; the fixed point and the contact solution are unique,
+    so only the passes it takes change (the answer within ``tol``)."""
     Cb = phase_matrix(pair, kernels, pts, E, nu) if base is None else base
     diag = np.diag_indices(pts.size)
-    load = np.full(pts.size, force / pts.size)
-    active = None
+    load = np.full(pts.size, force / pts.size) if load0 is None else np.asarray(load0, dtype=float).copy()
+    active = None if load0 is None else load > 0
     changes = []
     for p in range(1, max_pass + 1):
         C = Cb.copy()

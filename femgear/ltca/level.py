@@ -183,7 +183,8 @@ def deviated_cycle(info: dict, extra) -> dict:
     """
     from femgear.ltca.analysis import mesh_cycle
 
-    res = mesh_cycle(info["model"], info["force"], info["modifications"], extra=extra, **info["options"])
+    res = mesh_cycle(info["model"], info["force"], info["modifications"], extra=extra, start=info["ltca"],
+                     **info["options"])
     return {**info, "ltca": res, "excitation": res.excitation(), "lte_peak_to_peak": res.lte_peak_to_peak()}
 
 
