@@ -408,6 +408,8 @@ def _scan_periods(loop: _Loop, scan: ContactScan, i: int, periods: int) -> int:
     (:class:`femgear.dynamics.expo_scan.ContactScan`); the steps done (up to the first that leaves it)."""
     n2, rec, fast = scan.n2, loop.static[-2], (1, 1)
     y0 = loop.z[:n2].copy()
+    if not np.all(scan.Gz[0:2] @ y0 - scan.e[i] > scan.b[i]):      # not on both drive flanks now: no scan
+        return 0
     x0 = y0
     if scan.friction:
         a = scan.normal_force(i, y0)

@@ -29,6 +29,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # many small dense products
 
 import argparse
 import json
+import resource
 import statistics
 import subprocess
 import sys
@@ -59,12 +60,14 @@ def job_seconds(scene: str, rpm: float, tree: Path = ROOT) -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [sys.executable, "-m", "femgear", "run", str(SCENES[scene]), "--set", f"operating.speed_rpm={rpm!r}",
                "--out", tmp, "--no-plots", "--no-vtk", "--json"]
+        c0 = resource.getrusage(resource.RUSAGE_CHILDREN)
         t0 = time.perf_counter()
         proc = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=tree)
         seconds = time.perf_counter() - t0
+        c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     if proc.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}): {proc.stderr.strip()[-500:]}")
-    return {"seconds": seconds}
+    return {"seconds": seconds, "cpu_s": (c1.ru_utime + c1.ru_stime) - (c0.ru_utime + c0.ru_stime)}
 
 
 def accuracy(scene: str, rpm: float) -> dict:
@@ -115,14 +118,17 @@ def run(scenes=("baseline", "marine"), speeds=SPEEDS, repeats: int = 1, jobs: bo
             for s in scenes:
                 for r in speeds:
                     for p, tree in trees.items():        # interleaved: the reference in the same minutes
-                        samples[(p, s, r)].append(job_seconds(s, r, tree)["seconds"])
+                        samples[(p, s, r)].append(job_seconds(s, r, tree))
         for p, tree in trees.items():
             for s in scenes:
-                med = {r: statistics.median(samples[(p, s, r)]) for r in speeds}
-                out["jobs"][p + s] = {"tree": str(tree), "seconds": {str(r): med[r] for r in speeds},
-                                      "all": {str(r): samples[(p, s, r)] for r in speeds}}
-                if 100.0 in med and 500.0 in med:
-                    out["jobs"][p + s]["ratio_100_500"] = med[100.0] / med[500.0]
+                rec: dict = {"tree": str(tree)}
+                for key, name in (("seconds", "seconds"), ("cpu_s", "cpu_seconds")):
+                    med = {r: statistics.median(x[key] for x in samples[(p, s, r)]) for r in speeds}
+                    rec[name] = {str(r): med[r] for r in speeds}
+                    rec["all_" + name] = {str(r): [x[key] for x in samples[(p, s, r)]] for r in speeds}
+                    if 100.0 in med and 500.0 in med:
+                        rec["ratio_100_500" + ("" if key == "seconds" else "_cpu")] = med[100.0] / med[500.0]
+                out["jobs"][p + s] = rec
         out["load"] += " → " + _load()
     if acc:
         out["accuracy"] = [accuracy(s, r) for s in scenes for r in speeds]
@@ -139,12 +145,13 @@ def _load() -> str:
 
 def _table(res: dict) -> None:
     if res["jobs"]:
-        print(f"main job (femgear run, fresh process), median wall time [s]; load average {res['load']}")
-        print(f"{'scene':>19s} " + " ".join(f"{r:>8.0f}" for r in res["speeds"]) + "  t100/t500")
+        print(f"main job (femgear run, fresh process), median wall and CPU time [s]; load average {res['load']}")
+        print(f"{'scene':>23s} " + " ".join(f"{r:>8.0f}" for r in res["speeds"]) + "  t100/t500")
         for s, j in res["jobs"].items():
-            ratio = j.get("ratio_100_500")
-            print(f"{s:>19s} " + " ".join(f"{j['seconds'][str(r)]:8.2f}" for r in res["speeds"])
-                  + (f"  {ratio:8.2f}" if ratio is not None else ""))
+            for name, key, tag in (("seconds", "ratio_100_500", "wall"), ("cpu_seconds", "ratio_100_500_cpu", "CPU")):
+                ratio = j.get(key)
+                print(f"{s + ' ' + tag:>23s} " + " ".join(f"{j[name][str(r)]:8.2f}" for r in res["speeds"])
+                      + (f"  {ratio:8.2f}" if ratio is not None else ""))
     if res["accuracy"]:
         print("\ndefault step against expo at 4x its recording steps (x2 vs x4 = the reference's own change)")
         print(f"{'scene':>9s} {'rpm':>6s} {'steps/Tm':>8s} {'trans.':>6s} {'sub':>4s} {'dyn s':>6s} "
