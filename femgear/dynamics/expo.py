@@ -284,13 +284,16 @@ def _fast_path_inputs(mats: tuple, steps: int, Fe, ecols, dcols, Bw, Gz, AB):
     aug = np.vstack([np.eye(m), Gz])
     Fd = Fe + dcols @ Bw[:, :2].T
     cyc = -(-steps // per)                    # whole mesh periods of steps, the last one padded
-    X = np.zeros((cyc * per, 3 * m + 6))      # every step's inputs: F at the three nodes, u_s at the three nodes
+    ec = np.empty((2 * steps + 1, 6))         # u_s at the nodes, in U's column order (s = 0 at 0, ½, 1; then s = 1)
     for o in range(3):
-        X[:steps, o * m:(o + 1) * m] = Fd[o:o + 2 * steps:2]
-        X[:steps, 3 * m + o] = ecols[o:o + 2 * steps:2, 0]
-        X[:steps, 3 * m + 3 + o] = ecols[o:o + 2 * steps:2, 1]
-    WU = aug @ np.concatenate([W0, Wh, W1, U], axis=-1)           # (per, 2n+4, 3m+6)
-    known = np.einsum("jab,cjb->cja", WU, X.reshape(cyc, per, -1), optimize=True).reshape(cyc * per, m + 4)[:steps]
+        ec[:2 * steps + 1 - o, o] = ecols[o:, 0]
+        ec[:2 * steps + 1 - o, 3 + o] = ecols[o:, 1]
+    known = np.zeros((cyc * per, m + 4))
+    for W, X in ((W0, Fd[0:2 * steps:2]), (Wh, Fd[1:2 * steps:2]), (W1, Fd[2:2 * steps + 1:2]), (U, ec[0:2 * steps:2])):
+        P = np.zeros((cyc * per, X.shape[1]))
+        P[:steps] = X                          # step i = c·per + j of the period c at phase j
+        known += np.einsum("jab,cjb->cja", aug @ W, P.reshape(cyc, per, -1), optimize=True).reshape(cyc * per, -1)
+    known = known[:steps]
     if AB is None:
         return aug @ Ph, known, None
     A, B = AB
@@ -344,13 +347,8 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
     kL, kR, e, ed, f, A, B = inputs(model, tt)
     Fe = np.zeros((tt.size, n2))
     Fe[:, n:] = f @ Minv.T
-    ee = (e[0].tolist(), e[1].tolist())
-    eed = (ed[0].tolist(), ed[1].tolist())
-    AA = (A[0].tolist(), A[1].tolist())
-    BB = (B[0].tolist(), B[1].tolist())
     mu = model.mu
     bt = model.backlash_at(tt)                          # (2, n): half-width of each helix's dead zone
-    bb = bt.tolist()
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
     t_setup = time.perf_counter()
     contact = _contact_propagators(model, cache, kstep, dt)     # all-in-contact, up front
@@ -363,9 +361,12 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
     rec = record_plan(steps, dt, record_every, record_from - t_start)
     z = np.zeros(MJ.shape[-1])               # fast-path state (y, friction inputs at the three nodes)
     z[:n2] = np.concatenate([q, v])
-    loop = _Loop(static=(model, cache, kstep, dt, per, n2, mu, cm, k0, ee, eed, bb, MJ, known, ABn,
-                         (Fe, Bw, cm, eed, AA, BB, ee, bb), rec, Gz),
-                 z=z, out=np.empty((rec.size, n2)))
+    def static():           # the step loop's per-step data as Python lists (built when it first runs)
+        ee, eed, AA, BB, bb = ((x[0].tolist(), x[1].tolist()) for x in (e, ed, A, B, bt))
+        return (model, cache, kstep, dt, per, n2, mu, cm, k0, ee, eed, bb, MJ, known, ABn,
+                (Fe, Bw, cm, eed, AA, BB, ee, bb), rec, Gz)
+
+    loop = _Loop(static=static, z=z, out=np.empty((rec.size, n2)), rec=rec)
     t0 = time.perf_counter()
     scan = ContactScan(MJ, known, ABn, Gz, e, ed, bt, kstep[:, 0], cm, mu) if SCAN and steps >= per else None
     i, wait = 0, 0
@@ -397,8 +398,8 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
 class _Loop:
     """The step loop's state between its step-by-step stretches and its scans."""
 
-    def __init__(self, static, z, out):
-        self.static, self.z, self.out = static, z, out
+    def __init__(self, static, z, out, rec):
+        self.make_static, self.static, self.z, self.out, self.rec = static, None, z, out, rec
         self.N_prev, self.side_prev, self.switches, self.ri, self.backoff = (0.0, 0.0), None, 0, 0, 1
         self.scanned = 0
 
@@ -406,7 +407,7 @@ class _Loop:
 def _scan_periods(loop: _Loop, scan: ContactScan, i: int, periods: int) -> int:
     """``periods`` whole mesh periods of the contact fast path from step ``i`` at once
     (:class:`femgear.dynamics.expo_scan.ContactScan`); the steps done (up to the first that leaves it)."""
-    n2, rec, fast = scan.n2, loop.static[-2], (1, 1)
+    n2, rec, fast = scan.n2, loop.rec, (1, 1)
     y0 = loop.z[:n2].copy()
     if not np.all(scan.Gz[0:2] @ y0 - scan.e[i] > scan.b[i]):      # not on both drive flanks now: no scan
         return 0
@@ -431,6 +432,8 @@ def _scan_periods(loop: _Loop, scan: ContactScan, i: int, periods: int) -> int:
 
 def _step_loop(loop: _Loop, i_from: int, i_to: int) -> None:
     """Steps ``i_from`` … ``i_to`` − 1 one at a time, in any contact state, recording as planned."""
+    if loop.static is None:
+        loop.static = loop.make_static()
     (model, cache, kstep, dt, per, n2, mu, cm, k0, ee, eed, bb, MJ, known, ABn, data, rec, Gz) = loop.static
     z, out = loop.z, loop.out
     zf = z[n2:]
