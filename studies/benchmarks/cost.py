@@ -94,8 +94,22 @@ def one(kind: str, scene_path: str, level: int) -> dict:
         t0 = time.perf_counter()
         with tempfile.TemporaryDirectory() as out_dir:
             rc = cli(["run", scene_path, "--out", out_dir, "--no-plots", "--no-vtk", *FIDELITY])
-        return {"seconds": time.perf_counter() - t0, "rc": rc, **_usage()}
+            seconds = time.perf_counter() - t0
+            answer = _answer(Path(out_dir) / "results.json") if rc == 0 else {}
+        return {"seconds": seconds, "rc": rc, "answer": answer, **_usage()}
     raise ValueError(f"unknown kind {kind!r}")
+
+
+def _answer(path: Path) -> dict:
+    """The figures of a full-fidelity run that its shortcuts could move (compared with the reference tree)."""
+    s = json.loads(path.read_text())["summary"]
+    amps = s["dynamics"].get("amplitudes", {})
+    return {"mu_mean": s["friction"]["mu_mean"], "mu_max": s["friction"]["mu_max"],
+            "max_temperature_rise": s["friction"]["max_temperature_rise"],
+            "flank_temperature_rise": s["thermal"]["flank_temperature_rise"],
+            "gear_velocity_y": amps.get("gear.velocity.y"), "gear_displacement_y": amps.get("gear.displacement.y"),
+            "mesh_force_L_amplitude": amps.get("mesh_force.L.amplitude"),
+            "coupling_passes": s["coupling"]["iterations"]}
 
 
 def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | None = None) -> dict:
@@ -106,16 +120,18 @@ def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | No
 
     with tempfile.TemporaryDirectory() as cache:
         e = {**os.environ, "FEMGEAR_CACHE": cache, "PYTHONPATH": str(ROOT), **(env or {})}
+        load0 = os.getloadavg()
         t0 = time.perf_counter()
         run = subprocess.run([sys.executable, __file__, "--one", kind, str(scene_path), str(level)], env=e,
                              capture_output=True, text=True, preexec_fn=limit)
         wall = time.perf_counter() - t0
+        load = [round(x, 2) for x in (*load0, *os.getloadavg())]
     last = run.stdout.strip().splitlines()[-1] if run.stdout.strip() else ""
     if run.returncode != 0 or not last.startswith("{"):
         err = [ln for ln in run.stderr.strip().splitlines() if ln.strip()]
         return {"failed": True, "rc": run.returncode, "wall_s": wall, "message": err[-1] if err else "no output"}
     out = json.loads(last)
-    out["wall_s"] = wall
+    out["wall_s"], out["load_before_after"] = wall, load
     notices = [ln for ln in run.stderr.splitlines() if ln.startswith("femgear:")]
     if notices:
         out["stderr"] = notices
@@ -145,7 +161,8 @@ def parse_levels(text: str, pairs: list[str]) -> dict[str, list[int]]:
     return {p: [int(x) for x in spec.get(p, "1").split(",")] for p in pairs}
 
 
-def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: float) -> dict:
+def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: float,
+        reference: Path | None = None) -> dict:
     paths = scenes()
     out: dict = {"levels": levels, "pairs": {}}
     for name in pairs:
@@ -164,10 +181,54 @@ def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: 
             print(f"{name}: fe {json.dumps(rec['fe'])}", file=sys.stderr, flush=True)
         if "refusal" not in skip:
             rec["refusal"] = refusal(paths[name])
+        rec["richardson"] = mesh_errors(rec)
         out["pairs"][name] = rec
     if "fidelity" not in skip:
         out["fidelity"] = child("fidelity", paths["baseline"], 1, cap_gb)
+        if reference is not None:    # the same job with another checkout's femgear, right after (same load)
+            out["fidelity_reference"] = child("fidelity", paths["baseline"], 1, cap_gb,
+                                              env={"PYTHONPATH": str(reference)})
+            out["fidelity_reference"]["tree"] = str(reference)
     return out
+
+
+def mesh_errors(rec: dict) -> dict | None:
+    """Richardson-extrapolated error of every level run (:func:`femgear.physics.ltca.level.richardson` on the three
+    finest levels, h = the flank element size), on the mean stiffness and the LTE p-p; None for a
+    quantity not in its asymptotic range, and None with fewer than three levels."""
+    from femgear.physics.ltca.level import richardson
+
+    done = [lv for lv in rec["levels"] if "k_mean" in rec.get(f"ltca_{lv}", {})][-3:]
+    if len(done) < 3:
+        return None
+    h = [rec[f"size_{lv}"]["flank_h_tooth_mn"] for lv in done]
+    out: dict = {"levels": done, "h_mn": h}
+    for key in ("k_mean", "lte_pp_um"):
+        r = richardson(h, [rec[f"ltca_{lv}"][key] for lv in done])
+        if r is not None:    # the coarser levels' errors against the same extrapolation
+            r["errors_all"] = {str(lv): rec[f"ltca_{lv}"][key] / r["extrapolated"] - 1
+                               for lv in rec["levels"] if "k_mean" in rec.get(f"ltca_{lv}", {})}
+        out[key] = r
+    return out
+
+
+def _richardson_rows(r: dict) -> list[str]:
+    rows = []
+    for name, rec in r["pairs"].items():
+        m = rec.get("richardson")
+        if not m:
+            continue
+        for key, label in (("k_mean", "mean stiffness"), ("lte_pp_um", "LTE p-p")):
+            x = m[key]
+            if x is None:
+                rows.append(f"- {name}, {label}: levels {m['levels']} not in the asymptotic range (differences grow "
+                            "or change sign): no Richardson estimate")
+                continue
+            errs = ", ".join(f"level {lv} {100 * e:+.2f} %{' FLAGGED' if abs(e) > 0.02 else ''}"
+                             for lv, e in x["errors_all"].items())
+            rows.append(f"- {name}, {label}: Richardson from levels {m['levels']} (order {x['order']:.2f}, "
+                        f"extrapolated {x['extrapolated']:.5g}): {errs}")
+    return rows
 
 
 def _fmt(x, spec=".3g") -> str:
@@ -204,6 +265,7 @@ def table(r: dict) -> list[str]:
             rows.append(f"| {name} / baseline DOF at level 1 | | {_fmt(d / ref_dofs if d else None, '.2f')} × | "
                         "| | | | | | |")
     rows.append("")
+    rows.extend(_richardson_rows(r))
     for name, rec in r["pairs"].items():
         fe = rec.get("fe")
         if fe:
@@ -215,14 +277,25 @@ def table(r: dict) -> list[str]:
             rows.append(f"- {name}, refusal at FEMGEAR_MEMORY_GB=0.05: exit {ref_['rc']} after {ref_['wall_s']:.2f} s "
                         f"(CPU {ref_['cpu_s']:.2f} s, imports included), "
                         f"{ref_['lines']} line(s): `{ref_['message']}`")
-    fid = r.get("fidelity")
+    for key, label in (("fidelity", ""), ("fidelity_reference", " (reference tree)")):
+        rows.extend(_fidelity_row(r.get(key), label))
+    a, b = (r.get(k, {}).get("answer") for k in ("fidelity", "fidelity_reference"))
+    if a and b:
+        rows.append("- full fidelity, this tree against the reference: " + ", ".join(
+            f"{k} {100 * (a[k] / b[k] - 1):+.4f} %" for k in a if a[k] and b.get(k)))
+    return rows
+
+
+def _fidelity_row(fid: dict | None, label: str) -> list[str]:
+    rows: list[str] = []
     if fid:
         failed = fid.get("failed") or fid.get("rc", 0) != 0
         why = fid.get("message") or (fid.get("stderr") or [""])[-1]
         rows.append("- baseline, full fidelity (ltca + tehl-point + fe3d, crowning 10 µm) cold: " + (
             f"{'FAILED ' if failed else ''}{fid.get('seconds', fid['wall_s']):.0f} s"
             + (f" (CPU {fid['cpu_s']:.0f} s), peak {fid['peak_rss_MiB']:.0f} MiB" if "cpu_s" in fid else "")
-            + f", exit {fid['rc']}" + (f": `{why[:300]}`" if failed else "")))
+            + f", exit {fid['rc']}" + (f": `{why[:300]}`" if failed else "")
+            + f"{label}; load average before/after (1, 5, 15 min) {fid.get('load_before_after')}"))
     return rows
 
 
@@ -233,12 +306,15 @@ def main(argv=None) -> None:
     ap.add_argument("--pairs", default=",".join(scenes()))
     ap.add_argument("--skip", default="", help="comma list of ltca, fe, refusal, fidelity")
     ap.add_argument("--cap-gb", type=float, default=8.0, help="address-space cap of each child [GiB]")
+    ap.add_argument("--reference", type=Path, default=None,
+                    help="another checkout (e.g. `git archive COMMIT | tar -x -C DIR`): the fidelity job with its "
+                         "femgear too, right after this one's")
     a = ap.parse_args(argv)
     if a.one:
         print(json.dumps(one(a.one[0], a.one[1], int(a.one[2]))))
         return
     pairs = a.pairs.split(",")
-    r = run(pairs, parse_levels(a.levels, pairs), set(filter(None, a.skip.split(","))), a.cap_gb)
+    r = run(pairs, parse_levels(a.levels, pairs), set(filter(None, a.skip.split(","))), a.cap_gb, a.reference)
     print("\n".join(table(r)))
     out = ROOT / "out" / "benchmarks"
     out.mkdir(parents=True, exist_ok=True)

@@ -29,6 +29,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")   # many small dense products
 
 import argparse
 import json
+import resource
 import statistics
 import subprocess
 import sys
@@ -52,18 +53,21 @@ def setup(scene: str, rpm: float):
     return build_model(build_case(load_scene(SCENES[scene], [f"operating.speed_rpm={rpm!r}"])))
 
 
-def job_seconds(scene: str, rpm: float) -> dict:
-    """Wall time of the main job in a fresh process (outputs in a temporary folder)."""
-    env = {**os.environ, "PYTHONPATH": str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", "")}
+def job_seconds(scene: str, rpm: float, tree: Path = ROOT) -> dict:
+    """Wall time of the main job in a fresh process (outputs in a temporary folder), with the femgear of
+    ``tree`` (default: this one; ``--reference`` names another checkout, e.g. the commit before a change)."""
+    env = {**os.environ, "PYTHONPATH": str(tree) + os.pathsep + os.environ.get("PYTHONPATH", "")}
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [sys.executable, "-m", "femgear", "run", str(SCENES[scene]), "--set", f"operating.speed_rpm={rpm!r}",
                "--out", tmp, "--no-plots", "--no-vtk", "--json"]
+        c0 = resource.getrusage(resource.RUSAGE_CHILDREN)
         t0 = time.perf_counter()
-        proc = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=ROOT)
+        proc = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=tree)
         seconds = time.perf_counter() - t0
+        c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     if proc.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}): {proc.stderr.strip()[-500:]}")
-    return {"seconds": seconds}
+    return {"seconds": seconds, "cpu_s": (c1.ru_utime + c1.ru_stime) - (c0.ru_utime + c0.ru_stime)}
 
 
 def accuracy(scene: str, rpm: float) -> dict:
@@ -105,33 +109,49 @@ def accuracy(scene: str, rpm: float) -> dict:
 
 
 def run(scenes=("baseline", "marine"), speeds=SPEEDS, repeats: int = 1, jobs: bool = True,
-        acc: bool = True) -> dict:
-    out: dict = {"speeds": list(speeds), "repeats": repeats, "jobs": {}, "accuracy": []}
+        acc: bool = True, reference: Path | None = None) -> dict:
+    out: dict = {"speeds": list(speeds), "repeats": repeats, "jobs": {}, "accuracy": [], "load": _load()}
+    trees = {"": ROOT, **({"reference:": reference} if reference else {})}
     if jobs:
-        samples = {(s, r): [] for s in scenes for r in speeds}
+        samples = {(p, s, r): [] for p in trees for s in scenes for r in speeds}
         for _ in range(repeats):
             for s in scenes:
                 for r in speeds:
-                    samples[(s, r)].append(job_seconds(s, r)["seconds"])
-        for s in scenes:
-            med = {r: statistics.median(samples[(s, r)]) for r in speeds}
-            out["jobs"][s] = {"seconds": {str(r): med[r] for r in speeds},
-                              "all": {str(r): samples[(s, r)] for r in speeds}}
-            if 100.0 in med and 500.0 in med:
-                out["jobs"][s]["ratio_100_500"] = med[100.0] / med[500.0]
+                    for p, tree in trees.items():        # interleaved: the reference in the same minutes
+                        samples[(p, s, r)].append(job_seconds(s, r, tree))
+        for p, tree in trees.items():
+            for s in scenes:
+                rec: dict = {"tree": str(tree)}
+                for key, name in (("seconds", "seconds"), ("cpu_s", "cpu_seconds")):
+                    med = {r: statistics.median(x[key] for x in samples[(p, s, r)]) for r in speeds}
+                    rec[name] = {str(r): med[r] for r in speeds}
+                    rec["all_" + name] = {str(r): [x[key] for x in samples[(p, s, r)]] for r in speeds}
+                    if 100.0 in med and 500.0 in med:
+                        rec["ratio_100_500" + ("" if key == "seconds" else "_cpu")] = med[100.0] / med[500.0]
+                out["jobs"][p + s] = rec
+        out["load"] += " → " + _load()
     if acc:
         out["accuracy"] = [accuracy(s, r) for s in scenes for r in speeds]
     return out
 
 
+def _load() -> str:
+    """The machine's load average (``/proc/loadavg``: 1, 5, 15 min), stated with every timing."""
+    try:
+        return " ".join(Path("/proc/loadavg").read_text().split()[:3])
+    except OSError:
+        return "unknown"
+
+
 def _table(res: dict) -> None:
     if res["jobs"]:
-        print("main job (femgear run, fresh process), median wall time [s]")
-        print(f"{'scene':>9s} " + " ".join(f"{r:>8.0f}" for r in res["speeds"]) + "  t100/t500")
+        print(f"main job (femgear run, fresh process), median wall and CPU time [s]; load average {res['load']}")
+        print(f"{'scene':>23s} " + " ".join(f"{r:>8.0f}" for r in res["speeds"]) + "  t100/t500")
         for s, j in res["jobs"].items():
-            ratio = j.get("ratio_100_500")
-            print(f"{s:>9s} " + " ".join(f"{j['seconds'][str(r)]:8.2f}" for r in res["speeds"])
-                  + (f"  {ratio:8.2f}" if ratio is not None else ""))
+            for name, key, tag in (("seconds", "ratio_100_500", "wall"), ("cpu_seconds", "ratio_100_500_cpu", "CPU")):
+                ratio = j.get(key)
+                print(f"{s + ' ' + tag:>23s} " + " ".join(f"{j[name][str(r)]:8.2f}" for r in res["speeds"])
+                      + (f"  {ratio:8.2f}" if ratio is not None else ""))
     if res["accuracy"]:
         print("\ndefault step against expo at 4x its recording steps (x2 vs x4 = the reference's own change)")
         print(f"{'scene':>9s} {'rpm':>6s} {'steps/Tm':>8s} {'trans.':>6s} {'sub':>4s} {'dyn s':>6s} "
@@ -151,8 +171,11 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--repeats", type=int, default=1)
     p.add_argument("--no-jobs", action="store_true", help="skip the main-job timings")
     p.add_argument("--no-accuracy", action="store_true", help="skip the accuracy against the small step")
+    p.add_argument("--reference", type=Path, default=None,
+                   help="another checkout (e.g. `git archive COMMIT | tar -x -C DIR`) timed interleaved with this one")
     args = p.parse_args(argv)
-    res = run(tuple(args.scenes), tuple(args.speeds), args.repeats, not args.no_jobs, not args.no_accuracy)
+    res = run(tuple(args.scenes), tuple(args.speeds), args.repeats, not args.no_jobs, not args.no_accuracy,
+              args.reference)
     _table(res)
     from femgear.edge.io.results import write_json
 

@@ -145,3 +145,25 @@ def test_worn_orders_records_the_smaller_band_in_both_cycles(unworn, baseline_pa
     a, b = _worn_orders(base, worn, extra)
     assert (a.resolved_orders, b.resolved_orders, b.harmonic_change) == (1, 1, None)
     assert "no convergence" in b.orders_check and a.orders_check is None
+def test_warm_started_deviated_cycle_equals_the_cold_one(coarse_model, baseline_force, baseline_pair):
+    """Each phase of a re-run on worn flanks started from the unworn loads (``mesh_cycle(start=)``) reaches
+    the same contact solution as the cold start: the fixed point is unique (within its 1e-6 of the force)."""
+    from femgear.physics.ltca.analysis import _start_loads, mesh_cycle
+    from femgear.physics.ltca.contact import phase_points
+    from femgear.physics.ltca.separation import path_deviation
+    from femgear.scene.schema import Modifications
+
+    mods = Modifications(tip_relief=3e-6, tip_relief_length=2.5e-3, crowning=5e-6)
+    opts = {"n_phases": 8, "stagger": 0.0, "n_line": 8}
+    unworn = mesh_cycle(coarse_model, baseline_force, mods, **opts)
+    assert _start_loads(unworn, 3, phase_points(baseline_pair, 3 / 8, 0.0, 8), baseline_force) is not None
+    u = path_positions(baseline_pair, 41)
+    ramp = np.array([1.5e-6 * (u - u[0]) / np.ptp(u), 0.8e-6 * (u[-1] - u) / np.ptp(u)])
+    extra = path_deviation(baseline_pair, u, ramp)
+    cold = mesh_cycle(coarse_model, baseline_force, mods, extra=extra, **opts)
+    warm = mesh_cycle(coarse_model, baseline_force, mods, extra=extra, start=unworn, **opts)
+    assert np.max(np.abs(warm.lte - cold.lte)) < 1e-5 * np.max(np.abs(cold.lte))
+    for side in ("left", "right"):
+        a, b = getattr(warm, f"k_secant_{side}"), getattr(cold, f"k_secant_{side}")
+        assert np.max(np.abs(a - b)) < 1e-5 * np.max(b)
+    assert np.max(np.abs(warm.lte - unworn.lte)) > 1e-3 * np.max(np.abs(unworn.lte))      # the ramp did matter

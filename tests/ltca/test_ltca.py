@@ -157,3 +157,16 @@ def test_tabulated_wear_on_one_helix_shifts_load_away(coarse_model, baseline_for
     r = mesh_cycle(coarse_model, baseline_force, None, n_phases=4, extra=wear)
     assert np.all(r.force_right > r.force_left)
     assert np.allclose(r.nlte_left, 5e-6) and np.allclose(r.nlte_right, 0.0)
+
+
+def test_richardson_recovers_a_known_sequence_and_refuses_a_non_asymptotic_one():
+    """f = f* + C h^p at the body levels' flank sizes m_n/3, /4, /5: f*, p and each level's error exactly;
+    differences that grow (the baseline's LTE p-p: +0.0075, +0.0123 µm) have no extrapolation."""
+    from femgear.physics.ltca.level import richardson
+
+    h = [1 / 3, 1 / 4, 1 / 5]
+    r = richardson(h, [7e8 + 1.2e8 * x**1.3 for x in h])
+    assert abs(r["order"] - 1.3) < 1e-9 and abs(r["extrapolated"] / 7e8 - 1) < 1e-12
+    assert abs(r["errors"][0] - 1.2e8 * (1 / 3) ** 1.3 / 7e8) < 1e-12
+    assert r["flagged"] == [True, True, True]
+    assert richardson(h, [0.4547, 0.4622, 0.4745]) is None

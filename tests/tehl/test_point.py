@@ -20,7 +20,8 @@ F, RP, UEP, TP = 500.0, 0.02, 10.0, 353.0
 def test_point_heat_off_exact_and_heat_on_balanced():
     off = solve_tehl_point(F, RP, UEP, 0.3, TP, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0, level=1,
                            heat=False)
-    iso = solve_point_dimensional(F, RP, None, UEP, case.E_RED, ehl_oil_at(case.OIL, TP), level=1)
+    iso = solve_point_dimensional(F, RP, None, UEP, case.E_RED, ehl_oil_at(case.OIL, TP), level=1,
+                                  dense_reuse=True)         # the TEHL start's settings (its LU factors reused)
     assert np.array_equal(off.p, iso.p) and np.array_equal(off.h, iso.h) and off.dT_max == 0.0
     on = solve_tehl_point(F, RP, UEP, 0.3, TP, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0, level=1)
     assert abs(on.heat["balance_error"]) < 0.01 and on.heat["convected"] > 0

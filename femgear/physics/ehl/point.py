@@ -37,7 +37,8 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                 rigid: bool = False, ad_factor: float = 1.0, sd_factor: float = 1.0,
                 tol: float | None = None, newton_tol: float = 1e-5, max_level: int = MAX_LEVEL,
                 residual_tol: float = RESIDUAL_TOL, max_iter: int = 40, method: str = "auto",
-                start: EHLResult | None = None, surface=None, reuse: dict | None = None) -> EHLResult:
+                start: EHLResult | None = None, surface=None, reuse: dict | None = None,
+                dense_reuse: bool = False) -> EHLResult:
     """Isothermal point-contact EHL in Moes groups (M, L); returns :class:`EHLResult`.
 
     ``level`` is the finest grid (``16 * 2**level`` intervals along X), ``coarse_level``
@@ -64,6 +65,10 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
     non-default ``ad_factor``/``sd_factor`` selects it); 'auto' (default) multigrid inside
     its validated range (:func:`fas_suits`), Newton elsewhere. A failed multigrid solve
     falls back to Newton; ``history['fallback']`` then holds the reason.
+
+    ``dense_reuse``: the dense Newton steps on the coarse level keep the LU factors of an earlier Jacobian of
+    this solve and take GMRES steps preconditioned by them (:func:`femgear.physics.ehl.fe.newton.newton_dense`
+    ``reuse=``), refactorising when GMRES needs more than 12 iterations; the answer is set by the residual test.
 
     ``surface``: stationary roughness R(X, Y) in Hertzian units (:mod:`femgear.physics.ehl.core.surface`),
     a callable f(X, Y) evaluated on every level's nodes; the film is H0 + G + D - R. None
@@ -96,7 +101,7 @@ def solve_point(M: float, L: float, *, level: int | None = None, coarse_level: i
                           tol=tol, rigid=rigid, ad_factor=ad_factor, sd_factor=sd_factor, t0=t0,
                           surface=surface, rheology=rheology,
                           newton=dict(max_iter=max_iter, tol=newton_tol, case=case,
-                                      residual_tol=residual_tol))
+                                      residual_tol=residual_tol), dense_reuse=dense_reuse)
     if method == "auto":
         method = "fas" if surface is None and fas_suits(M, L, level, rigid, viscosity, compressible, ratio) else "newton"
     if method == "fas" and surface is not None:

@@ -137,12 +137,15 @@ def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float,
     Distances in the plane of action: path position u and axial position z (ζ on the left helix,
     2b + g − ζ on the right one, ``groove`` g).
     """
-    cb = math.cos(pair.beta_b)
-    rho1 = pts.u
-    rho2 = pair.line_of_action - pts.u
-    R = (rho1 * rho2) / (rho1 + rho2) / cb
-    w = np.maximum(load, 1e-12) / pts.length
-    a = HERTZ_TO_UNIFORM * hertz_half_width(w, R, reduced_modulus(E, nu))
+    H = local_coupling(pair, pts, E, nu, groove, across)
+    H[np.diag_indices(pts.size)] = local_self(pair, pts, load, E, nu)
+    return H
+
+
+def local_coupling(pair: GearPair, pts: ContactPoints, E: float, nu: float, groove: float = 0.0,
+                   across: bool = True) -> np.ndarray:
+    """The off-diagonal part of :func:`local_matrix` (surface Boussinesq terms; zero diagonal): it does not
+    depend on the loads, so the Hertz-width passes of :func:`solve_phase` compute it once."""
     tooth = pts.line if pts.tooth is None else pts.tooth
     same_helix = pts.helix[:, None] == pts.helix[None, :]
     same = np.where(same_helix, pts.line[:, None] == pts.line[None, :], across & (tooth[:, None] == tooth[None, :]))
@@ -151,8 +154,18 @@ def local_matrix(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float,
     H = np.zeros((pts.size, pts.size))
     off = same & (r > 0)
     H[off] = 2 * surface_green(r[off], E, nu)
-    H[np.diag_indices(pts.size)] = 2 * strip_self_compliance(a, pts.length / 2, E, nu)
     return H
+
+
+def local_self(pair: GearPair, pts: ContactPoints, load: np.ndarray, E: float, nu: float) -> np.ndarray:
+    """The diagonal of :func:`local_matrix`: Love's strip 2a × Δℓ of both bodies, a from the points' loads."""
+    cb = math.cos(pair.beta_b)
+    rho1 = pts.u
+    rho2 = pair.line_of_action - pts.u
+    R = (rho1 * rho2) / (rho1 + rho2) / cb
+    w = np.maximum(load, 1e-12) / pts.length
+    a = HERTZ_TO_UNIFORM * hertz_half_width(w, R, reduced_modulus(E, nu))
+    return 2 * strip_self_compliance(a, pts.length / 2, E, nu)
 
 
 @dataclass(frozen=True)
@@ -212,22 +225,34 @@ def solve_contact(C: np.ndarray, eps: np.ndarray, force: float, case: str = "LTC
     raise ConvergenceError(case, f"active set did not settle in {max_iter} iterations", {"violation": hist})
 
 
+def phase_matrix(pair: GearPair, kernels, pts: ContactPoints, E: float, nu: float) -> np.ndarray:
+    """The load-independent part of the phase's compliance: bulk kernels and the surface coupling of H₀."""
+    return bulk_matrix(pair, kernels, pts) + local_coupling(pair, pts, E, nu, getattr(kernels[1], "groove", 0.0),
+                                                            getattr(kernels[1], "cross", None) is not None)
+
+
 def solve_phase(pair: GearPair, kernels, pts: ContactPoints, eps: np.ndarray, force: float, E: float, nu: float,
-                tol: float = 1e-6, max_pass: int = 80, case: str = "LTCA phase"):
+                tol: float = 1e-6, max_pass: int = 80, case: str = "LTCA phase", base: np.ndarray | None = None,
+                load0: np.ndarray | None = None):
     """Contact solution with the Hertz strip width updated to the loads; returns (solution, C, passes).
 
     The fixed point converges linearly; on a face-resolved worn flank (the rig's test gear after 3e6
     cycles) it took more than 12 passes (load change 1.2e-6 after 12), hence up to 30; on the uncrowned
     baseline under the face-resolved 3-D thermal growth of a 30 K flank rise (``thermal = "fe3d"``,
     ``wear.field = "face"``) one phase contracts by 0.73 a pass and needs 49, hence up to 80.  A solve
-    that converged within fewer passes returns the same solution as before."""
-    Cb = bulk_matrix(pair, kernels, pts)
-    load = np.full(pts.size, force / pts.size)
-    active = None
+    that converged within fewer passes returns the same solution as before.  ``base``: :func:`phase_matrix` of
+    these points when the caller already has it (a second force at the same phase).  ``load0``: the start of
+    the fixed point and of the active set (default: the force spread evenly, no active set), e.g. the solution
+    of the same points on flanks that differ a little; the fixed point and the contact solution are unique,
+    so only the passes it takes change (the answer within ``tol``)."""
+    Cb = phase_matrix(pair, kernels, pts, E, nu) if base is None else base
+    diag = np.diag_indices(pts.size)
+    load = np.full(pts.size, force / pts.size) if load0 is None else np.asarray(load0, dtype=float).copy()
+    active = None if load0 is None else load > 0
     changes = []
     for p in range(1, max_pass + 1):
-        C = Cb + local_matrix(pair, pts, load, E, nu, getattr(kernels[1], "groove", 0.0),
-                              getattr(kernels[1], "cross", None) is not None)
+        C = Cb.copy()
+        C[diag] += local_self(pair, pts, load, E, nu)         # = Cb + local_matrix(...): only the strip widths move
         sol = solve_contact(C, eps, force, case, active)
         changes.append(float(np.max(np.abs(sol.load - load)) / force))
         load, active = sol.load, sol.load > 0

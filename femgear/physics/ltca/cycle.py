@@ -95,7 +95,7 @@ class LTCACycle:
         from femgear.physics.ltca.analysis import mesh_cycle
 
         res = mesh_cycle(self.model, self.force, self.modifications, n_phases=self.n_phases, stagger=self.stagger,
-                         n_line=self.n_line, extra=extra)
+                         n_line=self.n_line, extra=extra, start=self.result)    # warm start: the unique fixed point
         return replace(self, result=res, orders_check=None)
 
     def with_orders(self, orders: int, change: np.ndarray | None, check: str | None = None) -> LTCACycle:

@@ -68,6 +68,37 @@ def resolved_orders(model, force: float, modifications=None, stagger: float = 0.
     return (max(1, int(bad[0])) if bad.size else change.size), change
 
 
+#: a body level whose Richardson-extrapolated error exceeds this is flagged (issue 26's mesh-convergence bound)
+MESH_ERROR_FLAG = 0.02
+
+
+def richardson(h, values) -> dict | None:
+    """Richardson extrapolation of a mesh sequence f(h) = f* + C h^p from three levels (h₁ > h₂ > h₃,
+    any refinement ratios): the order p solves (f₁ − f₂)/(f₂ − f₃) = (h₁^p − h₂^p)/(h₂^p − h₃^p)
+    (bisection, 0.05 ≤ p ≤ 10), then f* = f₃ − C h₃^p.  Returns {"order", "extrapolated", "errors"
+    (f_i/f* − 1 per level), "flagged" (errors above :data:`MESH_ERROR_FLAG`)}, or None where the
+    sequence is not in its asymptotic range (the differences change sign or grow: no such p)."""
+    h, f = (np.asarray(a, dtype=float) for a in (h, values))
+    if h.size != 3 or not (h[0] > h[1] > h[2] > 0) or f[1] == f[2]:
+        return None
+    ratio = (f[0] - f[1]) / (f[1] - f[2])
+
+    def mismatch(p):
+        return (h[0] ** p - h[1] ** p) / (h[1] ** p - h[2] ** p) - ratio
+
+    lo, hi = 0.05, 10.0
+    if mismatch(lo) * mismatch(hi) > 0:
+        return None
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if mismatch(lo) * mismatch(mid) > 0 else (lo, mid)
+    p = 0.5 * (lo + hi)
+    C = (f[1] - f[2]) / (h[1] ** p - h[2] ** p)
+    fs = float(f[2] - C * h[2] ** p)
+    errors = [float(x) for x in f / fs - 1]
+    return {"order": p, "extrapolated": fs, "errors": errors, "flagged": [abs(e) > MESH_ERROR_FLAG for e in errors]}
+
+
 def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: int = 64, stagger: float = 0.0,
                youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, level: int = 1, n_line: int = 16,
                extra=None, body: dict | None = None):

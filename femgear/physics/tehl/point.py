@@ -89,7 +89,7 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
     v1, v2 = ue * (1 + srr / 2), ue * (1 - srr / 2)
     ehl_oil = ehl_oil_at(oil, T_bulk, compressible)
     ratio = R / Ry
-    iso = solve_point_dimensional(load, R, Ry, ue, E_red, ehl_oil, level=level)
+    iso = solve_point_dimensional(load, R, Ry, ue, E_red, ehl_oil, level=level, dense_reuse=True)
     t_iso = time.perf_counter() - t0
     res, a, ph = iso.result, iso.a, iso.ph
     hs = a * a / R
@@ -112,6 +112,7 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
     J2 = jaeger_matrix(nt, (g.x[-1] - g.x[0]) * a, props.B2, v2)
     dy = g.dy * a
     sol = {"PI": res.P.ravel()[fine.interior].copy(), "H0": res.H0, "P": res.P, "H": res.H}
+    prec: dict = {}      # the re-solves' preconditioner, kept across the thermal iterations (newton_krylov keep=)
 
     def energy(theta):
         P2, H2 = sol["P"], sol["H"]
@@ -137,7 +138,8 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
             Tk = Tn[::s, ::s].ravel()
             rh.state["node"] = Tk
             rh.state["quad"] = lv.reynolds.basis.interpolate(Tk)
-        sol["PI"], sol["H0"], hist = newton_krylov(levels, sol["PI"], sol["H0"], tol=newton_tol, case=case)
+        sol["PI"], sol["H0"], hist = newton_krylov(levels, sol["PI"], sol["H0"], tol=newton_tol, case=case,
+                                                   keep=prec)
         P, H = fine.film(sol["PI"], sol["H0"])
         sol["P"], sol["H"] = P.reshape(g.ny, g.nx), H.reshape(g.ny, g.nx)
         return len(hist.residual)

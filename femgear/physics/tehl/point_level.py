@@ -40,6 +40,7 @@ import numpy as np
 from femgear.errors import ConvergenceError
 from femgear.physics.contact.crowning import CrownedContact
 from femgear.physics.tehl.point import solve_tehl_point
+from femgear.physics.tehl.reuse import ReuseReport, reusable
 from femgear.physics.tehl.solver import TEHLSetup
 
 POINT_LEVEL = 1
@@ -54,10 +55,14 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, ro
     ``setup``: oil, solids and traction; ``roughness``: a ``[roughness]`` table with stationary features, or
     None (smooth); ``line_level``: the grid level of the line-contact fallback (:func:`_line_contact`).
     ``details``: a list that receives each :class:`femgear.physics.tehl.point.TEHLPointResult`
-    (films, pressure, temperature for studies); ``solve.last`` holds the inputs and results of the
+    (films, pressure, temperature for studies); a contact queried again (same radii, speeds, temperature)
+    at a load that changed so little that the change of μ and ΔT is estimated below 1e-4 reuses its latest
+    solve (:mod:`femgear.physics.tehl.reuse`; ``solve.reuse`` reports it); ``solve.last`` holds the inputs and results of the
     latest call (the film of the run's last pass, :meth:`femgear.levels.lubrication.Lubrication.film`)."""
     kw = {**setup.kwargs(), "roughness": roughness, **options}
     level = POINT_LEVEL if level is None else level
+
+    memory: dict = {}     # per contact (R_x, R_y, ue, srr, T): the latest solves [(load, result)], newest last
 
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
@@ -65,21 +70,29 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, ro
         Rx, Ry = geo.radii(R)
         F = geo.load(w)
         mu, dT = np.empty(w.shape), np.empty(w.shape)
-        results = []
+        results, reuse = [], ReuseReport()
         for i in np.ndindex(w.shape):
             args = (float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]))
-            try:
-                r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **kw)
-            except ConvergenceError as exc:
-                r = _line_contact(float(w[i]), args, setup, line_level, exc)
+            key = args[1:] + (float(Ry[i]),)
+            r = reusable(memory.get(key, []), args[0], reuse)
+            if r is None:
+                try:
+                    r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **kw)
+                except ConvergenceError as exc:
+                    r = _line_contact(float(w[i]), args, setup, line_level, exc)
+                memory[key] = (memory.get(key, []) + [(args[0], r)])[-2:]
             mu[i], dT[i] = r.mu, r.dT_max
             results.append(r)
         if details is not None:
             details.extend(results)
         solve.last = ((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), results)
+        solve.reuse = reuse
+        if reuse.reused:
+            log.info("tehl-point: %s", reuse.describe())
         return mu, dT
 
     solve.last = None   #: ((w, R, ue, srr, T), results) of the latest call: its films, without solving again
+    solve.reuse = None  #: :class:`ReuseReport` of the latest call
 
     return solve
 

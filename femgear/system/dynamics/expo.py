@@ -31,6 +31,7 @@ import time
 import numpy as np
 
 from femgear.errors import ConvergenceError
+from femgear.system.dynamics.expo_scan import CHUNK_STEPS, ContactScan
 from femgear.system.dynamics.modal import mesh_mode_limit
 from femgear.system.dynamics.model import GearRotorModel
 from femgear.system.dynamics.simulation import Simulation, inputs, record_plan
@@ -238,6 +239,10 @@ def _phase_stiffness(model: GearRotorModel, per: int, substeps: int) -> np.ndarr
     return np.moveaxis(stair.reshape(2, per, substeps), 0, -1)
 
 
+#: run whole mesh periods of the contact fast path at once (:mod:`femgear.system.dynamics.expo_scan`); False: every
+#: step one at a time (the reference of ``tests/dynamics/test_expo_scan.py``)
+SCAN = True
+
 #: phases whose propagators are built in one batch (bounds the temporaries to ~ 30 MB)
 _BATCH = 512
 
@@ -277,15 +282,18 @@ def _fast_path_inputs(mats: tuple, steps: int, Fe, ecols, dcols, Bw, Gz, AB):
     Ph, W0, Wh, W1, U = mats
     per, m = Ph.shape[0], Bw.shape[0]
     aug = np.vstack([np.eye(m), Gz])
-    known = np.empty((steps, m + 4))
     Fd = Fe + dcols @ Bw[:, :2].T
-    for j in range(min(per, steps)):
-        idx = np.arange(j, steps, per)
-        i0, ih, i1 = 2 * idx, 2 * idx + 1, 2 * idx + 2
-        kn = Fd[i0] @ W0[j].T + Fd[ih] @ Wh[j].T + Fd[i1] @ W1[j].T \
-            + np.concatenate([ecols[i0, :1], ecols[ih, :1], ecols[i1, :1], ecols[i0, 1:], ecols[ih, 1:], ecols[i1, 1:]],
-                             axis=1) @ U[j].T
-        known[idx] = kn @ aug.T
+    cyc = -(-steps // per)                    # whole mesh periods of steps, the last one padded
+    ec = np.empty((2 * steps + 1, 6))         # u_s at the nodes, in U's column order (s = 0 at 0, ½, 1; then s = 1)
+    for o in range(3):
+        ec[:2 * steps + 1 - o, o] = ecols[o:, 0]
+        ec[:2 * steps + 1 - o, 3 + o] = ecols[o:, 1]
+    known = np.zeros((cyc * per, m + 4))
+    for W, X in ((W0, Fd[0:2 * steps:2]), (Wh, Fd[1:2 * steps:2]), (W1, Fd[2:2 * steps + 1:2]), (U, ec[0:2 * steps:2])):
+        P = np.zeros((cyc * per, X.shape[1]))
+        P[:steps] = X                          # step i = c·per + j of the period c at phase j
+        known += np.einsum("jab,cjb->cja", aug @ W, P.reshape(cyc, per, -1), optimize=True).reshape(cyc * per, -1)
+    known = known[:steps]
     if AB is None:
         return aug @ Ph, known, None
     A, B = AB
@@ -339,15 +347,9 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
     kL, kR, e, ed, f, A, B = inputs(model, tt)
     Fe = np.zeros((tt.size, n2))
     Fe[:, n:] = f @ Minv.T
-    ee = (e[0].tolist(), e[1].tolist())
-    eed = (ed[0].tolist(), ed[1].tolist())
-    AA = (A[0].tolist(), A[1].tolist())
-    BB = (B[0].tolist(), B[1].tolist())
     mu = model.mu
     bt = model.backlash_at(tt)                          # (2, n): half-width of each helix's dead zone
-    bb = bt.tolist()
     cm = (float(model.mesh_damping[0]), float(model.mesh_damping[1]))
-    switches = 0
     t_setup = time.perf_counter()
     contact = _contact_propagators(model, cache, kstep, dt)     # all-in-contact, up front
     k0 = kstep[:, 0].tolist()                # the stiffness at the start of each phase slot (friction's |N|)
@@ -357,24 +359,93 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
     setup = time.perf_counter() - t_setup
 
     rec = record_plan(steps, dt, record_every, record_from - t_start)
-    out = np.empty((rec.size, n2))
-    ri = 0
-    next_rec = rec[0] if rec.size else -1
     z = np.zeros(MJ.shape[-1])               # fast-path state (y, friction inputs at the three nodes)
     z[:n2] = np.concatenate([q, v])
+    def static():           # the step loop's per-step data as Python lists (built when it first runs)
+        ee, eed, AA, BB, bb = ((x[0].tolist(), x[1].tolist()) for x in (e, ed, A, B, bt))
+        return (model, cache, kstep, dt, per, n2, mu, cm, k0, ee, eed, bb, MJ, known, ABn,
+                (Fe, Bw, cm, eed, AA, BB, ee, bb), rec, Gz)
+
+    loop = _Loop(static=static, z=z, out=np.empty((rec.size, n2)), rec=rec)
+    t0 = time.perf_counter()
+    scan = ContactScan(MJ, known, ABn, Gz, e, ed, bt, kstep[:, 0], cm, mu) if SCAN and steps >= per else None
+    i, wait = 0, 0
+    while i < steps:
+        if scan is not None and wait == 0 and i % per == 0 and steps - i >= per:
+            periods = min((steps - i) // per, max(1, CHUNK_STEPS // per))
+            done = _scan_periods(loop, scan, i, periods)
+            i += done
+            loop.scanned += done
+            if done == periods * per:
+                continue
+            loop.backoff = 2 * loop.backoff          # a contact event: step by step for 1, 2, 4, … periods
+            wait = loop.backoff
+        nxt = min(steps, (i // per + 1) * per)
+        _step_loop(loop, i, nxt)
+        i, wait = nxt, max(wait - 1, 0)
+    if loop.ri < rec.size and rec[loop.ri] == steps:
+        loop.out[loop.ri] = z[:n2]
+    out, switches = loop.out, loop.switches
+    seconds = time.perf_counter() - t0
+    if not np.all(np.isfinite(out)):
+        raise ConvergenceError("expo", "the solution became non-finite", {"dt": [dt]})
+    return Simulation(model=model, method="expo", dt=dt, t=t_start + rec * dt, q=out[:, :n].copy(), v=out[:, n:].copy(),
+                      seconds=seconds, steps=steps,
+                      info={"contact_switches": switches, "steps_per_mesh_period": per, "cached_propagators": per + len(cache) - 1,
+                            "setup_seconds": setup, "substeps": substeps, "scanned_steps": loop.scanned})
+
+
+class _Loop:
+    """The step loop's state between its step-by-step stretches and its scans."""
+
+    def __init__(self, static, z, out, rec):
+        self.make_static, self.static, self.z, self.out, self.rec = static, None, z, out, rec
+        self.N_prev, self.side_prev, self.switches, self.ri, self.backoff = (0.0, 0.0), None, 0, 0, 1
+        self.scanned = 0
+
+
+def _scan_periods(loop: _Loop, scan: ContactScan, i: int, periods: int) -> int:
+    """``periods`` whole mesh periods of the contact fast path from step ``i`` at once
+    (:class:`femgear.system.dynamics.expo_scan.ContactScan`); the steps done (up to the first that leaves it)."""
+    n2, rec, fast = scan.n2, loop.rec, (1, 1)
+    y0 = loop.z[:n2].copy()
+    if not np.all(scan.Gz[0:2] @ y0 - scan.e[i] > scan.b[i]):      # not on both drive flanks now: no scan
+        return 0
+    x0 = y0
+    if scan.friction:
+        a = scan.normal_force(i, y0)
+        x0 = np.concatenate([y0, a if loop.side_prev != fast else loop.N_prev])
+    x, done = scan.run(i, periods, x0)
+    if done == 0:
+        return 0
+    if loop.side_prev != fast and loop.side_prev is not None:
+        loop.switches += 1
+    r1 = int(np.searchsorted(rec, i + done))
+    loop.out[loop.ri:r1] = x[rec[loop.ri:r1] - i, :n2]
+    loop.ri = r1
+    loop.z[:n2] = x[done, :n2]
+    if scan.friction:
+        loop.N_prev = (float(x[done, n2]), float(x[done, n2 + 1]))
+    loop.side_prev = fast
+    return done
+
+
+def _step_loop(loop: _Loop, i_from: int, i_to: int) -> None:
+    """Steps ``i_from`` … ``i_to`` − 1 one at a time, in any contact state, recording as planned."""
+    if loop.static is None:
+        loop.static = loop.make_static()
+    (model, cache, kstep, dt, per, n2, mu, cm, k0, ee, eed, bb, MJ, known, ABn, data, rec, Gz) = loop.static
+    z, out = loop.z, loop.out
     zf = z[n2:]
-    N_prev = (0.0, 0.0)
-    side_prev = None
+    N_prev, side_prev, switches, ri = loop.N_prev, loop.side_prev, loop.switches, loop.ri
+    next_rec = rec[ri] if ri < rec.size else -1
     fast = (1, 1)
     g = (Gz @ z[:n2]).tolist()
-    t0 = time.perf_counter()
-    for i in range(steps + 1):
+    for i in range(i_from, i_to):
         if i == next_rec:
             out[ri] = z[:n2]
             ri += 1
             next_rec = rec[ri] if ri < rec.size else -1
-        if i == steps:
-            break
         j = i % per
         i2 = 2 * i
         gq0, gq1, gv0, gv1 = g
@@ -406,14 +477,7 @@ def expo(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndar
             g = r[n2:].tolist()
             N_prev = Nn
             continue
-        z[:n2] = _general_step(model, cache, j, kstep[j], side, dt, z[:n2], i2, (Fe, Bw, cm, eed, AA, BB, ee, bb), Nn,
-                               N_prev)
+        z[:n2] = _general_step(model, cache, j, kstep[j], side, dt, z[:n2], i2, data, Nn, N_prev)
         g = (Gz @ z[:n2]).tolist()
         N_prev = Nn
-    seconds = time.perf_counter() - t0
-    if not np.all(np.isfinite(out)):
-        raise ConvergenceError("expo", "the solution became non-finite", {"dt": [dt]})
-    return Simulation(model=model, method="expo", dt=dt, t=t_start + rec * dt, q=out[:, :n].copy(), v=out[:, n:].copy(),
-                      seconds=seconds, steps=steps,
-                      info={"contact_switches": switches, "steps_per_mesh_period": per, "cached_propagators": per + len(cache) - 1,
-                            "setup_seconds": setup, "substeps": substeps})
+    loop.N_prev, loop.side_prev, loop.switches, loop.ri = N_prev, side_prev, switches, ri

@@ -58,9 +58,7 @@ def periodic_interp(samples: np.ndarray, phase: np.ndarray) -> np.ndarray:
     if n == 1:
         return np.full(phase.shape, samples[0])
     x = np.mod(phase, 1.0) * n
-    i = np.floor(x).astype(np.int64) % n
-    f = x - np.floor(x)
-    return samples[i] * (1 - f) + samples[(i + 1) % n] * f
+    return np.interp(x, np.arange(n + 1.0), np.append(samples, samples[0]))
 
 
 def periodic_slope(samples: np.ndarray, phase: np.ndarray) -> np.ndarray:

@@ -346,7 +346,7 @@ class MultilevelPreconditioner:
 def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: int = 30,
                   tol: float = 1e-7, krylov_rtol: float = 1e-4, restart: int = 60,
                   maxiter_krylov: int = 300, case: str = "ehl", reuse: dict | None = None,
-                  residual_tol: float = RESIDUAL_TOL):
+                  residual_tol: float = RESIDUAL_TOL, keep: dict | None = None):
     """Newton on the finest of ``levels`` with GMRES + :class:`MultilevelPreconditioner`.
 
     The preconditioner is factorised once and kept across Newton steps until GMRES
@@ -354,11 +354,19 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
     factorised levels between the solves of a nested iteration or a sequence.
     GMRES is stopped at the Eisenstat & Walker (1996, choice 2) forcing term
     eta_k = 0.9 (|F_k|/|F_(k-1)|)^2, safeguarded, within [``krylov_rtol``, 0.1]: loose far
-    from the solution, tight near it, so that Newton keeps its quadratic rate."""
+    from the solution, tight near it, so that Newton keeps its quadratic rate.
+
+    ``keep``: a dict kept by the caller across a sequence of solves of one problem whose
+    coefficients move (the thermal loop's re-solves at new film temperatures): the last
+    preconditioner starts the next solve and is rebuilt by the same rule when GMRES slows
+    down.  The operator is always the current Jacobian, so the converged answer is set by
+    the residual test alone, as with any preconditioner."""
     fine = levels[-1]
     transfers = [_transfer(levels[k], levels[k + 1]) for k in range(len(levels) - 1)]
 
     cache: dict = {}
+    if keep is not None and "prec" in keep:
+        cache.update(prec=keep["prec"], its=keep["its"], its0=keep.get("its0", keep["its"]))
 
     def direction(PI, H0, F, lin, s, act):
         if "prec" not in cache or cache["its"] > REBUILD_KRYLOV or (
@@ -392,6 +400,8 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
         dx[:-1][act] = rhs[:-1][act]
         cache["its"] = count[0] if info == 0 else 10**6
         cache.setdefault("its0", count[0])
+        if keep is not None:
+            keep.update(prec=cache["prec"], its=cache["its"], its0=cache["its0"])
         return dx, count[0]
 
     return _newton(fine, PI, H0, direction, max_iter, tol, case, residual_tol)

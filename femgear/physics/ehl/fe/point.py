@@ -82,7 +82,7 @@ class NestedPoint:
 
     def __init__(self, M: float, L: float, *, ratio: float, dom: Domain, coarse_level: int,
                  level: int, tol: float | None, rigid: bool, ad_factor: float, sd_factor: float,
-                 t0: float, rheology: dict, newton: dict, surface=None):
+                 t0: float, rheology: dict, newton: dict, surface=None, dense_reuse: bool = False):
         self.M, self.L, self.ratio, self.dom = M, L, ratio, dom
         self.surface = surface
         self.coarse_level, self.level, self.tol = coarse_level, level, tol
@@ -92,6 +92,7 @@ class NestedPoint:
         self.hist = History()
         self.last_failure = ""  # reason of the last failed Newton attempt (for the error)
         self.factorised: dict = {}  # Level -> factorised preconditioner level, kept across levels
+        self.dense = {} if dense_reuse else None   # LU factors of the dense Newton steps, kept across them
         self.levels = _LazyLevels(lambda k: self.make(M, 1.0, k), coarse_level, level)
 
     def make(self, M_: float, frac: float, lev: int, stab: float = 1.0) -> Level:
@@ -115,7 +116,7 @@ class NestedPoint:
         """(PI, H0) solved on the finest of ``lvs`` (dense Newton on one level), or None."""
         try:
             if len(lvs) == 1:
-                PI, H0, h = newton_dense(lvs[0], PI, H0, **self.newton)
+                PI, H0, h = newton_dense(lvs[0], PI, H0, **self.newton, reuse=self.dense)
             else:
                 PI, H0, h = newton_krylov(lvs, PI, H0, reuse=self.factorised, **self.newton,
                                           **_krylov_cap(self.ratio))
