@@ -27,9 +27,6 @@ from femgear.physics.rating import pitting_rating as _pitting_rating
 from femgear.physics.rating.suite import PairRating
 from femgear.physics.rating.summary import pair_rating_summary
 
-#: lubrication levels cheap enough for a summary; heavier ones are summarised with ``formula``
-SUMMARY_FRICTION_LEVELS = ("none", "constant", "formula")
-
 
 def geometry_summary(pair: GearPair, pinion_rpm: float) -> dict[str, Any]:
     """Dimensions and contact ratios of one helix, SI units, angles in degrees."""
@@ -133,10 +130,9 @@ def path_friction(scene, pair: GearPair, contact: ContactPath) -> tuple[np.ndarr
     """μ along ``contact`` at the oil temperature, of the scene's lubrication level (levels beyond
     ``formula``, FE EHL and TEHL, are summarised with ``formula``; the returned level says which)."""
     from femgear.case import build_case
-    from femgear.levels.lubrication import lubrication_solver
+    from femgear.levels.lubrication import lubrication_solver, summary_level
 
-    level = scene.physics.lubrication
-    level = level if level in SUMMARY_FRICTION_LEVELS else "formula"
+    level = summary_level(scene.physics.lubrication)
     k = contact.kin
     w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
     solver = lubrication_solver(build_case(scene, pair), level)

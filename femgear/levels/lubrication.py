@@ -371,3 +371,14 @@ def check_range(case: Case) -> None:
     """Refuse the case's lubrication level up front where the case is outside its validated range."""
     for check in RANGE_CHECKS.get(case.levels.lubrication, ()):
         check(case)
+
+
+#: the levels whose μ a scene summary (``femgear info``, the power loss of results.json) computes itself;
+#: costlier ones (FE EHL, TEHL) are summarised with ``formula``
+SUMMARY_LEVELS = ("none", "constant", "formula")
+
+
+def summary_level(level: str) -> str:
+    """The level a scene summary computes μ with for the case's ``level`` (``formula`` beyond it)."""
+    REGISTRY[level]     # an unknown level raises, naming physics.lubrication
+    return level if level in SUMMARY_LEVELS else "formula"

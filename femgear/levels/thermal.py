@@ -136,3 +136,13 @@ def _fe3d_units(case: Case, **_: Any) -> ThermalUnits:
 def of(case: Case) -> ThermalUnits | None:
     """The unit responses of the case's ``physics.thermal`` level (None for ``none``)."""
     return REGISTRY.build(case.levels.thermal, case)
+
+
+#: the levels that solve the 2-D tooth sections, whose body fields the ParaView set shows
+SECTION_LEVELS = frozenset({"fe"})
+
+
+def has_sections(level: str) -> bool:
+    """Whether thermal level ``level`` solves the 2-D tooth sections (its temperature and displacement fields)."""
+    REGISTRY[level]     # an unknown level raises, naming physics.thermal
+    return level in SECTION_LEVELS

@@ -35,22 +35,22 @@ def test_reused_point_solve_is_within_its_tolerance_of_a_direct_solve():
     """The baseline's crowned contact at the static load: a load change of 2e-5 (the coupling's later passes
     move by ~1e-5) reuses the solve; a direct solve at the new load differs by less than the tolerance."""
     from femgear.case import build_case
-    from femgear.physics.contact.path import contact_along_path
-    from femgear.physics.tehl.point_level import tehl_point_solver
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import tehl_point_solver
     from femgear.scene import load_scene
 
     scene = load_scene(BASELINE, ['physics.lubrication="tehl-point"', "modifications.crowning=10e-6"])
     case = build_case(scene)
-    cp = contact_along_path(scene)
+    cp = contact_pass(case)
     i = 3
     w = float(np.broadcast_to(cp.load_per_length, cp.kin.R.shape)[i])
     args = dict(R=cp.kin.R[i], ue=cp.kin.ue[i], srr=abs(cp.kin.srr[i]), T=scene.operating.ambient_temperature)
-    solve = tehl_point_solver(scene, pair=case.pair)
+    solve = tehl_point_solver(case)
     solve(w=w, **args)
     assert solve.reuse.solved == 1
     mu, dT = solve(w=w * (1 + 2e-5), **args)
     assert solve.reuse.reused == 1 and solve.reuse.max_estimate <= REUSE_TOL
-    mu_d, dT_d = tehl_point_solver(scene, pair=case.pair)(w=w * (1 + 2e-5), **args)
+    mu_d, dT_d = tehl_point_solver(case)(w=w * (1 + 2e-5), **args)
     assert abs(mu[0] / mu_d[0] - 1) <= REUSE_TOL and abs(dT[0] / dT_d[0] - 1) <= REUSE_TOL
     mu2, _ = solve(w=w * 1.01, **args)                   # a real load change: solved again
     assert solve.reuse.solved == 1 and mu2[0] != mu[0]

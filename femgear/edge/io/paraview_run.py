@@ -185,7 +185,9 @@ def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path
         from femgear.edge.io.paraview import write_vtu
 
         files["flank_face_vtu"] = write_vtu(out_dir / "flank_face.vtu", face)
-    if result.case.levels.thermal == "fe":
+    from femgear.levels.thermal import has_sections
+
+    if has_sections(result.case.levels.thermal):
         files["body_pvd"] = write_collection(out_dir, "body", body_frames(result))
     if result.coupled is not None and result.coupled.state.dynamics is not None:
         files["dynamics_pvd"] = write_collection(out_dir, "dynamics", dynamics_frames(result))
