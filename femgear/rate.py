@@ -14,11 +14,13 @@ import math
 
 import numpy as np
 
-from femgear.case import build_case
+from femgear.case import build_case, operating_point
 from femgear.levels.lubrication import lubrication_solver
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.geometry import GearPair
 from femgear.physics.lubrication.flash import thermal_effusivity
+from femgear.physics.rating import LoadFactors, MaterialLimits, PittingRating, contact_stress
+from femgear.physics.rating import pitting_rating as _pitting_rating
 from femgear.physics.rating.bending import BendingInputs
 from femgear.physics.rating.scuffing import OIL_FACTOR, ScuffingInputs
 from femgear.physics.rating.suite import OwnFigures, PairRating, rate_pair
@@ -93,8 +95,6 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     CLI's one-line-per-problem contract (``tests/cli/test_bad_input.py``)."""
     from dataclasses import replace
 
-    from femgear.summary import scene_rating
-
     case = case if case is not None else build_case(scene, pair)
     r, used = scene.rating, []
     sigma_Flim = _value(r, "bending_stress_limit", used)
@@ -133,3 +133,17 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     if r.fillet_fe:
         rating = replace(rating, own=replace(own, fillet=_fillets(case)))
     return rating
+
+
+def scene_rating(scene, pair: GearPair, pinion_torque: float | None = None) -> PittingRating:
+    """ISO 6336-2 method B rating of a scene's pair at its operating point (``pinion_torque`` [N m]: the bound
+    case's, else derived here) and ``[rating]`` table."""
+    r = scene.rating
+    factors = LoadFactors(K_A=r.application_factor, K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor,
+                          K_Halpha=r.transverse_load_factor)
+    T1 = operating_point(scene, pair).pinion_torque if pinion_torque is None else pinion_torque
+    stress = contact_stress(pair, T1, scene.material.youngs_modulus, scene.material.poisson_ratio, factors)
+    limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
+                            nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
+                            Z_W=r.work_hardening_factor, Z_X=r.size_factor)
+    return _pitting_rating(pair, stress, scene.pinion_rpm, limits)

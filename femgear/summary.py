@@ -15,17 +15,10 @@ import numpy as np
 from femgear.case import operating_point
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.geometry import GearPair, mesh_frequency
-from femgear.physics.rating import (
-    LoadFactors,
-    MaterialLimits,
-    MeshPowerLoss,
-    PittingRating,
-    contact_stress,
-    mesh_power_loss,
-)
-from femgear.physics.rating import pitting_rating as _pitting_rating
+from femgear.physics.rating import MeshPowerLoss, PittingRating, mesh_power_loss
 from femgear.physics.rating.suite import PairRating
 from femgear.physics.rating.summary import pair_rating_summary
+from femgear.rate import scene_rating
 
 
 def geometry_summary(pair: GearPair, pinion_rpm: float) -> dict[str, Any]:
@@ -93,20 +86,6 @@ def _single_contact(result: ContactPath) -> dict[str, Any]:
             out[name] = {"hertz_pressure": result.hertz_pressure[j], "hertz_half_width": result.hertz_half_width[j],
                          "line_load": result.line_load[j], "film_minimum_dowson_higginson": result.film_minimum[j]}
     return out
-
-
-def scene_rating(scene, pair: GearPair, pinion_torque: float | None = None) -> PittingRating:
-    """ISO 6336-2 method B rating of a scene's pair at its operating point (``pinion_torque`` [N m]: the bound
-    case's, else derived here) and ``[rating]`` table."""
-    r = scene.rating
-    factors = LoadFactors(K_A=r.application_factor, K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor,
-                          K_Halpha=r.transverse_load_factor)
-    T1 = operating_point(scene, pair).pinion_torque if pinion_torque is None else pinion_torque
-    stress = contact_stress(pair, T1, scene.material.youngs_modulus, scene.material.poisson_ratio, factors)
-    limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
-                            nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
-                            Z_W=r.work_hardening_factor, Z_X=r.size_factor)
-    return _pitting_rating(pair, stress, scene.pinion_rpm, limits)
 
 
 def rating_summary(rating: PittingRating) -> dict[str, Any]:

@@ -73,8 +73,6 @@ ORDER: dict[str, list[list[str]]] = {
 # Upward edges other helpers of issue 27 are removing, as (importer, imported) module pairs.
 # The lead empties this set as their branches merge; nothing may be added to it.
 PENDING = {
-    # h27edge: the rating is computed in the driver (rate/pipeline), summary only formats
-    ("femgear.rate", "femgear.summary"),
     # h27edge: figures are written by edge/io's one writer, not by plot
     ("femgear.edge.plot", "femgear.edge.io.atomic"),
 }

@@ -10,8 +10,9 @@ import pytest
 from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
 from femgear.levels.contact import contact_pass
+from femgear.rate import scene_rating
 from femgear.scene import load_scene
-from femgear.summary import scene_power_loss, scene_rating
+from femgear.summary import scene_power_loss
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 

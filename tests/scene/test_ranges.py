@@ -112,7 +112,8 @@ def test_iso1328_tolerances_match_the_standards_formulas():
 def test_nominal_contact_stress_is_isos_sigma_h0_without_z_eps_z_beta():
     """The torque check's σ_H0 against femgear's ISO 6336-2 σ_H0 on the baseline (x = 0: same Z_H),
     divided by Z_ε Z_β that the check leaves out."""
-    from femgear.summary import rating_summary, scene_rating
+    from femgear.rate import scene_rating
+    from femgear.summary import rating_summary
 
     scene = load_scene(BASE)
     rating = rating_summary(scene_rating(scene, pair_from_scene(scene)))
