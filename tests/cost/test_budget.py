@@ -27,6 +27,12 @@ BASE = str(ROOT / "studies" / "paper_baseline.toml")
 QUIET = ["--set", 'physics.dynamics="none"', "--set", 'physics.coupling="one-way"', "--set", 'physics.wear="none"']
 
 
+
+def default_sigint() -> None:
+    """In the child before exec: Ctrl-C at its default, so that Python installs its handler even when the tests
+    run from a shell that ignores SIGINT in background jobs (``nohup make test &``)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
 def test_announce_refuses_over_the_budget_naming_the_key(monkeypatch):
     monkeypatch.setenv("FEMGEAR_MEMORY_GB", "1")
     with pytest.raises(ResourceError, match=r"numerics.body_level: needs about 1.86 GiB.*level 0 fits"):
@@ -96,7 +102,7 @@ def _interrupt_at(tmp_path: Path, marker: str, args: list[str], wait: float = 1.
     (exit code, stderr)."""
     proc = subprocess.Popen([sys.executable, "-m", "femgear", "-v", "run", BASE, "--out", str(tmp_path / "out"),
                              *QUIET, *args], env=_env(tmp_path), stderr=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                            text=True)
+                            text=True, preexec_fn=default_sigint)
     lines: list[str] = []
     seen = threading.Event()
 
@@ -160,7 +166,8 @@ def test_ctrl_c_kills_the_forked_stage_at_once(tmp_path):
             "    interruptible(time.sleep, 60)\n"
             "import argparse\nns = argparse.Namespace(func=job, debug=False)\n"
             "sys.exit(femgear.edge.cli._dispatch(ns))\n")
-    proc = subprocess.Popen([sys.executable, "-c", code], env=_env(tmp_path), stderr=subprocess.PIPE, text=True)
+    proc = subprocess.Popen([sys.executable, "-c", code], env=_env(tmp_path), stderr=subprocess.PIPE, text=True,
+                            preexec_fn=default_sigint)
     assert "child started" in proc.stderr.readline()
     time.sleep(0.5)
     proc.send_signal(signal.SIGINT)

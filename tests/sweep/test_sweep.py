@@ -20,6 +20,12 @@ RIG = Path(__file__).resolve().parents[2] / "studies" / "rig15_sweep.toml"
 STATIC = '"physics.dynamics" = ["none"]\n"physics.coupling" = ["one-way"]\n'   # quasi-static cases: fast
 
 
+
+def default_sigint() -> None:
+    """In the child before exec: Ctrl-C at its default, so that Python installs its handler even when the tests
+    run from a shell that ignores SIGINT in background jobs (``nohup make test &``)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
 def write_sweep(tmp_path, body: str, name: str = "t") -> Path:
     base = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
     path = tmp_path / f"{name}.toml"
@@ -133,7 +139,8 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path):
     out = tmp_path / "out"
     cmd = [sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(out), "--workers", "1",
            "--no-progress", "--json"]
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True,
+                            preexec_fn=default_sigint)
     cases = out / "t" / "cases"
     deadline = time.time() + 600      # ends as soon as two cases are done; a loaded machine may need minutes
     while time.time() < deadline and len(done_cases(cases)) < 2:
@@ -158,7 +165,8 @@ def _start_slow_sweep(tmp_path, n: int = 6):
                                  f'"operating.speed_rpm" = [{speeds}]\n')
     out = tmp_path / "out"
     cmd = [sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(out), "--workers", "1", "--json"]
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=default_sigint)
     cases = out / "t" / "cases"
     deadline = time.time() + 600      # ends as soon as one case is done; a loaded machine may need minutes
     while time.time() < deadline and len(done_cases(cases)) < 1:
