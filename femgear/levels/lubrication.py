@@ -83,7 +83,7 @@ class Lubrication:
     ambient_temperature: float
     """bulk temperature of the films by default [K]"""
     friction: bool = True
-    """False for a dry contact: no friction and no contact heating to report"""
+    """False for the ``none`` level: μ = 0 and no contact heating to report"""
     uniform: float | None = None
     """μ of every contact where the level has one number (none, constant); None where μ varies [-]"""
 
@@ -226,7 +226,7 @@ def _uniform(mu0: float) -> Solver:
     return constant
 
 
-@REGISTRY.register("none", "dry contact: no friction, no flash temperature")
+@REGISTRY.register("none", "no friction (μ = 0) and no contact heating; the film of the formulas")
 def _none(case: Case, repeated: bool = False) -> Lubrication:
     return _product(case, "none", _uniform(0.0), _formula_film(case), friction=False, uniform=0.0)
 
@@ -237,8 +237,8 @@ def _constant(case: Case, repeated: bool = False) -> Lubrication:
     return _product(case, "constant", _uniform(mu0), _formula_film(case), uniform=mu0)
 
 
-@REGISTRY.register("formula", "an empirical friction formula (friction.model) with the film formulas of "
-                              "Dowson-Higginson/Hamrock-Dowson")
+@REGISTRY.register("formula", "thermal Eyring traction of the Hertzian film (Dowson-Higginson), with the "
+                              "mixed-lubrication split on rough flanks")
 def _formula(case: Case, repeated: bool = False) -> Lubrication:
     from femgear.physics.lubrication.map import hertz_level_solver
 
