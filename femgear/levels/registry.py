@@ -24,7 +24,7 @@ class Level:
 
     name: str
     summary: str                                   #: one line: what the level computes
-    factory: Callable[..., Any] | None = None      #: ``factory(case, **options) -> product``; None: a name only
+    factory: Callable[..., Any]                    #: ``factory(case, **options) -> product``
 
 
 class Registry(Mapping[str, Level]):
@@ -44,12 +44,6 @@ class Registry(Mapping[str, Level]):
             self._levels[name] = Level(name, summary, factory)
             return factory
         return decorate
-
-    def add(self, name: str, summary: str) -> None:
-        """Register a level that is a name only (dispatched by its product's consumer)."""
-        if name in self._levels:
-            raise ValueError(f"{self.submodel}: level {name!r} registered twice")
-        self._levels[name] = Level(name, summary)
 
     def __getitem__(self, name: str) -> Level:
         try:
@@ -77,7 +71,4 @@ class Registry(Mapping[str, Level]):
 
     def build(self, name: str, case: Any, **options: Any) -> Any:
         """The product of level ``name`` for ``case``."""
-        level = self[name]
-        if level.factory is None:
-            raise TypeError(f"{self.submodel}: level {name!r} has no factory")
-        return level.factory(case, **options)
+        return self[name].factory(case, **options)

@@ -99,7 +99,7 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
     model = build_model(case, stiffness=Source, friction=0.0)
     u = path_positions(baseline_pair, 41)
     setup = SimpleNamespace(kin=SimpleNamespace(u=u), pair=baseline_pair, case=SimpleNamespace(stagger=0.0),
-                            n_phase=64, ltca=unworn, model=model)
+                            n_phase=64, ltca=unworn, model=model, deviated={})
     wear = np.array([np.full(u.size, 1e-6), np.zeros(u.size)])
     zeta = np.array([np.zeros(u.size), np.full(u.size, 0.4e-6)])
     state = SimpleNamespace(wear=wear, thermal_deviation=zeta, wear_face=None, thermal_face=None)

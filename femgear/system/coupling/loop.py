@@ -108,6 +108,9 @@ class CouplingSetup:
     #: is then integrated face-resolved per member and helix (:mod:`femgear.physics.wear.face`) and the deviated
     #: cycle of each pass runs on that (ρ, ζ) field; None: the face-uniform path wear
     face: FaceReference | None = None
+    #: ``ltca``: the latest deviated cycle, kept for the next pass (:func:`_deviated_model`): the unworn cycle it
+    #: ran from, its deviation inputs and (worn, unworn)
+    deviated: dict = field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self):
         if self.wear_anchor not in ("unworn", "pass"):
@@ -332,10 +335,6 @@ def _wear(setup: CouplingSetup, force: np.ndarray,
     return np.array([state.h1, state.h2]), None
 
 
-#: the latest deviated LTCA cycle: (the unworn cycle it ran from, its deviation inputs, (worn, unworn))
-_DEVIATED: dict = {}
-
-
 def _agree(a: tuple, b: tuple) -> bool:
     """The deviation inputs (wear, ζ_T, face fields) agree to 1e-12 of their largest value: the coupling's
     relaxed update old + (new − old) may move an unchanged field by an ulp, which no LTCA cycle can see."""
@@ -359,7 +358,7 @@ def _deviated_model(setup: CouplingSetup, state: CouplingState):
         return setup.model, None, setup.ltca
     face = state.wear_face
     inputs = (wear, zeta, face, state.thermal_face)
-    last = _DEVIATED.get("last")
+    last = setup.deviated.get("last")
     if last is not None and last[0] is setup.ltca and _agree(last[1], inputs):
         worn, unworn = last[2]          # the pass before ran the LTCA on this very deviation (to 1e-12)
     else:
@@ -368,7 +367,7 @@ def _deviated_model(setup: CouplingSetup, state: CouplingState):
         unworn = setup.ltca
         if face is not None:
             unworn, worn = _worn_orders(setup.ltca, worn, extra)
-        _DEVIATED["last"] = (setup.ltca, tuple(None if a is None else np.array(a) for a in inputs), (worn, unworn))
+        setup.deviated["last"] = (setup.ltca, tuple(None if a is None else np.array(a) for a in inputs), (worn, unworn))
     coast_only = MeshDeviation(drive=np.zeros_like(deviation.coast), coast=deviation.coast)
     return with_deviated_tooth_contact(setup.model, unworn, worn), coast_only, worn
 
