@@ -12,8 +12,9 @@ With dynamics, everything goes through the coupling loop of :mod:`femgear.system
 ``coupling = "one-way"`` stops after the first dynamic pass, ``"bidirectional"``
 iterates to convergence.
 
-:func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult`;
-:func:`run_scene` binds a scene, runs it and writes the files (:mod:`femgear.edge.io.run`).
+:func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult`, every field the
+writers show included (:mod:`femgear.stages`); the edge writes it (:func:`femgear.edge.io.run.write_run`,
+:func:`femgear.edge.io.run.run_scene`).
 """
 
 from __future__ import annotations
@@ -21,18 +22,18 @@ from __future__ import annotations
 import logging
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
-from femgear.case import Case, build_case
+from femgear.case import Case
 from femgear.physics.contact.path import ContactPath, contact_along_path
 from femgear.physics.lubrication.films import level_film
 from femgear.physics.lubrication.levels import friction_along_path
 from femgear.physics.stiffness.tvms import MeshStiffness, mesh_stiffness_from_scene
 from femgear.results import RunResult, Tribology
+from femgear.stages import derived_fields
 from femgear.system.coupling.loop import (
     CouplingSetup,
     CouplingState,
@@ -54,8 +55,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     if case.levels.dynamics == "none":
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint)
         tribology = replace(tribology, film=level_film(case, tribology.load_per_length))
-        return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0, transmission_error=te,
-                         rating=case_rating(case, contact, tribology))
+        return derived_fields(RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0,
+                                        transmission_error=te, rating=case_rating(case, contact, tribology)))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=case.levels.coupling == "one-way", progress=progress)
     st = coupled.state
@@ -70,8 +71,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if levels.wear != "none" else None, st.thermal_face),
         film=level_film(case, st.load_per_length, solver=setup.lubrication))
-    return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
-                     transmission_error=te, rating=case_rating(case, contact, tribology))
+    return derived_fields(RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
+                                    transmission_error=te, rating=case_rating(case, contact, tribology)))
 
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
@@ -156,24 +157,4 @@ def face_fields(case: Case, units: ThermalUnits | None, rise: float, grid: np.nd
     return {"face_grid": grid, "wear_face": wear_face, "thermal_face": thermal_face}
 
 
-@dataclass(frozen=True)
-class WrittenRun:
-    """A run and the files written from it; ``summary`` is the JSON summary as written."""
-
-    result: RunResult
-    summary: dict[str, Any]
-    files: dict[str, Path] = field(default_factory=dict)
-
-
-def run_scene(scene, out_dir: str | Path, plots: bool = True,
-              progress: Callable[[CouplingState], None] | None = None) -> WrittenRun:
-    """Bind ``scene``, run it and write ``results.json`` (and figures) into ``out_dir``."""
-    from femgear.edge.io.run import write_run
-
-    out_dir = Path(out_dir)
-    result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / "wear_checkpoint.npz")
-    summary, files = write_run(result, out_dir, plots)
-    return WrittenRun(result=result, summary=summary, files=files)
-
-
-__all__ = ["MeshStiffness", "RunResult", "WrittenRun", "run_case", "run_scene", "static_tribology"]
+__all__ = ["MeshStiffness", "RunResult", "run_case", "static_tribology"]

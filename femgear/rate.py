@@ -11,15 +11,27 @@ from __future__ import annotations
 
 import logging
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from femgear.physics.contact.path import ContactPath, pinion_speed, pinion_torque
 from femgear.physics.geometry import GearPair
-from femgear.physics.lubrication.flash import thermal_effusivity
+from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
+from femgear.physics.rating import (
+    LoadFactors,
+    MaterialLimits,
+    MeshPowerLoss,
+    PittingRating,
+    contact_stress,
+    mesh_power_loss,
+    pitting_rating,
+)
 from femgear.physics.rating.bending import BendingInputs
 from femgear.physics.rating.scuffing import OIL_FACTOR, ScuffingInputs
 from femgear.physics.rating.suite import OwnFigures, PairRating, rate_pair
+from femgear.physics.stiffness.iso6336 import iso6336_stiffness
+from femgear.results import ContactFigures
 
 log = logging.getLogger("femgear.physics.rating")
 
@@ -35,6 +47,96 @@ def _value(r, key: str, used: list[str]):
         used.append(f"rating.{key}={DEFAULTS[key]}")
         return DEFAULTS[key]
     return v
+
+
+def scene_pitting(scene, pair: GearPair) -> PittingRating:
+    """ISO 6336-2 method B rating of a scene's pair at its operating point and ``[rating]`` table."""
+    r = scene.rating
+    factors = LoadFactors(K_A=r.application_factor, K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor,
+                          K_Halpha=r.transverse_load_factor)
+    stress = contact_stress(pair, pinion_torque(scene), scene.material.youngs_modulus, scene.material.poisson_ratio,
+                            factors)
+    limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
+                            nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
+                            Z_W=r.work_hardening_factor, Z_X=r.size_factor)
+    return pitting_rating(pair, stress, pinion_speed(scene), limits)
+
+
+def contact_figures(case, contact: ContactPath, mu: np.ndarray | None, mu_u: np.ndarray, level: str,
+                    rating: PairRating | None = None) -> ContactFigures:
+    """ISO 6336-2 pitting (``rating.pitting`` when given), ISO 6336-1 stiffness, Blok's flash temperature and the
+    mesh power loss at the contact pass's line load, with μ(``mu_u``) = ``mu`` of the lubrication ``level`` (the
+    run's own; None: dry, μ = 0), interpolated onto the contact pass's positions."""
+    scene, pair = case.scene, case.pair
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    mu_at = _friction_at(mu, mu_u)
+    m = scene.material
+    B = thermal_effusivity(m.conductivity, m.density, m.specific_heat)
+    theta = np.asarray(blok_flash_temperature(mu_at(k.u), w, k.vs, contact.hertz_half_width, k.v1, k.v2, B, B), float)
+    F_t = case.operating.pinion_torque / pair.r1
+    line_load = F_t * scene.rating.application_factor / (pair.b * pair.n_helices)
+    iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=m.youngs_modulus)
+    return ContactFigures(pitting=scene_pitting(scene, pair) if rating is None else rating.pitting,
+                          iso_stiffness=iso, iso_line_load=line_load, friction_level=level,
+                          flash_position=np.asarray(k.s, float), flash_temperature=theta,
+                          power_loss=power_loss(case, contact, mu_at))
+
+
+def _friction_at(mu: np.ndarray | None, mu_u: np.ndarray):
+    """μ(u) by linear interpolation of ``mu`` given at ``mu_u`` (None: 0)."""
+    if mu is None:
+        return lambda u: np.zeros(np.shape(u))
+    mu, mu_u = np.asarray(mu, float), np.asarray(mu_u, float)
+    return lambda u: np.interp(u, mu_u, mu)
+
+
+def power_loss(case, contact: ContactPath, mu_at) -> MeshPowerLoss:
+    """Mesh power loss on the positions of ``contact`` with μ(u) = ``mu_at(u)`` (a spur pair's contact pass is
+    redone on a grid through the inner points of single contact B and D, where the load jumps, for an exact path
+    integral)."""
+    from femgear.physics.contact.path import contact_along_path, zone_grid
+
+    pair, op = case.pair, case.operating
+    if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
+        contact = contact_along_path(case.scene, pair=pair, u=zone_grid(pair, contact.kin.u.size))
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    return mesh_power_loss(pair, k.u, mu_at(k.u), w, k.vs, op.pinion_torque, op.pinion_speed)
+
+
+@dataclass(frozen=True)
+class SceneInfo:
+    """What ``femgear info`` shows of a scene at its static load (:func:`scene_info`)."""
+
+    case: object
+    """the bound :class:`femgear.case.Case` [-]"""
+    contact: ContactPath
+    """the quasi-static contact pass on a grid through the zone boundaries (spur: B and D) [-]"""
+    rating: PairRating | None
+    """the four ISO ratings (None when an input is outside what the standards compute, logged) [-]"""
+    figures: ContactFigures
+    """pitting, ISO stiffness, flash temperature and power loss with μ of the scene's level at the static load [-]"""
+
+
+def scene_info(scene) -> SceneInfo:
+    """The figures of ``femgear info``: the contact pass, the ratings, and μ of the scene's lubrication level at the
+    contact pass's static line load and the oil temperature (the static run's μ) for the flash temperature and the
+    power loss."""
+    from femgear.case import build_case
+    from femgear.physics.contact.path import contact_along_path, zone_grid
+    from femgear.physics.lubrication.levels import lubrication_solver
+
+    case = build_case(scene)
+    pair = case.pair
+    contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
+    rating = rate_case(scene, pair, contact)
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    mu, _ = lubrication_solver(case)(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
+                                     T=np.full(k.u.shape, case.operating.ambient_temperature))
+    figures = contact_figures(case, contact, np.asarray(mu, float), k.u, case.levels.lubrication, rating)
+    return SceneInfo(case=case, contact=contact, rating=rating, figures=figures)
 
 
 def viscosity_law(scene):
@@ -91,8 +193,6 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     CLI's one-line-per-problem contract (``tests/cli/test_bad_input.py``)."""
     from dataclasses import replace
 
-    from femgear.summary import scene_rating
-
     r, used = scene.rating, []
     sigma_Flim = _value(r, "bending_stress_limit", used)
     root_rz = _value(r, "root_roughness_rz", used)
@@ -122,7 +222,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
                            Ra=Ra, X_L=OIL_FACTOR[oil_type], K=K, X_S=1.2 if r.lubrication_method == "spray" else 1.0,
                            X_W=r.structural_factor)
     own = own_figures(scene, pair, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
-    rating = rate_pair(pair, scene_rating(scene, pair), pinion_torque(scene), pinion_speed(scene), bending, scuff,
+    rating = rate_pair(pair, scene_pitting(scene, pair), pinion_torque(scene), pinion_speed(scene), bending, scuff,
                        float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
     for flag in rating.flags:
         log.info("rating: %s; the factor is flagged", flag)

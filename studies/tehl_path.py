@@ -32,7 +32,8 @@ ROOT = Path(__file__).resolve().parents[1]
 def main() -> dict:
     from femgear.physics.contact.path import contact_along_path
     from femgear.physics.lubrication.path import friction_along_path
-    from femgear.physics.tehl.path import tehl_along_path, write_thermal_vtk
+    from femgear.edge.io.fields import write_tehl_vtu
+    from femgear.physics.tehl.path import tehl_along_path
     from femgear.scene import load_scene
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -69,7 +70,7 @@ def main() -> dict:
           f"{summary['max_surface_temperature_rise']:.1f} K (paper ≈ 35 K); {path.seconds:.1f} s of TEHL solves")
     for tok in filter(None, args.vtk.split(",")):
         i = i_pitch if tok == "pitch" else int(tok) % s.size
-        f = write_thermal_vtk(path.results[i], out / f"thermal_{i:03d}.vtr")
+        f = write_tehl_vtu(out / f"thermal_{i:03d}.vtu", path.results[i])
         print("VTK", f)
     (out / "tehl_path.json").write_text(json.dumps({
         "summary": summary, "s": s.tolist(), "srr": path.srr.tolist(), "hc": path.hc.tolist(),

@@ -87,15 +87,17 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "tooth_thermal.png") -> Pa
 
 
 if __name__ == "__main__":
-    from femgear.physics.body.vtk import write_vtu
+    from femgear.edge.io.fields import write_body_vtu
+    from femgear.physics.body.fields import section_fields
 
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     scene = setup(*args[:1])
     res = run(scene, coarse="--coarse" in sys.argv)
     png = plot(res)
     mat = scene.material
-    vtu = write_vtu(res["last_pinion"], ROOT / "out" / "tooth_thermal_pinion.vtu", mat.youngs_modulus,
-                    mat.poisson_ratio, mat.thermal_expansion)
+    vtu = write_body_vtu(ROOT / "out" / "tooth_thermal_pinion.vtu",
+                         section_fields(res["last_pinion"], 1, mat.youngs_modulus, mat.poisson_ratio,
+                                        mat.thermal_expansion))
     pair, u = res["pair"], res["u"]
     ip = int(np.argmin(np.abs(u - pair.u_pitch)))
     print(f"{'member':>7} {'ΔT_f K':>7} {'analytic µm':>12} {'FE µm':>8} {'FE/an−1':>8} {'FE s':>6}")

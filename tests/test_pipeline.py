@@ -4,7 +4,7 @@ import pytest
 
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
-from femgear.pipeline import run_scene
+from femgear.edge.io.run import run_scene
 from femgear.scene import load_scene
 
 

@@ -10,7 +10,7 @@ import pytest
 
 from femgear.edge.cli.report import key_figures
 from femgear.edge.plot.coupled import plot_convergence, plot_coupled_path
-from femgear.system.dynamics.plot import _smooth_orbit, plot_mesh_force, plot_phase_planes, plot_time_histories
+from femgear.edge.plot.dynamics import _smooth_orbit, plot_mesh_force, plot_phase_planes, plot_time_histories
 from femgear.system.dynamics.response import Response
 
 

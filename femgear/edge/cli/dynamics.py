@@ -131,7 +131,7 @@ def _sweep(case, args, out: Path) -> int:
     modal = modal_analysis(build_model(case, **kw))
     files = {}
     if not args.no_plots:
-        from femgear.system.dynamics.plot import plot_sweep
+        from femgear.edge.plot.dynamics import plot_sweep
 
         files["sweep"] = plot_sweep(sw, out / "dynamics_sweep.png", modal)
     if args.json:
@@ -159,7 +159,7 @@ def _kahraman_singh(args, out: Path) -> int:
     up, down = kahraman_singh_sweep(w, direction="up"), kahraman_singh_sweep(w, direction="down")
     files = {}
     if not args.no_plots:
-        from femgear.system.dynamics.plot import plot_branches
+        from femgear.edge.plot.dynamics import plot_branches
 
         files["branches"] = plot_branches(up, down, out / "kahraman_singh.png")
     a_down, loss_down = down.amplitude[::-1], down.contact_loss[::-1]

@@ -16,15 +16,11 @@ def register(sub) -> None:
 
 
 def _info(args: argparse.Namespace) -> int:
-    from femgear.physics.contact.path import contact_along_path, zone_grid
-    from femgear.physics.geometry import GearPair
-    from femgear.rate import rate_case
+    from femgear.rate import scene_info
     from femgear.summary import scene_summary
 
-    scene = load_scene_arg(args)
-    pair = GearPair.from_scene(scene)
-    contact = contact_along_path(scene, pair=pair, u=zone_grid(pair, scene.numerics.path_points))
-    summary = scene_summary(scene, pair, contact, ratings=rate_case(scene, pair, contact))
+    info = scene_info(load_scene_arg(args))
+    summary = scene_summary(info.case, info.contact, info.figures, ratings=info.rating)
     if args.json:
         emit_json(summary)
     else:

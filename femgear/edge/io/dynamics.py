@@ -54,7 +54,7 @@ def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True) -> 
                          delta=res.delta, mesh_force=res.mesh_force, bearing_acceleration=res.bearing_acceleration),
     }
     if plots:
-        from femgear.system.dynamics import plot
+        from femgear.edge.plot import dynamics as plot
 
         files["time_histories"] = plot.plot_time_histories(res, folder / "dynamics_time.png")
         files["mesh_force"] = plot.plot_mesh_force(res, folder / "dynamics_mesh_force.png")

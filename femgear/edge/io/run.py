@@ -30,6 +30,8 @@ Layout (the contract; keys are added, never renamed without a README note):
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -40,8 +42,8 @@ from femgear.results import RunResult, Tribology
 from femgear.summary import scene_summary
 
 
-def _friction_summary(mu: np.ndarray, dT: np.ndarray, s: np.ndarray) -> dict[str, float]:
-    return {"mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)), "mu_max": float(np.max(mu)),
+def _friction_summary(mu: np.ndarray, dT: np.ndarray, s: np.ndarray, level: str) -> dict[str, Any]:
+    return {"level": level, "mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)), "mu_max": float(np.max(mu)),
             "mu_mean": float(np.mean(mu)), "max_temperature_rise": float(np.max(dT))}
 
 
@@ -50,10 +52,11 @@ def _thermal_summary(rise: float, zeta: np.ndarray, s: np.ndarray) -> dict[str, 
             "deviation_pitch_gear": float(np.interp(0.0, s, zeta[1])), "max_deviation": float(np.max(np.abs(zeta)))}
 
 
-def tribology_summary(t: Tribology, s: np.ndarray, static: bool) -> dict[str, Any]:
+def tribology_summary(t: Tribology, s: np.ndarray, static: bool, level: str) -> dict[str, Any]:
+    """``friction`` (μ of the lubrication ``level`` along the path, labelled with it), ``thermal``, ``wear``."""
     out: dict[str, Any] = {}
     if t.friction_coefficient is not None:
-        out["friction"] = _friction_summary(t.friction_coefficient, t.temperature_rise, s)
+        out["friction"] = _friction_summary(t.friction_coefficient, t.temperature_rise, s, level)
     if t.thermal_deviation is not None:
         out["thermal"] = _thermal_summary(t.flank_temperature_rise, t.thermal_deviation, s)
     if t.wear is not None:
@@ -90,7 +93,7 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
 def run_summary(result: RunResult) -> dict[str, Any]:
     """The ``summary`` object of ``results.json`` (without ``outputs``)."""
     case, ms = result.case, result.stiffness
-    summary = scene_summary(case.scene, case.pair, result.contact, ratings=result.rating)
+    summary = scene_summary(case, result.contact, result.figures, ratings=result.rating)
     summary["physics"] = case.levels.model_dump()
     summary["stiffness"] = {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()}
     static = result.coupled is None
@@ -106,7 +109,7 @@ def run_summary(result: RunResult) -> dict[str, Any]:
                                "iterations": co.state.iteration, "seconds": co.seconds,
                                "history": {"iteration": h.iteration, "mesh_force_change": h.mesh_force_change,
                                            "mu_change": h.mu_change, "seconds": h.seconds}}
-    summary.update(tribology_summary(result.tribology, case.path.s, static))
+    summary.update(tribology_summary(result.tribology, case.path.s, static, case.levels.lubrication))
     if result.transmission_error is not None:
         summary["transmission_error"] = _te_summary(result)
     if result.tribology.film is not None:
@@ -133,8 +136,12 @@ def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
             "pressure_max": float(np.max(film.pressure_max))}
 
 
-def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tuple[dict[str, Any], dict[str, Path]]:
-    """Write ``results.json`` (+ dynamics files and figures); returns (summary, files)."""
+def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: bool = True
+              ) -> tuple[dict[str, Any], dict[str, Path]]:
+    """Write every file of a run into ``out_dir``: with dynamics ``dynamics.json``/``.npz``, the PNG figures
+    (``plots``, :mod:`femgear.edge.plot`), the ParaView set (``vtk``, :mod:`femgear.edge.io.paraview_run`), and
+    last ``results.json``, whose ``summary.outputs`` lists them all (a collection's ``.vtu`` files under their
+    relative path); returns (summary, files)."""
     out_dir = Path(out_dir)
     files: dict[str, Path] = {}
     if result.coupled is not None:
@@ -143,7 +150,17 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tup
         dyn = write_dynamics(result.coupled.state.dynamics, out_dir, plots)
         files.update({f"dynamics_{k}": v for k, v in dyn.items()})
     if plots:
+        from femgear.edge.plot.coupled import run_figures
+
         files.update(_figures(result, out_dir))
+        files.update(run_figures(result, out_dir))
+    if vtk:
+        from femgear.edge.io.paraview_run import write_run_paraview
+
+        files.update(write_run_paraview(result, out_dir))
+    checkpoint = out_dir / WEAR_CHECKPOINT
+    if checkpoint.exists():
+        files["wear_checkpoint"] = checkpoint
     summary = run_summary(result)
     files["results"] = out_dir / "results.json"
     summary["outputs"] = {k: str(v) for k, v in files.items()}
@@ -178,3 +195,32 @@ def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
         files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
                                                     out_dir / "rating_path.png", title=f"{name}: ISO ratings")
     return files
+
+
+#: the wear checkpoint of a static run with ``wear.cycles`` (resumed by a rerun into the same folder)
+WEAR_CHECKPOINT = "wear_checkpoint.npz"
+
+
+@dataclass(frozen=True)
+class WrittenRun:
+    """A run and the files written from it; ``summary`` is the JSON summary as written."""
+
+    result: RunResult
+    """the run's typed result [-]"""
+    summary: dict[str, Any]
+    """the ``summary`` object of ``results.json`` as written [-]"""
+    files: dict[str, Path] = field(default_factory=dict)
+    """every file written, by key (``summary.outputs``) [-]"""
+
+
+def run_scene(scene, out_dir: str | Path, plots: bool = True, vtk: bool = False,
+              progress: Callable[[Any], None] | None = None) -> WrittenRun:
+    """Bind ``scene``, run it (:func:`femgear.pipeline.run_case`) and write its files into ``out_dir``
+    (:func:`write_run`; the wear checkpoint of a static run goes there too)."""
+    from femgear.case import build_case
+    from femgear.pipeline import run_case
+
+    out_dir = Path(out_dir)
+    result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / WEAR_CHECKPOINT)
+    summary, files = write_run(result, out_dir, plots, vtk)
+    return WrittenRun(result=result, summary=summary, files=files)

@@ -26,6 +26,5 @@ transient    transient Reynolds (squeeze term, BDF2) for roughness moving throug
 assemble     EHLResult from solved fields (shared by the Newton and multigrid drivers).
 results      frozen EHLResult (with error_estimate, tol, flags) and centre-line quantities.
 accuracy     Richardson error estimates from the nested levels, flags, inlet adequacy.
-output       VTK (pyvista) and centre-line PNG (matplotlib), imported lazily.
 dimensional  SI entry for point and line contacts.
 """

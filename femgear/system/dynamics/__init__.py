@@ -24,7 +24,7 @@
 - ``sdof``       Kahraman–Singh single-DOF backlash oscillator and frequency sweeps.
 - ``run``        one dynamic run of a model (integration → response → modes), pure; the default
                  step plan (docs/dynamics_step.md).
-- ``plot``       PNG plots (matplotlib imported lazily); files: :mod:`femgear.edge.io.dynamics`.
+                 Plots: :mod:`femgear.edge.plot.dynamics`; files: :mod:`femgear.edge.io.dynamics`.
 """
 
 from femgear.system.dynamics.build import build_model, with_deviation, with_friction

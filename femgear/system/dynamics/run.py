@@ -4,7 +4,7 @@
 coupling loop replaces friction and flank deviations with
 :func:`femgear.system.dynamics.build.with_friction` / ``with_deviation`` and re-runs) and
 returns a frozen :class:`DynamicsRun`.  Files are written at the edge, by
-:mod:`femgear.edge.io.dynamics` and :mod:`femgear.system.dynamics.plot`.
+:mod:`femgear.edge.io.dynamics` and :mod:`femgear.edge.plot.dynamics`.
 """
 
 from __future__ import annotations
