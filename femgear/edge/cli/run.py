@@ -41,7 +41,11 @@ def _run(args: argparse.Namespace) -> int:
     if args.json:
         emit_json(written.summary)
     else:
+        members = [name for name in written.files if "/" in name]     # the .vtu files of a .pvd collection
         for name, path in written.files.items():
-            print(f"{name}: {path}")
+            if "/" not in name:
+                print(f"{name}: {path}")
+        if members:
+            print(f"(and the {len(members)} .vtu files of the .pvd collections, listed in results.json)")
         print_key_figures(key_figures(written.summary, seconds), title=f"{scene.meta.name}: key figures")
     return 0

@@ -13,7 +13,11 @@ from femgear.system.dynamics.run import DynamicsRun
 
 
 def dynamics_summary(run: DynamicsRun) -> dict[str, Any]:
-    """The JSON summary of a run: settings, amplitudes (half peak-to-peak, SI), modes, timings."""
+    """The JSON summary of a run: settings, amplitudes (half peak-to-peak, SI), modes, timings.
+
+    ``friction_factor`` is the factor on the model's friction tables: the constant μ of a constant friction, or 1
+    where μ(u) of the lubrication level is folded into the tables (that μ is ``summary.friction`` of
+    ``results.json``, labelled with its level); it is not a second friction coefficient."""
     m, sim, modal = run.model, run.simulation, run.modal
     return {
         "level": m.level,
@@ -24,7 +28,7 @@ def dynamics_summary(run: DynamicsRun) -> dict[str, Any]:
         "mesh_frequency": m.mesh_frequency,
         "stiffness": m.stiffness.label,
         "mean_mesh_stiffness": list(m.stiffness.mean),
-        "friction_coefficient": m.mu,
+        "friction_factor": m.mu,
         "rayleigh": list(m.rayleigh),
         "mesh_damping": m.mesh_damping.tolist(),
         "natural_frequencies_hz": list(m.flexible_modes_hz),
