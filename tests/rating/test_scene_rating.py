@@ -1,16 +1,17 @@
-"""The scene adapters: ``[rating]`` table → ISO 6336-2 rating; power loss of the lubrication level; ``femgear info``."""
+"""The driver's rating figures: ``[rating]`` table → ISO 6336-2 rating; power loss of the run's own μ; ``femgear info``."""
 
 import json
 import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from femgear.physics.contact.path import contact_along_path
 from femgear.physics.geometry import GearPair
 from femgear.scene import load_scene
-from femgear.summary import scene_power_loss, scene_rating
+from femgear.rate import power_loss, scene_pitting
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 
@@ -18,19 +19,20 @@ FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 def test_rating_inputs_reach_the_factors():
     scene = load_scene(FZG, ["rating.application_factor=1.25", "rating.life_hours=100"])
     pair = GearPair.from_scene(scene)
-    base = scene_rating(load_scene(FZG), pair)
-    r = scene_rating(scene, pair)
+    base = scene_pitting(load_scene(FZG), pair)
+    r = scene_pitting(scene, pair)
     assert r.stress.sigma_H[0] == pytest.approx(base.stress.sigma_H[0] * 1.25**0.5, rel=1e-12)
     assert r.N_L[0] == pytest.approx(60 * 2175 * 100) and r.Z_NT[0] > 1
     assert base.Z_L < 1 and base.Z_R != 1   # ν40 = 95 mm²/s and R_z given in the scene
 
 
 def test_power_loss_constant_mu_is_ohlendorf_on_any_grid():
-    """Constant μ: the summary's loss is μ P_in H_V whatever grid the contact pass used (the B, D jumps are added)."""
+    """Constant μ: the loss is μ P_in H_V whatever grid the contact pass used (the B, D jumps are added)."""
+    from femgear.case import build_case
+
     scene = load_scene(FZG, ["physics.lubrication=constant", "friction.coefficient=0.05"])
-    pair = GearPair.from_scene(scene)
-    loss, level = scene_power_loss(scene, pair, contact_along_path(scene, pair=pair))
-    assert level == "constant"
+    case = build_case(scene)
+    loss = power_loss(case, contact_along_path(scene, pair=case.pair), lambda u: np.full(np.shape(u), 0.05))
     assert loss.equivalent_mu == pytest.approx(0.05, rel=1e-6)
     assert loss.efficiency == pytest.approx(1 - 0.05 * loss.ohlendorf_HV, rel=1e-9)
 

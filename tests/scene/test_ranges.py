@@ -112,10 +112,11 @@ def test_nominal_contact_stress_is_isos_sigma_h0_without_z_eps_z_beta():
     """The torque check's σ_H0 against femgear's ISO 6336-2 σ_H0 on the baseline (x = 0: same Z_H),
     divided by Z_ε Z_β that the check leaves out."""
     from femgear.physics.geometry import GearPair
-    from femgear.summary import rating_summary, scene_rating
+    from femgear.rate import scene_pitting
+    from femgear.summary import rating_summary
 
     scene = load_scene(BASE)
-    rating = rating_summary(scene_rating(scene, GearPair.from_scene(scene)))
+    rating = rating_summary(scene_pitting(scene, GearPair.from_scene(scene)))
     d1 = 31 * 3e-3 / math.cos(math.radians(30))
     nominal = _nominal_contact_stress(scene, 200.0, d1)
     assert nominal == pytest.approx(rating["sigma_H0"] / (rating["Z_eps"] * rating["Z_beta"]), rel=1e-6)

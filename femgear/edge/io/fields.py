@@ -4,13 +4,14 @@
   with ``temperature_rise`` [K], ``displacement`` [m] (3-vector, z = 0) at the vertices and ``von_mises`` [Pa]
   per triangle;
 - :func:`tehl_film_mesh`: the film temperature of one TEHL contact (:class:`femgear.physics.tehl.line.TEHLResult`)
-  on the (x/b, ζ = z/h) grid as pixels (the cells of a 2-D rectilinear grid), ``temperature`` [K] per cell,
+  on the (x/b, ζ = z/h) grid as quads (the pixels of the 2-D rectilinear grid written before, in counter-clockwise
+  node order: meshio has no pixel cell), ``temperature`` [K] per cell,
   ``z`` [m] and ``pressure`` [Pa] at the points, ``surface_temperature_1/2`` [K] as field data;
 - :func:`ehl_mesh`: an EHL solution (:class:`femgear.physics.ehl.results.EHLResult`) on its node grid (quads of a
   point contact, lines of a line contact) with ``P``, ``H`` (Hertzian units) and ``H_moes`` at the points.
 
-The grids are those the earlier pyvista writers wrote as ``.vtr``/``.vts`` (same arrays, names, cell types,
-point order x fastest), now as ``.vtu``.
+The grids are those the earlier pyvista writers wrote as ``.vtr``/``.vts`` (same points in the same order, x
+fastest, same cells and arrays; the TEHL pixels as quads), now as ``.vtu``.
 """
 
 from __future__ import annotations
@@ -40,12 +41,10 @@ def write_body_vtu(path: str | Path, section) -> Path:
     return write_vtu(path, body_mesh(section))
 
 
-def _grid_cells(nx: int, ny: int, kind: str) -> np.ndarray:
-    """Cells of an (nx, ny) point grid numbered x fastest: ``quad`` (counter-clockwise) or ``pixel`` (VTK order)."""
+def _grid_quads(nx: int, ny: int) -> np.ndarray:
+    """Quads (counter-clockwise) of an (nx, ny) point grid, points and cells numbered x fastest."""
     i, j = np.meshgrid(np.arange(nx - 1), np.arange(ny - 1), indexing="ij")
     a = (i + nx * j).ravel(order="F")
-    if kind == "pixel":
-        return np.column_stack([a, a + 1, a + nx, a + nx + 1])
     return np.column_stack([a, a + 1, a + nx + 1, a + nx])
 
 
@@ -63,7 +62,7 @@ def tehl_film_mesh(result):
     points = np.column_stack([X.ravel(order="F"), Z.ravel(order="F"), np.zeros(X.size)])
     h_f = np.interp(xf, result.x, result.h)
     p_f = np.interp(xf, result.x, result.p)
-    mesh = meshio.Mesh(points, [("pixel", _grid_cells(nt + 1, nz + 1, "pixel"))],
+    mesh = meshio.Mesh(points, [("quad", _grid_quads(nt + 1, nz + 1))],
                        point_data={"z": (h_f[:, None] * zeta[None, :]).ravel(order="F"),
                                    "pressure": np.repeat(p_f[:, None], nz + 1, 1).ravel(order="F")},
                        cell_data={"temperature": [np.asarray(T, float).ravel(order="F")]})
@@ -89,7 +88,7 @@ def ehl_mesh(result):
     fac = result.Hc / result.Hc_hertz if result.Hc_hertz else 1.0
     nx = result.x.size
     if y.size > 1:
-        cells = [("quad", _grid_cells(nx, y.size, "quad"))]
+        cells = [("quad", _grid_quads(nx, y.size))]
     else:
         cells = [("line", np.column_stack([np.arange(nx - 1), np.arange(1, nx)]))]
     return meshio.Mesh(points, cells, point_data={"P": P.T.ravel(order="F"), "H": H.T.ravel(order="F"),
