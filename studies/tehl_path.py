@@ -30,9 +30,9 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def main() -> dict:
+    from femgear.edge.io.fields import write_tehl_vtu
     from femgear.physics.contact.path import contact_along_path
     from femgear.physics.lubrication.path import friction_along_path
-    from femgear.edge.io.fields import write_tehl_vtu
     from femgear.physics.tehl.path import tehl_along_path
     from femgear.scene import load_scene
 

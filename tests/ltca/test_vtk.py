@@ -97,8 +97,8 @@ def test_the_main_job_writes_the_pressure_map_with_the_ltca_level(symmetric_cycl
 
     import meshio
 
-    from femgear.edge.io.paraview_run import write_run_paraview
     from femgear.case import build_case
+    from femgear.edge.io.paraview_run import write_run_paraview
     from femgear.pipeline import run_case
     from femgear.scene import load_scene
     from femgear.stages import ltca_maps

@@ -10,8 +10,8 @@ import pytest
 
 from femgear.physics.contact.path import contact_along_path
 from femgear.physics.geometry import GearPair
-from femgear.scene import load_scene
 from femgear.rate import power_loss, scene_pitting
+from femgear.scene import load_scene
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 

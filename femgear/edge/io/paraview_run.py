@@ -22,7 +22,7 @@ def flank_frames(result: RunResult) -> list[Frame]:
     """One surface per member (both helices) with the fields along the path."""
     import meshio
 
-    from femgear.edge.io.run import along_path
+    from femgear.edge.io.along_path import along_path
 
     case, pair = result.case, result.case.pair
     fields = along_path(result)
@@ -111,8 +111,8 @@ def face_mesh(result: RunResult):
     Point data also ``member`` (1, 2), ``helix`` (0 left, 1 right), ``u``, ``rho``, ``zeta`` [m]."""
     import meshio
 
-    from femgear.physics.ltca.maps import to_mesh
     from femgear.physics.ltca.flank_map import helix_flank_quads
+    from femgear.physics.ltca.maps import to_mesh
     from femgear.system.coupling.thermal import roll_distances
 
     t, case = result.tribology, result.case

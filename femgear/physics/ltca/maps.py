@@ -82,8 +82,8 @@ class LoadMaps:
 def load_maps(result, pair: GearPair, youngs_modulus: float, poisson_ratio: float, torque: float, worst: int,
               groove: float = 0.0, stagger: float = 0.0, n_rho: int = 40, n_z: int = 60) -> LoadMaps:
     """:class:`LoadMaps` of the cycle ``result`` (keep_lines=True); ``worst`` the phase index of ``w_worst``."""
-    from femgear.physics.ltca.te import one_phase
     from femgear.physics.ltca.flank_map import flank_pressure_map, helix_flank_quads
+    from femgear.physics.ltca.te import one_phase
 
     fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio, n_rho, n_z)
     snap = flank_pressure_map(one_phase(result, worst), pair, youngs_modulus, poisson_ratio, n_rho, n_z)
