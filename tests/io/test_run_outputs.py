@@ -78,3 +78,29 @@ def test_json_summary_of_the_cli_lists_the_same_files(baseline, tmp_path, capsys
     written = json.loads((out / "results.json").read_text())["summary"]
     assert printed["outputs"] == written["outputs"]
     assert {Path(v).name for v in printed["outputs"].values()} == {p.name for p in out.iterdir()}
+
+
+def test_the_writer_computes_nothing(tmp_path, monkeypatch):
+    """write_run only reads the RunResult: the driver's rating, contact figures (flash temperature, power loss),
+    body sections, LTCA maps and the lubrication solvers all raise while it writes every file."""
+    from femgear.case import build_case
+    from femgear.edge.io.run import write_run
+    from femgear.pipeline import run_case
+    from femgear.scene import load_scene
+
+    scene = load_scene(BASE, ['physics.preset="fast"', 'physics.dynamics="none"', 'physics.coupling="one-way"'])
+    result = run_case(build_case(scene))
+    assert result.figures is not None and result.figures.friction_level == scene.physics.lubrication
+
+    def boom(*a, **k):
+        raise AssertionError("the writer computed something")
+
+    for name in ("femgear.rate.rate_case", "femgear.rate.contact_figures", "femgear.rate.power_loss",
+                 "femgear.rate.scene_pitting", "femgear.stages.body_sections", "femgear.stages.ltca_maps",
+                 "femgear.physics.body.thermal.gear_thermo_elastic", "femgear.physics.ltca.maps.load_maps",
+                 "femgear.physics.lubrication.levels.lubrication_solver",
+                 "femgear.physics.contact.path.contact_along_path"):
+        monkeypatch.setattr(name, boom)
+    summary, files = write_run(result, tmp_path, plots=True, vtk=True)
+    assert summary["power_loss"]["mean_loss"] == result.figures.power_loss.mean_loss
+    assert {p.resolve() for p in tmp_path.rglob("*") if p.is_file()} == {p.resolve() for p in files.values()}
