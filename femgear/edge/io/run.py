@@ -3,9 +3,10 @@
 Layout (the contract; keys are added, never renamed without a README note):
 
 - ``summary``: ``scene`` (name), ``geometry``, ``contact`` (pitch point and path
-  extremes), ``rating`` (ISO 6336-2 pitting), ``safety_factors``, ``bending``, ``scuffing``,
+  extremes), ``rating`` (ISO 6336-2 pitting), ``stiffness_iso6336``, ``flash_temperature`` and ``power_loss``
+  (from ``RunResult.figures``; the last two with the ``friction_level`` of their μ, the run's own), ``safety_factors``, ``bending``, ``scuffing``,
   ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
-  and statically mean_per_helix, seconds), ``friction`` (mu_pitch/min/max/mean,
+  and statically mean_per_helix, seconds), ``friction`` (level, mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
   gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
   with ``stiffness = "ltca"`` ``transmission_error`` (:func:`femgear.edge.io.ltca.te_summary`: loaded TE
@@ -13,7 +14,8 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
   TE p-p of the last coupling pass's worn and expanded flanks),
   with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`) and
-  ``coupling`` (mode, converged, iterations, seconds, history), ``outputs`` (files);
+  ``coupling`` (mode, converged, iterations, seconds, history), ``outputs`` (every file in the folder, a
+  ``.pvd`` collection's ``.vtu`` files under their relative path; docs/outputs.md);
 - ``scene``: the validated scene;
 - ``along_path``: arrays over the ONE path grid of the case (s, radii, speeds, Hertz,
   films, and the tribology fields: load_per_length, friction_coefficient,
@@ -44,8 +46,8 @@ from femgear.summary import scene_summary
 
 
 def _friction_summary(mu: np.ndarray, dT: np.ndarray, s: np.ndarray, level: str) -> dict[str, Any]:
-    return {"level": level, "mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)), "mu_max": float(np.max(mu)),
-            "mu_mean": float(np.mean(mu)), "max_temperature_rise": float(np.max(dT))}
+    return {"level": level, "mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)),
+            "mu_max": float(np.max(mu)), "mu_mean": float(np.mean(mu)), "max_temperature_rise": float(np.max(dT))}
 
 
 def _thermal_summary(rise: float, zeta: np.ndarray, s: np.ndarray) -> dict[str, float]:
