@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.edge.plot import save_figure
+from femgear.edge.io.figures import save_figure
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness import iso6336_stiffness, mesh_stiffness_from_scene
 from femgear.scene import load_scene

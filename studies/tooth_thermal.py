@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.edge.plot import save_figure
+from femgear.edge.io.figures import save_figure
 from femgear.physics.body.thermal import analytic_radial_displacement, flank_displacement, gear_thermo_elastic
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness.pem import contact_geometry

@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.edge.plot import save_figure
+from femgear.edge.io.figures import save_figure
 from femgear.physics.body.thermal import flank_deviation, flank_displacement, solve_temperature, thermo_elastic
 from femgear.physics.body.thermal3d import thermal_units_3d
 from femgear.physics.geometry.gear import GearPair

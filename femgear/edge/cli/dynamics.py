@@ -131,9 +131,10 @@ def _sweep(case, args, out: Path) -> int:
     modal = modal_analysis(build_model(case, **kw))
     files = {}
     if not args.no_plots:
+        from femgear.edge.io.figures import save_figure
         from femgear.edge.plot.dynamics import plot_sweep
 
-        files["sweep"] = plot_sweep(sw, out / "dynamics_sweep.png", modal)
+        files["sweep"] = save_figure(plot_sweep(sw, modal), out / "dynamics_sweep.png")
     if args.json:
         from femgear.edge.cli.common import emit_json
 
@@ -159,9 +160,10 @@ def _kahraman_singh(args, out: Path) -> int:
     up, down = kahraman_singh_sweep(w, direction="up"), kahraman_singh_sweep(w, direction="down")
     files = {}
     if not args.no_plots:
+        from femgear.edge.io.figures import save_figure
         from femgear.edge.plot.dynamics import plot_branches
 
-        files["branches"] = plot_branches(up, down, out / "kahraman_singh.png")
+        files["branches"] = save_figure(plot_branches(up, down), out / "kahraman_singh.png")
     a_down, loss_down = down.amplitude[::-1], down.contact_loss[::-1]
     if args.json:
         from femgear.edge.cli.common import emit_json

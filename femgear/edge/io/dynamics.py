@@ -58,10 +58,11 @@ def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True) -> 
                          delta=res.delta, mesh_force=res.mesh_force, bearing_acceleration=res.bearing_acceleration),
     }
     if plots:
+        from femgear.edge.io.figures import save_figure
         from femgear.edge.plot import dynamics as plot
 
-        files["time_histories"] = plot.plot_time_histories(res, folder / "dynamics_time.png")
-        files["mesh_force"] = plot.plot_mesh_force(res, folder / "dynamics_mesh_force.png")
-        files["phase_planes"] = plot.plot_phase_planes(res, folder / "dynamics_phase.png")
-        files["spectra"] = plot.plot_spectra(res, folder / "dynamics_spectra.png")
+        files["time_histories"] = save_figure(plot.plot_time_histories(res), folder / "dynamics_time.png")
+        files["mesh_force"] = save_figure(plot.plot_mesh_force(res), folder / "dynamics_mesh_force.png")
+        files["phase_planes"] = save_figure(plot.plot_phase_planes(res), folder / "dynamics_phase.png")
+        files["spectra"] = save_figure(plot.plot_spectra(res), folder / "dynamics_spectra.png")
     return files

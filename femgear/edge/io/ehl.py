@@ -12,12 +12,13 @@ def write_all(result, folder: str | Path, stem: str = "ehl") -> dict[str, str]:
     """``<stem>.vtu`` (:func:`femgear.edge.io.fields.ehl_mesh`), ``<stem>_centreline.png``
     (:func:`femgear.edge.plot.ehl.plot_centreline`) and ``<stem>.json`` (``result.summary()``) into ``folder``;
     returns the paths written."""
+    from femgear.edge.io.figures import save_figure
     from femgear.edge.plot.ehl import plot_centreline
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     return {"vtk": str(write_ehl_vtu(folder / f"{stem}.vtu", result)),
-            "png": str(plot_centreline(result, folder / f"{stem}_centreline.png")),
+            "png": str(save_figure(plot_centreline(result), folder / f"{stem}_centreline.png")),
             "json": str(write_json(folder / f"{stem}.json", result.summary()))}
 
 

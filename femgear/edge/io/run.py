@@ -128,10 +128,7 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: b
         dyn = write_dynamics(result.coupled.state.dynamics, out_dir, plots)
         files.update({f"dynamics_{k}": v for k, v in dyn.items()})
     if plots:
-        from femgear.edge.plot.coupled import run_figures
-
         files.update(_figures(result, out_dir))
-        files.update(run_figures(result, out_dir))
     if vtk:
         from femgear.edge.io.paraview_run import write_run_paraview
 
@@ -159,19 +156,33 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: b
 
 
 def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
+    """``contact_path.png``, ``friction_path.png``, ``rating_path.png``, ``tribology_path.png`` (and with coupling
+    ``convergence.png``), drawn by :mod:`femgear.edge.plot`."""
+    from femgear.edge.io.figures import save_figure
+    from femgear.edge.plot.coupled import plot_convergence, plot_coupled_path
     from femgear.edge.plot.path import plot_contact_path, plot_friction_path
+    from femgear.edge.plot.rating import plot_rating_path
 
-    name, t = result.case.name, result.tribology
-    files = {"contact_path_png": plot_contact_path(result.contact, out_dir / "contact_path.png", title=name)}
+    case, t = result.case, result.tribology
+    name = case.name
+    files = {"contact_path_png": save_figure(plot_contact_path(result.contact, title=name),
+                                             out_dir / "contact_path.png")}
     if t.friction_coefficient is not None:
-        files["friction_path_png"] = plot_friction_path(
-            result.case.path.s, t.friction_coefficient, t.temperature_rise, out_dir / "friction_path.png",
-            title=f"{name}: lubrication = {result.case.levels.lubrication}")
+        files["friction_path_png"] = save_figure(plot_friction_path(
+            case.path.s, t.friction_coefficient, t.temperature_rise,
+            title=f"{name}: lubrication = {case.levels.lubrication}"), out_dir / "friction_path.png")
     if result.rating is not None:
-        from femgear.edge.plot.rating import plot_rating_path
-
-        files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
-                                                    out_dir / "rating_path.png", title=f"{name}: ISO ratings")
+        files["rating_path_png"] = save_figure(plot_rating_path(result.rating, case.pair.u_pitch,
+                                                                title=f"{name}: ISO ratings"), out_dir / "rating_path.png")
+    files["tribology_path_png"] = save_figure(plot_coupled_path(
+        case.path.s, t.load_per_length, mu=t.friction_coefficient, temperature_rise=t.temperature_rise,
+        thermal_deviation=t.thermal_deviation, wear=t.wear, wear_cycles=t.wear_cycles,
+        title=f"{name}: along the path of contact"), out_dir / "tribology_path.png")
+    if result.coupled is not None:
+        h = result.coupled.history
+        files["convergence_png"] = save_figure(plot_convergence(
+            h.iteration, h.mesh_force_change, h.mu_change, title=f"{name}: {case.levels.coupling} coupling"),
+            out_dir / "convergence.png")
     return files
 
 

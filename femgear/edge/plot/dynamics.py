@@ -1,11 +1,9 @@
 """PNG plots of dynamic responses (matplotlib is imported inside the functions only).
 
-Each function takes frozen results and a path, writes one PNG and returns the path.
+Each function takes frozen results and returns a matplotlib figure (written by :mod:`femgear.edge.io`).
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 
@@ -21,17 +19,11 @@ def _pyplot():
     return plt
 
 
-def _save(fig, path) -> Path:
-    from femgear.edge.plot import save_figure
-
-    return save_figure(fig, path)
-
-
 def _last_cycles(res: Response, cycles: float) -> np.ndarray:
     return res.t >= res.t[-1] - cycles / res.mesh_frequency
 
 
-def plot_time_histories(res: Response, path, cycles: float = 5.0) -> Path:
+def plot_time_histories(res: Response, cycles: float = 5.0):
     """Displacement and velocity of pinion and gear centres over the last ``cycles`` mesh periods.
 
     x and y each get their own panel (own scale): on one axis the smaller one hid under the other.
@@ -50,10 +42,10 @@ def plot_time_histories(res: Response, path, cycles: float = 5.0) -> Path:
             axes[row, col].grid(alpha=0.3)
         axes[0, col].set_title(f"{member} centre")
         axes[-1, col].set_xlabel("t [ms]")
-    return _save(fig, path)
+    return fig
 
 
-def plot_mesh_force(res: Response, path, cycles: float = 5.0) -> Path:
+def plot_mesh_force(res: Response, cycles: float = 5.0):
     """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference."""
     plt = _pyplot()
     sel = _last_cycles(res, cycles)
@@ -72,7 +64,7 @@ def plot_mesh_force(res: Response, path, cycles: float = 5.0) -> Path:
     ax_d.set_xlabel("t [ms]")
     for a in (ax, ax_d):
         a.grid(alpha=0.3)
-    return _save(fig, path)
+    return fig
 
 
 def _smooth_orbit(t: np.ndarray, d: np.ndarray, v: np.ndarray, upsample: int = 8) -> tuple[np.ndarray, np.ndarray]:
@@ -84,7 +76,7 @@ def _smooth_orbit(t: np.ndarray, d: np.ndarray, v: np.ndarray, upsample: int = 8
     return CubicHermiteSpline(t, d, v)(tf), CubicSpline(t, v)(tf)
 
 
-def plot_phase_planes(res: Response, path, cycles: float = 10.0) -> Path:
+def plot_phase_planes(res: Response, cycles: float = 10.0):
     """Velocity against displacement (about their means) of pinion and gear, x and y in separate panels,
     over the last ``cycles`` mesh periods, interpolated between the time steps."""
     plt = _pyplot()
@@ -102,10 +94,10 @@ def plot_phase_planes(res: Response, path, cycles: float = 10.0) -> Path:
             ax.set_xlabel(f"{ax_name} − mean [µm]")
             ax.set_ylabel(f"velocity {ax_name} − mean [mm/s]")
             ax.grid(alpha=0.3)
-    return _save(fig, path)
+    return fig
 
 
-def plot_spectra(res: Response, path, max_order: float = 32.0) -> Path:
+def plot_spectra(res: Response, max_order: float = 32.0):
     """Hanning spectra of the DTE and of the gear's y acceleration at a bearing, with mesh orders."""
     plt = _pyplot()
     dt = float(np.median(np.diff(res.t)))
@@ -119,10 +111,10 @@ def plot_spectra(res: Response, path, max_order: float = 32.0) -> Path:
         for k in range(1, int(max_order) + 1):
             ax.axvline(k, color="0.8", lw=0.6, zorder=0)
     axes[-1].set_xlabel(f"mesh order f/f_m  (f_m = {res.mesh_frequency:.1f} Hz)")
-    return _save(fig, path)
+    return fig
 
 
-def plot_sweep(sweep, path, modal=None) -> Path:
+def plot_sweep(sweep, modal=None):
     """DTE RMS against mesh frequency, with the natural frequencies (mesh energy ≥ 5 %) marked."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 4))
@@ -134,10 +126,10 @@ def plot_sweep(sweep, path, modal=None) -> Path:
                 ax.text(f, ax.get_ylim()[1] * 0.95, f" {f:.0f} Hz", color="C3", va="top", fontsize=8)
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("DTE RMS [µm]")
-    return _save(fig, path)
+    return fig
 
 
-def plot_branches(up, down, path) -> Path:
+def plot_branches(up, down):
     """Kahraman–Singh sweeps: amplitude of up- and down-sweep against Ω."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(7, 4))
@@ -146,4 +138,4 @@ def plot_branches(up, down, path) -> Path:
     ax.set_xlabel("Ω = ω/ω_n")
     ax.set_ylabel("amplitude / b")
     ax.legend()
-    return _save(fig, path)
+    return fig

@@ -2,15 +2,11 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 
-from femgear.edge.plot import save_figure
 
-
-def plot_centreline(result, path: str | Path) -> Path:
-    """PNG of P and H along Y = 0 (point contact) or along X (line contact) of an
+def plot_centreline(result):
+    """P and H along Y = 0 (point contact) or along X (line contact) of an
     :class:`femgear.physics.ehl.results.EHLResult`."""
     import matplotlib
 
@@ -32,7 +28,7 @@ def plot_centreline(result, path: str | Path) -> Path:
     ax2.set_ylim(0, 3 * max(result.Hc_hertz, 1e-12))
     ax.set_title(f"{result.kind} contact M={result.M:g} L={result.L:g}: "
                  f"Hc={result.Hc:.4g}, Hmin={result.Hmin:.4g} (Moes)")
-    return save_figure(fig, Path(path).with_suffix(".png"))
+    return fig
 
 
 __all__ = ["plot_centreline"]
