@@ -12,9 +12,8 @@ With dynamics, everything goes through the coupling loop of :mod:`femgear.system
 ``coupling = "one-way"`` stops after the first dynamic pass, ``"bidirectional"``
 iterates to convergence.
 
-:func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult`, every field the
-writers show included (:mod:`femgear.stages`); the edge writes it (:func:`femgear.edge.io.run.write_run`,
-:func:`femgear.edge.io.run.run_scene`).
+:func:`run_case` computes and returns a frozen :class:`femgear.results.RunResult` and writes
+nothing; :func:`femgear.edge.run.run_scene` binds a scene, runs it and writes the files.
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 import pytest
 
-from femgear.edge.io.run import run_scene
+from femgear.edge.run import run_scene
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness.tvms import mesh_stiffness_from_scene
 from femgear.scene import load_scene

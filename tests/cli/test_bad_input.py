@@ -130,10 +130,10 @@ def _never(*args, **kwargs):
 
 @pytest.mark.parametrize("command", [["run", BASE], ["dynamics", BASE], ["ehl", "line", "--M", "10", "--L", "10"]])
 def test_unwritable_out_is_refused_before_any_computation(command, tmp_path, capsys, monkeypatch):
-    import femgear.pipeline
+    import femgear.edge.run
     import femgear.system.dynamics
 
-    monkeypatch.setattr(femgear.pipeline, "run_case", _never)
+    monkeypatch.setattr(femgear.edge.run, "run_case", _never)
     monkeypatch.setattr(femgear.system.dynamics, "run_dynamics", _never)
     monkeypatch.setitem(sys.modules, "femgear.physics.ehl.line", None)   # the EHL solver is not even imported
     blocker = tmp_path / "file"
@@ -172,13 +172,13 @@ def test_meta_name_cannot_write_outside_out(tmp_path, capsys, monkeypatch):
 
 
 def test_solver_failure_exits_1_in_one_line(tmp_path, capsys, monkeypatch):
-    import femgear.pipeline
+    import femgear.edge.run
     from femgear.errors import ConvergenceError
 
     def diverge(*args, **kwargs):
         raise ConvergenceError("coupling", "no convergence in 30 iterations", {"mesh_force_change": [0.1, 0.2]})
 
-    monkeypatch.setattr(femgear.pipeline, "run_case", diverge)
+    monkeypatch.setattr(femgear.edge.run, "run_case", diverge)
     rc, _, err = cli(["run", BASE, "--out", str(tmp_path)], capsys)
     assert rc == 1
     assert_one_line(err, "coupling", "mesh_force_change=0.2")
@@ -187,9 +187,9 @@ def test_solver_failure_exits_1_in_one_line(tmp_path, capsys, monkeypatch):
 
 
 def test_unexpected_errors_are_one_line_too(tmp_path, capsys, monkeypatch):
-    import femgear.pipeline
+    import femgear.edge.run
 
-    monkeypatch.setattr(femgear.pipeline, "run_case", lambda *a, **k: 1 / 0)
+    monkeypatch.setattr(femgear.edge.run, "run_case", lambda *a, **k: 1 / 0)
     rc, _, err = cli(["run", BASE, "--out", str(tmp_path)], capsys)
     assert rc == 1
     assert "--debug" in assert_one_line(err, "ZeroDivisionError")

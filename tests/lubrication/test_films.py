@@ -45,7 +45,7 @@ def test_the_fe_line_film_is_close_to_moes_and_the_thermal_film_is_thinner(basel
 def test_a_run_reports_the_film_of_its_level_and_lambda(baseline_path, tmp_path):
     import json
 
-    from femgear.edge.io.run import run_scene
+    from femgear.edge.run import run_scene
 
     scene = load_scene(baseline_path, ['physics.dynamics="none"', 'physics.coupling="one-way"',
                                        'physics.lubrication="ehl-line"', "numerics.path_points=5"])

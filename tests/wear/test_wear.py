@@ -87,7 +87,7 @@ def test_bad_step_rule_is_refused(setup):
 
 
 def test_run_with_archard_wear_reports_depths(baseline_path, tmp_path):
-    from femgear.edge.io.run import run_scene
+    from femgear.edge.run import run_scene
     from femgear.scene import load_scene
 
     scene = load_scene(baseline_path, ['physics.wear="archard"', "wear.cycles=2e5", 'physics.dynamics="none"',

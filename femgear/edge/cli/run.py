@@ -1,4 +1,4 @@
-"""``femgear run SCENE``: parse, run and write a scene (:func:`femgear.edge.io.run.run_scene`), report.
+"""``femgear run SCENE``: parse, run and write a scene (:func:`femgear.edge.run.run_scene`), report.
 
 The output folder is created and checked writable before anything is computed; a
 ``meta.name`` cannot place it outside ``out/``.  Prints the files written and a table
@@ -27,7 +27,7 @@ def register(sub) -> None:
 def _run(args: argparse.Namespace) -> int:
     from femgear.edge.cli.report import CouplingProgress, key_figures, print_key_figures
     from femgear.edge.io.paths import child_path, prepare_output_dir
-    from femgear.edge.io.run import run_scene
+    from femgear.edge.run import run_scene
 
     scene = load_scene_arg(args)
     if args.out is None:

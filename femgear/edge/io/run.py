@@ -32,8 +32,6 @@ Layout (the contract; keys are added, never renamed without a README note):
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -188,28 +186,3 @@ def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
 
 #: the wear checkpoint of a static run with ``wear.cycles`` (resumed by a rerun into the same folder)
 WEAR_CHECKPOINT = "wear_checkpoint.npz"
-
-
-@dataclass(frozen=True)
-class WrittenRun:
-    """A run and the files written from it; ``summary`` is the JSON summary as written."""
-
-    result: RunResult
-    """the run's typed result [-]"""
-    summary: dict[str, Any]
-    """the ``summary`` object of ``results.json`` as written [-]"""
-    files: dict[str, Path] = field(default_factory=dict)
-    """every file written, by key (``summary.outputs``) [-]"""
-
-
-def run_scene(scene, out_dir: str | Path, plots: bool = True, vtk: bool = False,
-              progress: Callable[[Any], None] | None = None) -> WrittenRun:
-    """Bind ``scene``, run it (:func:`femgear.pipeline.run_case`) and write its files into ``out_dir``
-    (:func:`write_run`; the wear checkpoint of a static run goes there too)."""
-    from femgear.case import build_case
-    from femgear.pipeline import run_case
-
-    out_dir = Path(out_dir)
-    result = run_case(build_case(scene), progress=progress, wear_checkpoint=out_dir / WEAR_CHECKPOINT)
-    summary, files = write_run(result, out_dir, plots, vtk)
-    return WrittenRun(result=result, summary=summary, files=files)

@@ -34,7 +34,7 @@ log = logging.getLogger("femgear.edge.sweep")
 
 def run_case(base: str, overrides: tuple[str, ...], case_dir: str, plots: bool = False) -> dict[str, Any]:
     """Run one case (in a worker).  Never raises: returns a row with ``status`` and figures."""
-    from femgear.edge.io.run import run_scene
+    from femgear.edge.run import run_scene
     from femgear.scene import load_scene
 
     final = Path(case_dir)
