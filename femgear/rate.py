@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.case import Case
 from femgear.physics.contact.path import ContactPath, pinion_speed, pinion_torque
 from femgear.physics.geometry import GearPair
 from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
@@ -62,7 +63,7 @@ def scene_pitting(scene, pair: GearPair) -> PittingRating:
     return pitting_rating(pair, stress, pinion_speed(scene), limits)
 
 
-def contact_figures(case, contact: ContactPath, mu: np.ndarray | None, mu_u: np.ndarray, level: str,
+def contact_figures(case: Case, contact: ContactPath, mu: np.ndarray | None, mu_u: np.ndarray, level: str,
                     rating: PairRating | None = None) -> ContactFigures:
     """ISO 6336-2 pitting (``rating.pitting`` when given), ISO 6336-1 stiffness, Blok's flash temperature and the
     mesh power loss at the contact pass's line load, with μ(``mu_u``) = ``mu`` of the lubrication ``level`` (the
@@ -91,7 +92,7 @@ def _friction_at(mu: np.ndarray | None, mu_u: np.ndarray):
     return lambda u: np.interp(u, mu_u, mu)
 
 
-def power_loss(case, contact: ContactPath, mu_at) -> MeshPowerLoss:
+def power_loss(case: Case, contact: ContactPath, mu_at) -> MeshPowerLoss:
     """Mesh power loss on the positions of ``contact`` with μ(u) = ``mu_at(u)`` (a spur pair's contact pass is
     redone on a grid through the inner points of single contact B and D, where the load jumps, for an exact path
     integral)."""
@@ -109,7 +110,7 @@ def power_loss(case, contact: ContactPath, mu_at) -> MeshPowerLoss:
 class SceneInfo:
     """What ``femgear info`` shows of a scene at its static load (:func:`scene_info`)."""
 
-    case: object
+    case: Case
     """the bound :class:`femgear.case.Case` [-]"""
     contact: ContactPath
     """the quasi-static contact pass on a grid through the zone boundaries (spur: B and D) [-]"""
