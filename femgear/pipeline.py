@@ -37,6 +37,7 @@ from femgear.levels.lubrication import Lubrication, friction_along_path, lubrica
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.results import RunResult, Tribology
+from femgear.stages import derived_fields
 from femgear.system.coupling.loop import (
     CouplingSetup,
     CouplingState,
@@ -60,8 +61,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         lubrication = lubrication_solver(case)
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint, lubrication)
         tribology = replace(tribology, film=lubrication.film(tribology.load_per_length))
-        return RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0, transmission_error=te,
-                         rating=case_rating(case, contact, tribology))
+        return derived_fields(RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0,
+                                        transmission_error=te, rating=case_rating(case, contact, tribology)))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=not coupling_levels.spec(case.levels.coupling).iterates, progress=progress)
     st = coupled.state
@@ -76,8 +77,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if worn else None, st.thermal_face),
         film=setup.lubrication.film(st.load_per_length))
-    return RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
-                     transmission_error=te, rating=case_rating(case, contact, tribology))
+    return derived_fields(RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
+                                    transmission_error=te, rating=case_rating(case, contact, tribology)))
 
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):

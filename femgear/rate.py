@@ -11,19 +11,31 @@ from __future__ import annotations
 
 import logging
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-from femgear.case import build_case, operating_point
+from femgear.case import Case, build_case, operating_point
+from femgear.docfields import document_fields
+from femgear.levels.contact import contact_pass
 from femgear.levels.lubrication import lubrication_solver
-from femgear.physics.contact.path import ContactPath
+from femgear.physics.contact.path import ContactPath, zone_grid
 from femgear.physics.geometry import GearPair
-from femgear.physics.lubrication.flash import thermal_effusivity
-from femgear.physics.rating import LoadFactors, MaterialLimits, PittingRating, contact_stress
+from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
+from femgear.physics.rating import (
+    LoadFactors,
+    MaterialLimits,
+    MeshPowerLoss,
+    PittingRating,
+    contact_stress,
+    mesh_power_loss,
+)
 from femgear.physics.rating import pitting_rating as _pitting_rating
 from femgear.physics.rating.bending import BendingInputs
 from femgear.physics.rating.scuffing import OIL_FACTOR, ScuffingInputs
 from femgear.physics.rating.suite import OwnFigures, PairRating, rate_pair
+from femgear.physics.stiffness.iso6336 import iso6336_stiffness
+from femgear.results import ContactFigures
 
 log = logging.getLogger("femgear.physics.rating")
 
@@ -39,6 +51,83 @@ def _value(r, key: str, used: list[str]):
         used.append(f"rating.{key}={DEFAULTS[key]}")
         return DEFAULTS[key]
     return v
+
+
+def contact_figures(case: Case, contact: ContactPath, mu: np.ndarray | None, mu_u: np.ndarray, level: str,
+                    rating: PairRating | None = None) -> ContactFigures:
+    """ISO 6336-2 pitting (``rating.pitting`` when given), ISO 6336-1 stiffness, Blok's flash temperature and the
+    mesh power loss at the contact pass's line load, with μ(``mu_u``) = ``mu`` of the lubrication ``level`` (the
+    run's own; None: dry, μ = 0), interpolated onto the contact pass's positions."""
+    scene, pair = case.scene, case.pair
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    mu_at = _friction_at(mu, mu_u)
+    m = case.material
+    B = thermal_effusivity(m.conductivity, m.density, m.specific_heat)
+    theta = np.asarray(blok_flash_temperature(mu_at(k.u), w, k.vs, contact.hertz_half_width, k.v1, k.v2, B, B), float)
+    T1 = case.operating.pinion_torque
+    line_load = T1 / pair.r1 * scene.rating.application_factor / (pair.b * pair.n_helices)
+    iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=m.youngs_modulus)
+    return ContactFigures(pitting=scene_rating(scene, pair, T1) if rating is None else rating.pitting,
+                          iso_stiffness=iso, iso_line_load=line_load, friction_level=level,
+                          flash_position=np.asarray(k.s, float), flash_temperature=theta,
+                          power_loss=power_loss(case, contact, mu_at))
+
+
+def _friction_at(mu: np.ndarray | None, mu_u: np.ndarray):
+    """μ(u) by linear interpolation of ``mu`` given at ``mu_u`` (None: 0)."""
+    if mu is None:
+        return lambda u: np.zeros(np.shape(u))
+    mu, mu_u = np.asarray(mu, float), np.asarray(mu_u, float)
+    return lambda u: np.interp(u, mu_u, mu)
+
+
+def power_loss(case: Case, contact: ContactPath, mu_at) -> MeshPowerLoss:
+    """Mesh power loss on the positions of ``contact`` with μ(u) = ``mu_at(u)`` (a spur pair's contact pass is
+    redone on a grid through the inner points of single contact B and D, where the load jumps, for an exact path
+    integral)."""
+    pair, op = case.pair, case.operating
+    if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
+        contact = contact_pass(case, u=zone_grid(pair, contact.kin.u.size))
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    return mesh_power_loss(pair, k.u, mu_at(k.u), w, k.vs, op.pinion_torque, op.pinion_speed)
+
+
+@document_fields
+@dataclass(frozen=True)
+class SceneInfo:
+    """What ``femgear info`` shows of a scene at its static load (:func:`scene_info`)."""
+
+    case: Case
+    """the bound :class:`femgear.case.Case` [-]"""
+    contact: ContactPath
+    """the quasi-static contact pass on a grid through the zone boundaries (spur: B and D) [-]"""
+    rating: PairRating | None
+    """the four ISO ratings (None when an input is outside what the standards compute, logged) [-]"""
+    figures: ContactFigures
+    """pitting, ISO stiffness, flash temperature and power loss with μ of the scene's level at the static load [-]"""
+
+
+def scene_info(case: Case) -> SceneInfo:
+    """The figures of ``femgear info``: the contact pass, the ratings, and μ at the contact pass's static line load
+    and the oil temperature for the flash temperature and the power loss, of the case's lubrication level where it
+    is a closed form (``none``, ``constant``, ``formula``) and of ``formula`` beyond it (the EHL and TEHL
+    levels solve for seconds to minutes; ``femgear run`` carries their own μ): ``figures.friction_level`` says which."""
+    from femgear.case.checks import contact_warnings
+    from femgear.levels.lubrication import summary_level
+
+    pair = case.pair
+    contact = contact_pass(case, u=zone_grid(pair, case.numerics.path_points))
+    contact_warnings(case, float(contact.hertz_pressure.max()))
+    rating = rate_case(case.scene, pair, contact, case=case)
+    k = contact.kin
+    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    level = summary_level(case.levels.lubrication)
+    mu, _ = lubrication_solver(case, level)(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
+                                            T=np.full(k.u.shape, case.operating.ambient_temperature))
+    figures = contact_figures(case, contact, np.asarray(mu, float), k.u, level, rating)
+    return SceneInfo(case=case, contact=contact, rating=rating, figures=figures)
 
 
 def viscosity_law(scene):

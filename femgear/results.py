@@ -15,9 +15,13 @@ import numpy as np
 from femgear.case import Case
 from femgear.docfields import document_fields
 from femgear.levels.lubrication import LevelFilm
+from femgear.physics.body.fields import BodySection
 from femgear.physics.contact.path import ContactPath
+from femgear.physics.ltca.maps import LoadMaps
 from femgear.physics.ltca.te import TEAnalysis
+from femgear.physics.rating import MeshPowerLoss, PittingRating
 from femgear.physics.rating.suite import PairRating
+from femgear.physics.stiffness.iso6336 import IsoStiffness
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.system.coupling.loop import CoupledResult
 
@@ -54,8 +58,34 @@ class Tribology:
     thermal_face: np.ndarray | None = None
     """(member, helix, n, m) thermal growth ζ_T over path position and face grid, ``thermal = "fe3d"`` (else None) [m]"""
     film: LevelFilm | None = None
-    """the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.physics.lubrication.films`;
+    """the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.levels.lubrication`;
     None: lubrication off) [-]"""
+
+
+@document_fields
+@dataclass(frozen=True)
+class ContactFigures:
+    """Figures of the quasi-static contact at the operating point, computed by the driver
+    (:func:`femgear.rate.contact_figures`) and only formatted by :mod:`femgear.summary`."""
+
+    pitting: PittingRating
+    """ISO 6336-2 method B pitting rating of the ``[rating]`` table (also when the full rating of
+    :class:`PairRating` could not be computed) [-]"""
+    iso_stiffness: IsoStiffness
+    """ISO 6336-1:2019 method B single and mesh stiffness per unit face width, at ``iso_line_load`` [N/(mm µm)]"""
+    iso_line_load: float
+    """the line load F_t K_A / b of one helix the ISO stiffness is evaluated at [N/m]"""
+    friction_level: str
+    """the lubrication level whose μ(u) the flash temperature and the power loss use: the run's own
+    (``femgear info``: the scene's level at the static load) [-]"""
+    flash_position: np.ndarray
+    """path coordinate s of the flash temperature values (0 at the pitch point) [m]"""
+    flash_temperature: np.ndarray
+    """Blok's maximum flash temperature at ``flash_position``, with μ of ``friction_level`` and the
+    contact pass's line load [K]"""
+    power_loss: MeshPowerLoss
+    """mesh power loss of μ(u) of ``friction_level`` at the contact pass's line load (its fields carry
+    their units) [-]"""
 
 
 @document_fields
@@ -82,6 +112,16 @@ class RunResult:
     rating: PairRating | None = None
     """ISO 6336-2/-3, ISO/TS 6336-20/21/22 ratings beside femgear's own figures (:func:`femgear.rate.rate_case`); None
     when the rating could not be computed (logged) [-]"""
+    figures: ContactFigures | None = None
+    """ISO 6336-2 pitting, ISO 6336-1 stiffness, flash temperature and mesh power loss of the run's own μ
+    (:func:`femgear.rate.contact_figures`; its fields carry their units) [-]"""
+    body: tuple[BodySection, BodySection] | None = None
+    """``thermal = "fe"``: the FE gear sections of pinion and gear at the run's flank and shaft rises
+    (:func:`femgear.stages.body_sections`; its fields carry their units) [-]"""
+    ltca_maps: LoadMaps | None = None
+    """``stiffness = "ltca"``: the LTCA's pressure and load maps on the loaded flanks of both members in
+    mesh (:func:`femgear.physics.ltca.maps.load_maps`, the stiffness level's cycle; ``w_worst`` at the phase
+    of the largest pressure) [-]"""
 
 
 #: types reachable from :class:`RunResult` whose fields are inputs documented elsewhere (the Case and its gear pair:

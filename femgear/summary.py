@@ -1,8 +1,9 @@
-"""Summary figures of a scene (geometry, quasi-static contact, ISO 6336-2 rating, mesh power loss), as plain dicts.
+"""Summary figures of a case (geometry, quasi-static contact, ISO 6336-2 rating, ISO 6336-1 stiffness, flash
+temperature, mesh power loss), as plain dicts: formatting only.
 
-This module binds a scene to the pure rating functions of :mod:`femgear.physics.rating`
-(``[rating]`` table, operating point, lubrication level) and is used by ``femgear info``
-and by the ``femgear run`` summary.
+Every figure is computed by the driver (:func:`femgear.rate.contact_figures`, :func:`femgear.rate.rate_case`,
+carried as ``RunResult.figures`` and ``RunResult.rating``); this module only arranges them for
+``femgear info`` and the ``summary`` of ``results.json``.
 """
 
 from __future__ import annotations
@@ -12,16 +13,15 @@ from typing import Any
 
 import numpy as np
 
-from femgear.case import operating_point
 from femgear.physics.contact.path import ContactPath
-from femgear.physics.geometry import GearPair, mesh_frequency
-from femgear.physics.rating import MeshPowerLoss, PittingRating, mesh_power_loss
+from femgear.physics.geometry import GearPair
+from femgear.physics.rating import MeshPowerLoss, PittingRating
 from femgear.physics.rating.suite import PairRating
 from femgear.physics.rating.summary import pair_rating_summary
-from femgear.rate import scene_rating
+from femgear.results import ContactFigures
 
 
-def geometry_summary(pair: GearPair, pinion_rpm: float) -> dict[str, Any]:
+def geometry_summary(pair: GearPair, mesh_frequency: float) -> dict[str, Any]:
     """Dimensions and contact ratios of one helix, SI units, angles in degrees."""
     return {
         "transverse_module": pair.m_t,
@@ -39,7 +39,7 @@ def geometry_summary(pair: GearPair, pinion_rpm: float) -> dict[str, Any]:
         "eps_alpha": pair.eps_alpha,
         "eps_beta": pair.eps_beta,
         "eps_gamma": pair.eps_gamma,
-        "mesh_frequency": mesh_frequency(pair, pinion_rpm),
+        "mesh_frequency": mesh_frequency,
         "kind": pair.kind,
         "face_width": pair.b,
     }
@@ -105,67 +105,25 @@ def rating_summary(rating: PittingRating) -> dict[str, Any]:
     }
 
 
-def path_friction(scene, pair: GearPair, contact: ContactPath) -> tuple[np.ndarray, str]:
-    """μ along ``contact`` at the oil temperature, of the scene's lubrication level (levels beyond
-    ``formula``, FE EHL and TEHL, are summarised with ``formula``; the returned level says which)."""
-    from femgear.case import build_case
-    from femgear.levels.lubrication import lubrication_solver, summary_level
-
-    level = summary_level(scene.physics.lubrication)
-    k = contact.kin
-    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
-    solver = lubrication_solver(build_case(scene, pair), level)
-    mu, _ = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, scene.operating.ambient_temperature))
-    return np.asarray(mu, float), level
-
-
-def scene_power_loss(scene, pair: GearPair, contact: ContactPath) -> tuple[MeshPowerLoss, str]:
-    """Mesh power loss on the positions of ``contact`` with μ of the scene's lubrication level
-    (:func:`path_friction`); ``femgear run`` carries the level's own μ."""
-    from femgear.case import build_case
-    from femgear.levels.contact import contact_pass
-    from femgear.physics.contact.path import zone_grid
-
-    if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
-        # the load jumps at B and D must lie on the grid for an exact path integral
-        contact = contact_pass(build_case(scene, pair), u=zone_grid(pair, contact.kin.u.size))
-    k = contact.kin
-    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
-    mu, level = path_friction(scene, pair, contact)
-    omega1 = scene.pinion_rpm * 2 * math.pi / 60
-    return mesh_power_loss(pair, k.u, mu, w, k.vs, operating_point(scene, pair).pinion_torque, omega1), level
-
-
-def flash_summary(scene, pair: GearPair, contact: ContactPath) -> dict[str, Any]:
-    """Blok's maximum flash temperature (:func:`femgear.physics.lubrication.flash.blok_flash_temperature`)
-    along the path, with the line load of the load sharing and μ of :func:`path_friction`: at the
-    start A and the end E of contact (the largest sliding) and its maximum."""
-    from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
-
-    mu, level = path_friction(scene, pair, contact)
-    k, m = contact.kin, scene.material
-    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
-    B = thermal_effusivity(m.conductivity, m.density, m.specific_heat)
-    theta = np.asarray(blok_flash_temperature(mu, w, k.vs, contact.hertz_half_width, k.v1, k.v2, B, B), float)
+def flash_summary(f: ContactFigures) -> dict[str, Any]:
+    """Blok's maximum flash temperature along the path (:func:`femgear.rate.contact_figures`): at the start A and
+    the end E of contact (the largest sliding) and its maximum, labelled with the level of its μ."""
+    theta = f.flash_temperature
     j = int(np.argmax(theta))
-    return {"friction_level": level, "theta_fl_A": float(theta[0]), "theta_fl_E": float(theta[-1]),
-            "theta_fl_max": float(theta[j]), "theta_fl_max_position": float(k.s[j])}
+    return {"friction_level": f.friction_level, "theta_fl_A": float(theta[0]), "theta_fl_E": float(theta[-1]),
+            "theta_fl_max": float(theta[j]), "theta_fl_max_position": float(f.flash_position[j])}
 
 
-def stiffness_summary(scene, pair: GearPair) -> dict[str, Any]:
+def stiffness_summary(f: ContactFigures) -> dict[str, Any]:
     """ISO 6336-1:2019 method B single and mesh stiffness per unit face width (SI: N/m per m), at the
     scene's load F_t K_A / b (below 100 N/mm the standard reduces c')."""
-    from femgear.physics.stiffness.iso6336 import iso6336_stiffness
-
-    F_t = operating_point(scene, pair).pinion_torque / pair.r1
-    line_load = F_t * scene.rating.application_factor / (pair.b * pair.n_helices)
-    iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=scene.material.youngs_modulus)
-    unit = 1e9  # N/(mm µm) -> N/m per m
+    iso, unit = f.iso_stiffness, 1e9  # N/(mm µm) -> N/m per m
     return {"method": "ISO 6336-1:2019 method B", "c_prime_th": iso.c_th * unit, "c_prime": iso.c_prime * unit,
             "c_gamma_alpha": iso.c_gamma_alpha * unit, "c_gamma_beta": iso.c_gamma_beta * unit}
 
 
 def power_loss_summary(loss: MeshPowerLoss, level: str) -> dict[str, Any]:
+    """The mesh power loss; ``friction_level`` names the level of its μ (the μ itself is ``summary.friction``)."""
     return {
         "friction_level": level, "mean_loss": loss.mean_loss, "input_power": loss.input_power,
         "efficiency": loss.efficiency, "energy_per_mesh_cycle": loss.energy_per_mesh_cycle,
@@ -175,21 +133,21 @@ def power_loss_summary(loss: MeshPowerLoss, level: str) -> dict[str, Any]:
     }
 
 
-def scene_summary(scene, pair: GearPair, contact: ContactPath, power_loss: bool = True,
-                  ratings: PairRating | None = None) -> dict[str, Any]:
-    """Geometry, contact, ISO 6336-2 rating and (``power_loss``) mesh power loss of a scene; with ``ratings``
-    (computed by the driver, :func:`femgear.rate.rate_case`) also bending, scuffing, micropitting and the
-    safety factors, each with femgear's own figures beside them."""
+def scene_summary(case, contact: ContactPath, figures: ContactFigures, ratings: PairRating | None = None
+                  ) -> dict[str, Any]:
+    """Geometry, contact, ISO 6336-2 rating, ISO 6336-1 stiffness, flash temperature and mesh power loss of a case
+    (``figures``: computed by the driver, :func:`femgear.rate.contact_figures`); with ``ratings``
+    (:func:`femgear.rate.rate_case`) also bending, scuffing, micropitting and the safety factors, each with
+    femgear's own figures beside them."""
     out = {
-        "scene": scene.meta.name,
-        "geometry": geometry_summary(pair, scene.pinion_rpm),
+        "scene": case.name,
+        "geometry": geometry_summary(case.pair, case.operating.mesh_frequency),
         "contact": contact_summary(contact),
-        "rating": rating_summary(scene_rating(scene, pair) if ratings is None else ratings.pitting),
-        "stiffness_iso6336": stiffness_summary(scene, pair),
-        "flash_temperature": flash_summary(scene, pair, contact),
+        "rating": rating_summary(figures.pitting),
+        "stiffness_iso6336": stiffness_summary(figures),
+        "flash_temperature": flash_summary(figures),
     }
     if ratings is not None:
         out.update(pair_rating_summary(ratings))
-    if power_loss:
-        out["power_loss"] = power_loss_summary(*scene_power_loss(scene, pair, contact))
+    out["power_loss"] = power_loss_summary(figures.power_loss, figures.friction_level)
     return out

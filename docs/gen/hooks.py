@@ -2,8 +2,7 @@
 
 Also: ``README.md``, ``ARCHITECTURE.md`` and ``CHANGELOG.md`` from the repository root as the site's
 ``index.md``, ``architecture.md`` and ``changelog.md`` (one copy of each, kept at the root where a clone
-shows it; their links rewritten for the site), and the pages other branches bring (the sweeps guide
-``guide/sweeps.md``, the result conventions ``result_fields.md``) in the navigation when they are present.
+shows it; their links rewritten for the site).
 """
 
 from __future__ import annotations
@@ -27,23 +26,8 @@ def _pages():
     return module.PAGES
 
 
-#: pages other branches add: (nav section, position, title, file), put in the navigation when the file exists
-OPTIONAL_PAGES = (("User guide", 4, "Sweeps, local and on a Dask cluster", "guide/sweeps.md"),
-                  ("User guide", 4, "Outputs: every file and who computes it", "outputs.md"),
-                  ("Reference", 2, "Result conventions", "result_fields.md"),
-                  ("Development", 1, "The case and the levels layer", "case_and_levels.md"))
 #: the section that takes any other page of docs/ that the navigation does not name
 MORE = "More notes"
-
-
-def on_config(config):
-    docs = Path(config["docs_dir"])
-    for section_name, position, title, rel in OPTIONAL_PAGES:
-        if (docs / rel).exists():
-            for section in config["nav"]:
-                if section_name in section:
-                    section[section_name].insert(position, {title: rel})
-    return config
 
 
 def _nav_files(nav) -> set[str]:

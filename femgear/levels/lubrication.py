@@ -373,8 +373,8 @@ def check_range(case: Case) -> None:
         check(case)
 
 
-#: the levels whose μ a scene summary (``femgear info``, the power loss of results.json) computes itself;
-#: costlier ones (FE EHL, TEHL) are summarised with ``formula``
+#: the levels whose μ ``femgear info`` computes itself (:func:`femgear.rate.scene_info`); costlier ones (the
+#: FE EHL and TEHL levels) are summarised with ``formula`` there (``femgear run`` carries every level's own μ)
 SUMMARY_LEVELS = ("none", "constant", "formula")
 
 

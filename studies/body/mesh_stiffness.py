@@ -20,7 +20,7 @@ import numpy as np
 
 from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
-from femgear.edge.plot import save_figure
+from femgear.edge.io.figures import save_figure
 from femgear.levels import stiffness as stiffness_levels
 from femgear.physics.stiffness import iso6336_stiffness
 from femgear.scene import load_scene

@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from femgear.case.pair import pair_from_scene
-from femgear.edge.plot import save_figure
+from femgear.edge.io.figures import save_figure
 from femgear.physics.body.thermal import analytic_radial_displacement, flank_displacement, gear_thermo_elastic
 from femgear.physics.stiffness.pem import contact_geometry
 from femgear.scene import load_scene
@@ -88,15 +88,17 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "tooth_thermal.png") -> Pa
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
-    from femgear.physics.body.vtk import write_vtu
+    from femgear.edge.io.fields import write_body_vtu
+    from femgear.physics.body.fields import section_fields
 
     args = [a for a in argv if not a.startswith("--")]
     scene = setup(*args[:1])
     res = run(scene, coarse="--coarse" in argv)
     png = plot(res)
     mat = scene.material
-    vtu = write_vtu(res["last_pinion"], ROOT / "out" / "tooth_thermal_pinion.vtu", mat.youngs_modulus,
-                    mat.poisson_ratio, mat.thermal_expansion)
+    vtu = write_body_vtu(ROOT / "out" / "tooth_thermal_pinion.vtu",
+                         section_fields(res["last_pinion"], 1, mat.youngs_modulus, mat.poisson_ratio,
+                                        mat.thermal_expansion))
     pair, u = res["pair"], res["u"]
     ip = int(np.argmin(np.abs(u - pair.u_pitch)))
     print(f"{'member':>7} {'ΔT_f K':>7} {'analytic µm':>12} {'FE µm':>8} {'FE/an−1':>8} {'FE s':>6}")

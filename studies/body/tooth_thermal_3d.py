@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from femgear.case.pair import pair_from_scene
-from femgear.edge.plot import save_figure
+from femgear.edge.io.figures import save_figure
 from femgear.levels.thermal import flank_deviation
 from femgear.physics.body.thermal import flank_displacement, solve_temperature, thermo_elastic
 from femgear.physics.ltca.thermal import thermal_units_3d

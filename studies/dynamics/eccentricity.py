@@ -136,7 +136,7 @@ def plot(res: dict, path: str | Path = ROOT / "out" / "eccentricity" / "eccentri
         axes[i].set_ylabel("[µm]")
         axes[i].set_yscale("log")
         axes[i].legend(fontsize=8)
-    from femgear.edge.plot import save_figure
+    from femgear.edge.io.figures import save_figure
 
     return save_figure(fig, path)
 

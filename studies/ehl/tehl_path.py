@@ -77,7 +77,7 @@ def run(args: argparse.Namespace) -> tuple:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from femgear.physics.tehl.path import write_thermal_vtk
+    from femgear.edge.io.fields import write_tehl_vtu
 
     args = setup(argv)
     path, formula, summary = run(args)
@@ -87,7 +87,7 @@ def main(argv: list[str] | None = None) -> int:
     i_pitch = int(np.argmin(np.abs(s)))
     for tok in filter(None, args.vtk.split(",")):
         i = i_pitch if tok == "pitch" else int(tok) % s.size
-        f = write_thermal_vtk(path.results[i], out / f"thermal_{i:03d}.vtr")
+        f = write_tehl_vtu(out / f"thermal_{i:03d}.vtu", path.results[i])
         print("VTK", f)
     (out / "tehl_path.json").write_text(json.dumps({
         "summary": summary, "s": s.tolist(), "srr": path.srr.tolist(), "hc": path.hc.tolist(),

@@ -270,7 +270,7 @@ def _plot(maps, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from femgear.edge.plot import save_figure
+    from femgear.edge.io.figures import save_figure
 
     maps = [(h, t) for h, t in maps if h is not None]
     fig, axes = plt.subplots(1, len(maps), figsize=(6 * len(maps), 4), squeeze=False)

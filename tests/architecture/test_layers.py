@@ -17,7 +17,7 @@ Layers of ``femgear`` (low → high; ARCHITECTURE.md says why):
 base (errors, docfields, perf) · physics (the leaves: arrays, numbers, typed objects) · levels
 (one registry per sub-model: the only place that dispatches on a level name) · input (scene,
 rexs) · case (the Case, built once per run) · system (dynamics, coupling) · driver (results,
-rate, pipeline, summary) · edge (plot, io, run, sweep, cli; ``__main__``).
+rate, stages, pipeline, summary) · edge (plot, io, run, sweep, cli; ``__main__``).
 
 The physics leaves form a DAG, read from what they compute:
 geometry (the gear) and excitation (errors, backlash) use no other leaf; mesh (gmsh sections
@@ -58,30 +58,20 @@ LAYERS = {
     "input": [["scene"], ["rexs"]],
     "case": [["case"]],
     "system": [["system"]],
-    "driver": [["results"], ["rate"], ["pipeline", "summary"]],
+    "driver": [["results"], ["rate"], ["stages"], ["pipeline", "summary"]],
     "edge": [["edge"], ["__main__"]],
 }
 ORDER: dict[str, list[list[str]]] = {
     "femgear": [tier for tiers in LAYERS.values() for tier in tiers],
     "femgear.physics": [["geometry", "excitation"], ["mesh", "stiffness"], ["contact", "body"],
                         ["lubrication", "wear"], ["ehl", "rating"], ["tehl", "ltca"]],
-    "femgear.physics.ehl": [["core"], ["fe", "fd"], ["point"], ["dimensional", "transient", "output"], ["path"], ["*"]],
+    "femgear.physics.ehl": [["core"], ["fe", "fd"], ["point"], ["dimensional", "transient"], ["path"], ["*"]],
     "femgear.system": [["dynamics"], ["coupling"]],
     "femgear.edge": [["plot"], ["io"], ["run"], ["sweep"], ["cli"]],
 }
 
-# Upward edges other helpers of issue 27 are removing, as (importer, imported) module pairs.
-# The lead empties this set as their branches merge; nothing may be added to it.
-PENDING = {
-    # h27edge: figures are written by edge/io's one writer, not by plot
-    ("femgear.edge.plot", "femgear.edge.io.atomic"),
-}
-
-
-# File writers below the edge.  PENDING_WRITERS: being moved to femgear/edge/io by h27edge (the lead empties it
-# at merge time).  CACHES: build-once disk caches and the resumable wear checkpoint (DESIGN.md: "cached on disk
-# where costly"), which write only under out/cache or a path the caller passes.
-PENDING_WRITERS = {"femgear.physics.body.vtk", "femgear.physics.tehl.path", "femgear.physics.ehl.output"}
+# The only file writers below the edge: build-once disk caches and the resumable wear checkpoint (DESIGN.md: "cached
+# on disk where costly"), which write only under out/cache or a path the caller passes.
 CACHES = {"femgear.physics.ltca.compliance", "femgear.physics.wear.archard"}
 WRITE_CALLS = {"write_text", "write_bytes", "savefig", "save", "savez", "savez_compressed", "dump", "to_csv",
                "write_vtk", "to_file"}
@@ -191,14 +181,7 @@ def test_every_unit_has_a_place():
 
 def test_imports_only_point_down():
     found = upward_edges()
-    new = {e: d for e, d in found.items() if e not in PENDING}
-    assert not new, "upward imports:\n" + "\n".join(f"  {a} → {b}  ({d})" for (a, b), d in sorted(new.items()))
-
-
-def test_pending_edges_still_exist():
-    """PENDING lists only edges that are still there (an edge that went comes off the list)."""
-    gone = PENDING - set(upward_edges())
-    assert not gone, f"remove from PENDING (no longer upward or gone): {sorted(gone)}"
+    assert not found, "upward imports:\n" + "\n".join(f"  {a} → {b}  ({d})" for (a, b), d in sorted(found.items()))
 
 
 def test_order_catches_an_upward_import():
@@ -258,12 +241,12 @@ def test_only_the_edge_writes_files():
     bad = {}
     for name, path in _modules().items():
         top = unit_path(name)[0][1]
-        if top in ("edge", "__main__") or name in PENDING_WRITERS | CACHES:
+        if top in ("edge", "__main__") or name in CACHES:
             continue
         if found := _writes(path):
             bad[name] = found
     assert not bad, f"file writing below the edge: {bad}"
-    assert all(_writes(_modules()[m]) for m in PENDING_WRITERS | CACHES), "a listed writer writes no more: unlist it"
+    assert all(_writes(_modules()[m]) for m in CACHES), "a listed writer writes no more: unlist it"
 
 
 def test_functions_are_short():

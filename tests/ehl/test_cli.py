@@ -18,7 +18,7 @@ def test_cli_line_json(capsys, tmp_path):
     for key in ("Hc", "Hmin", "Pmax", "iterations", "nodes", "seconds"):
         assert key in d
     assert 4.5 < d["Hc"] < 5.8
-    assert (tmp_path / "ehl_line.vts").exists() and (tmp_path / "ehl_line_centreline.png").exists()
+    assert (tmp_path / "ehl_line.vtu").exists() and (tmp_path / "ehl_line_centreline.png").exists()
 
 
 def test_cli_point_json(capsys):

@@ -8,24 +8,17 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-import femgear.edge.plot
 from femgear.edge.plot import dynamics as dplot
 from femgear.system.dynamics.modal import resonance_marks
 from femgear.system.dynamics.response import Response, spectrum
 
 
 @pytest.fixture
-def figures(monkeypatch):
-    """The figures the plot functions save, kept open for inspection (closed afterwards)."""
+def figures():
+    """The figures a test draws (the plot functions return them), closed afterwards."""
     import matplotlib.pyplot as plt
 
     kept = []
-
-    def keep(fig, path, dpi=120):
-        kept.append(fig)
-        return path
-
-    monkeypatch.setattr(femgear.edge.plot, "save_figure", keep)
     yield kept
     for fig in kept:
         plt.close(fig)
@@ -59,10 +52,10 @@ def test_spectrum_heights_are_peak_amplitudes():
     assert sp.order[i] == pytest.approx(1.0)
 
 
-def test_dynamics_figures_carry_the_scene_name_and_spelled_out_quantities(figures, tmp_path):
+def test_dynamics_figures_carry_the_scene_name_and_spelled_out_quantities(figures):
     res = response()
     for plot in (dplot.plot_time_histories, dplot.plot_mesh_force, dplot.plot_phase_planes, dplot.plot_spectra):
-        plot(res, tmp_path / "x.png", name="marine (lumped, pem stiffness)")
+        figures.append(plot(res, name="marine (lumped, pem stiffness)"))
     assert len(figures) == 4
     for fig in figures:
         assert texts(fig).count("marine (lumped, pem stiffness):") == 1
@@ -79,11 +72,11 @@ def test_resonances_are_where_a_mesh_harmonic_meets_a_natural_frequency():
     assert [(round(x), k) for x, k, _ in marks] == [(713, 4), (950, 3), (1426, 2), (2080, 4), (2774, 3), (2851, 1)]
 
 
-def test_speed_sweep_marks_the_natural_frequencies_it_promises(figures, tmp_path):
+def test_speed_sweep_marks_the_natural_frequencies_it_promises(figures):
     fm = np.linspace(258.0, 3100.0, 12)
     sweep = SimpleNamespace(mesh_frequency=fm, speed_rpm=fm * 500 / 258.0, dte_rms=1e-7 * (1 + 0 * fm))
     modal = SimpleNamespace(frequencies=np.array([0.0, 2851.0, 8321.0]), energy={"mesh": np.array([0.0, 0.15, 0.84])})
-    dplot.plot_sweep(sweep, tmp_path / "s.png", modal, name="marine")
+    figures.append(dplot.plot_sweep(sweep, modal, name="marine"))
     ax = figures[0].axes[0]
     vertical = sorted(round(line.get_xdata()[0]) for line in ax.get_lines() if len(set(line.get_xdata())) == 1
                       and len(line.get_xdata()) == 2)

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from femgear.edge.cli.report import key_figures
+from femgear.edge.io.figures import save_figure
 from femgear.edge.plot.coupled import plot_convergence, plot_coupled_path
 from femgear.edge.plot.dynamics import _smooth_orbit, plot_mesh_force, plot_phase_planes, plot_time_histories
 from femgear.system.dynamics.response import Response
@@ -45,19 +46,20 @@ def _response(n: int = 2000, f_m: float = 250.0) -> Response:
 def test_dynamics_figures_are_written(tmp_path):
     res = _response()
     for plot, name in ((plot_time_histories, "t.png"), (plot_mesh_force, "f.png"), (plot_phase_planes, "p.png")):
-        assert _png(plot(res, tmp_path / name))
+        assert _png(save_figure(plot(res), tmp_path / name))
 
 
 def test_coupled_figures_leave_out_what_was_not_computed(tmp_path):
     s = np.linspace(-7e-3, 7e-3, 21)
     w = 8e4 * (1 + 0.2 * np.cos(s / 7e-3))
-    full = plot_coupled_path(s, w, tmp_path / "full.png", mu=0.03 + 0 * s, temperature_rise=5 + 0 * s,
-                             thermal_deviation=np.array([s, -s]) * 1e-4, wear=np.abs([s, s]) * 1e-3, wear_cycles=1e6)
-    load_only = plot_coupled_path(s, w, tmp_path / "load.png")
+    full = save_figure(plot_coupled_path(s, w, mu=0.03 + 0 * s, temperature_rise=5 + 0 * s,
+                                         thermal_deviation=np.array([s, -s]) * 1e-4, wear=np.abs([s, s]) * 1e-3,
+                                         wear_cycles=1e6), tmp_path / "full.png")
+    load_only = save_figure(plot_coupled_path(s, w), tmp_path / "load.png")
     assert _png(full) and _png(load_only)
     assert full.stat().st_size > load_only.stat().st_size
-    assert _png(plot_convergence([0, 1, 2, 3], [None, 6e-3, 3e-6, 3e-9], [None, 6e-5, 7e-8, 5e-11],
-                                 tmp_path / "conv.png"))
+    assert _png(save_figure(plot_convergence([0, 1, 2, 3], [None, 6e-3, 3e-6, 3e-9], [None, 6e-5, 7e-8, 5e-11]),
+                            tmp_path / "conv.png"))
 
 
 def test_key_figures_of_a_coupled_summary():

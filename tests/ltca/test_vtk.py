@@ -1,4 +1,4 @@
-"""The LTCA pressure map on the 3-D pinion flanks of both helices (femgear.physics.ltca.vtk)."""
+"""The LTCA pressure map on the 3-D pinion flanks of both helices (femgear.physics.ltca.flank_map)."""
 
 import math
 from pathlib import Path
@@ -21,7 +21,7 @@ def symmetric_cycle(coarse_model, baseline_force):
 
 def test_symmetric_pair_has_the_same_pressure_map_on_both_helices(symmetric_cycle, baseline_pair):
     """Both helices' maps are equal, and each integrates to its helix's cycle-mean LTCA load."""
-    from femgear.physics.ltca.vtk import flank_pressure_map
+    from femgear.physics.ltca.flank_map import flank_pressure_map
 
     fmap = flank_pressure_map(symmetric_cycle, baseline_pair, 210e9, 0.3)
     assert fmap.p_max[0].max() > 1e8
@@ -38,7 +38,7 @@ def test_symmetric_pair_has_the_same_pressure_map_on_both_helices(symmetric_cycl
 def test_helix_slope_deviation_moves_the_map_load_to_the_other_helix(coarse_model, baseline_force, baseline_pair,
                                                                      symmetric_cycle):
     from femgear.physics.ltca.analysis import mesh_cycle
-    from femgear.physics.ltca.vtk import flank_pressure_map
+    from femgear.physics.ltca.flank_map import flank_pressure_map
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(crowning=4e-6, helix_slope_deviation_left=10e-6),
                    n_phases=8)
@@ -92,7 +92,8 @@ def test_right_helix_mapping_lies_on_the_staggered_body_flank(baseline_pair):
 
 def test_the_main_job_writes_the_pressure_map_with_the_ltca_level(symmetric_cycle, tmp_path):
     """``write_run_paraview`` (``femgear run``'s ParaView output) adds ``ltca_pressure.vtu`` when the stiffness level
-    carries an LTCA cycle (here the coarse one in a quasi-static run's result), and only then."""
+    carries an LTCA cycle (here the coarse one in a quasi-static run's result, whose maps the driver's stage
+    :func:`femgear.stages.ltca_maps` computes), and only then."""
     import dataclasses
 
     import meshio
@@ -101,6 +102,7 @@ def test_the_main_job_writes_the_pressure_map_with_the_ltca_level(symmetric_cycl
     from femgear.edge.io.paraview_run import write_run_paraview
     from femgear.pipeline import run_case
     from femgear.scene import load_scene
+    from femgear.stages import ltca_maps
 
     scene = load_scene(ROOT / "studies" / "paper_baseline.toml",
                        ['physics.dynamics="none"', 'physics.coupling="one-way"', 'physics.lubrication="constant"',
@@ -109,6 +111,8 @@ def test_the_main_job_writes_the_pressure_map_with_the_ltca_level(symmetric_cycl
     assert "ltca_pressure_vtu" not in write_run_paraview(result, tmp_path / "iso")
     ltca = dataclasses.replace(result, stiffness=dataclasses.replace(result.stiffness, level="ltca",
                                                                      ltca=LTCACycle.from_result(symmetric_cycle)))
+    assert result.ltca_maps is None
+    ltca = dataclasses.replace(ltca, ltca_maps=ltca_maps(ltca))
     files = write_run_paraview(ltca, tmp_path / "ltca")
     assert files["ltca_pressure_vtu"] == tmp_path / "ltca" / "ltca_pressure.vtu"
     m = meshio.read(files["ltca_pressure_vtu"])
@@ -126,7 +130,7 @@ def test_edge_contacts_are_flagged_not_shown_as_hertz_pressures(coarse_model, ba
 
     from femgear.edge.io.ltca import write_flank_pressure
     from femgear.physics.ltca.analysis import mesh_cycle
-    from femgear.physics.ltca.vtk import flank_pressure_map
+    from femgear.physics.ltca.flank_map import flank_pressure_map
 
     r = mesh_cycle(coarse_model, baseline_force, Modifications(), n_phases=64)
     fmap = flank_pressure_map(r, baseline_pair, 210e9, 0.3)

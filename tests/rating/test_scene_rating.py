@@ -1,18 +1,18 @@
-"""The scene adapters: ``[rating]`` table → ISO 6336-2 rating; power loss of the lubrication level; ``femgear info``."""
+"""The driver's rating figures: ``[rating]`` table → ISO 6336-2 rating; power loss of the run's own μ; ``femgear info``."""
 
 import json
 import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
 from femgear.levels.contact import contact_pass
-from femgear.rate import scene_rating
+from femgear.rate import power_loss, scene_rating
 from femgear.scene import load_scene
-from femgear.summary import scene_power_loss
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 
@@ -28,11 +28,10 @@ def test_rating_inputs_reach_the_factors():
 
 
 def test_power_loss_constant_mu_is_ohlendorf_on_any_grid():
-    """Constant μ: the summary's loss is μ P_in H_V whatever grid the contact pass used (the B, D jumps are added)."""
+    """Constant μ: the loss is μ P_in H_V whatever grid the contact pass used (the B, D jumps are added)."""
     scene = load_scene(FZG, ["physics.lubrication=constant", "friction.coefficient=0.05"])
-    pair = pair_from_scene(scene)
-    loss, level = scene_power_loss(scene, pair, contact_pass(build_case(scene, pair)))
-    assert level == "constant"
+    case = build_case(scene)
+    loss = power_loss(case, contact_pass(case), lambda u: np.full(np.shape(u), 0.05))
     assert loss.equivalent_mu == pytest.approx(0.05, rel=1e-6)
     assert loss.efficiency == pytest.approx(1 - 0.05 * loss.ohlendorf_HV, rel=1e-9)
 

@@ -9,7 +9,7 @@ import pytest
 from femgear.case import build_case
 from femgear.levels.contact import contact_pass
 from femgear.levels.lubrication import tehl_axes, tehl_setup
-from femgear.physics.tehl.path import tehl_along_path, write_thermal_vtk
+from femgear.physics.tehl.path import tehl_along_path
 from femgear.physics.tehl.solver import tehl_line_solver, tehl_map
 from femgear.scene import load_scene
 from femgear.scene.levels import check_level
@@ -55,10 +55,12 @@ def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, case, tmp_path):
     assert int(np.argmin(path.mu)) == i_pitch
     assert np.all(np.diff(path.mu[: i_pitch + 1]) < 0) and np.all(np.diff(path.mu[i_pitch:]) > 0)
     assert 5.0 < path.dT_max.max() < 100.0                            # tens of K
-    f = write_thermal_vtk(path.results[0], tmp_path / "t.vtr")
-    pv = pytest.importorskip("pyvista")
-    g = pv.read(str(f))
-    assert np.max(g.cell_data["temperature"]) == pytest.approx(path.dT_max[0] + scene.operating.ambient_temperature)
+    import meshio
+
+    from femgear.edge.io.fields import write_tehl_vtu
+
+    g = meshio.read(write_tehl_vtu(tmp_path / "t.vtu", path.results[0]))
+    assert np.max(g.cell_data["temperature"][0]) == pytest.approx(path.dT_max[0] + scene.operating.ambient_temperature)
 
 
 def test_static_pass_reports_tehl_figures(scene):

@@ -143,10 +143,11 @@ def _sweep(case, args, out: Path) -> int:
                             float(sw.mesh_frequency.max()))
     files = {}
     if not args.no_plots:
+        from femgear.edge.io.figures import save_figure
         from femgear.edge.plot.dynamics import plot_sweep
 
-        files["sweep"] = plot_sweep(sw, out / "dynamics_sweep.png", modal,
-                                    name=f"{case.name} ({model.level}, {model.stiffness.label} stiffness)")
+        files["sweep"] = save_figure(plot_sweep(sw, modal, name=f"{case.name} ({model.level}, {model.stiffness.label} stiffness)"),
+                                     out / "dynamics_sweep.png")
     if args.json:
         from femgear.edge.cli.common import emit_json
 
@@ -176,9 +177,10 @@ def _kahraman_singh(args, out: Path) -> int:
     up, down = kahraman_singh_sweep(w, direction="up"), kahraman_singh_sweep(w, direction="down")
     files = {}
     if not args.no_plots:
+        from femgear.edge.io.figures import save_figure
         from femgear.edge.plot.dynamics import plot_branches
 
-        files["branches"] = plot_branches(up, down, out / "kahraman_singh.png")
+        files["branches"] = save_figure(plot_branches(up, down), out / "kahraman_singh.png")
     a_down, loss_down = down.amplitude[::-1], down.contact_loss[::-1]
     if args.json:
         from femgear.edge.cli.common import emit_json

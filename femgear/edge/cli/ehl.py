@@ -99,7 +99,7 @@ def _run(args, solve) -> int:
         return 1
     out = res.summary()
     if args.out:
-        from femgear.physics.ehl.output import write_all
+        from femgear.edge.io.ehl import write_all
 
         out["files"] = write_all(res, args.out, stem=f"ehl_{res.kind}")
     if args.json:

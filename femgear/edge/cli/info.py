@@ -16,17 +16,11 @@ def register(sub) -> None:
 
 
 def _info(args: argparse.Namespace) -> int:
-    from femgear.case.checks import contact_warnings
-    from femgear.levels.contact import contact_pass
-    from femgear.physics.contact.path import zone_grid
-    from femgear.rate import rate_case
+    from femgear.rate import scene_info
     from femgear.summary import scene_summary
 
-    case = load_case_arg(args)
-    scene, pair = case.scene, case.pair
-    contact = contact_pass(case, u=zone_grid(pair, scene.numerics.path_points))
-    contact_warnings(case, float(contact.hertz_pressure.max()))
-    summary = scene_summary(scene, pair, contact, ratings=rate_case(scene, pair, contact, case=case))
+    info = scene_info(load_case_arg(args))
+    summary = scene_summary(info.case, info.contact, info.figures, ratings=info.rating)
     if args.json:
         emit_json(summary)
     else:

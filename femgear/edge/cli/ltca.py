@@ -120,19 +120,22 @@ def _write(result, scene, pair, out: Path, plots: bool, vtk: bool) -> dict[str, 
 
     files: dict[str, Path] = {}
     if plots:
+        from femgear.edge.io.figures import save_figure
         from femgear.edge.plot.ltca import plot_harmonics, plot_harris, plot_load_distribution, plot_te_curves
 
         name = scene.meta.name
-        files["te_curves_png"] = plot_te_curves(result.analyses, out / "te_curves.png",
-                                                f"{name}: loaded transmission error (TE), LTCA")
-        files["te_harmonics_png"] = plot_harmonics(result.analyses, out / "te_harmonics.png",
-                                                   f"{name}: harmonics of the loaded transmission error (TE)")
+        files["te_curves_png"] = save_figure(
+            plot_te_curves(result.analyses, f"{name}: loaded transmission error (TE), LTCA"), out / "te_curves.png")
+        files["te_harmonics_png"] = save_figure(
+            plot_harmonics(result.analyses, f"{name}: harmonics of the loaded transmission error (TE)"),
+            out / "te_harmonics.png")
         for m in result.maps:
-            files[f"load_{torque_tag(m.torque)}_png"] = plot_load_distribution(
-                m, out / f"load_{torque_tag(m.torque)}.png", name=name)
+            files[f"load_{torque_tag(m.torque)}_png"] = save_figure(plot_load_distribution(m, name=name),
+                                                                    out / f"load_{torque_tag(m.torque)}.png")
         if result.harris is not None:
-            files["harris_png"] = plot_harris(result.harris, out / "harris.png",
-                                              f"{name}: Harris map, loaded transmission error against torque")
+            files["harris_png"] = save_figure(
+                plot_harris(result.harris, f"{name}: Harris map, loaded transmission error against torque"),
+                out / "harris.png")
     if vtk:
         for m in result.maps:
             files[f"maps_{torque_tag(m.torque)}_pvd"] = write_maps(out, m)

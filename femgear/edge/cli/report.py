@@ -60,7 +60,7 @@ def key_figures(summary: dict[str, Any], seconds: float | None = None) -> list[t
                      _fmt(_get(summary, "contact", "pitch", "film_central"), 1e6), "µm"))
     if "friction" in summary:
         f = summary["friction"]
-        rows.append(("μ max / mean", f"{_fmt(f.get('mu_max'), 1, '.4f')} / {_fmt(f.get('mu_mean'), 1, '.4f')}", ""))
+        rows.append((f"μ max / mean ({f.get('level', '')})", f"{_fmt(f.get('mu_max'), 1, '.4f')} / {_fmt(f.get('mu_mean'), 1, '.4f')}", ""))
         rows.append(("max contact temperature rise", _fmt(f.get("max_temperature_rise"), 1, ".3g"), "K"))
     if "thermal" in summary:
         t = summary["thermal"]

@@ -1,8 +1,8 @@
-"""``femgear run SCENE``: run a scene and write its outputs.
+"""``femgear run SCENE``: parse, run and write a scene (:func:`femgear.edge.run.run_scene`), report.
 
 The output folder is created and checked writable before anything is computed; a
 ``meta.name`` cannot place it outside ``out/``.  Prints the files written and a table
-of key figures (or, with ``--json``, one JSON summary line).
+of key figures (or, with ``--json``, one JSON summary line: ``results.json``'s ``summary``).
 """
 
 from __future__ import annotations
@@ -37,23 +37,16 @@ def _run(args: argparse.Namespace) -> int:
         out = prepare_output_dir(args.out, "--out")
     t0 = time.perf_counter()
     with CouplingProgress(enabled=not (args.quiet or args.json)) as progress:
-        written = run_scene(case, out, plots=not args.no_plots, progress=progress)
-    files = dict(written.files)
-    if not args.no_plots:
-        from femgear.edge.plot.coupled import run_figures
-
-        files.update(run_figures(written.result, out))
-    if not args.no_vtk:
-        from femgear.edge.io.paraview_run import write_run_paraview
-
-        files.update(write_run_paraview(written.result, out))
+        written = run_scene(case, out, plots=not args.no_plots, vtk=not args.no_vtk, progress=progress)
     seconds = time.perf_counter() - t0
     if args.json:
-        summary = dict(written.summary)
-        summary["outputs"] = {k: str(v) for k, v in files.items()}
-        emit_json(summary)
+        emit_json(written.summary)
     else:
-        for name, path in files.items():
-            print(f"{name}: {path}")
+        members = [name for name in written.files if "/" in name]     # the .vtu files of a .pvd collection
+        for name, path in written.files.items():
+            if "/" not in name:
+                print(f"{name}: {path}")
+        if members:
+            print(f"(and the {len(members)} .vtu files of the .pvd collections, listed in results.json)")
         print_key_figures(key_figures(written.summary, seconds), title=f"{scene.meta.name}: key figures")
     return 0

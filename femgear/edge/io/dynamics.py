@@ -13,7 +13,11 @@ from femgear.system.dynamics.run import DynamicsRun
 
 
 def dynamics_summary(run: DynamicsRun) -> dict[str, Any]:
-    """The JSON summary of a run: settings, amplitudes (half peak-to-peak, SI), modes, timings."""
+    """The JSON summary of a run: settings, amplitudes (half peak-to-peak, SI), modes, timings.
+
+    ``friction_factor`` is the factor on the model's friction tables: the constant μ of a constant friction, or 1
+    where μ(u) of the lubrication level is folded into the tables (that μ is ``summary.friction`` of
+    ``results.json``, labelled with its level); it is not a second friction coefficient."""
     m, sim, modal = run.model, run.simulation, run.modal
     return {
         "level": m.level,
@@ -24,7 +28,7 @@ def dynamics_summary(run: DynamicsRun) -> dict[str, Any]:
         "mesh_frequency": m.mesh_frequency,
         "stiffness": m.stiffness.label,
         "mean_mesh_stiffness": list(m.stiffness.mean),
-        "friction_coefficient": m.mu,
+        "friction_factor": m.mu,
         "rayleigh": list(m.rayleigh),
         "mesh_damping": m.mesh_damping.tolist(),
         "natural_frequencies_hz": list(m.flexible_modes_hz),
@@ -56,11 +60,12 @@ def write_dynamics(run: DynamicsRun, folder: str | Path, plots: bool = True, nam
                          delta=res.delta, mesh_force=res.mesh_force, bearing_acceleration=res.bearing_acceleration),
     }
     if plots:
+        from femgear.edge.io.figures import save_figure
         from femgear.edge.plot import dynamics as plot
 
         name = f"{name} ({run.model.level}, {run.model.stiffness.label} stiffness)" if name else ""
-        files["time_histories"] = plot.plot_time_histories(res, folder / "dynamics_time.png", name=name)
-        files["mesh_force"] = plot.plot_mesh_force(res, folder / "dynamics_mesh_force.png", name=name)
-        files["phase_planes"] = plot.plot_phase_planes(res, folder / "dynamics_phase.png", name=name)
-        files["spectra"] = plot.plot_spectra(res, folder / "dynamics_spectra.png", name=name)
+        files["time_histories"] = save_figure(plot.plot_time_histories(res, name=name), folder / "dynamics_time.png")
+        files["mesh_force"] = save_figure(plot.plot_mesh_force(res, name=name), folder / "dynamics_mesh_force.png")
+        files["phase_planes"] = save_figure(plot.plot_phase_planes(res, name=name), folder / "dynamics_phase.png")
+        files["spectra"] = save_figure(plot.plot_spectra(res, name=name), folder / "dynamics_spectra.png")
     return files

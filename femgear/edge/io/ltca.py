@@ -143,7 +143,7 @@ def write_maps_vtu(path: str | Path, maps: LoadMaps) -> Path:
 
 def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, poisson_ratio: float) -> Path:
     """Write the pressure map on the 3-D pinion flanks of both helices, in the pinion's body frame, as VTK
-    unstructured quads (``.vtu``; :func:`femgear.physics.ltca.vtk.flank_pressure_map`).
+    unstructured quads (``.vtu``; :func:`femgear.physics.ltca.flank_map.flank_pressure_map`).
 
     The body's groove width and stagger come from ``result.groove`` and ``result.stagger``
     (:func:`femgear.physics.ltca.analysis.mesh_cycle`).
@@ -153,7 +153,7 @@ def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, 
     """
     import meshio
 
-    from femgear.physics.ltca.vtk import flank_pressure_map, helix_flank_quads
+    from femgear.physics.ltca.flank_map import flank_pressure_map, helix_flank_quads
 
     fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
     pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.groove, result.stagger)

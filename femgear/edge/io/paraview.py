@@ -61,8 +61,10 @@ class Frame:
     mesh: object  # meshio.Mesh (meshio imported lazily)
 
 
-def write_vtu(path: str | Path, mesh) -> Path:
-    """Write a meshio ``mesh`` to ``path`` atomically (a temporary file, then a rename: complete or absent)."""
+def write_vtu(path: str | Path, mesh, field_data: dict[str, np.ndarray] | None = None) -> Path:
+    """Write a meshio ``mesh`` to ``path`` atomically (a temporary file, then a rename: complete or absent); the
+    one VTK writer of femgear.  ``field_data``: arrays of the whole dataset (VTK ``FieldData``, which meshio reads
+    back as ``mesh.field_data`` but does not write)."""
     import meshio
 
     path = Path(path)
@@ -70,12 +72,28 @@ def write_vtu(path: str | Path, mesh) -> Path:
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         meshio.write(tmp, mesh, file_format="vtu", binary=True, compression=None)
+        if field_data:
+            _add_field_data(tmp, field_data)
         os.chmod(tmp, 0o644)
         os.replace(tmp, path)
     except BaseException:
         tmp.unlink(missing_ok=True)
         raise
     return path
+
+
+def _add_field_data(path: Path, field_data: dict[str, np.ndarray]) -> None:
+    """Insert a ``FieldData`` block (ASCII ``Float64`` arrays) as the first child of the file's ``UnstructuredGrid``."""
+    tree = ET.parse(path)
+    grid = tree.getroot().find("UnstructuredGrid")
+    block = ET.Element("FieldData")
+    for name, values in field_data.items():
+        v = np.asarray(values, dtype=np.float64).ravel()
+        array = ET.SubElement(block, "DataArray", type="Float64", Name=name, NumberOfTuples=str(v.size),
+                              format="ascii")
+        array.text = " ".join(repr(float(x)) for x in v)
+    grid.insert(0, block)
+    tree.write(path, xml_declaration=True, encoding="utf-8")
 
 
 def write_collection(folder: str | Path, name: str, frames: Sequence[Frame]) -> Path:
@@ -95,6 +113,12 @@ def write_collection(folder: str | Path, name: str, frames: Sequence[Frame]) -> 
     pvd = folder / f"{name}.pvd"
     write_text_atomic(pvd, '<?xml version="1.0"?>\n' + ET.tostring(root, encoding="unicode") + "\n")
     return pvd
+
+
+def collection_files(pvd: str | Path) -> list[Path]:
+    """The ``.vtu`` files a ``.pvd`` collection names, in its order."""
+    pvd = Path(pvd)
+    return [pvd.parent / d.attrib["file"] for d in ET.parse(pvd).getroot().iter("DataSet")]
 
 
 def _check_finite(frame: Frame) -> None:
@@ -129,4 +153,4 @@ def flank_surface(rb: float, r: np.ndarray, centre: tuple[float, float], angle0:
     return points, quads
 
 
-__all__ = ["Frame", "flank_surface", "involute_points", "write_collection", "write_vtu"]
+__all__ = ["Frame", "collection_files", "flank_surface", "involute_points", "write_collection", "write_vtu"]

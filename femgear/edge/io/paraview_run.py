@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.edge.io.paraview import Frame, flank_surface, write_collection
+from femgear.edge.io.paraview import Frame, collection_files, flank_surface, write_collection, write_vtu
 from femgear.results import RunResult
 
 N_FACE = 9          # points across the face width of one helix
@@ -22,7 +22,7 @@ def flank_frames(result: RunResult) -> list[Frame]:
     """One surface per member (both helices) with the fields along the path."""
     import meshio
 
-    from femgear.edge.io.run import along_path
+    from femgear.edge.io.along_path import along_path
 
     case, pair = result.case, result.case.pair
     fields = along_path(result)
@@ -88,34 +88,16 @@ def dynamics_frames(result: RunResult) -> list[Frame]:
 
 
 def body_frames(result: RunResult) -> list[Frame]:
-    """``thermal = "fe"``: the FE gear sections of both members at the run's temperature rises.
+    """``thermal = "fe"``: the FE gear sections of both members at the run's temperature rises
+    (``RunResult.body``, :func:`femgear.stages.body_sections`): ``temperature_rise`` [K] and ``displacement`` [m]
+    at the vertices, ``von_mises`` [Pa] per triangle (:func:`femgear.edge.io.fields.body_mesh`).  The gear's
+    section is shifted by the centre distance along x."""
+    from femgear.edge.io.fields import body_mesh
 
-    The coupling keeps only the flank deviation (unit responses, the problem is linear);
-    the fields are solved once more here, at the converged flank rise and the scene's
-    shaft rise: ``temperature_rise`` [K] and ``displacement`` [m] at the vertices (the P2
-    fields' nodal values), ``von_mises`` [Pa] per triangle.  The gear's section is
-    shifted by the centre distance along x.
-    """
-    import meshio
-
-    from femgear.physics.body.thermal import gear_thermo_elastic
-
-    case, m = result.case, result.case.material
-    frames = []
-    for part, (member, bore) in enumerate(((1, case.bore_radii[0]), (2, case.bore_radii[1]))):
-        fe = gear_thermo_elastic(case.pair, member, result.tribology.flank_temperature_rise,
-                                 case.thermal.shaft_temperature_rise, m.thermal_expansion, m.youngs_modulus,
-                                 m.poisson_ratio, m.conductivity, bore, case.thermal.mesh_size)
-        p = fe.mesh.p
-        points = np.column_stack([p[0] + (case.pair.a_w if member == 2 else 0.0), p[1], np.zeros(p.shape[1])])
-        u = fe.u[fe.basis_u.nodal_dofs]
-        mesh = meshio.Mesh(points, [("triangle", fe.mesh.t.T)],
-                           point_data={"temperature_rise": fe.T[fe.basis_T.nodal_dofs[0]],
-                                       "displacement": np.column_stack([u[0], u[1], np.zeros(p.shape[1])])},
-                           cell_data={"von_mises": [fe.von_mises(m.youngs_modulus, m.poisson_ratio,
-                                                                  m.thermal_expansion)]})
-        frames.append(Frame(time=0.0, part=part, name=("body_pinion", "body_gear")[part], mesh=mesh))
-    return frames
+    a_w = result.case.pair.a_w
+    return [Frame(time=0.0, part=part, name=("body_pinion", "body_gear")[part],
+                  mesh=body_mesh(section, offset=(a_w if section.member == 2 else 0.0, 0.0)))
+            for part, section in enumerate(result.body or ())]
 
 
 def face_mesh(result: RunResult):
@@ -123,14 +105,14 @@ def face_mesh(result: RunResult):
     ``thermal_deviation``, both [m]) on the 3-D loaded flanks of tooth 0 of both members, both helices,
     as a meshio quad mesh (None without face fields).
 
-    Each member's body frame (:func:`femgear.physics.ltca.vtk.helix_flank_quads`: the LTCA's member bodies) turned
+    Each member's body frame (:func:`femgear.physics.ltca.flank_map.helix_flank_quads`: the LTCA's member bodies) turned
     into its meshing position, the gear's axis at (a_w, 0) (:func:`femgear.physics.ltca.maps.to_mesh`); a flank point at path position u_k has
     roll distance ρ₁ = u_k (pinion) or ρ₂ = T₁T₂ − u_k (gear), face coordinate ζ_m of the run's face grid.
     Point data also ``member`` (1, 2), ``helix`` (0 left, 1 right), ``u``, ``rho``, ``zeta`` [m]."""
     import meshio
 
+    from femgear.physics.ltca.flank_map import helix_flank_quads
     from femgear.physics.ltca.maps import to_mesh
-    from femgear.physics.ltca.vtk import helix_flank_quads
     from femgear.system.coupling.thermal import roll_distances
 
     t, case = result.tribology, result.case
@@ -161,36 +143,31 @@ def face_mesh(result: RunResult):
 def write_run_paraview(result: RunResult, out_dir: str | Path) -> dict[str, Path]:
     """Write ``flanks.pvd``, with dynamics ``dynamics.pvd``, with ``thermal = "fe"`` ``body.pvd``, and with
     ``stiffness = "ltca"`` the LTCA's pressure and load maps on the 3-D loaded flanks of both members, both
-    helices, each turned into its meshing position, ``ltca_pressure.vtu`` (:func:`femgear.physics.ltca.maps.load_maps`;
-    the LTCA cycle of the stiffness level: new flanks with the scene's modifications; ``w_worst`` at the phase
-    of the largest pressure), and with face-resolved fields (``wear.field = "face"``, ``thermal = "fe3d"``)
-    ``flank_face.vtu`` (:func:`face_mesh`)."""
-    out_dir = Path(out_dir)
-    files = {"flanks_pvd": write_collection(out_dir, "flanks", flank_frames(result))}
-    cycle = None if result.stiffness is None else result.stiffness.ltca
-    ltca = None if cycle is None else cycle.result
-    if ltca is not None and ltca.line_load:
-        from femgear.edge.io.ltca import write_maps_vtu
-        from femgear.physics.ltca.maps import load_maps
-        from femgear.physics.ltca.te import pressure_peak
+    helices, each turned into its meshing position, ``ltca_pressure.vtu`` (``RunResult.ltca_maps``), and with
+    face-resolved fields (``wear.field = "face"``, ``thermal = "fe3d"``) ``flank_face.vtu`` (:func:`face_mesh`).
 
-        m, case, te = result.case.material, result.case, result.transmission_error
-        worst = te.worst_phase if te is not None else pressure_peak(ltca, case.pair, m.youngs_modulus,
-                                                                    m.poisson_ratio)[1]
-        maps = load_maps(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, case.scene.operating.torque, worst,
-                         case.groove_width, case.stagger)
-        files["ltca_pressure_vtu"] = write_maps_vtu(out_dir / "ltca_pressure.vtu", maps)
+    Returns every file written: a collection's ``.pvd`` by name (``flanks_pvd``) and its ``.vtu`` files by their
+    path relative to ``out_dir`` (``flanks/flank_pinion_0000.vtu``)."""
+    out_dir = Path(out_dir)
+    files: dict[str, Path] = {}
+
+    def collection(name: str, frames: list[Frame]) -> None:
+        pvd = write_collection(out_dir, name, frames)
+        files[f"{name}_pvd"] = pvd
+        files.update({str(f.relative_to(out_dir)): f for f in collection_files(pvd)})
+
+    collection("flanks", flank_frames(result))
+    if result.ltca_maps is not None:
+        from femgear.edge.io.ltca import write_maps_vtu
+
+        files["ltca_pressure_vtu"] = write_maps_vtu(out_dir / "ltca_pressure.vtu", result.ltca_maps)
     face = face_mesh(result)
     if face is not None:
-        from femgear.edge.io.paraview import write_vtu
-
         files["flank_face_vtu"] = write_vtu(out_dir / "flank_face.vtu", face)
-    from femgear.levels.thermal import has_sections
-
-    if has_sections(result.case.levels.thermal):
-        files["body_pvd"] = write_collection(out_dir, "body", body_frames(result))
+    if result.body is not None:
+        collection("body", body_frames(result))
     if result.coupled is not None and result.coupled.state.dynamics is not None:
-        files["dynamics_pvd"] = write_collection(out_dir, "dynamics", dynamics_frames(result))
+        collection("dynamics", dynamics_frames(result))
     return files
 
 

@@ -3,9 +3,10 @@
 Layout (the contract; keys are added, never renamed without a README note):
 
 - ``summary``: ``scene`` (name), ``geometry``, ``contact`` (pitch point and path
-  extremes), ``rating`` (ISO 6336-2 pitting), ``safety_factors``, ``bending``, ``scuffing``,
+  extremes), ``rating`` (ISO 6336-2 pitting), ``stiffness_iso6336``, ``flash_temperature`` and ``power_loss``
+  (from ``RunResult.figures``; the last two with the ``friction_level`` of their μ, the run's own), ``safety_factors``, ``bending``, ``scuffing``,
   ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
-  and statically mean_per_helix, seconds), ``friction`` (mu_pitch/min/max/mean,
+  and statically mean_per_helix, seconds), ``friction`` (level, mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
   gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
   with ``stiffness = "ltca"`` ``transmission_error`` (:func:`femgear.edge.io.ltca.te_summary`: loaded TE
@@ -13,7 +14,8 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
   TE p-p of the last coupling pass's worn and expanded flanks),
   with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`) and
-  ``coupling`` (mode, converged, iterations, seconds, history), ``outputs`` (files);
+  ``coupling`` (mode, converged, iterations, seconds, history), ``outputs`` (every file in the folder, a
+  ``.pvd`` collection's ``.vtu`` files under their relative path; docs/guide/outputs.md);
 - ``scene``: the validated scene;
 - ``along_path``: arrays over the ONE path grid of the case (s, radii, speeds, Hertz,
   films, and the tribology fields: load_per_length, friction_coefficient,
@@ -39,14 +41,15 @@ from typing import Any
 import numpy as np
 
 from femgear.docfields import units_table
+from femgear.edge.io.along_path import along_path
 from femgear.edge.io.results import write_json
 from femgear.results import INPUT_TYPES, RunResult, Tribology
 from femgear.summary import scene_summary
 
 
-def _friction_summary(mu: np.ndarray, dT: np.ndarray, s: np.ndarray) -> dict[str, float]:
-    return {"mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)), "mu_max": float(np.max(mu)),
-            "mu_mean": float(np.mean(mu)), "max_temperature_rise": float(np.max(dT))}
+def _friction_summary(mu: np.ndarray, dT: np.ndarray, s: np.ndarray, level: str) -> dict[str, Any]:
+    return {"level": level, "mu_pitch": float(np.interp(0.0, s, mu)), "mu_min": float(np.min(mu)),
+            "mu_max": float(np.max(mu)), "mu_mean": float(np.mean(mu)), "max_temperature_rise": float(np.max(dT))}
 
 
 def _thermal_summary(rise: float, zeta: np.ndarray, s: np.ndarray) -> dict[str, float]:
@@ -54,10 +57,11 @@ def _thermal_summary(rise: float, zeta: np.ndarray, s: np.ndarray) -> dict[str, 
             "deviation_pitch_gear": float(np.interp(0.0, s, zeta[1])), "max_deviation": float(np.max(np.abs(zeta)))}
 
 
-def tribology_summary(t: Tribology, s: np.ndarray, static: bool) -> dict[str, Any]:
+def tribology_summary(t: Tribology, s: np.ndarray, static: bool, level: str) -> dict[str, Any]:
+    """``friction`` (μ of the lubrication ``level`` along the path, labelled with it), ``thermal``, ``wear``."""
     out: dict[str, Any] = {}
     if t.friction_coefficient is not None:
-        out["friction"] = _friction_summary(t.friction_coefficient, t.temperature_rise, s)
+        out["friction"] = _friction_summary(t.friction_coefficient, t.temperature_rise, s, level)
     if t.thermal_deviation is not None:
         out["thermal"] = _thermal_summary(t.flank_temperature_rise, t.thermal_deviation, s)
     if t.wear is not None:
@@ -66,35 +70,10 @@ def tribology_summary(t: Tribology, s: np.ndarray, static: bool) -> dict[str, An
     return out
 
 
-def along_path(result: RunResult) -> dict[str, np.ndarray]:
-    c, k, t = result.contact, result.case.path, result.tribology
-    fields = {
-        "s": k.s, "radius_pinion": k.r1, "radius_gear": k.r2, "R": k.R, "v1": k.v1, "v2": k.v2,
-        "entrainment_speed": k.ue, "sliding_speed": k.vs, "slide_to_roll": k.srr,
-        "hertz_pressure": c.hertz_pressure, "hertz_half_width": c.hertz_half_width,
-        "film_central": c.film_central, "film_minimum": c.film_minimum, "load_per_length": t.load_per_length,
-    }
-    if t.film is not None:      # the film of the level that ran replaces the formula film, which stays as *_formula
-        fields.update(film_central_formula=c.film_central, film_minimum_formula=c.film_minimum,
-                      film_central=t.film.central, film_minimum=t.film.minimum, film_pressure_max=t.film.pressure_max)
-        if t.film.temperature_rise is not None:
-            fields["film_temperature_rise"] = t.film.temperature_rise
-    if t.friction_coefficient is not None:
-        fields.update(friction_coefficient=t.friction_coefficient, temperature_rise=t.temperature_rise)
-    if t.thermal_deviation is not None:
-        fields.update(thermal_deviation_pinion=t.thermal_deviation[0], thermal_deviation_gear=t.thermal_deviation[1])
-    if t.wear is not None:
-        fields.update(wear_pinion=t.wear[0], wear_gear=t.wear[1])
-    own = None if result.rating is None else result.rating.own
-    if own is not None and own.specific_film.shape == k.u.shape:     # λ = h_min / R_a of the film that ran
-        fields["specific_film"] = own.specific_film
-    return fields
-
-
 def run_summary(result: RunResult) -> dict[str, Any]:
     """The ``summary`` object of ``results.json`` (without ``outputs``)."""
     case, ms = result.case, result.stiffness
-    summary = scene_summary(case.scene, case.pair, result.contact, ratings=result.rating)
+    summary = scene_summary(case, result.contact, result.figures, ratings=result.rating)
     summary["physics"] = case.levels.model_dump()
     summary["stiffness"] = {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()}
     static = result.coupled is None
@@ -110,7 +89,7 @@ def run_summary(result: RunResult) -> dict[str, Any]:
                                "iterations": co.state.iteration, "seconds": co.seconds,
                                "history": {"iteration": h.iteration, "mesh_force_change": h.mesh_force_change,
                                            "mu_change": h.mu_change, "seconds": h.seconds}}
-    summary.update(tribology_summary(result.tribology, case.path.s, static))
+    summary.update(tribology_summary(result.tribology, case.path.s, static, case.levels.lubrication))
     if result.transmission_error is not None:
         summary["transmission_error"] = _te_summary(result)
     if result.tribology.film is not None:
@@ -137,8 +116,12 @@ def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
             "pressure_max": float(np.max(film.pressure_max))}
 
 
-def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tuple[dict[str, Any], dict[str, Path]]:
-    """Write ``results.json`` (+ dynamics files and figures); returns (summary, files)."""
+def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: bool = True
+              ) -> tuple[dict[str, Any], dict[str, Path]]:
+    """Write every file of a run into ``out_dir``: with dynamics ``dynamics.json``/``.npz``, the PNG figures
+    (``plots``, :mod:`femgear.edge.plot`), the ParaView set (``vtk``, :mod:`femgear.edge.io.paraview_run`), and
+    last ``results.json``, whose ``summary.outputs`` lists them all (a collection's ``.vtu`` files under their
+    relative path); returns (summary, files)."""
     out_dir = Path(out_dir)
     files: dict[str, Path] = {}
     if result.coupled is not None:
@@ -148,6 +131,13 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True) -> tup
         files.update({f"dynamics_{k}": v for k, v in dyn.items()})
     if plots:
         files.update(_figures(result, out_dir))
+    if vtk:
+        from femgear.edge.io.paraview_run import write_run_paraview
+
+        files.update(write_run_paraview(result, out_dir))
+    checkpoint = out_dir / WEAR_CHECKPOINT
+    if checkpoint.exists():
+        files["wear_checkpoint"] = checkpoint
     summary = run_summary(result)
     files["results"] = out_dir / "results.json"
     summary["outputs"] = {k: str(v) for k, v in files.items()}
@@ -175,21 +165,39 @@ def result_units() -> dict[str, str]:
 
 
 def _figures(result: RunResult, out_dir: Path) -> dict[str, Path]:
+    """``contact_path.png``, ``friction_path.png``, ``rating_path.png``, ``tribology_path.png`` (and with coupling
+    ``convergence.png``), drawn by :mod:`femgear.edge.plot`."""
+    from femgear.edge.io.figures import save_figure
+    from femgear.edge.plot.coupled import plot_convergence, plot_coupled_path
     from femgear.edge.plot.path import plot_contact_path, plot_friction_path
+    from femgear.edge.plot.rating import plot_rating_path
 
-    name, t = result.case.name, result.tribology
-    files = {"contact_path_png": plot_contact_path(result.contact, out_dir / "contact_path.png",
-                                                   title=f"{name}:\nquasi-static contact along the path (Hertz, "
-                                                         "film formulas)")}
+    case, t = result.case, result.tribology
+    name = case.name
+    files = {"contact_path_png": save_figure(plot_contact_path(
+        result.contact, title=f"{name}:\nquasi-static contact along the path (Hertz, film formulas)"),
+        out_dir / "contact_path.png")}
     if t.friction_coefficient is not None:
-        files["friction_path_png"] = plot_friction_path(
-            result.case.path.s, t.friction_coefficient, t.temperature_rise, out_dir / "friction_path.png",
-            title=f"{name}:\nfriction and contact temperature along the path (lubrication "
-                  f"{result.case.levels.lubrication})")
+        files["friction_path_png"] = save_figure(plot_friction_path(
+            case.path.s, t.friction_coefficient, t.temperature_rise,
+            title=f"{name}:\nfriction and contact temperature along the path (lubrication {case.levels.lubrication})"),
+            out_dir / "friction_path.png")
     if result.rating is not None:
-        from femgear.edge.plot.rating import plot_rating_path
-
-        files["rating_path_png"] = plot_rating_path(result.rating, result.case.pair.u_pitch,
-                                                    out_dir / "rating_path.png",
-                                                    title=f"{name}:\nISO/TS 6336-20/22 scuffing and micropitting ratings")
+        files["rating_path_png"] = save_figure(plot_rating_path(
+            result.rating, case.pair.u_pitch, title=f"{name}:\nISO/TS 6336-20/22 scuffing and micropitting ratings"),
+            out_dir / "rating_path.png")
+    files["tribology_path_png"] = save_figure(plot_coupled_path(
+        case.path.s, t.load_per_length, mu=t.friction_coefficient, temperature_rise=t.temperature_rise,
+        thermal_deviation=t.thermal_deviation, wear=t.wear, wear_cycles=t.wear_cycles,
+        title=f"{name}:\nload, friction, thermal deviation and wear along the path of contact"),
+        out_dir / "tribology_path.png")
+    if result.coupled is not None:
+        h = result.coupled.history
+        files["convergence_png"] = save_figure(plot_convergence(
+            h.iteration, h.mesh_force_change, h.mu_change, title=f"{name}: convergence of the {case.levels.coupling} coupling"),
+            out_dir / "convergence.png")
     return files
+
+
+#: the wear checkpoint of a static run with ``wear.cycles`` (resumed by a rerun into the same folder)
+WEAR_CHECKPOINT = "wear_checkpoint.npz"

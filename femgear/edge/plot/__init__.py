@@ -1,20 +1,8 @@
-"""Figures from results (matplotlib is imported inside the functions, never at import)."""
+"""Figures from results: each function draws one matplotlib figure and returns it (matplotlib is imported inside
+the functions, never at import); :func:`femgear.edge.io.figures.save_figure` writes it.
 
-from __future__ import annotations
-
-from pathlib import Path
-
-
-def save_figure(fig, path: str | Path, dpi: int = 120) -> Path:
-    """Lay out, save as PNG atomically (creating the folder, mode 0644) and close a figure."""
-    import matplotlib.pyplot as plt
-
-    from femgear.edge.io.atomic import atomic_write
-
-    try:
-        fig.tight_layout()
-        with atomic_write(path, "wb") as fh:
-            fig.savefig(fh, format="png", dpi=dpi)
-    finally:
-        plt.close(fig)
-    return Path(path)
+- ``path``, ``rating``, ``coupled``  the fields along the path of contact, the ISO ratings, the coupling history
+- ``dynamics``  time histories, mesh force, phase planes, spectra, sweeps of a dynamic response
+- ``ltca``      loaded TE curves, harmonics, Harris map, load over the flank
+- ``ehl``       the centre line of an EHL solution
+"""

@@ -1,12 +1,8 @@
-"""Plots of the coupled results: the fields along the path and the convergence history."""
+"""Figures of the coupled results: the fields along the path and the convergence history."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
-
-from femgear.edge.plot import save_figure
 
 
 def _pyplot():
@@ -18,10 +14,10 @@ def _pyplot():
     return plt
 
 
-def plot_coupled_path(s: np.ndarray, load_per_length: np.ndarray, path: str | Path,
+def plot_coupled_path(s: np.ndarray, load_per_length: np.ndarray,
                       mu: np.ndarray | None = None, temperature_rise: np.ndarray | None = None,
                       thermal_deviation: np.ndarray | None = None, wear: np.ndarray | None = None,
-                      wear_cycles: float = 0.0, title: str = "") -> Path:
+                      wear_cycles: float = 0.0, title: str = ""):
     """Load per length, μ and ΔT, thermal deviation and wear of both members against the path position.
 
     ``thermal_deviation`` and ``wear`` are (2, n) arrays (pinion, gear) [m]; None leaves a panel out.
@@ -52,7 +48,7 @@ def plot_coupled_path(s: np.ndarray, load_per_length: np.ndarray, path: str | Pa
     axes[-1, 0].set_xlabel("distance from the pitch point along the line of action [mm]")
     if title:
         fig.suptitle(title)
-    return save_figure(fig, path)
+    return fig
 
 
 def _members(ax, s_mm, values, label) -> None:
@@ -63,8 +59,7 @@ def _members(ax, s_mm, values, label) -> None:
     ax.legend(fontsize=8)
 
 
-def plot_convergence(iteration, mesh_force_change, mu_change, path: str | Path, tol: float = 1e-6,
-                     title: str = "") -> Path:
+def plot_convergence(iteration, mesh_force_change, mu_change, tol: float = 1e-6, title: str = ""):
     """Change of the dynamic mesh force (relative) and of μ (absolute) per coupling pass, log scale."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(6, 4))
@@ -80,24 +75,7 @@ def plot_convergence(iteration, mesh_force_change, mu_change, path: str | Path, 
     ax.grid(alpha=0.3, which="both")
     if title:
         ax.set_title(title)
-    return save_figure(fig, path)
+    return fig
 
 
-def run_figures(result, out_dir: str | Path) -> dict[str, Path]:
-    """``tribology_path.png`` (and with coupling ``convergence.png``) of a :class:`femgear.results.RunResult`."""
-    out_dir = Path(out_dir)
-    t, case = result.tribology, result.case
-    files = {"tribology_path_png": plot_coupled_path(
-        case.path.s, t.load_per_length, out_dir / "tribology_path.png", mu=t.friction_coefficient,
-        temperature_rise=t.temperature_rise, thermal_deviation=t.thermal_deviation, wear=t.wear,
-        wear_cycles=t.wear_cycles, title=f"{case.name}:\nload, friction, thermal deviation and wear along the path "
-                                         "of contact")}
-    if result.coupled is not None:
-        h = result.coupled.history
-        files["convergence_png"] = plot_convergence(
-            h.iteration, h.mesh_force_change, h.mu_change, out_dir / "convergence.png",
-            title=f"{case.name}: convergence of the {case.levels.coupling} coupling")
-    return files
-
-
-__all__ = ["plot_convergence", "plot_coupled_path", "run_figures"]
+__all__ = ["plot_convergence", "plot_coupled_path"]

@@ -1,14 +1,13 @@
 """PNG plots of dynamic responses (matplotlib is imported inside the functions only).
 
-Each function takes frozen results and a path, writes one PNG and returns the path.  Every
+Each function takes frozen results and returns a matplotlib figure (:func:`femgear.edge.io.figures.save_figure`
+writes it).  Every
 figure carries a title saying what it shows, prefixed with the scene name ``name`` when given;
 quantities are spelled out on the axes ("dynamic transmission error (DTE)"), spectra say that
 they show peak amplitudes.
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 
@@ -23,12 +22,6 @@ def _pyplot():
     import matplotlib.pyplot as plt
 
     return plt
-
-
-def _save(fig, path) -> Path:
-    from femgear.edge.plot import save_figure
-
-    return save_figure(fig, path)
 
 
 def _last_cycles(res: Response, cycles: float) -> np.ndarray:
@@ -47,7 +40,7 @@ def _title(name: str, what: str) -> str:
 TIME_LABEL = "time t from the start of the window [ms]"
 
 
-def plot_time_histories(res: Response, path, cycles: float = 5.0, name: str = "") -> Path:
+def plot_time_histories(res: Response, cycles: float = 5.0, name: str = ""):
     """Displacement and velocity of pinion and gear centres over the last ``cycles`` mesh periods.
 
     x and y each get their own panel (own scale): on one axis the smaller one hid under the other.
@@ -67,10 +60,10 @@ def plot_time_histories(res: Response, path, cycles: float = 5.0, name: str = ""
         axes[0, col].set_title(f"{member} centre")
         axes[-1, col].set_xlabel(TIME_LABEL)
     fig.suptitle(_title(name, f"lateral motion of the pinion and gear centres, last {cycles:g} mesh periods"))
-    return _save(fig, path)
+    return fig
 
 
-def plot_mesh_force(res: Response, path, cycles: float = 5.0, name: str = "") -> Path:
+def plot_mesh_force(res: Response, cycles: float = 5.0, name: str = ""):
     """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference."""
     plt = _pyplot()
     sel = _last_cycles(res, cycles)
@@ -90,7 +83,7 @@ def plot_mesh_force(res: Response, path, cycles: float = 5.0, name: str = "") ->
     for a in (ax, ax_d):
         a.grid(alpha=0.3)
     fig.suptitle(_title(name, f"dynamic mesh force per helix (normal to the flank), last {cycles:g} mesh periods"))
-    return _save(fig, path)
+    return fig
 
 
 def _smooth_orbit(t: np.ndarray, d: np.ndarray, v: np.ndarray, upsample: int = 8) -> tuple[np.ndarray, np.ndarray]:
@@ -102,7 +95,7 @@ def _smooth_orbit(t: np.ndarray, d: np.ndarray, v: np.ndarray, upsample: int = 8
     return CubicHermiteSpline(t, d, v)(tf), CubicSpline(t, v)(tf)
 
 
-def plot_phase_planes(res: Response, path, cycles: float = 10.0, name: str = "") -> Path:
+def plot_phase_planes(res: Response, cycles: float = 10.0, name: str = ""):
     """Velocity against displacement (about their means) of pinion and gear, x and y in separate panels,
     over the last ``cycles`` mesh periods, interpolated between the time steps."""
     plt = _pyplot()
@@ -121,10 +114,10 @@ def plot_phase_planes(res: Response, path, cycles: float = 10.0, name: str = "")
             ax.set_ylabel(f"velocity {ax_name} − mean [mm/s]")
             ax.grid(alpha=0.3)
     fig.suptitle(_title(name, "phase planes (velocity against displacement) of the pinion and gear centres"))
-    return _save(fig, path)
+    return fig
 
 
-def plot_spectra(res: Response, path, max_order: float = 32.0, name: str = "") -> Path:
+def plot_spectra(res: Response, max_order: float = 32.0, name: str = ""):
     """Hanning-windowed single-sided spectra of the DTE and of the gear's left-bearing y acceleration against
     the mesh order: each line's height is the peak amplitude of that harmonic (a sine of amplitude A shows A,
     :func:`femgear.system.dynamics.response.spectrum`)."""
@@ -142,10 +135,10 @@ def plot_spectra(res: Response, path, max_order: float = 32.0, name: str = "") -
             ax.axvline(k, color="0.8", lw=0.6, zorder=0)
     axes[-1].set_xlabel(f"mesh order f/f_m  (mesh frequency f_m = {res.mesh_frequency:.1f} Hz)")
     fig.suptitle(_title(name, "spectra (Hanning window, peak amplitudes, not RMS)"))
-    return _save(fig, path)
+    return fig
 
 
-def plot_sweep(sweep, path, modal=None, name: str = "", harmonics: int = 4) -> Path:
+def plot_sweep(sweep, modal=None, name: str = "", harmonics: int = 4):
     """RMS of the dynamic transmission error against mesh frequency (driver speed on the top axis), with
     the natural frequencies whose mesh strain energy is ≥ 5 % marked where the mesh frequency or one of
     its first ``harmonics`` harmonics meets them (:func:`resonance_marks`); those modes are listed."""
@@ -163,7 +156,7 @@ def plot_sweep(sweep, path, modal=None, name: str = "", harmonics: int = 4) -> P
     if modal is not None:
         _mark_modes(ax, modal, float(fm.min()), float(fm.max()), harmonics)
     fig.suptitle(_title(name, "speed sweep: dynamic transmission error against mesh frequency"), fontsize=10)
-    return _save(fig, path)
+    return fig
 
 
 def _mark_modes(ax, modal, lo: float, hi: float, harmonics: int) -> None:
@@ -187,7 +180,7 @@ def _mark_modes(ax, modal, lo: float, hi: float, harmonics: int) -> None:
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), frameon=False)
 
 
-def plot_branches(up, down, path) -> Path:
+def plot_branches(up, down):
     """Kahraman–Singh sweeps: amplitude of up- and down-sweep against Ω."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(7, 4))
@@ -198,4 +191,4 @@ def plot_branches(up, down, path) -> Path:
     ax.set_title("Kahraman–Singh backlash oscillator: frequency sweeps up and down", fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend()
-    return _save(fig, path)
+    return fig

@@ -3,11 +3,9 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from pathlib import Path
 
 import numpy as np
 
-from femgear.edge.plot import save_figure
 from femgear.physics.ltca.maps import LoadMaps
 from femgear.physics.ltca.te import HarrisMap, TEAnalysis
 
@@ -21,7 +19,7 @@ def _plt():
     return plt
 
 
-def plot_te_curves(analyses: Sequence[TEAnalysis], path: str | Path, title: str = "") -> Path:
+def plot_te_curves(analyses: Sequence[TEAnalysis], title: str = ""):
     """Loaded TE over one mesh period per torque: both helices together (solid), each helix alone (dashed,
     dotted) and the unloaded TE (thin grey), along the normal line of action [µm]."""
     plt = _plt()
@@ -42,10 +40,10 @@ def plot_te_curves(analyses: Sequence[TEAnalysis], path: str | Path, title: str 
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, ncol=2 if len(analyses) > 2 else 1)
     ax.set_title(title or "loaded transmission error (TE), loaded tooth contact analysis (LTCA)", fontsize=10)
-    return save_figure(fig, path)
+    return fig
 
 
-def plot_harmonics(analyses: Sequence[TEAnalysis], path: str | Path, title: str = "") -> Path:
+def plot_harmonics(analyses: Sequence[TEAnalysis], title: str = ""):
     """Loaded TE amplitudes at the mesh orders, grouped bars per torque [µm]."""
     plt = _plt()
     n = analyses[0].harmonics.size
@@ -65,10 +63,10 @@ def plot_harmonics(analyses: Sequence[TEAnalysis], path: str | Path, title: str 
     ax.grid(alpha=0.3, axis="y")
     ax.legend(fontsize=8)
     ax.set_title(title or "harmonics of the loaded transmission error (TE), LTCA", fontsize=10)
-    return save_figure(fig, path)
+    return fig
 
 
-def plot_harris(h: HarrisMap, path: str | Path, title: str = "") -> Path:
+def plot_harris(h: HarrisMap, title: str = ""):
     """Harris map: loaded TE peak-to-peak against torque, with the modification and unmodified [µm]."""
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
@@ -80,10 +78,10 @@ def plot_harris(h: HarrisMap, path: str | Path, title: str = "") -> Path:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     ax.set_title(title or "Harris map: loaded transmission error against torque (LTCA)", fontsize=10)
-    return save_figure(fig, path)
+    return fig
 
 
-def plot_load_distribution(maps: LoadMaps, path: str | Path, title: str = "", name: str = "") -> Path:
+def plot_load_distribution(maps: LoadMaps, title: str = "", name: str = ""):
     """Load per unit length over the pinion's flank of each helix at the phase of the largest pressure
     (roll distance ρ₁ against face coordinate ζ) [N/mm]; loaded edge nodes marked (edge contact)."""
     plt = _plt()
@@ -106,7 +104,7 @@ def plot_load_distribution(maps: LoadMaps, path: str | Path, title: str = "", na
     default = (f"load over the pinion flank at phase {maps.worst_phase:.3f} (largest pressure), "
                f"{maps.torque:g} N m")
     fig.suptitle(title or (f"{name}: {default}" if name else default))
-    return save_figure(fig, path)
+    return fig
 
 
 __all__ = ["plot_harmonics", "plot_harris", "plot_load_distribution", "plot_te_curves"]

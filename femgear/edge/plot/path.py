@@ -2,23 +2,20 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
-from femgear.edge.plot import save_figure
 from femgear.physics.contact.path import ContactPath
 
 
-def _finish(fig, axes, path: str | Path, title: str) -> Path:
-    """Mark the pitch point, add a grid and the title, save as PNG and close."""
+def _finish(fig, axes, title: str):
+    """Mark the pitch point, add a grid and the title; returns the figure."""
     for ax in axes:
         ax.axvline(0, color="0.6", lw=0.8, ls=":")
         ax.grid(alpha=0.3)
     if title:
         fig.suptitle(title)
-    return save_figure(fig, path)
+    return fig
 
 
-def plot_contact_path(result: ContactPath, path: str | Path, title: str = "") -> Path:
+def plot_contact_path(result: ContactPath, title: str = ""):
     """Hertz pressure, film thickness and sliding speed against the position on the path."""
     import matplotlib
 
@@ -40,10 +37,10 @@ def plot_contact_path(result: ContactPath, path: str | Path, title: str = "") ->
     axes[2].set_ylabel("speed [m/s]")
     axes[2].set_xlabel("distance from the pitch point along the line of action [mm]")
     axes[2].legend(fontsize=8)
-    return _finish(fig, axes, path, title)
+    return _finish(fig, axes, title)
 
 
-def plot_friction_path(s, mu, temperature_rise, path: str | Path, title: str = "") -> Path:
+def plot_friction_path(s, mu, temperature_rise, title: str = ""):
     """Friction coefficient and maximum contact temperature rise along the path."""
     import matplotlib
 
@@ -56,4 +53,4 @@ def plot_friction_path(s, mu, temperature_rise, path: str | Path, title: str = "
     axes[1].plot(s * 1e3, temperature_rise, "r-")
     axes[1].set_ylabel("max oil temperature rise [K]")
     axes[1].set_xlabel("distance from the pitch point along the line of action [mm]")
-    return _finish(fig, axes, path, title)
+    return _finish(fig, axes, title)

@@ -2,15 +2,13 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 
 from femgear.edge.plot.path import _finish
 from femgear.physics.rating.suite import PairRating
 
 
-def plot_rating_path(rating: PairRating, u_pitch: float, path: str | Path, title: str = "") -> Path:
+def plot_rating_path(rating: PairRating, u_pitch: float, title: str = ""):
     """Top: ISO/TS 6336-20 contact temperature θ_B = θ_M + θ_fl, the scuffing temperature θ_S and femgear's
     contact temperature; bottom: ISO/TS 6336-22 λ_GF,Y with λ_GFP and femgear's λ = h_min/R_a (°C, mm from C)."""
     import matplotlib
@@ -40,4 +38,4 @@ def plot_rating_path(rating: PairRating, u_pitch: float, path: str | Path, title
     ax.set_ylabel("specific film thickness λ [-]")
     ax.set_xlabel("position on the path from the pitch point [mm]")
     ax.legend(fontsize=7)
-    return _finish(fig, axes, path, title)
+    return _finish(fig, axes, title)

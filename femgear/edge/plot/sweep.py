@@ -3,10 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from pathlib import Path
 from typing import Any
-
-from femgear.edge.plot import save_figure
 
 #: at most this many lines per panel get a legend entry (the others are drawn, unlabelled)
 MAX_LEGEND = 12
@@ -26,7 +23,7 @@ def x_key(rows: Sequence[Mapping[str, Any]], keys: Sequence[str]) -> str:
 
 
 def plot_sweep_summary(rows: Sequence[Mapping[str, Any]], keys: Sequence[str], outputs: Sequence[str],
-                       path: str | Path, title: str = "") -> Path:
+                       title: str = ""):
     """One panel per output against one swept key (x); one line per combination of the other swept keys
     that vary (the keys with one value are listed under the title).
 
@@ -65,7 +62,7 @@ def plot_sweep_summary(rows: Sequence[Mapping[str, Any]], keys: Sequence[str], o
         axes[-1, 0].set_xticks(range(len(labels)), labels)
     axes[-1, 0].set_xlabel(x)
     fig.suptitle((title or "sweep summary") + (f"\n{', '.join(fixed)}" if fixed else ""), fontsize=10)
-    return save_figure(fig, path)
+    return fig
 
 
 __all__ = ["plot_sweep_summary", "x_key"]

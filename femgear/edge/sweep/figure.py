@@ -35,15 +35,17 @@ def choose_outputs(spec: SweepSpec, rows: Sequence[Mapping[str, Any]], requested
 def write_summary(spec: SweepSpec, rows: Sequence[Mapping[str, Any]], folder: Path,
                   requested: Sequence[str] = (), argument: str = "outputs") -> Path | None:
     """Draw ``summary.png`` of the finished cases in ``folder``; None when no case finished or nothing to draw."""
+    from femgear.edge.io.figures import save_figure
     from femgear.edge.plot.sweep import plot_sweep_summary
 
     outputs = choose_outputs(spec, rows, requested, argument)
     done = [r for r in rows if r.get("status") == "done"]
     if not done or not outputs or not spec.keys:
         return None
-    return plot_sweep_summary(done, spec.keys, outputs, folder / "summary.png",
-                              title=f"sweep {spec.name} of scene {_scene_name(spec)}: {len(done)} of {len(rows)} "
-                                    "cases finished (SI units)")
+    fig = plot_sweep_summary(done, spec.keys, outputs,
+                             title=f"sweep {spec.name} of scene {_scene_name(spec)}: {len(done)} of {len(rows)} "
+                                   "cases finished (SI units)")
+    return save_figure(fig, folder / "summary.png")
 
 
 def _scene_name(spec: SweepSpec) -> str:

@@ -4,5 +4,5 @@
 - ``elastic``     :class:`ElasticProblem`: K assembled once, SA hierarchy with rigid-body modes built once.
 - ``thermal``     steady conduction, thermo-elastic expansion, flank deviation ζ_T (analytic / FE levels).
 - ``compliance``  FE tooth compliance along the path of contact (the ``fe`` stiffness level).
-- ``vtk``         VTK output of temperature, displacement and stress (imports pyvista lazily).
+- ``fields``      a section's temperature, displacement and von Mises stress as plain arrays (written by ``edge/io``).
 """

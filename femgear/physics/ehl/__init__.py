@@ -22,6 +22,7 @@ Entry points (this folder): :func:`femgear.physics.ehl.point.solve_point` (multi
 validated range, Newton elsewhere or when the multigrid fails),
 :func:`femgear.physics.ehl.fe.line.solve_line`, :mod:`femgear.physics.ehl.dimensional` (SI in,
 metres and pascals out), :mod:`femgear.physics.ehl.transient` (roughness moving through the
-contact: FE time steps from the steady solve), :mod:`femgear.physics.ehl.path` (the ``ehl-line``
-lubrication level along the path) and ``output`` (files; leaves physics with issue 27).
+contact: FE time steps from the steady solve) and :mod:`femgear.physics.ehl.path` (the ``ehl-line``
+lubrication level along the path).  Files (VTK fields, the centre-line figure) are written at the edge:
+:mod:`femgear.edge.io.ehl`.
 """

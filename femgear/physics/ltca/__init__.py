@@ -7,7 +7,7 @@
 - ``contact``     contact points of a mesh phase, the compliance matrix, the active-set contact solve.
 - ``analysis``    one mesh cycle: loaded/unloaded TE, secant/tangent stiffness, loads, pressures; dynamics input.
 - ``level``       the ``ltca`` stiffness level (resolved mesh orders, deviated cycles).
-- ``vtk``         the (ρ, ζ) pressure/load map of a cycle on the pinion's flanks.
+- ``flank_map``   the (ρ, ζ) pressure/load map of a cycle on the pinion's flanks.
 - ``te``          TE p-p and mesh harmonics, stiffness mean/ripple, load share, peak pressure and edge flag
                   (a frozen ``TEAnalysis``), each helix alone, the Harris map, the tool's input checks.
 - ``maps``        pressure and load maps of both members, each turned into its meshing position.

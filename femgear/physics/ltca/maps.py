@@ -1,7 +1,7 @@
 """Pressure and load maps of an LTCA cycle on the loaded flanks of both members, placed in mesh.
 
 Each member's flank (tooth 0, both helices) is the surface of its LTCA member body
-(:func:`femgear.physics.ltca.vtk.helix_flank_quads`), turned about the member's own axis into its
+(:func:`femgear.physics.ltca.flank_map.helix_flank_quads`), turned about the member's own axis into its
 meshing position (:func:`mesh_rotation`): the mesh frame has the pinion axis at the origin and
 the gear axis at (a_w, 0), both along z (the body frames' z: left helix 0 … b, the right helix
 b + g … 2b + g), and the two flanks touch along the contact line through the pitch point at
@@ -10,7 +10,7 @@ A body is only turned, never mirrored: the involutes of both members unwind in t
 about their axes, so one rotation per member brings every point of a contact line onto both
 flanks with opposite normals (``tests/ltca/test_ltca_tool.py``).
 
-Fields (per node of a (ρ, ζ) grid per helix, :func:`femgear.physics.ltca.vtk.flank_pressure_map`; the
+Fields (per node of a (ρ, ζ) grid per helix, :func:`femgear.physics.ltca.flank_map.flank_pressure_map`; the
 same contact-line loads on both members, at ρ₁ on the pinion and ρ₂ = T₁T₂ − ρ₁ on the gear):
 ``p_max`` the largest Hertz pressure over the cycle [Pa], ``w_mean`` the cycle mean of the load
 per length [N/m], ``w_worst`` the load per length at the phase of the largest pressure [N/m],
@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 
 
@@ -52,26 +53,39 @@ def to_mesh(pair: GearPair, member: int, points: np.ndarray) -> np.ndarray:
     return out
 
 
+@document_fields
 @dataclass(frozen=True)
 class MemberMap:
     """One member's flank surface in mesh with its fields per point (index order [helix, i_ρ, i_ζ])."""
 
-    member: int                 #: 1 pinion, 2 gear
-    points: np.ndarray          #: (n, 3) in the mesh frame [m]
-    quads: np.ndarray           #: (m, 4) point indices
-    fields: dict                #: name -> (n,) array: p_max, w_mean, w_worst, rho, zeta, u, helix, edge, edge_contact
+    member: int
+    """1 pinion, 2 gear [-]"""
+    points: np.ndarray
+    """(n, 3) in the mesh frame [m]"""
+    quads: np.ndarray
+    """(m, 4) point indices of the flank quadrilaterals [-]"""
+    fields: dict
+    """name -> (n,) array at the points: p_max [Pa]; w_mean, w_worst [N/m]; rho, zeta, u [m]; helix, edge,
+    edge_contact [-] [Pa, N/m, m or -: by name]"""
 
 
+@document_fields
 @dataclass(frozen=True)
 class LoadMaps:
     """The maps of both members at one torque."""
 
-    torque: float               #: [N m]
-    worst_phase: float          #: phase of ``w_worst`` [base pitches]
-    rho: np.ndarray             #: pinion roll distance grid [m]
-    zeta: np.ndarray            #: face grid of a helix [m]
+    torque: float
+    """the pinion torque of the maps [N m]"""
+    worst_phase: float
+    """phase of ``w_worst`` [base pitches]"""
+    rho: np.ndarray
+    """pinion roll distance grid [m]"""
+    zeta: np.ndarray
+    """face grid of a helix [m]"""
     beta_b: float
+    """base helix angle of the pair [rad]"""
     members: tuple[MemberMap, MemberMap]
+    """pinion and gear maps [-]"""
 
     def helix_force(self, member: int) -> np.ndarray:
         """(left, right) cycle-mean normal load from ``member``'s map, Σ w_mean Δζ / cos β_b [N]."""
@@ -82,8 +96,8 @@ class LoadMaps:
 def load_maps(result, pair: GearPair, youngs_modulus: float, poisson_ratio: float, torque: float, worst: int,
               groove: float = 0.0, stagger: float = 0.0, n_rho: int = 40, n_z: int = 60) -> LoadMaps:
     """:class:`LoadMaps` of the cycle ``result`` (keep_lines=True); ``worst`` the phase index of ``w_worst``."""
+    from femgear.physics.ltca.flank_map import flank_pressure_map, helix_flank_quads
     from femgear.physics.ltca.te import one_phase
-    from femgear.physics.ltca.vtk import flank_pressure_map, helix_flank_quads
 
     fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio, n_rho, n_z)
     snap = flank_pressure_map(one_phase(result, worst), pair, youngs_modulus, poisson_ratio, n_rho, n_z)

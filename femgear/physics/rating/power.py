@@ -26,22 +26,33 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import trapezoid
 
+from femgear.docfields import document_fields
 from femgear.physics.geometry.gear import GearPair
 
 
+@document_fields
 @dataclass(frozen=True)
 class MeshPowerLoss:
     """Mesh power loss along the path and per mesh cycle (SI)."""
 
-    u: np.ndarray                     #: path positions [m]
-    friction_coefficient: np.ndarray  #: μ(u) [-]
-    line_load: np.ndarray             #: w̄(u) [N/m]
-    sliding_speed: np.ndarray         #: |v_s(u)| [m/s]
-    density: np.ndarray               #: time-mean loss per unit path length, all helices [W/m]
-    mean_loss: float                  #: P_V [W]
-    input_power: float                #: T1 ω1 [W]
-    energy_per_mesh_cycle: float      #: P_V / f_m [J]
-    ohlendorf_HV: float               #: H_V of the geometry (reference for constant μ) [-]
+    u: np.ndarray
+    """path positions [m]"""
+    friction_coefficient: np.ndarray
+    """μ(u) [-]"""
+    line_load: np.ndarray
+    """w̄(u) [N/m]"""
+    sliding_speed: np.ndarray
+    """|v_s(u)| [m/s]"""
+    density: np.ndarray
+    """time-mean loss per unit path length, all helices [W/m]"""
+    mean_loss: float
+    """P_V [W]"""
+    input_power: float
+    """T1 ω1 [W]"""
+    energy_per_mesh_cycle: float
+    """P_V / f_m [J]"""
+    ohlendorf_HV: float
+    """H_V of the geometry (reference for constant μ) [-]"""
 
     @property
     def efficiency(self) -> float:

@@ -1,15 +1,14 @@
 """TEHL along the path of contact: h_c, p_max, max ΔT and μ per position
-(the seed paper's Fig. 16 analogue), and VTK of the thermal fields.
+(the seed paper's Fig. 16 analogue); the thermal fields are written by :func:`femgear.edge.io.fields.write_tehl_vtu`.
 
 Positions, load per length, radii, entrainment speeds and SRR come from
 :func:`femgear.physics.contact.path.contact_along_path` (or any ``load_per_length`` array, e.g.
-the coupling's dynamic w̄').  pyvista is imported only when VTK is written.
+the coupling's dynamic w̄').
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
@@ -53,26 +52,3 @@ def tehl_along_path(contact, setup: TEHLSetup, T_bulk: float, level: int, load_p
     return TEHLPath(s=np.asarray(k.s), srr=np.asarray(k.srr), hc=arr("hc"), pmax=arr("pmax"), dT_max=arr("dT_max"),
                     dT_surface=arr("dT_surface"), mu=arr("mu"), mu_poiseuille=arr("mu_poiseuille"),
                     seconds=float(sum(r.seconds for r in results)), results=results)
-
-
-def write_thermal_vtk(result: TEHLResult, path: Path | str) -> Path:
-    """Film temperature field of one contact as a structured (x, ζ = z/h) VTK grid, with
-    the physical z as point data and the surface temperatures as field data."""
-    import pyvista as pv
-
-    T = result.T_film                                    # (nt, nz) cell values
-    nt, nz = T.shape
-    dx = result.x_cells[1] - result.x_cells[0]
-    xf = np.r_[result.x_cells - dx / 2, result.x_cells[-1] + dx / 2]
-    zeta = np.linspace(0.0, 1.0, nz + 1)
-    grid = pv.RectilinearGrid(xf / result.b, zeta, np.array([0.0]))
-    grid.cell_data["temperature"] = T.ravel(order="F")
-    h_f = np.interp(xf, result.x, result.h)
-    grid.point_data["z"] = (h_f[:, None] * zeta[None, :]).ravel(order="F")
-    grid.point_data["pressure"] = np.repeat(np.interp(xf, result.x, result.p)[:, None], nz + 1, 1).ravel(order="F")
-    grid.field_data["surface_temperature_1"] = result.T_surface1
-    grid.field_data["surface_temperature_2"] = result.T_surface2
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    grid.save(str(path))
-    return path

@@ -1,4 +1,4 @@
-"""The pressure map of an LTCA cycle on the 3-D pinion flanks of both helices (written by :mod:`femgear.edge.io.ltca`).
+"""The pressure map of an LTCA cycle on the 3-D pinion flanks of both helices, and their tessellation (written by :mod:`femgear.edge.io.ltca`).
 
 The loaded flank of the pinion's tooth 0 of each helix is tessellated on a (ρ, ζ) grid (ρ the
 roll distance over the active flank, ζ the helix's own face coordinate, the groove at ζ = b).
