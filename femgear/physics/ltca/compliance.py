@@ -146,11 +146,19 @@ def cache_key(payload: dict) -> str:
 
 
 def save_cache(path: Path, **arrays) -> None:
-    """Write ``arrays`` to the ``.npz`` cache file ``path`` atomically (a temporary file, then a rename)."""
+    """Write ``arrays`` to the ``.npz`` cache file ``path`` atomically: a temporary file of a name unique to this
+    writer (two sweep workers building the same entry must not write into one file), then a rename."""
+    import tempfile
+
     path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_suffix(".tmp.npz")
-    np.savez(tmp, **arrays)
-    os.replace(tmp, path)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}.", suffix=".tmp.npz")
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            np.savez(fh, **arrays)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
 
 
 def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, order: int,
