@@ -20,6 +20,7 @@ import pytest
 
 from femgear.errors import ResourceError
 from femgear.perf import NOTICE, Estimate, Progress, announce
+from tests.support import default_sigint
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = str(ROOT / "studies" / "paper_baseline.toml")
@@ -27,11 +28,6 @@ BASE = str(ROOT / "studies" / "paper_baseline.toml")
 QUIET = ["--set", 'physics.dynamics="none"', "--set", 'physics.coupling="one-way"', "--set", 'physics.wear="none"']
 
 
-
-def default_sigint() -> None:
-    """In the child before exec: Ctrl-C at its default, so that Python installs its handler even when the tests
-    run from a shell that ignores SIGINT in background jobs (``nohup make test &``)."""
-    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 def test_announce_refuses_over_the_budget_naming_the_key(monkeypatch):
     monkeypatch.setenv("FEMGEAR_MEMORY_GB", "1")

@@ -13,6 +13,7 @@ import pytest
 
 from femgear.edge.sweep import parse_sweep, run_sweep
 from femgear.errors import SceneError
+from tests.support import default_sigint
 
 RIG = Path(__file__).resolve().parents[2] / "studies" / "rig15_sweep.toml"
 
@@ -20,11 +21,6 @@ RIG = Path(__file__).resolve().parents[2] / "studies" / "rig15_sweep.toml"
 STATIC = '"physics.dynamics" = ["none"]\n"physics.coupling" = ["one-way"]\n'   # quasi-static cases: fast
 
 
-
-def default_sigint() -> None:
-    """In the child before exec: Ctrl-C at its default, so that Python installs its handler even when the tests
-    run from a shell that ignores SIGINT in background jobs (``nohup make test &``)."""
-    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 def write_sweep(tmp_path, body: str, name: str = "t") -> Path:
     base = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
