@@ -19,7 +19,7 @@ from femgear.scene import load_scene
 
 SCENE = Path(__file__).with_name("fan_drive.toml")
 COARSE = ["numerics.dynamics_cycles=20.0", "numerics.transient_cycles=5.0", "numerics.path_points=11",
-          "stiffness.n_positions=40", "stiffness.n_slices=20"]
+          "stiffness.n_positions=40"]
 
 
 def run(coarse: bool = False):

@@ -42,28 +42,28 @@ def _iso6336(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, young
     return uniform_mesh_stiffness(pair, k, "iso6336", n_positions, stagger, t0=t0, iso=iso)
 
 
-def _pem(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
+def _pem(pair: GearPair, n_positions: int = 200, stagger: float = 0.0,
          youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, bore_radius: tuple[float, float] = (0.0, 0.0),
          plane: str = "strain", **_: Any) -> MeshStiffness:
-    from femgear.physics.stiffness import sliced_mesh_stiffness
+    from femgear.physics.stiffness import integrated_mesh_stiffness
     from femgear.physics.stiffness.pem import pair_stiffness_per_width
     from femgear.physics.stiffness.tvms import path_samples
 
     t0 = time.perf_counter()
     u_grid = path_samples(pair)
     k_grid = pair_stiffness_per_width(pair, u_grid, youngs_modulus, poisson_ratio, bore_radius, plane)
-    return sliced_mesh_stiffness(pair, u_grid, k_grid, "pem", n_positions, stagger, n_slices, t0=t0)
+    return integrated_mesh_stiffness(pair, u_grid, k_grid, "pem", n_positions, stagger, t0=t0)
 
 
-def _fe(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
+def _fe(pair: GearPair, n_positions: int = 200, stagger: float = 0.0,
         youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, bore_radius: tuple[float, float] = (0.0, 0.0),
         fe_options: dict | None = None, **_: Any) -> MeshStiffness:
     """Tooth compliance from the 2-D FE sections at ``fe_options['n_fe']`` (default 9) path positions, Hertz as
-    in PEM, tabulated along the path and sliced."""
+    in PEM, tabulated along the path and integrated over every contact line."""
     import numpy as np
 
     from femgear.physics.body.compliance import fe_pair_stiffness_per_width
-    from femgear.physics.stiffness import sliced_mesh_stiffness
+    from femgear.physics.stiffness import integrated_mesh_stiffness
     from femgear.physics.stiffness.tvms import FESamples, path_samples, tabulated
 
     t0 = time.perf_counter()
@@ -73,10 +73,10 @@ def _fe(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, n_slices: 
     k_fe, fe_info = fe_pair_stiffness_per_width(pair, u_fe, youngs_modulus, poisson_ratio, bore_radius=bore_radius,
                                                 **opts)
     u_grid = path_samples(pair)
-    return sliced_mesh_stiffness(pair, u_grid, tabulated(pair, u_fe, k_fe)(u_grid), "fe", n_positions, stagger,
-                                 n_slices, t0=t0,
-                                 fe=FESamples(u=u_fe, k=k_fe, compliance=(fe_info["c1"], fe_info["c2"]),
-                                              ndofs=tuple(fe_info["ndofs"]), h=fe_info["h"], seconds=fe_info["seconds"]))
+    fe = FESamples(u=u_fe, k=k_fe, compliance=(fe_info["c1"], fe_info["c2"]), ndofs=tuple(fe_info["ndofs"]),
+                   h=fe_info["h"], seconds=fe_info["seconds"])
+    return integrated_mesh_stiffness(pair, u_grid, tabulated(pair, u_fe, k_fe)(u_grid), "fe", n_positions, stagger,
+                                     t0=t0, fe=fe)
 
 
 def _ltca(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, youngs_modulus: float = 210e9,
@@ -92,7 +92,7 @@ def _ltca(pair: GearPair, n_positions: int = 200, stagger: float = 0.0, youngs_m
     cycle = ltca_cycle(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
                        poisson_ratio=poisson_ratio, **ltca_options)
     res = cycle.result
-    return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger, 0,
+    return MeshStiffness("ltca", res.phase, res.k_secant_left, res.k_secant_right, stagger,
                          time.perf_counter() - t0, ltca=cycle)
 
 
@@ -103,14 +103,14 @@ PAIR_LEVELS: dict[str, Callable[..., MeshStiffness]] = {
 _SUMMARIES = {
     "constant": "one mesh stiffness per unit face width, constant in time (stiffness.mesh_stiffness_per_width)",
     "iso6336": "ISO 6336-1 single-pair stiffness c' and mesh stiffness c_gamma, shared along the contact lines",
-    "pem": "potential-energy tooth compliance (Hertz, bending, shear, axial, foundation) sliced along the face",
-    "fe": "2-D finite-element tooth sections (plane strain) sliced along the face",
+    "pem": "potential-energy tooth compliance (Hertz, bending, shear, axial, foundation) integrated over the contact lines",
+    "fe": "2-D finite-element tooth sections (plane strain) integrated over the contact lines",
     "ltca": "loaded tooth contact analysis on 3-D FE member bodies with flank modifications",
 }
 
 
 def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, stagger: float = 0.0,
-                   n_slices: int = 100, youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
+                   youngs_modulus: float = 210e9, poisson_ratio: float = 0.3,
                    bore_radius: tuple[float, float] = (0.0, 0.0), plane: str = "strain",
                    constant_per_width: float = 2.0e10, fe_options: dict | None = None,
                    ltca_options: dict | None = None) -> MeshStiffness:
@@ -118,8 +118,8 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
 
     Levels: ``constant`` (``constant_per_width`` [N/m per m] × b per helix), ``iso6336``
     (c_γα b, constant; ISO's value is read as a transverse stiffness per unit face width
-    and projected like the sliced levels), ``pem`` (sliced potential energy method),
-    ``fe`` (sliced, tooth compliance from the 2-D FE of :mod:`femgear.physics.body.compliance`
+    and projected like ``pem``), ``pem`` (potential energy method, integrated over every contact line),
+    ``fe`` (the same integral, tooth compliance from the 2-D FE of :mod:`femgear.physics.body.compliance`
     at ``fe_options['n_fe']`` path positions, Hertz as in PEM), ``ltca`` (secant stiffness
     per helix from the loaded tooth contact analysis of :mod:`femgear.physics.ltca` at
     ``ltca_options['force']``; the cycle, with its TE tables, is ``MeshStiffness.ltca``).
@@ -127,7 +127,7 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
     build = PAIR_LEVELS.get(level)
     if build is None:
         raise ValueError(f"level must be one of {', '.join(PAIR_LEVELS)}, got {level!r}")
-    return build(pair, n_positions=n_positions, stagger=stagger, n_slices=n_slices, youngs_modulus=youngs_modulus,
+    return build(pair, n_positions=n_positions, stagger=stagger, youngs_modulus=youngs_modulus,
                  poisson_ratio=poisson_ratio, bore_radius=bore_radius, plane=plane,
                  constant_per_width=constant_per_width, fe_options=fe_options, ltca_options=ltca_options)
 
@@ -152,7 +152,7 @@ def case_arguments(case: Case, level: str) -> dict:
     st = case.stiffness
     fe_options: dict = {} if st.fe_mesh_size is None else {"h": st.fe_mesh_size}
     fe_options["level"] = case.numerics.body_level
-    args = dict(n_positions=st.n_positions, stagger=case.stagger, n_slices=st.n_slices,
+    args = dict(n_positions=st.n_positions, stagger=case.stagger,
                 youngs_modulus=case.material.youngs_modulus, poisson_ratio=case.material.poisson_ratio,
                 bore_radius=case.bore_radii, constant_per_width=st.mesh_stiffness_per_width, fe_options=fe_options)
     if level == "ltca":

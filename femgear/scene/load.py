@@ -56,6 +56,13 @@ def _deep_copy(data: Mapping[str, Any]) -> dict[str, Any]:
     return {k: _deep_copy(v) if isinstance(v, Mapping) else v for k, v in data.items()}
 
 
+#: keys that earlier releases took, with what to do now (CHANGELOG.md)
+REMOVED_KEYS = {
+    "stiffness.n_slices": "removed: the pem and fe levels integrate every contact line over the face exactly, "
+                          "without slices; delete the key",
+}
+
+
 def _first_error(exc: ValidationError) -> SceneError:
     err = exc.errors()[0]
     key = ".".join(str(p) for p in err["loc"]) or "scene"
@@ -63,7 +70,7 @@ def _first_error(exc: ValidationError) -> SceneError:
     if err["type"] not in ("missing", "extra_forbidden") and "input" in err:
         message += f" (got {err['input']!r})"
     if err["type"] == "extra_forbidden":
-        message = "unknown key"
+        message = REMOVED_KEYS.get(key, "unknown key")
     more = len(exc.errors()) - 1
     if more:
         message += f"; and {more} more error{'s' if more > 1 else ''}"

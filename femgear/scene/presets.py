@@ -13,19 +13,19 @@ from typing import Any
 PRESETS: dict[str, dict[str, dict[str, Any]]] = {
     "fast": {
         "physics": {"stiffness": "pem", "lubrication": "formula", "thermal": "analytic", "dynamics": "lumped"},
-        "stiffness": {"n_slices": 40, "n_positions": 100},
+        "stiffness": {"n_positions": 100},
         "numerics": {"path_points": 21, "steps_per_mesh_period": 100, "dynamics_cycles": 60.0,
                      "transient_cycles": 30.0},
     },
     "balanced": {
         "physics": {"stiffness": "pem", "lubrication": "formula", "thermal": "analytic", "dynamics": "lumped"},
-        "stiffness": {"n_slices": 100, "n_positions": 200},
+        "stiffness": {"n_positions": 200},
         "numerics": {"path_points": 41, "steps_per_mesh_period": 200, "dynamics_cycles": 100.0,
                      "transient_cycles": 50.0},
     },
     "accurate": {
         "physics": {"stiffness": "fe", "lubrication": "ehl-line", "thermal": "fe", "dynamics": "timoshenko"},
-        "stiffness": {"n_slices": 200, "n_positions": 400},
+        "stiffness": {"n_positions": 400},
         "numerics": {"path_points": 61, "steps_per_mesh_period": 400, "dynamics_cycles": 150.0,
                      "transient_cycles": 75.0, "ehl_level": 6},
     },

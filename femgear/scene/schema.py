@@ -252,7 +252,6 @@ class Stiffness(_Frozen):
     )
     damping_ratio: float = Field(0.07, ge=0, lt=1, description="mesh damping ratio ζ_m [-]")
     rayleigh_ratio: float = Field(0.03, ge=0, lt=1, description="Rayleigh damping ratio of the two lowest modes [-]")
-    n_slices: int = Field(100, ge=1, le=2000, description="slices along the face width (pem, fe levels) [-]")
     n_positions: int = Field(200, ge=2, le=5000, description="mesh phases sampled per mesh period [-]")
     fe_mesh_size: Pos | None = Field(None, description="FE tooth mesh size (fe level) [m]; default m_n/2.5")
 

@@ -31,7 +31,7 @@ def setup() -> tuple[GearPair, dict]:
 
 
 def run(pair: GearPair, ross: dict, plane: str = "strain") -> dict:
-    ms = mesh_stiffness(pair, "pem", n_positions=400, n_slices=1, youngs_modulus=206e9, poisson_ratio=0.3,
+    ms = mesh_stiffness(pair, "pem", n_positions=400, youngs_modulus=206e9, poisson_ratio=0.3,
                         bore_radius=(0.0175, 0.0175), plane=plane)
     phase = np.array(ross["phase"])
     ours = ms.at(phase, "left")

@@ -58,7 +58,7 @@ def stiffness(scene, quick: bool, repeats: int) -> list[dict]:
     mn = scene.pair.normal_module
     fe = [2.5, 3.0] if quick else [2.5, 3.0, 4.0]
     cases = [(lv, lambda lv=lv: stiffness_levels.of(case, level=lv)) for lv in ("constant", "iso6336")]
-    cases += [(f"pem, {n} slices", lambda n=n: stiffness_levels.of(case, level="pem", n_slices=n)) for n in (20, 100)]
+    cases += [(f"pem, {n} phases", lambda n=n: stiffness_levels.of(case, level="pem", n_positions=n)) for n in (100, 200)]
     cases += [("ltca (3-D FE member bodies + contact; cached kernels; a model, not a resolution)",
                lambda: stiffness_levels.of(case, level="ltca"))]
     cases += [(f"fe h=m/{d:g}", lambda d=d: stiffness_levels.of(case, level="fe", fe_options={"h": mn / d}))

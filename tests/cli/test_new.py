@@ -16,7 +16,7 @@ from femgear.scene.template import KINDS, example_values, scene_template
 
 #: coarse numerics for a quick run of the example pair
 COARSE = ["numerics.path_points=11", "numerics.dynamics_cycles=20.0", "numerics.transient_cycles=5.0",
-          "stiffness.n_positions=40", "stiffness.n_slices=20"]
+          "stiffness.n_positions=40"]
 
 
 @pytest.mark.parametrize("kind", KINDS)

@@ -94,3 +94,12 @@ def test_unknown_preset_names_the_key(baseline_path):
     with pytest.raises(SceneError) as info:
         load_scene(baseline_path, ['physics.preset="turbo"'])
     assert info.value.key == "physics.preset"
+
+
+def test_a_removed_key_says_what_to_do(baseline_path):
+    """``stiffness.n_slices`` (the midpoint sum over face slices, replaced by the exact contact-line integral):
+    named, with what changed, not just "unknown key"."""
+    with pytest.raises(SceneError) as info:
+        load_scene(baseline_path, ["stiffness.n_slices=100"])
+    assert info.value.key == "stiffness.n_slices"
+    assert "removed" in str(info.value) and "delete the key" in str(info.value)

@@ -33,7 +33,7 @@ def ross():
 def femgear_pem():
     pair = GearPair.from_parameters(z1=62, z2=62, m_n=2e-3, alpha_n=math.radians(20), beta=0.0, b=0.02, x1=0.0,
                                     x2=0.0, kind="spur")
-    return pair, mesh_stiffness(pair, "pem", n_positions=400, n_slices=1, youngs_modulus=206e9, poisson_ratio=0.3,
+    return pair, mesh_stiffness(pair, "pem", n_positions=400, youngs_modulus=206e9, poisson_ratio=0.3,
                                 bore_radius=(0.0175, 0.0175))
 
 

@@ -3,16 +3,21 @@
 - ``iso6336``  ISO 6336-1:2019 c', c_γα, c_γβ (Method B), constant per helix.
 - ``pem``      potential energy method per transverse slice (Hertz, bending, shear,
                axial, Sainsot fillet foundation over the generated tooth outline).
-- ``tvms``     slicing along the face width, left/right stagger, :class:`MeshStiffness`
-               (the periodic stiffness the dynamics model consumes): a uniform table
-               (:func:`uniform_mesh_stiffness`) or a sliced one from k'(u) (:func:`sliced_mesh_stiffness`).
+- ``tvms``     k'(u) integrated over every contact line of the face, left/right stagger,
+               :class:`MeshStiffness` (the periodic stiffness the dynamics model consumes): a uniform
+               table (:func:`uniform_mesh_stiffness`) or one from k'(u) (:func:`integrated_mesh_stiffness`).
 
 The levels (``constant``, ``iso6336``, ``pem``, ``fe``, ``ltca``) are dispatched by
 :mod:`femgear.levels.stiffness` (``mesh_stiffness(pair, level)``, or the registry for a case).
 """
 
 from femgear.physics.stiffness.iso6336 import IsoStiffness, iso6336_stiffness
-from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness, sliced_mesh_stiffness, uniform_mesh_stiffness
+from femgear.physics.stiffness.tvms import (
+    MeshStiffness,
+    helix_stiffness,
+    integrated_mesh_stiffness,
+    uniform_mesh_stiffness,
+)
 
-__all__ = ["IsoStiffness", "MeshStiffness", "helix_stiffness", "iso6336_stiffness", "sliced_mesh_stiffness",
+__all__ = ["IsoStiffness", "MeshStiffness", "helix_stiffness", "iso6336_stiffness", "integrated_mesh_stiffness",
            "uniform_mesh_stiffness"]

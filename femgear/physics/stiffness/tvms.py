@@ -13,19 +13,23 @@ Convention (what the dynamics model consumes):
   k_right(φ) = k_left(φ + stagger), as in :func:`femgear.physics.geometry.double_helical_contact`.
 - A single-helical or spur pair (``pair.kind``) has one mesh: ``k_left``; ``k_right`` is 0.
 
-Slicing (notes §5; Ajmi & Velex 2005 for its limits): each helix is cut into N
-transverse slices of width Δb; slice j at ζ_j = (j + ½)Δb is a spur pair whose teeth
-sit at u = u_A − b tan β_b + (φ mod 1) p_bt + k p_bt + ζ_j tan β_b.  Slices are
-uncoupled, so the ripple is an upper bound and the mean a lower bound of a 3-D model.
-A slice's transverse stiffness k_t = Σ_pairs k'(u) Δb projects to the normal line
-of action as k_n = k_t / cos²β_b (F_t = F_n cos β_b, δ_n = δ_t cos β_b).
+The contact lines over the face (notes §5; Ajmi & Velex 2005 for the limits of the thin-slice model): the
+face point ζ ∈ [0, b] of contact line k sits at u = u_A − b tan β_b + (φ mod 1) p_bt + k p_bt + ζ tan β_b on the
+path, a thin transverse slice whose stiffness per unit width is the tooth pair's k'(u).  Slices are uncoupled, so
+the ripple is an upper bound and the mean a lower bound of a 3-D model.  A line's transverse stiffness is the
+integral of k' over its part on the path, k_t = ∫ k'(u(ζ)) dζ = [K(u_hi) − K(u_lo)] / tan β_b with K the
+antiderivative of k' and [u_lo, u_hi] the line's extent clipped to [u_A, u_E]; it projects to the normal line of
+action as k_n = k_t / cos²β_b (F_t = F_n cos β_b, δ_n = δ_t cos β_b).  The integral is exact for the cubic
+spline through the k'(u) samples: the table is continuous in φ however wide the face.  (A midpoint sum over N
+slices, used before, made a staircase: each slice entering at A or leaving at E switched k'(u_A) Δb or k'(u_E) Δb
+on or off within one phase sample: 0.6 % steps and one-sample notches on the marine pair, ε_β = 3.2, N = 100,
+which excited the dynamic mesh force far above the mesh frequency.)
 """
 
 from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
 from dataclasses import KW_ONLY, dataclass
 from typing import TYPE_CHECKING
 
@@ -36,9 +40,11 @@ from femgear.physics.geometry.gear import GearPair
 from femgear.physics.stiffness.iso6336 import IsoStiffness
 
 if TYPE_CHECKING:
+    from scipy.interpolate import CubicSpline
+
     from femgear.physics.ltca.cycle import LTCACycle
 
-U_SAMPLES = 161   #: path positions A..E at which the sliced levels sample k'(u)
+U_SAMPLES = 161   #: path positions A..E at which the ``pem`` and ``fe`` levels sample k'(u)
 
 
 @document_fields
@@ -79,8 +85,6 @@ class MeshStiffness:
     """stiffness of the right helix at ``phase`` (0 for a single-helical or spur pair) [N/m]"""
     stagger: float
     """offset of the right helix against the left one: k_right(φ) = k_left(φ + stagger) [base pitches]"""
-    n_slices: int
-    """transverse slices per helix of the sliced levels (``pem``, ``fe``; 1 for spur; 0: not sliced) [-]"""
     seconds: float
     """wall time to compute [s]"""
     _: KW_ONLY
@@ -138,36 +142,35 @@ class MeshStiffness:
         return self.at(phase, "left"), self.at(phase, "right")
 
 
-def helix_stiffness(pair: GearPair, k_unit: Callable[[np.ndarray], np.ndarray], phases: np.ndarray,
-                    n_slices: int = 100, offset: float = 0.0) -> np.ndarray:
-    """Normal stiffness [N/m] of one helix at ``phases`` from the pair stiffness per width ``k_unit(u)``.
-
-    ``k_unit`` maps transverse path positions u [m] to the transverse stiffness of one
-    tooth pair per unit face width [N/m per m].
-    """
-    if n_slices < 1:
-        raise ValueError(f"n_slices must be ≥ 1, got {n_slices}")
+def helix_stiffness(pair: GearPair, u_samples: np.ndarray, k_samples: np.ndarray, phases: np.ndarray,
+                    offset: float = 0.0) -> np.ndarray:
+    """Normal stiffness [N/m] of one helix at ``phases`` (shifted by ``offset`` base pitches): every contact line's
+    tooth-pair stiffness per width k'(u), given at path positions ``u_samples`` [m] by ``k_samples``
+    [N/m per m] and interpolated by a cubic spline, integrated exactly over the line's part on the path
+    (module docstring); a spur pair's line has one position: k'(u) b."""
+    spline = tabulated(pair, np.asarray(u_samples, float), np.asarray(k_samples, float))
     tb = math.tan(pair.beta_b)
-    db = pair.b / n_slices
-    zeta = (np.arange(n_slices) + 0.5) * db
     span = pair.b * tb
     k_max = int(math.ceil((pair.g_alpha + span) / pair.p_bt)) + 2
     kk = np.arange(-1, k_max + 1)
     shift = ((np.asarray(phases, float) + offset) % 1.0) * pair.p_bt
-    u = (pair.u_start - span + shift[:, None, None] + kk[None, :, None] * pair.p_bt
-         + zeta[None, None, :] * tb)
-    inside = (u >= pair.u_start) & (u <= pair.u_end)
-    k = np.zeros(u.shape)
-    k[inside] = k_unit(u[inside])
-    return k.sum(axis=(1, 2)) * db / math.cos(pair.beta_b) ** 2
+    u0 = pair.u_start - span + shift[:, None] + kk[None, :] * pair.p_bt     # each line's face end ζ = 0
+    if span == 0.0:
+        inside = (u0 >= pair.u_start) & (u0 <= pair.u_end)
+        k_t = np.where(inside, spline(u0), 0.0) * pair.b
+    else:
+        K = spline.antiderivative()
+        lo = np.clip(u0, pair.u_start, pair.u_end)
+        hi = np.clip(u0 + span, pair.u_start, pair.u_end)
+        k_t = (K(hi) - K(lo)) / tb
+    return k_t.sum(axis=1) / math.cos(pair.beta_b) ** 2
 
 
-def tabulated(pair: GearPair, u_samples: np.ndarray, k_samples: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
-    """k'(u) by cubic interpolation of samples along the path (used by the FE level)."""
+def tabulated(pair: GearPair, u_samples: np.ndarray, k_samples: np.ndarray) -> CubicSpline:
+    """k'(u): the cubic spline through samples along the path, from A to E (``antiderivative()`` integrates it)."""
     from scipy.interpolate import CubicSpline
 
-    spline = CubicSpline(u_samples, k_samples)
-    return lambda u: spline(np.clip(u, u_samples[0], u_samples[-1]))
+    return CubicSpline(u_samples, k_samples)
 
 
 def check_period(n_positions: int, stagger: float) -> np.ndarray:
@@ -188,12 +191,12 @@ def uniform_mesh_stiffness(pair: GearPair, k: float, label: str, n_positions: in
     phases = check_period(n_positions, stagger)
     kl = np.full(n_positions, k)
     kr = kl.copy() if pair.n_helices == 2 else np.zeros(n_positions)
-    return MeshStiffness(label, phases, kl, kr, stagger, 0, time.perf_counter() - t0, **fields)
+    return MeshStiffness(label, phases, kl, kr, stagger, time.perf_counter() - t0, **fields)
 
 
 def iso6336_helix_stiffness(pair: GearPair, youngs_modulus: float = 210e9):
     """(k, iso): ISO 6336-1's c_γα b read as a transverse stiffness per unit face width and projected to the
-    normal line of action like the sliced levels, k = c_γα b / cos²β_b [N/m] per helix, and the ISO record."""
+    normal line of action like the ``pem`` and ``fe`` levels, k = c_γα b / cos²β_b [N/m] per helix, and the ISO record."""
     from femgear.physics.stiffness.iso6336 import iso6336_stiffness
 
     iso = iso6336_stiffness(pair, youngs_modulus=youngs_modulus)
@@ -201,21 +204,19 @@ def iso6336_helix_stiffness(pair: GearPair, youngs_modulus: float = 210e9):
 
 
 def path_samples(pair: GearPair) -> np.ndarray:
-    """The :data:`U_SAMPLES` path positions from A to E at which a sliced level samples k'(u) [m]."""
+    """The :data:`U_SAMPLES` path positions from A to E at which the ``pem`` and ``fe`` levels sample k'(u) [m]."""
     return np.linspace(pair.u_start, pair.u_end, U_SAMPLES)
 
 
-def sliced_mesh_stiffness(pair: GearPair, u_grid: np.ndarray, k_grid: np.ndarray, label: str,
-                          n_positions: int = 200, stagger: float = 0.0, n_slices: int = 100,
-                          t0: float | None = None, fe: FESamples | None = None) -> MeshStiffness:
+def integrated_mesh_stiffness(pair: GearPair, u_grid: np.ndarray, k_grid: np.ndarray, label: str,
+                              n_positions: int = 200, stagger: float = 0.0, t0: float | None = None,
+                              fe: FESamples | None = None) -> MeshStiffness:
     """Mesh stiffness of both helices from the pair stiffness per width ``k_grid`` at path positions ``u_grid``
-    (the ``pem`` and ``fe`` levels): k'(u) interpolated, each helix cut into ``n_slices`` slices (one for spur).
+    (the ``pem`` and ``fe`` levels): k'(u) integrated over every contact line (:func:`helix_stiffness`).
     ``fe``: the ``fe`` level's FE samples; ``t0``: when the level started (for ``seconds``)."""
     t0 = time.perf_counter() if t0 is None else t0
     phases = check_period(n_positions, stagger)
-    k_unit = tabulated(pair, u_grid, k_grid)
-    n_slices = 1 if pair.beta_b == 0 else n_slices     # spur: every slice sees the same position
-    kl = helix_stiffness(pair, k_unit, phases, n_slices)
-    kr = helix_stiffness(pair, k_unit, phases, n_slices, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
-    return MeshStiffness(label, phases, kl, kr, stagger, n_slices, time.perf_counter() - t0, u=u_grid,
+    kl = helix_stiffness(pair, u_grid, k_grid, phases)
+    kr = helix_stiffness(pair, u_grid, k_grid, phases, offset=stagger) if pair.n_helices == 2 else np.zeros_like(kl)
+    return MeshStiffness(label, phases, kl, kr, stagger, time.perf_counter() - t0, u=u_grid,
                          k_pair_per_width=k_grid, fe=fe)
