@@ -53,11 +53,16 @@ def figures(k: np.ndarray) -> dict:
             "max_step": float(np.max(np.abs(np.diff(np.append(k, k[0])))) / mean)}
 
 
-def main(argv: list[str] | None = None) -> int:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed: the slice counts and the phases per mesh period."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--slices", default="100,1000")
     ap.add_argument("--phases", type=int, default=2000)
-    args = ap.parse_args(argv)
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> dict:
+    """Per helical pair: ε_β and the figures of the integral and of each slice count."""
     slices = [int(n) for n in args.slices.split(",")]
     phases = np.arange(args.phases) / args.phases
     out = {}
@@ -71,7 +76,13 @@ def main(argv: list[str] | None = None) -> int:
         row = {"eps_beta": pair.eps_beta, "integral": figures(helix_stiffness(pair, u, k, phases))}
         row.update({f"slices_{n}": figures(slice_sum(pair, u, k, phases, n)) for n in slices})
         out[path.stem] = row
-    methods = ["integral"] + [f"slices_{n}" for n in slices]
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    out = run(args)
+    methods = ["integral"] + [f"slices_{n}" for n in args.slices.split(",")]
     print(f"{'pair':16} {'ε_β':>5}  " + "  ".join(f"{m:>30}" for m in methods))
     print(f"{'':16} {'':>5}  " + "  ".join(f"{'mean [N/m]   ripple   max step':>30}" for _ in methods))
     for name, row in out.items():
