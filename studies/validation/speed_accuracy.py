@@ -10,7 +10,7 @@ and a JSON line, and with ``--readme`` rewrites the table of docs/validation/spe
 ``speed-accuracy`` markers (so that table is produced here, never typed).
 
 Errors (all relative, max over what is compared):
-- stiffness: k_L + k_R over one mesh period vs FE at the finest mesh, / mean;
+- stiffness: k_L + k_R over one mesh period (interpolated onto the reference's phases) vs FE at the finest mesh, / mean;
 - thermal: ζ_T of the pinion along the path (30 K flank rise) vs FE at the finest mesh;
 - lubrication: μ along the path vs the finest FE line EHL, / max μ;
 - EHL point solver: central film Hc at (M, L) = (20, 10) vs the finest grid;
@@ -63,7 +63,7 @@ def stiffness(scene, quick: bool, repeats: int) -> list[dict]:
                lambda: stiffness_levels.of(case, level="ltca"))]
     cases += [(f"fe h=m/{d:g}", lambda d=d: stiffness_levels.of(case, level="fe", fe_options={"h": mn / d}))
               for d in fe]
-    return _rows("stiffness", cases, lambda a, r: np.max(np.abs(a.k_total - r.k_total)) / r.mean, repeats)
+    return _rows("stiffness", cases, lambda a, r: np.max(np.abs(a.at(r.phase) - r.k_total)) / r.mean, repeats)
 
 
 def thermal(scene, quick: bool, repeats: int) -> list[dict]:
