@@ -19,13 +19,12 @@ from femgear.case import Case
 from femgear.levels.thermal import has_sections
 from femgear.physics.body.fields import BodySection
 from femgear.physics.ltca.maps import LoadMaps
+from femgear.rate import contact_figures
 from femgear.results import RunResult
 
 
 def derived_fields(result: RunResult) -> RunResult:
     """``result`` with its ``figures``, ``body`` and ``ltca_maps`` fields."""
-    from femgear.rate import contact_figures
-
     case, t = result.case, result.tribology
     figures = contact_figures(case, result.contact, t.friction_coefficient, case.path.u, case.levels.lubrication,
                               result.rating)
