@@ -149,3 +149,18 @@ def test_an_antisymmetric_flank_deviation_is_a_transmission_error(baseline_path)
                          **kw)
     res = analyse(simulate(m_open, T, dt / 4, "rk4"), 15)
     assert 0.02 < res.amplitudes["contact_loss_fraction.L"] < 0.9
+
+
+def test_record_plan_keeps_the_last_state_of_a_transient_ending_at_record_from():
+    """A transient of ``switch`` whole mesh periods at T/n records its last state although n·(T/n)
+    rounds below ``switch``·T (100 rpm rig condition, n = 350: the default plan's switch read an
+    empty array before)."""
+    from femgear.system.dynamics.simulation import record_plan
+
+    for n_per, switch in ((350, 49), (351, 49), (1777, 99), (6000, 99)):
+        T = 60.0 / (31 * 100.0)
+        dt = T / n_per
+        steps = int(round(switch * T / dt))
+        assert steps * dt < switch * T or n_per not in (350, 351)     # the rounding this guards against
+        assert list(record_plan(steps, dt, 1, switch * T)) == [steps]
+    assert list(record_plan(10, 0.1, 1, 0.55)) == [6, 7, 8, 9, 10]   # not a grid point: strictly after

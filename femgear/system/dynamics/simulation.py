@@ -48,7 +48,11 @@ def inputs(model: GearRotorModel, t: np.ndarray):
 
 
 def record_plan(steps: int, dt: float, record_every: int, record_from: float) -> np.ndarray:
+    """The step indices recorded: every ``record_every``-th with t = idx·dt ≥ ``record_from``.  The
+    tolerance (10⁻⁶ of a step) absorbs the rounding of idx·dt against a ``record_from`` that is a whole
+    number of steps: n·(T/n) can fall ~10⁻¹⁴ T short of T, and with 10⁻¹² dt a transient ending exactly
+    at ``record_from`` recorded nothing (its last state was then read from an empty array)."""
     idx = np.arange(0, steps + 1, record_every)
-    return idx[idx * dt >= record_from - 1e-12 * dt]
+    return idx[idx * dt >= record_from - 1e-6 * dt]
 
 
