@@ -148,6 +148,16 @@ def rigid_body_modes_3d(basis) -> np.ndarray:
     return B
 
 
+def check_arguments(mesh, solver: str, clamped: str | None) -> None:
+    """ValueError for an unknown ``solver``, ``cholmod`` without cholespy, or a ``clamped`` region the mesh lacks."""
+    if solver not in SOLVERS:
+        raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
+    if solver == "cholmod" and not cholmod_available():
+        raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
+    if clamped is not None and clamped not in mesh.boundaries:
+        raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
+
+
 @dataclass(frozen=True)
 class SolveStats:
     """Cost of an :class:`Elastic3D` model (seconds, counts)."""
@@ -175,12 +185,7 @@ class Elastic3D:
 
         if order not in (1, 2):
             raise ValueError(f"order must be 1 or 2, got {order!r}")
-        if solver not in SOLVERS:
-            raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
-        if solver == "cholmod" and not cholmod_available():
-            raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
-        if clamped is not None and clamped not in mesh.boundaries:
-            raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
+        check_arguments(mesh, solver, clamped)
         t0 = time.perf_counter()
         self.mesh, self.order, self.tol, self.maxiter = mesh, order, tol, maxiter
         self.E, self.nu = youngs_modulus, poisson_ratio

@@ -30,13 +30,12 @@ import time
 import numpy as np
 
 from femgear.physics.body.elastic3d import (
-    SOLVERS,
     Elastic3D,
     _assemble_chunks,
     _elasticity_form,
     assemble_p1,
     auto_solver,
-    cholmod_available,
+    check_arguments,
 )
 
 
@@ -67,12 +66,7 @@ class MixedElastic3D(Elastic3D):
         quadratic = np.asarray(quadratic, bool)
         if quadratic.shape != (mesh.t.shape[1],):
             raise ValueError(f"quadratic: need one flag per element ({mesh.t.shape[1]}), got shape {quadratic.shape}")
-        if solver not in SOLVERS:
-            raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
-        if solver == "cholmod" and not cholmod_available():
-            raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
-        if clamped is not None and clamped not in mesh.boundaries:
-            raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
+        check_arguments(mesh, solver, clamped)
         t0 = time.perf_counter()
         self.mesh, self.order, self.tol, self.maxiter = mesh, 1, tol, maxiter
         self.E, self.nu = youngs_modulus, poisson_ratio
