@@ -41,7 +41,11 @@ stiff, as expected of linear tetrahedra in bending.  P2 converges much faster pe
 costs ≈ 21 s a unit load with SA-AMG on the bodies (176 k DOF at level 0): on a 5 × 7 grid P1
 level 1 / P1 level 3 / P2 level 0 give 7.119 / 6.954 / 6.742e8 N/m and LTE p-p 0.536 / 0.556 /
 0.564 µm (P1 level 1: +5.6 % / −4.9 % against P2; build 25 s / 183 s / 1503 s;
-``python studies/ltca/ltca_element_order.py --ltca``).
+``python studies/ltca/ltca_element_order.py --ltca``).  ``order="p2-bending"``
+(``numerics.body_elements``): P2 (hierarchical, :class:`femgear.physics.body.mixed3d.MixedElastic3D`) in the
+loaded tooth down to :data:`ZONE_DEPTH` m_n below its root and in the rim below :data:`RIM_DEPTH` m_n
+(:func:`bending_elements`), P1 elsewhere; on the baseline at level 0 it costs ≈ 1.9× the DOF of P1 at
+the same level and gives k mean within 0.8 % of its level-2 value (``docs/cost.md``, "P2 where the body bends").
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
@@ -326,17 +330,20 @@ def build_estimate(pair: GearPair, member: int, spec: SegmentSpec, order: int | 
 
 def _zone_share(pair: GearPair, member: int, spec: SegmentSpec) -> float:
     """Share of the body's elements that :func:`bending_elements` makes quadratic, from its section's triangles
-    (an estimate: the fine and the coarse layers are not told apart)."""
-    from femgear.physics.mesh.segment import body_section
+    (those of the far field count once per ``coarse_step`` layers: an estimate, transition columns aside)."""
+    from femgear.physics.mesh.segment import body_section, coarse_step, far_triangles
 
     sec = body_section(pair, member, spec)
+    step = coarse_step(pair, spec)
+    weight = np.where(far_triangles(pair, member, sec, spec), 1.0 / step, 1.0) if step > 1 else np.ones(sec.t.shape[1])
     c = sec.p[:, sec.t].mean(axis=1)
     z = pair.z1 if member == 1 else pair.z2
     rf = pair.rf1 if member == 1 else pair.rf2
     r = np.hypot(c[0], c[1])
     tooth = (np.abs(np.arctan2(c[0], c[1])) < np.pi / z) & (r > rf - ZONE_DEPTH * pair.m_n)
     helices = 1 if spec.stagger == 0 else 2
-    return float(np.mean(r < rf - RIM_DEPTH * pair.m_n) + np.mean(tooth) * helices / (2 + spec.groove / pair.b))
+    share = (np.sum(weight * (r < rf - RIM_DEPTH * pair.m_n)) + np.sum(weight * tooth) * helices / (2 + spec.groove / pair.b))
+    return float(share / np.sum(weight))
 
 
 def bending_elements(mesh, pair: GearPair, member: int, spec: SegmentSpec) -> np.ndarray:
