@@ -141,7 +141,8 @@ def body_options(case: Case) -> dict:
 
 def ltca_options(case: Case) -> dict:
     """Force F_bn of the operating point, the flank modifications, the member bodies (bore, groove) and their
-    resolution ``numerics.body_level`` and elements ``numerics.body_elements`` for :func:`femgear.physics.ltca.level.ltca_cycle`."""
+    resolution ``numerics.body_level`` and elements ``numerics.body_elements`` for
+    :func:`femgear.physics.ltca.level.ltca_cycle`."""
     body = {k: v for k, v in body_options(case).items() if k != "stagger"}   # the level passes the stagger itself
     return {"force": case.operating.normal_force, "modifications": case.modifications, "body": body,
             "level": case.numerics.body_level, "order": body_order(case.numerics.body_elements)}

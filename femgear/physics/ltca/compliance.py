@@ -342,7 +342,8 @@ def _zone_share(pair: GearPair, member: int, spec: SegmentSpec) -> float:
     r = np.hypot(c[0], c[1])
     tooth = (np.abs(np.arctan2(c[0], c[1])) < np.pi / z) & (r > rf - ZONE_DEPTH * pair.m_n)
     helices = 1 if spec.stagger == 0 else 2
-    share = (np.sum(weight * (r < rf - RIM_DEPTH * pair.m_n)) + np.sum(weight * tooth) * helices / (2 + spec.groove / pair.b))
+    rim = np.sum(weight * (r < rf - RIM_DEPTH * pair.m_n))
+    share = rim + np.sum(weight * tooth) * helices / (2 + spec.groove / pair.b)
     return float(share / np.sum(weight))
 
 
