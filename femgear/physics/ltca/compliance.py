@@ -184,7 +184,10 @@ def cache_path(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: f
 def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: float,
                       poisson_ratio: float, order: int | str = 1, n_rho: int = 7, n_z: int = 9,
                       depth: float | None = None, cache: bool = True) -> MemberCompliance:
-    """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present."""
+    """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present.
+
+    ``order``: 1 or 2 (P1 or P2 everywhere) or :data:`BENDING` (P2 in :func:`bending_elements`, P1 elsewhere).
+    """
     d0 = depth if depth is not None else DEFAULT_DEPTH * pair.m_n
     path = cache_path(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     if cache and path.exists():
