@@ -141,10 +141,17 @@ def body_options(case: Case) -> dict:
 
 def ltca_options(case: Case) -> dict:
     """Force F_bn of the operating point, the flank modifications, the member bodies (bore, groove) and their
-    resolution ``numerics.body_level`` for :func:`femgear.physics.ltca.level.ltca_cycle`."""
+    resolution ``numerics.body_level`` and elements ``numerics.body_elements`` for
+    :func:`femgear.physics.ltca.level.ltca_cycle`."""
     body = {k: v for k, v in body_options(case).items() if k != "stagger"}   # the level passes the stagger itself
     return {"force": case.operating.normal_force, "modifications": case.modifications, "body": body,
-            "level": case.numerics.body_level}
+            "level": case.numerics.body_level, "order": body_order(case.numerics.body_elements)}
+
+
+def body_order(elements: str) -> int | str:
+    """The element ``order`` of :func:`femgear.physics.ltca.compliance.member_compliance` for the scene's
+    ``numerics.body_elements`` ("p1" → 1; "p2-bending" as it is)."""
+    return 1 if elements == "p1" else elements
 
 
 def case_arguments(case: Case, level: str) -> dict:

@@ -2,6 +2,7 @@
 
     python studies/benchmarks/cost.py [--levels 0,1 | --levels "baseline=0,1,2,3/marine=0,1,2"]
                                       [--pairs baseline,marine] [--skip ltca,fe,refusal,fidelity]
+                                      [--elements p1 | p2-bending]
 
 Pairs: the paper's baseline and every scene of ``studies/zoo/*.toml``.  Per pair and
 ``numerics.body_level``: the member bodies' DOF and tetrahedra; the ``ltca`` stiffness cold
@@ -17,6 +18,9 @@ address space capped at ``--cap-gb``), with a fresh cache folder.  The baseline'
 is the reference of the ratios, measured in the same run.  Prints a table and one JSON line
 (also written to ``out/benchmarks/cost.json``).  Timings are wall clock on a shared machine:
 compare the ratios and the CPU times, not the absolute seconds of a loaded run.
+``--elements``: the ``numerics.body_elements`` of every run (the LTCA bodies' elements; the DOF
+column then shows the bodies' actual DOF from the ``ltca`` run); the JSON goes to
+``out/benchmarks/cost-p2-bending.json`` for ``p2-bending``.
 """
 
 from __future__ import annotations
@@ -56,11 +60,13 @@ def _usage() -> dict:
             "cpu_s": r.ru_utime + r.ru_stime + c.ru_utime + c.ru_stime}
 
 
-def one(kind: str, scene_path: str, level: int) -> dict:
+def one(kind: str, scene_path: str, level: int, elements: str = "p1") -> dict:
     """One measurement in this (child) process."""
     from femgear.scene import load_scene
 
     sets = [f"numerics.body_level={level}"]
+    if elements != "p1":        # (a reference tree may not know the key)
+        sets.append(f'numerics.body_elements="{elements}"')
     if kind == "size":
         from femgear.physics.mesh.segment import body_size, default_spec
 
@@ -93,7 +99,8 @@ def one(kind: str, scene_path: str, level: int) -> dict:
 
         t0 = time.perf_counter()
         with tempfile.TemporaryDirectory() as out_dir:
-            rc = cli(["run", scene_path, "--out", out_dir, "--no-plots", "--no-vtk", *FIDELITY])
+            rc = cli(["run", scene_path, "--out", out_dir, "--no-plots", "--no-vtk", *FIDELITY,
+                      *[a for x in sets[1:] for a in ("--set", x)]])
             seconds = time.perf_counter() - t0
             answer = _answer(Path(out_dir) / "results.json") if rc == 0 else {}
         return {"seconds": seconds, "rc": rc, "answer": answer, **_usage()}
@@ -112,7 +119,8 @@ def _answer(path: Path) -> dict:
             "coupling_passes": s["coupling"]["iterations"]}
 
 
-def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | None = None) -> dict:
+def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | None = None,
+          elements: str = "p1") -> dict:
     """Run :func:`one` in a child process with a fresh cache and an address-space cap."""
     def limit():
         cap = int(cap_gb * 1024**3)
@@ -122,7 +130,7 @@ def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | No
         e = {**os.environ, "FEMGEAR_CACHE": cache, "PYTHONPATH": str(ROOT), **(env or {})}
         load0 = os.getloadavg()
         t0 = time.perf_counter()
-        run = subprocess.run([sys.executable, __file__, "--one", kind, str(scene_path), str(level)], env=e,
+        run = subprocess.run([sys.executable, __file__, "--one", kind, str(scene_path), str(level), elements], env=e,
                              capture_output=True, text=True, preexec_fn=limit)
         wall = time.perf_counter() - t0
         load = [round(x, 2) for x in (*load0, *os.getloadavg())]
@@ -162,9 +170,9 @@ def parse_levels(text: str, pairs: list[str]) -> dict[str, list[int]]:
 
 
 def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: float,
-        reference: Path | None = None) -> dict:
+        reference: Path | None = None, elements: str = "p1") -> dict:
     paths = scenes()
-    out: dict = {"levels": levels, "pairs": {}}
+    out: dict = {"levels": levels, "elements": elements, "pairs": {}}
     for name in pairs:
         rec: dict = {"scene": str(paths[name].relative_to(ROOT)), "levels": levels[name]}
         for level in levels[name]:
@@ -174,7 +182,7 @@ def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: 
                 rec[f"size_{level}"] = {"failed": True, "message": f"{type(exc).__name__}: {exc}"}
                 continue
             if "ltca" not in skip:
-                rec[f"ltca_{level}"] = child("ltca", paths[name], level, cap_gb)
+                rec[f"ltca_{level}"] = child("ltca", paths[name], level, cap_gb, elements=elements)
                 print(f"{name} level {level}: ltca {json.dumps(rec[f'ltca_{level}'])}", file=sys.stderr, flush=True)
         if "fe" not in skip:
             rec["fe"] = child("fe", paths[name], 1, cap_gb)
@@ -184,7 +192,7 @@ def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: 
         rec["richardson"] = mesh_errors(rec)
         out["pairs"][name] = rec
     if "fidelity" not in skip:
-        out["fidelity"] = child("fidelity", paths["baseline"], 1, cap_gb)
+        out["fidelity"] = child("fidelity", paths["baseline"], 1, cap_gb, elements=elements)
         if reference is not None:    # the same job with another checkout's femgear, right after (same load)
             out["fidelity_reference"] = child("fidelity", paths["baseline"], 1, cap_gb,
                                               env={"PYTHONPATH": str(reference)})
@@ -254,7 +262,8 @@ def table(r: dict) -> list[str]:
                         f"{100 * (lt['lte_pp_um'] / f['lte_pp_um'] - 1):+.2f} %")
             cost = (f"{lt['seconds']:.0f} ({lt['cpu_s']:.0f})" if "seconds" in lt
                     else f"failed: {lt.get('message', '')[:60]}" if lt else "—")
-            rows.append(f"| {name} | {lv} | {s['member1_dofs'] / 1e3:.0f} k / {s['member2_dofs'] / 1e3:.0f} k | "
+            dofs = lt.get("dofs") or [s["member1_dofs"], s["member2_dofs"]]
+            rows.append(f"| {name} | {lv} | {dofs[0] / 1e3:.0f} k / {dofs[1] / 1e3:.0f} k | "
                         f"{(s['member1_tets'] + s['member2_tets']) / 1e3:.0f} k | "
                         f"{s['flank_h_tooth_mn']:.3f}, {s['flank_dz_mn']:.3f} | {cost} | "
                         f"{_fmt(lt.get('peak_rss_MiB'), '.0f')} | {_fmt(lt.get('k_mean'), '.4e')} | "
@@ -301,7 +310,9 @@ def _fidelity_row(fid: dict | None, label: str) -> list[str]:
 
 def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--one", nargs=3, metavar=("KIND", "SCENE", "LEVEL"), help=argparse.SUPPRESS)
+    ap.add_argument("--one", nargs=4, metavar=("KIND", "SCENE", "LEVEL", "ELEMENTS"), help=argparse.SUPPRESS)
+    ap.add_argument("--elements", default="p1", choices=("p1", "p2-bending"),
+                    help="numerics.body_elements of every run (the LTCA member bodies)")
     ap.add_argument("--levels", default="0,1")
     ap.add_argument("--pairs", default=",".join(scenes()))
     ap.add_argument("--skip", default="", help="comma list of ltca, fe, refusal, fidelity")
@@ -311,14 +322,15 @@ def main(argv=None) -> None:
                          "femgear too, right after this one's")
     a = ap.parse_args(argv)
     if a.one:
-        print(json.dumps(one(a.one[0], a.one[1], int(a.one[2]))))
+        print(json.dumps(one(a.one[0], a.one[1], int(a.one[2]), a.one[3])))
         return
     pairs = a.pairs.split(",")
-    r = run(pairs, parse_levels(a.levels, pairs), set(filter(None, a.skip.split(","))), a.cap_gb, a.reference)
+    r = run(pairs, parse_levels(a.levels, pairs), set(filter(None, a.skip.split(","))), a.cap_gb, a.reference,
+            a.elements)
     print("\n".join(table(r)))
     out = ROOT / "out" / "benchmarks"
     out.mkdir(parents=True, exist_ok=True)
-    (out / "cost.json").write_text(json.dumps(r, indent=1))
+    (out / ("cost.json" if a.elements == "p1" else f"cost-{a.elements}.json")).write_text(json.dumps(r, indent=1))
     print(json.dumps(r))
 
 

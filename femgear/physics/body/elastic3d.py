@@ -79,9 +79,10 @@ def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: s
     n = float(max(dofs, 1))
     memory = 0.3e9 + 5.0e3 * n + 8.0 * n * n_loads
     seconds = 8.0e-5 * n + 1e-5 * tets
-    if solver == "cholmod":
-        memory += 110.0 * n ** (4 / 3)
-        seconds += 40.0 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
+    if solver == "cholmod":      # quadratic elements couple more unknowns per row: more fill (marine gear, docs/cost.md)
+        dense = 1.0 if order == 1 else 1.3
+        memory += 110.0 * dense * n ** (4 / 3)
+        seconds += 40.0 * dense**2 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
     elif solver == "lu":
         memory += 420.0 * n ** (4 / 3)
         seconds += 60.0 * (n / 1e5) ** 1.6 + 5e-7 * n * n_loads
@@ -103,18 +104,21 @@ def _elasticity_form(lam: float, mu: float):
     return form
 
 
-def assemble_p1(mesh, element_dofs: np.ndarray, n: int, lam: float, mu: float, chunk: int = ASSEMBLY_CHUNK):
+def assemble_p1(mesh, element_dofs: np.ndarray, n: int, lam: float, mu: float, chunk: int = ASSEMBLY_CHUNK,
+                elements: np.ndarray | None = None):
     """Stiffness matrix (n × n CSR) of P1 vector tetrahedra, local DOF 3a + i = component i of vertex a.
 
     Constant strain per element (exact, module docstring); ``element_dofs`` (12, n_elements) maps the
-    local DOF to the global ones (scikit-fem's numbering).
+    local DOF to the global ones (scikit-fem's numbering); ``elements``: only these (indices; None: all).
     """
-    from scipy.sparse import coo_matrix
+    from scipy.sparse import coo_matrix, csr_matrix
 
-    K = None
+    K = csr_matrix((n, n))
     eye3 = np.eye(3)
-    for lo in range(0, mesh.t.shape[1], chunk):
-        t = mesh.t[:, lo:lo + chunk]
+    elements = np.arange(mesh.t.shape[1]) if elements is None else np.asarray(elements)
+    for lo in range(0, elements.size, chunk):
+        sel = elements[lo:lo + chunk]
+        t = mesh.t[:, sel]
         x = mesh.p[:, t]                                           # (3, 4, ne)
         J = np.transpose(x[:, 1:] - x[:, :1], (2, 0, 1))           # (ne, 3 coords, 3 edges)
         Jinv = np.linalg.inv(J)
@@ -124,11 +128,11 @@ def assemble_p1(mesh, element_dofs: np.ndarray, n: int, lam: float, mu: float, c
         Ke = (mu * dots[:, :, None, :, None] * eye3[None, None, :, None, :]
               + mu * np.einsum("eaj,ebi->eaibj", g, g) + lam * np.einsum("eai,ebj->eaibj", g, g))
         Ke = (Ke * vol[:, None, None, None, None]).reshape(-1, 12, 12)
-        dofs = element_dofs[:, lo:lo + chunk].T                    # (ne, 12)
+        dofs = element_dofs[:, sel].T                              # (ne, 12)
         rows = np.broadcast_to(dofs[:, :, None], Ke.shape).ravel()
         cols = np.broadcast_to(dofs[:, None, :], Ke.shape).ravel()
         part = coo_matrix((Ke.ravel(), (rows, cols)), shape=(n, n)).tocsr()
-        K = part if K is None else K + part
+        K = K + part
     return K
 
 
@@ -142,6 +146,16 @@ def rigid_body_modes_3d(basis) -> np.ndarray:
     B[iz, 4], B[ix, 4] = -x[iz], z[ix]           # about y
     B[ix, 5], B[iy, 5] = -y[ix], x[iy]           # about z
     return B
+
+
+def check_arguments(mesh, solver: str, clamped: str | None) -> None:
+    """ValueError for an unknown ``solver``, ``cholmod`` without cholespy, or a ``clamped`` region the mesh lacks."""
+    if solver not in SOLVERS:
+        raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
+    if solver == "cholmod" and not cholmod_available():
+        raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
+    if clamped is not None and clamped not in mesh.boundaries:
+        raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
 
 
 @dataclass(frozen=True)
@@ -171,12 +185,7 @@ class Elastic3D:
 
         if order not in (1, 2):
             raise ValueError(f"order must be 1 or 2, got {order!r}")
-        if solver not in SOLVERS:
-            raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
-        if solver == "cholmod" and not cholmod_available():
-            raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
-        if clamped is not None and clamped not in mesh.boundaries:
-            raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
+        check_arguments(mesh, solver, clamped)
         t0 = time.perf_counter()
         self.mesh, self.order, self.tol, self.maxiter = mesh, order, tol, maxiter
         self.E, self.nu = youngs_modulus, poisson_ratio
@@ -192,6 +201,7 @@ class Elastic3D:
         held = [np.asarray(fixed if fixed is not None else [], dtype=np.int64)]
         if clamped is not None:
             held.append(self.basis.get_dofs(mesh.boundaries[clamped]).flatten())
+        self.N = self.basis.N    #: unknowns of the model (the length of a displacement vector)
         self.free = np.setdiff1d(np.arange(self.basis.N), np.concatenate(held))
         self.K = K[self.free][:, self.free].tocsr()
         self.assembly_seconds = time.perf_counter() - t0
@@ -206,7 +216,7 @@ class Elastic3D:
         import pyamg
 
         t0 = time.perf_counter()
-        B = rigid_body_modes_3d(self.basis)[self.free]
+        B = self.near_null()[self.free]
         self._ml = pyamg.smoothed_aggregation_solver(self.K, B=B, coarse_solver="splu", max_coarse=500)
         self.setup_seconds = time.perf_counter() - t0
 
@@ -227,7 +237,7 @@ class Elastic3D:
         ``amg``.  ``progress``: called with the number of load cases done after each block."""
         F = np.asarray(F, float)
         m = F.shape[1]
-        U = np.zeros((self.basis.N, m))
+        U = np.zeros((self.N, m))
         if self.solver == "amg":
             for j in range(m):
                 U[:, j] = self.solve(F[:, j], case=f"{case}, load {j}")
@@ -266,12 +276,26 @@ class Elastic3D:
         if not np.all(np.isfinite(x)) or res > 10 * self.tol:
             raise ConvergenceError(case, f"SA-CG did not reach tol={self.tol:g} (relative residual {res:.3g})",
                                    {"residual": hist})
-        u = np.zeros(self.basis.N)
+        u = np.zeros(self.N)
         u[self.free] = x
         self.solve_seconds += time.perf_counter() - t0
         self.solves += 1
         self.iterations += len(hist) - 1
         return u
+
+    def near_null(self) -> np.ndarray:
+        """Rigid-body modes (N, 6): the near-null space of the SA hierarchy."""
+        return rigid_body_modes_3d(self.basis)
+
+    def facet_basis(self, facets: np.ndarray):
+        """scikit-fem ``FacetBasis`` on ``facets`` for load vectors; :meth:`lift` takes its vectors to the model's."""
+        from skfem import FacetBasis
+
+        return FacetBasis(self.mesh, self.basis.elem, facets=facets)
+
+    def lift(self, f: np.ndarray) -> np.ndarray:
+        """A load vector assembled on :meth:`facet_basis` as a load vector of the model (here: itself)."""
+        return f
 
     def probe_matrices(self, points: np.ndarray) -> list:
         """Sparse point-evaluation matrices (x, y, z component) at ``points`` (3, n): u_c = M_c @ u."""
@@ -290,18 +314,19 @@ class Elastic3D:
 
     def stats(self) -> SolveStats:
         nnz = int(self._ml.L.nnz + self._ml.U.nnz) if self.solver == "lu" and self._ml is not None else 0
-        return SolveStats(self.basis.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
+        return SolveStats(self.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
                           self.solves, self.iterations, nnz)
 
 
-def _assemble_chunks(mesh, elem, intorder: int, form, chunk: int = ASSEMBLY_CHUNK):
-    """``form`` assembled by scikit-fem over chunks of elements and summed (bounded transient memory)."""
+def _assemble_chunks(mesh, elem, intorder: int, form, chunk: int = ASSEMBLY_CHUNK, elements: np.ndarray | None = None):
+    """``form`` assembled by scikit-fem over chunks of elements (``elements``: only these; None: all) and summed
+    (bounded transient memory)."""
     from skfem import Basis
 
     K = None
-    n_el = mesh.t.shape[1]
-    for lo in range(0, n_el, chunk):
-        part = form.assemble(Basis(mesh, elem, intorder=intorder, elements=np.arange(lo, min(n_el, lo + chunk))))
+    elements = np.arange(mesh.t.shape[1]) if elements is None else np.asarray(elements)
+    for lo in range(0, elements.size, chunk):
+        part = form.assemble(Basis(mesh, elem, intorder=intorder, elements=elements[lo:lo + chunk]))
         K = part.tocsr() if K is None else K + part.tocsr()
     return K
 

@@ -41,7 +41,11 @@ stiff, as expected of linear tetrahedra in bending.  P2 converges much faster pe
 costs ≈ 21 s a unit load with SA-AMG on the bodies (176 k DOF at level 0): on a 5 × 7 grid P1
 level 1 / P1 level 3 / P2 level 0 give 7.119 / 6.954 / 6.742e8 N/m and LTE p-p 0.536 / 0.556 /
 0.564 µm (P1 level 1: +5.6 % / −4.9 % against P2; build 25 s / 183 s / 1503 s;
-``python studies/ltca/ltca_element_order.py --ltca``).
+``python studies/ltca/ltca_element_order.py --ltca``).  ``order="p2-bending"``
+(``numerics.body_elements``): P2 (hierarchical, :class:`femgear.physics.body.mixed3d.MixedElastic3D`) in the
+loaded tooth down to :data:`ZONE_DEPTH` m_n below its root and in the rim below :data:`RIM_DEPTH` m_n
+(:func:`bending_elements`), P1 elsewhere; on the baseline at level 0 it costs ≈ 1.9× the DOF of P1 at
+the same level and gives k mean within 0.8 % of its level-2 value (``docs/cost.md``, "P2 where the body bends").
 
 d(g′) = min(depth, ½ the half tooth thickness there), so the reading stays inside the
 tooth near the tip.  The default depth is a fixed 0.4 m_n, not a multiple of the element
@@ -77,6 +81,10 @@ log = logging.getLogger(__name__)
 CACHE_VERSION = 3     #: 3: both helices, the groove and the rim down to the bore in one body (cross kernels)
 DEFAULT_DEPTH = 0.4    #: reading depth below the flank, in normal modules (clipped near the tip)
 SOLVE_TOL = 1e-8       #: relative residual of the SA-CG unit-load solves
+BENDING = "p2-bending"  #: ``order`` of P2 where the body bends, P1 elsewhere (:func:`bending_elements`)
+ORDERS = (1, 2, BENDING)
+ZONE_DEPTH = 1.0       #: the loaded tooth is quadratic down to this many m_n below its root circle
+RIM_DEPTH = 3.0        #: and the rim below this many m_n under the root circle (all round, the whole face)
 
 
 @dataclass(frozen=True)
@@ -161,7 +169,7 @@ def save_cache(path: Path, **arrays) -> None:
         raise
 
 
-def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, order: int,
+def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, order: int | str,
          n_rho: int, n_z: int, depth: float) -> str:
     from femgear.physics.mesh.segment import mesh_revision
 
@@ -174,7 +182,7 @@ def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, or
 
 
 def cache_path(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: float, poisson_ratio: float,
-               order: int = 1, n_rho: int = 7, n_z: int = 9, depth: float | None = None) -> Path:
+               order: int | str = 1, n_rho: int = 7, n_z: int = 9, depth: float | None = None) -> Path:
     """The disk-cache file of :func:`member_compliance` with these arguments (it may not exist)."""
     d0 = depth if depth is not None else DEFAULT_DEPTH * pair.m_n
     key = _key(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
@@ -182,9 +190,12 @@ def cache_path(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: f
 
 
 def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_modulus: float,
-                      poisson_ratio: float, order: int = 1, n_rho: int = 7, n_z: int = 9,
+                      poisson_ratio: float, order: int | str = 1, n_rho: int = 7, n_z: int = 9,
                       depth: float | None = None, cache: bool = True) -> MemberCompliance:
-    """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present."""
+    """Bulk flank kernels of ``member`` (1 pinion, 2 gear), from the disk cache when present.
+
+    ``order``: 1 or 2 (P1 or P2 everywhere) or :data:`BENDING` (P2 in :func:`bending_elements`, P1 elsewhere).
+    """
     d0 = depth if depth is not None else DEFAULT_DEPTH * pair.m_n
     path = cache_path(pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0)
     if cache and path.exists():
@@ -195,6 +206,8 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
         return MemberCompliance(member, data["rho"], data["z"], data["offsets"], data["bulk"], data["fe_self"],
                                 data["depth"], int(data["ndofs"]), info, data["cross"], right, float(data["groove"]),
                                 data["fe_cross"])
+    if order not in ORDERS:
+        raise ValueError(f"order must be one of {ORDERS}, got {order!r}")
     estimate = build_estimate(pair, member, spec, order, n_rho * n_z * (1 if spec.stagger == 0 else 2))
     announce(estimate, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level")
     result = interruptible(_compute, pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0,
@@ -216,12 +229,12 @@ def flank_unit_loads(pair: GearPair, member: int, model, grid_rho: np.ndarray, g
     FE load vector of node g (grid index i_ρ·n_z + i_z), ``xq`` (3, n_q) the flank quadrature points and
     ``weights[g]`` (n_q,) the share of node g's 1 N carried by each quadrature point.
     """
-    from skfem import FacetBasis, LinearForm
+    from skfem import LinearForm
 
     mesh = model.mesh
     rb = pair.rb1 if member == 1 else pair.rb2
     region = "loaded_flank" if helix == 0 else "loaded_flank_right"
-    fb = FacetBasis(mesh, model.basis.elem, facets=mesh.boundaries[region])
+    fb = model.facet_basis(mesh.boundaries[region])
     xq = np.asarray(fb.global_coordinates())                      # (3, n_facets, n_qp)
     rq = np.sqrt(np.maximum(xq[0] ** 2 + xq[1] ** 2 - rb**2, 0.0))
     zeta = xq[2] if helix == 0 else frame.z_of(xq[2], 1)
@@ -237,7 +250,7 @@ def flank_unit_loads(pair: GearPair, member: int, model, grid_rho: np.ndarray, g
         area = float(np.sum(hats[g] * dA))
         if area <= 0:
             raise ValueError(f"flank grid node {g} carries no flank area: the {region} region misses the active flank")
-        loads.append(pressure.assemble(fb, p=hats[g] / area))
+        loads.append(model.lift(pressure.assemble(fb, p=hats[g] / area)))
         weights.append((hats[g] * dA).ravel() / area)
     return loads, xq.reshape(3, -1), weights
 
@@ -304,7 +317,8 @@ def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices,
     return G, HS
 
 
-def build_estimate(pair: GearPair, member: int, spec: SegmentSpec, order: int = 1, n_loads: int = 63) -> Estimate:
+def build_estimate(pair: GearPair, member: int, spec: SegmentSpec, order: int | str = 1,
+                   n_loads: int = 63) -> Estimate:
     """Expected DOF, peak memory and time of one member's kernels (:func:`member_compliance`, not cached).
 
     The DOF come from the body's section (:func:`femgear.physics.mesh.segment.body_size`, exact for P1); memory and
@@ -314,22 +328,69 @@ def build_estimate(pair: GearPair, member: int, spec: SegmentSpec, order: int = 
     from femgear.physics.mesh.segment import body_size
 
     nodes, tets = body_size(pair, member, spec)
-    dofs = 3 * (nodes if order == 1 else nodes + int(1.2 * tets))
-    memory, seconds = solve_cost(dofs, tets, order, n_loads)
+    if order == BENDING:
+        dofs = 3 * nodes + int(3.8 * tets * _zone_share(pair, member, spec))
+    else:
+        dofs = 3 * (nodes if order == 1 else nodes + int(1.2 * tets))
+    memory, seconds = solve_cost(dofs, tets, 1 if order == 1 else 2, n_loads)
     name = "pinion" if member == 1 else "gear"
-    return Estimate(f"LTCA {name} body (P{order}, h_tooth = m_n/{pair.m_n / spec.h_tooth:.3g})", dofs, memory,
+    label = BENDING if order == BENDING else f"P{order}"
+    return Estimate(f"LTCA {name} body ({label}, h_tooth = m_n/{pair.m_n / spec.h_tooth:.3g})", dofs, memory,
                     seconds)
 
 
-def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimate) -> MemberCompliance:
+def _zone_share(pair: GearPair, member: int, spec: SegmentSpec) -> float:
+    """Share of the body's elements that :func:`bending_elements` makes quadratic, from its section's triangles
+    (those of the far field count once per ``coarse_step`` layers: an estimate, transition columns aside)."""
+    from femgear.physics.mesh.segment import body_section, coarse_step, far_triangles
+
+    sec = body_section(pair, member, spec)
+    step = coarse_step(pair, spec)
+    weight = np.where(far_triangles(pair, member, sec, spec), 1.0 / step, 1.0) if step > 1 else np.ones(sec.t.shape[1])
+    c = sec.p[:, sec.t].mean(axis=1)
+    z = pair.z1 if member == 1 else pair.z2
+    rf = pair.rf1 if member == 1 else pair.rf2
+    r = np.hypot(c[0], c[1])
+    tooth = (np.abs(np.arctan2(c[0], c[1])) < np.pi / z) & (r > rf - ZONE_DEPTH * pair.m_n)
+    helices = 1 if spec.stagger == 0 else 2
+    rim = np.sum(weight * (r < rf - RIM_DEPTH * pair.m_n))
+    share = rim + np.sum(weight * tooth) * helices / (2 + spec.groove / pair.b)
+    return float(share / np.sum(weight))
+
+
+def bending_elements(mesh, pair: GearPair, member: int, spec: SegmentSpec) -> np.ndarray:
+    """The quadratic elements of the ``p2-bending`` body (bool per tetrahedron): the loaded middle tooth (of the
+    left helix; of both on a staggered body, where both are loaded) down to :data:`ZONE_DEPTH` m_n below its
+    root circle, and the rim below :data:`RIM_DEPTH` m_n under it, all round and over the whole face.
+
+    Where that choice comes from (``docs/cost.md``, "P2 where the body bends"): the loaded tooth's own
+    compliance is what the unit loads read, and it bends; its neighbours only carry readings (rigid motion
+    on the rim); the rim — coarse P1 elements far from the teeth — was the other stiff part (the baseline:
+    k mean 7.012e8 N/m with the tooth alone quadratic, 6.859e8 with the rim too, at level 0).
+    """
+    from femgear.physics.mesh.segment import bending_zone
+
+    helices = (0,) if spec.stagger == 0 else (0, 1)
+    return bending_zone(mesh, pair, member, spec, teeth=1, depth=ZONE_DEPTH, helices=helices, rim=RIM_DEPTH)
+
+
+def _body_model(mesh, pair, member, spec, E, nu, order):
     from femgear.physics.body.elastic3d import Elastic3D
+    from femgear.physics.body.mixed3d import MixedElastic3D
+
+    if order == BENDING:
+        return MixedElastic3D(mesh, E, nu, bending_elements(mesh, pair, member, spec), clamped="bore", tol=SOLVE_TOL)
+    return Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=SOLVE_TOL, solver="auto")
+
+
+def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimate) -> MemberCompliance:
     from femgear.physics.mesh.segment import helix_frame, member_body
 
     t0 = time.perf_counter()
     mesh = member_body(pair, member, spec)
     t_mesh = time.perf_counter() - t0
     frame = helix_frame(pair, member, spec)
-    model = Elastic3D(mesh, E, nu, order=order, clamped="bore", tol=SOLVE_TOL, solver="auto")
+    model = _body_model(mesh, pair, member, spec, E, nu, order)
     log.log(NOTICE if estimate.seconds > LONG_STAGE_SECONDS else logging.INFO,
             f"{estimate.stage}: meshed and assembled ({model.free.size / 1e3:.0f} k DOF, "
             f"{time.perf_counter() - t0:.0f} s); {model.solver} factor and {n_rho * n_z} unit loads next")
@@ -380,4 +441,4 @@ def mean_self_compliance(c: MemberCompliance) -> float:
 
 
 __all__ = ["MemberCompliance", "member_compliance", "cache_dir", "cache_key", "cache_path", "save_cache",
-           "mean_self_compliance", "build_estimate"]
+           "mean_self_compliance", "build_estimate", "bending_elements", "BENDING", "ORDERS"]

@@ -101,21 +101,22 @@ def richardson(h, values) -> dict | None:
 
 def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: int = 64, stagger: float = 0.0,
                youngs_modulus: float = 210e9, poisson_ratio: float = 0.3, level: int = 1, n_line: int = 16,
-               extra=None, body: dict | None = None):
+               extra=None, body: dict | None = None, order: int | str = 1):
     """The :class:`~femgear.physics.ltca.cycle.LTCACycle` at the total normal force ``force`` [N].
 
     The line loads are kept (:meth:`LTCAResult.path_load`: the wear and lubrication load map of
     the ``ltca`` level, :func:`femgear.system.coupling.loop.ltca_reference`).  ``body``: ``bore_radius``
     and ``groove_width`` of the member bodies (:func:`femgear.levels.stiffness.body_options`).
     ``n_line`` points per contact line, doubled while fewer than :data:`MIN_RESOLVED_ORDERS`
-    mesh orders are resolved (``LTCACycle.n_line`` is the one used).
+    mesh orders are resolved (``LTCACycle.n_line`` is the one used).  ``order``: the bodies' elements
+    (1: P1; ``"p2-bending"``: P2 where they bend, :func:`femgear.physics.ltca.compliance.bending_elements`).
     """
     from femgear.physics.ltca.analysis import build_model, mesh_cycle
     from femgear.physics.ltca.cycle import LTCACycle
 
     body = {k: v for k, v in (body or {}).items() if k != "stagger"}
-    check_body_memory(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
-    model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger, **body)
+    check_body_memory(pair, youngs_modulus, poisson_ratio, level, stagger, order=order, **body)
+    model = build_model(pair, youngs_modulus, poisson_ratio, level=level, stagger=stagger, order=order, **body)
     spectra: dict = {}
     orders, change = resolved_orders(model, force, modifications, stagger, n_line, extra, spectra=spectra)
     while orders < MIN_RESOLVED_ORDERS and 2 * n_line <= MAX_LINE_POINTS:
@@ -127,7 +128,7 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
 
 def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int, stagger: float = 0.0,
                    bore_radius: tuple[float, float] = (0.0, 0.0), groove_width: float = 0.0,
-                   cached: bool = True) -> list:
+                   cached: bool = True, order: int | str = 1) -> list:
     """:class:`femgear.perf.Estimate` of each member body that :func:`ltca_cycle` would compute at body
     ``level`` (``cached`` False: also those already in the disk cache).  Meshes the sections only."""
     from femgear.physics.ltca.compliance import build_estimate, cache_path
@@ -137,10 +138,10 @@ def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, 
     for member in (1, 2):
         spec = default_spec(pair, member, level, r_bore=bore_radius[member - 1], groove=groove_width,
                             stagger=stagger)
-        if cached and cache_path(pair, member, spec, youngs_modulus, poisson_ratio).exists():
+        if cached and cache_path(pair, member, spec, youngs_modulus, poisson_ratio, order).exists():
             continue
         try:
-            out.append(build_estimate(pair, member, spec, n_loads=63 * (1 if stagger == 0 else 2)))
+            out.append(build_estimate(pair, member, spec, order, n_loads=63 * (1 if stagger == 0 else 2)))
         except ValueError as exc:      # e.g. a bore too close to the root circle for the body's rim
             from femgear.errors import SceneError
 
@@ -151,20 +152,21 @@ def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, 
 
 
 def check_body_memory(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int, stagger: float = 0.0,
-                      **body) -> None:
+                      order: int | str = 1, **body) -> None:
     """Refuse (:class:`femgear.errors.ResourceError`, exit 2, naming ``numerics.body_level`` and the finest
     level that fits) before any body is built when one needs more memory than the budget."""
     from femgear.errors import ResourceError
     from femgear.perf import memory_budget
 
     budget = memory_budget()
-    over = [e for e in body_estimates(pair, youngs_modulus, poisson_ratio, level, stagger, **body)
+    over = [e for e in body_estimates(pair, youngs_modulus, poisson_ratio, level, stagger, order=order, **body)
             if e.memory_bytes > budget]
     if not over:
         return
     fits = next((k for k in range(level - 1, -1, -1)
                  if all(e.memory_bytes <= budget
-                        for e in body_estimates(pair, youngs_modulus, poisson_ratio, k, stagger, cached=False, **body))),
+                        for e in body_estimates(pair, youngs_modulus, poisson_ratio, k, stagger, cached=False,
+                                                order=order, **body))),
                 None)
     hint = f"numerics.body_level = {fits} fits" if fits is not None else "no body level fits"
     worst = max(over, key=lambda e: e.memory_bytes)

@@ -283,6 +283,37 @@ def body_size(pair: GearPair, member: int, spec: SegmentSpec) -> tuple[int, int]
     return int(nodes + n_trans), int(tets + n_trans * (2 + 4 * step))
 
 
+def bending_zone(mesh, pair: GearPair, member: int, spec: SegmentSpec, teeth: int = 1, depth: float = 1.0,
+                 helices: tuple[int, ...] = (0, 1), rim: float | None = None, reach: float | None = None) -> np.ndarray:
+    """Elements (bool per tetrahedron of :func:`member_body`'s ``mesh``) of the middle ``teeth`` teeth of the
+    ``helices`` (0 left, 1 right) down to ``depth`` m_n below the root circle: where the loaded teeth bend.
+
+    A centroid test in the section's own frame (turned back by θ(z), tooth 0 on +y): polar angle within
+    ``teeth``/2 pitches of +y and radius above r_f − ``depth`` m_n, axial position on one of the ``helices``.
+    """
+    z_teeth = pair.z1 if member == 1 else pair.z2
+    rf = pair.rf1 if member == 1 else pair.rf2
+    frame = helix_frame(pair, member, spec)
+    c = mesh.p[:, mesh.t].mean(axis=1)
+    th = frame.theta(c[2])
+    sx = np.cos(th) * c[0] + np.sin(th) * c[1]
+    sy = -np.sin(th) * c[0] + np.cos(th) * c[1]
+    on = np.zeros(c.shape[1], bool)
+    if 0 in helices:
+        on |= c[2] <= pair.b
+    if 1 in helices:
+        on |= c[2] >= pair.b + spec.groove
+    near = np.abs(np.arctan2(sx, sy)) < 0.5 * teeth * 2 * math.pi / z_teeth
+    r = np.hypot(sx, sy)
+    zone = on & near & (r > rf - depth * pair.m_n)
+    if rim is not None:
+        below = r < rf - rim * pair.m_n
+        if reach is not None:
+            below &= np.hypot(sx, sy - rf) < reach * pair.m_n
+        zone |= below
+    return zone
+
+
 def _below_split(sec) -> np.ndarray:
     """Triangles of the section on the bore's side of the embedded ``split`` edges (connected components of
     the triangles joined across every other interior edge; a centroid test fails for flat triangles on
