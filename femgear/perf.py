@@ -200,9 +200,14 @@ def interruptible(fn: Callable[..., Any], *args, **kwargs) -> Any:
         raise
     if not data:
         code = os.waitstatus_to_exitcode(status)
+        name = getattr(fn, "__name__", "stage")
         if code == -signal.SIGKILL:
-            raise MemoryError(f"{getattr(fn, '__name__', 'stage')}: the child process was killed (out of memory?)")
-        raise RuntimeError(f"{getattr(fn, '__name__', 'stage')}: the child process ended with status {code}")
+            raise MemoryError(f"{name}: the child process was killed (out of memory?)")
+        if code in (-signal.SIGSEGV, -signal.SIGBUS, -signal.SIGABRT):
+            # CHOLMOD (through cholespy) prints its own error and then crashes when memory runs out
+            raise MemoryError(f"{name}: the child process crashed ({signal.Signals(-code).name}): the sparse "
+                              "factorisation crashes this way when memory runs out")
+        raise RuntimeError(f"{name}: the child process ended with status {code}")
     ok, value = pickle.loads(data)
     if ok:
         return value

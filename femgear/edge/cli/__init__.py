@@ -149,10 +149,11 @@ def _dispatch(args: argparse.Namespace) -> int:
             raise
         print("femgear: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
-    except MemoryError:
+    except MemoryError as exc:
         if args.debug:
             raise
-        print("femgear: error: out of memory (choose a coarser level or resolution)", file=sys.stderr)
+        why = f": {exc}" if str(exc) else ""
+        print(f"femgear: error: out of memory{why} (choose a coarser level or resolution)", file=sys.stderr)
         return EXIT_SOLVER
     except BrokenPipeError:  # stdout closed early (| head): not an error of the run
         sys.stderr.close()
