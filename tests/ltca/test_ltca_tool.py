@@ -2,6 +2,7 @@
 
 import dataclasses
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -225,3 +226,26 @@ def test_main_job_summary_and_key_figures_carry_the_loaded_te(coarse_model, base
     assert te["units"]["lte_peak_to_peak"] == "m" and te["resolved_orders"] == 7
     rows = {q: v for q, v, _ in key_figures(run_summary(result))}
     assert rows["loaded TE p-p (LTCA, normal); harmonics 1-3"].startswith(f"{r.lte_peak_to_peak() * 1e6:.4f}")
+
+
+def test_the_tool_builds_the_bodies_the_scene_asks_for(monkeypatch, tmp_path):
+    """``femgear ltca`` takes the member bodies' resolution and elements from the scene (``numerics.body_level``,
+    ``numerics.body_elements``), as the ``ltca`` stiffness level does; it built level 1, P1 whatever they said."""
+    import femgear.physics.ltca.tool as tool
+    from femgear.edge.cli import main
+
+    seen = {}
+
+    class Stop(Exception):
+        pass
+
+    def capture(*args, **kwargs):
+        seen["options"] = args[9]
+        raise Stop
+
+    monkeypatch.setattr(tool, "run_ltca", capture)
+    base = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
+    with pytest.raises(Stop):
+        main(["ltca", str(base), "--out", str(tmp_path / "o"), "--set", "numerics.body_level=0",
+              "--set", 'numerics.body_elements="p2-bending"', "--debug"])
+    assert (seen["options"].level, seen["options"].order) == (0, "p2-bending")

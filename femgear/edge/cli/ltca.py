@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import math
 import time
+from dataclasses import replace
 from pathlib import Path
 
 from femgear.edge.cli.common import add_scene_arguments, emit_json
@@ -79,7 +80,7 @@ def _options(args: argparse.Namespace):
 def _run(args: argparse.Namespace) -> int:
     from femgear.case import build_case
     from femgear.edge.io.paths import child_path, prepare_output_dir
-    from femgear.levels.stiffness import body_options
+    from femgear.levels.stiffness import body_options, body_order
     from femgear.physics.ltca.te import check_torques
     from femgear.physics.ltca.tool import run_ltca
     from femgear.scene import load_scene
@@ -93,7 +94,7 @@ def _run(args: argparse.Namespace) -> int:
     torques = check_torques(given, pair, E, nu, driver, "--torques")
     harris = check_torques(harris_torques(args.harris_range, design), pair, E, nu, driver, "--harris-range") \
         if args.harris else None
-    options = _options(args)
+    options = replace(_options(args), level=case.numerics.body_level, order=body_order(case.numerics.body_elements))
     if not 1 <= options.n_harmonics <= options.n_phases // 2 - 1:
         raise ArgumentError("--harmonics", f"must be 1…{options.n_phases // 2 - 1} for {options.n_phases} phases, "
                             f"got {options.n_harmonics}")

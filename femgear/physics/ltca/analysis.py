@@ -59,7 +59,7 @@ class LTCAModel:
     """the stagger the member bodies were built with [base pitches]"""
 
 
-def build_model(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int = 1, order: int = 1,
+def build_model(pair: GearPair, youngs_modulus: float, poisson_ratio: float, level: int = 1, order: int | str = 1,
                 n_rho: int = 7, n_z: int = 9, n_teeth: int = 5, cache: bool = True,
                 bore_radius: tuple[float, float] = (0.0, 0.0), groove_width: float = 0.0,
                 stagger: float = 0.0, spec_options: dict | None = None) -> LTCAModel:

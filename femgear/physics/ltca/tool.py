@@ -31,6 +31,7 @@ class LTCAOptions:
     refine_check: bool = True   #: also solve with 2 n_line points (harmonics' discretisation change)
     helix_alone: bool = True    #: the per-helix TE (each helix alone at its mean share)
     level: int = 1              #: member body mesh level (:func:`femgear.physics.mesh.segment.default_spec`)
+    order: int | str = 1        #: member body elements: 1 (P1) or "p2-bending" (:func:`femgear.physics.ltca.compliance.member_compliance`)
 
 
 @dataclass(frozen=True)
@@ -77,11 +78,13 @@ def run_ltca(pair: GearPair, youngs_modulus: float, poisson_ratio: float, modifi
     body = dict(body or {})
     stagger = float(body.pop("stagger", 0.0))
     if model is None:
-        model = build_model(pair, youngs_modulus, poisson_ratio, level=options.level, stagger=stagger, **body)
+        model = build_model(pair, youngs_modulus, poisson_ratio, level=options.level, order=options.order,
+                            stagger=stagger, **body)
     groove = float(body.get("groove_width", 0.0))
     args = (model, pair, youngs_modulus, poisson_ratio)
     design, _ = _cycle(*args, design_torque, driver, modifications, stagger,
-                       LTCAOptions(options.n_phases, options.n_line, options.n_harmonics, False, False, options.level))
+                       LTCAOptions(options.n_phases, options.n_line, options.n_harmonics, False, False, options.level,
+                                   options.order))
     check_contact(design, modifications)
     analyses, maps = [], []
     for t in torques:
