@@ -15,7 +15,7 @@ A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
   finite and non-negative (zero only for the levels without heating), coupling converged, and
   the film and temperature within a factor of :data:`FACTOR` of the formula figures of
   ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
-- ``refused: <line>`` — exit 2 within :data:`REFUSAL_SECONDS` with one line naming the key;
+- ``refused: <line>`` — exit 2 within :data:`REFUSAL_SECONDS` of CPU time with one line naming the key;
 - ``FAIL: ...`` — anything else (a raw solver line, a broken invariant, a late refusal).
 
 Run: ``python studies/validation/zoo_matrix.py [--scenes a,b] [--cells stiffness=fe,...] [--jobs N] [--coarse]
@@ -30,6 +30,7 @@ import math
 import os
 import subprocess
 import sys
+import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -40,7 +41,8 @@ ROOT = Path(__file__).resolve().parents[2]
 ZOO = ROOT / "studies" / "zoo"
 OUT = ROOT / "out" / "zoo_matrix"
 FACTOR = 5.0              #: films and temperatures within this factor of the formula figures
-REFUSAL_SECONDS = 30.0    #: a refusal comes before computing: the CLI's start-up (imports), ~3 s idle, more on a loaded machine
+REFUSAL_SECONDS = 30.0    #: CPU seconds: a refusal comes before (long) computing: the CLI's start-up (imports) ~2 s;
+#: CPU time, not wall time, so that a loaded machine does not turn a refusal into a late one
 FORCE_TOLERANCE = 0.02    #: the path integral of the time-mean load against F_n
 COARSE = ("numerics.dynamics_cycles=20", "numerics.transient_cycles=10", "numerics.path_points=21")
 
@@ -166,6 +168,29 @@ def hand_figures(path: Path) -> dict:
             "film": float(contact.film_central[contact.pitch_index]), "flash": float(max(dT))}
 
 
+def run_timed(cmd: list[str], timeout: float, **kwargs) -> tuple[subprocess.CompletedProcess, float]:
+    """``cmd`` run as ``subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)`` would, and the CPU
+    time of the child and its waited-for descendants [s] (``os.wait4``: user + system, independent of the load)."""
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        proc = subprocess.Popen(cmd, stdout=out, stderr=err, text=True, **kwargs)
+        deadline = time.monotonic() + timeout
+        while True:
+            pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+            if pid:
+                break
+            if time.monotonic() > deadline:
+                proc.kill()
+                os.wait4(proc.pid, 0)
+                proc.returncode = -9
+                raise subprocess.TimeoutExpired(cmd, timeout)
+            time.sleep(0.05)
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        err.seek(0)
+        done = subprocess.CompletedProcess(cmd, proc.returncode, out.read(), err.read())
+    return done, usage.ru_utime + usage.ru_stime
+
+
 def run_cell(name: str, path: Path, column: str, overrides: list[str], coarse: bool, timeout: float) -> dict:
     out = OUT / name / column.replace("=", "_")
     ov = list(overrides) + (list(COARSE) if coarse else [])
@@ -174,15 +199,14 @@ def run_cell(name: str, path: Path, column: str, overrides: list[str], coarse: b
         cmd += ["--set", o]
     t0 = time.perf_counter()
     try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=ROOT,
-                           env={**os.environ, "OPENBLAS_NUM_THREADS": "1"})
+        p, cpu = run_timed(cmd, timeout, cwd=ROOT, env={**os.environ, "OPENBLAS_NUM_THREADS": "1"})
     except subprocess.TimeoutExpired:
         return {"scene": name, "cell": column, "verdict": f"FAIL: over the {timeout:.0f} s limit", "seconds": timeout}
     seconds = time.perf_counter() - t0
     err = [line for line in p.stderr.strip().splitlines() if line.startswith("femgear: error")]
     if p.returncode == 2:
         line = err[-1].removeprefix("femgear: error: ") if err else p.stderr.strip()[-200:]
-        verdict = f"refused: {line}" if seconds < REFUSAL_SECONDS and len(err) == 1 else f"FAIL: late or raw: {line}"
+        verdict = f"refused: {line}" if cpu < REFUSAL_SECONDS and len(err) == 1 else f"FAIL: late or raw: {line}"
     elif p.returncode != 0:
         verdict = f"FAIL: exit {p.returncode}: {(err or [p.stderr.strip()[-200:]])[-1]}"
     else:

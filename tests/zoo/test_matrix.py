@@ -54,3 +54,19 @@ def test_a_coarse_run_passes_the_invariants(tmp_path, monkeypatch):
     assert row["verdict"] == "ok", row
     hand = zm.hand_figures(path)
     assert hand["force"] > 0 and math.isfinite(hand["film"]) and hand["film"] > 0
+
+
+def test_cells_are_judged_by_cpu_time_not_by_the_load():
+    """A child that sleeps 1 s costs almost no CPU (a loaded machine stretches a refusal's wall time, not its CPU
+    time); one that spins 0.5 s costs about 0.5 s; output, exit code and the timeout behave as subprocess.run's."""
+    import subprocess
+    import sys
+
+    sleep, cpu_sleep = zm.run_timed([sys.executable, "-c", "import time, sys; time.sleep(1); print('a'); "
+                                     "sys.exit(2)"], 30)
+    assert (sleep.returncode, sleep.stdout.strip()) == (2, "a") and cpu_sleep < 0.5
+    _, cpu_spin = zm.run_timed([sys.executable, "-c", "import time\nt = time.process_time()\n"
+                                "while time.process_time() - t < 0.5: pass"], 30)
+    assert 0.45 < cpu_spin < 3.0
+    with pytest.raises(subprocess.TimeoutExpired):
+        zm.run_timed([sys.executable, "-c", "import time; time.sleep(10)"], 0.5)
