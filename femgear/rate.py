@@ -60,7 +60,7 @@ def contact_figures(case: Case, contact: ContactPath, mu: np.ndarray | None, mu_
     run's own; None: dry, μ = 0), interpolated onto the contact pass's positions."""
     scene, pair = case.scene, case.pair
     k = contact.kin
-    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    w = contact.line_loads()
     mu_at = _friction_at(mu, mu_u)
     m = case.material
     B = thermal_effusivity(m.conductivity, m.density, m.specific_heat)
@@ -90,7 +90,7 @@ def power_loss(case: Case, contact: ContactPath, mu_at) -> MeshPowerLoss:
     if pair.beta_b == 0 and not np.all(np.isin(contact.single_contact, contact.kin.u)):
         contact = contact_pass(case, u=zone_grid(pair, contact.kin.u.size))
     k = contact.kin
-    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    w = contact.line_loads()
     return mesh_power_loss(pair, k.u, mu_at(k.u), w, k.vs, op.pinion_torque, op.pinion_speed)
 
 
@@ -122,7 +122,7 @@ def scene_info(case: Case) -> SceneInfo:
     contact_warnings(case, float(contact.hertz_pressure.max()))
     rating = rate_case(case.scene, pair, contact, case=case)
     k = contact.kin
-    w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+    w = contact.line_loads()
     level = summary_level(case.levels.lubrication)
     mu, _ = lubrication_solver(case, level)(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
                                             T=np.full(k.u.shape, case.operating.ambient_temperature))
@@ -144,7 +144,7 @@ def own_figures(case, contact: ContactPath, Ra: float, temperature_rise: np.ndar
     scene = case.scene
     if temperature_rise is None or level is None or not lubrication_solver(case, level).heats:
         k = contact.kin
-        w = contact.line_load if contact.line_load is not None else np.full(k.u.shape, contact.load_per_length)
+        w = contact.line_loads()
         solver = lubrication_solver(case, "formula")
         _, temperature_rise = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
                                      T=np.full(k.u.shape, scene.operating.ambient_temperature))

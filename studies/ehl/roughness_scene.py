@@ -98,7 +98,7 @@ def run(positions: int = 9, overrides: tuple[str, ...] = ()) -> dict:
     scene = setup(overrides)
     cp = contact_pass(build_case(scene), n=positions)
     E_red = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)
-    w = cp.line_load if cp.line_load is not None else np.full(cp.kin.u.shape, cp.load_per_length)
+    w = cp.line_loads()
     T = scene.operating.ambient_temperature
     oil = _oil(scene, T)
     rows, extras = [], {}

@@ -70,6 +70,12 @@ class ContactPath:
         """Index of the position nearest ``u`` [m]."""
         return int(np.argmin(np.abs(self.kin.u - u)))
 
+    def line_loads(self) -> np.ndarray:
+        """w(u) at every position: the load sharing's ``line_load``, else the path mean ``load_per_length`` [N/m]."""
+        if self.line_load is not None:
+            return self.line_load
+        return np.full(self.kin.u.shape, self.load_per_length)
+
 
 def zone_grid(pair: GearPair, n: int) -> np.ndarray:
     """``n`` positions from A to E plus the pitch point and, for a spur pair, both sides of the
