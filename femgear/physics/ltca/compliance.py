@@ -342,19 +342,15 @@ def build_estimate(pair: GearPair, member: int, spec: SegmentSpec, order: int | 
 def _zone_share(pair: GearPair, member: int, spec: SegmentSpec) -> float:
     """Share of the body's elements that :func:`bending_elements` makes quadratic, from its section's triangles
     (those of the far field count once per ``coarse_step`` layers: an estimate, transition columns aside)."""
-    from femgear.physics.mesh.segment import body_section, coarse_step, far_triangles
+    from femgear.physics.mesh.segment import body_section, coarse_step, far_triangles, section_zone
 
     sec = body_section(pair, member, spec)
     step = coarse_step(pair, spec)
     weight = np.where(far_triangles(pair, member, sec, spec), 1.0 / step, 1.0) if step > 1 else np.ones(sec.t.shape[1])
     c = sec.p[:, sec.t].mean(axis=1)
-    z = pair.z1 if member == 1 else pair.z2
-    rf = pair.rf1 if member == 1 else pair.rf2
-    r = np.hypot(c[0], c[1])
-    tooth = (np.abs(np.arctan2(c[0], c[1])) < np.pi / z) & (r > rf - ZONE_DEPTH * pair.m_n)
+    tooth, below = section_zone(pair, member, c[0], c[1], depth=ZONE_DEPTH, rim=RIM_DEPTH)
     helices = 1 if spec.stagger == 0 else 2
-    rim = np.sum(weight * (r < rf - RIM_DEPTH * pair.m_n))
-    share = rim + np.sum(weight * tooth) * helices / (2 + spec.groove / pair.b)
+    share = np.sum(weight * below) + np.sum(weight * tooth) * helices / (2 + spec.groove / pair.b)
     return float(share / np.sum(weight))
 
 

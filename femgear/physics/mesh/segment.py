@@ -291,8 +291,6 @@ def bending_zone(mesh, pair: GearPair, member: int, spec: SegmentSpec, teeth: in
     A centroid test in the section's own frame (turned back by θ(z), tooth 0 on +y): polar angle within
     ``teeth``/2 pitches of +y and radius above r_f − ``depth`` m_n, axial position on one of the ``helices``.
     """
-    z_teeth = pair.z1 if member == 1 else pair.z2
-    rf = pair.rf1 if member == 1 else pair.rf2
     frame = helix_frame(pair, member, spec)
     c = mesh.p[:, mesh.t].mean(axis=1)
     th = frame.theta(c[2])
@@ -303,15 +301,23 @@ def bending_zone(mesh, pair: GearPair, member: int, spec: SegmentSpec, teeth: in
         on |= c[2] <= pair.b
     if 1 in helices:
         on |= c[2] >= pair.b + spec.groove
-    near = np.abs(np.arctan2(sx, sy)) < 0.5 * teeth * 2 * math.pi / z_teeth
-    r = np.hypot(sx, sy)
-    zone = on & near & (r > rf - depth * pair.m_n)
-    if rim is not None:
-        below = r < rf - rim * pair.m_n
-        if reach is not None:
-            below &= np.hypot(sx, sy - rf) < reach * pair.m_n
-        zone |= below
-    return zone
+    tooth, below = section_zone(pair, member, sx, sy, teeth, depth, rim, reach)
+    return (on & tooth) | below
+
+
+def section_zone(pair: GearPair, member: int, x: np.ndarray, y: np.ndarray, teeth: int = 1, depth: float = 1.0,
+                 rim: float | None = None, reach: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The zone of :func:`bending_zone` at points (``x``, ``y``) of the section's own frame (tooth 0 on +y):
+    (in the middle ``teeth`` teeth down to ``depth`` m_n below the root circle, in the rim below ``rim`` m_n under
+    it within ``reach`` m_n of the root of tooth 0 (None: all round; ``rim`` None: no rim))."""
+    z_teeth = pair.z1 if member == 1 else pair.z2
+    rf = pair.rf1 if member == 1 else pair.rf2
+    r = np.hypot(x, y)
+    tooth = (np.abs(np.arctan2(x, y)) < 0.5 * teeth * 2 * math.pi / z_teeth) & (r > rf - depth * pair.m_n)
+    below = np.zeros(r.shape, bool) if rim is None else r < rf - rim * pair.m_n
+    if rim is not None and reach is not None:
+        below &= np.hypot(x, y - rf) < reach * pair.m_n
+    return tooth, below
 
 
 def _below_split(sec) -> np.ndarray:
