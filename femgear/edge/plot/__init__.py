@@ -6,3 +6,13 @@ the functions, never at import); :func:`femgear.edge.io.figures.save_figure` wri
 - ``ltca``      loaded TE curves, harmonics, Harris map, load over the flank
 - ``ehl``       the centre line of an EHL solution
 """
+
+
+def pyplot():
+    """``matplotlib.pyplot`` on the non-interactive Agg back-end, imported on the first figure (never at import)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt

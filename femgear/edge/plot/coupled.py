@@ -4,14 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
+from femgear.edge.plot import pyplot
 
 
 def plot_coupled_path(s: np.ndarray, load_per_length: np.ndarray,
@@ -22,7 +15,7 @@ def plot_coupled_path(s: np.ndarray, load_per_length: np.ndarray,
 
     ``thermal_deviation`` and ``wear`` are (2, n) arrays (pinion, gear) [m]; None leaves a panel out.
     """
-    plt = _pyplot()
+    plt = pyplot()
     panels = [("load", True), ("friction", mu is not None), ("thermal", thermal_deviation is not None),
               ("wear", wear is not None)]
     panels = [name for name, on in panels if on]
@@ -61,7 +54,7 @@ def _members(ax, s_mm, values, label) -> None:
 
 def plot_convergence(iteration, mesh_force_change, mu_change, tol: float = 1e-6, title: str = ""):
     """Change of the dynamic mesh force (relative) and of μ (absolute) per coupling pass, log scale."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6, 4))
     for values, style, label in ((mesh_force_change, "o-", "dynamic mesh force (relative change)"),
                                  (mu_change, "s--", "friction coefficient μ (absolute change)")):

@@ -11,17 +11,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from femgear.edge.plot import pyplot
 from femgear.system.dynamics.modal import resonance_marks
 from femgear.system.dynamics.response import Response, spectrum
-
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
 
 
 def _last_cycles(res: Response, cycles: float) -> np.ndarray:
@@ -45,7 +37,7 @@ def plot_time_histories(res: Response, cycles: float = 5.0, name: str = ""):
 
     x and y each get their own panel (own scale): on one axis the smaller one hid under the other.
     """
-    plt = _pyplot()
+    plt = pyplot()
     sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
     fig, axes = plt.subplots(4, 2, figsize=(10, 9), sharex=True)
@@ -65,7 +57,7 @@ def plot_time_histories(res: Response, cycles: float = 5.0, name: str = ""):
 
 def plot_mesh_force(res: Response, cycles: float = 5.0, name: str = ""):
     """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference."""
-    plt = _pyplot()
+    plt = pyplot()
     sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
     left, right = res.mesh_force[sel, 0], res.mesh_force[sel, 1]
@@ -98,7 +90,7 @@ def _smooth_orbit(t: np.ndarray, d: np.ndarray, v: np.ndarray, upsample: int = 8
 def plot_phase_planes(res: Response, cycles: float = 10.0, name: str = ""):
     """Velocity against displacement (about their means) of pinion and gear, x and y in separate panels,
     over the last ``cycles`` mesh periods, interpolated between the time steps."""
-    plt = _pyplot()
+    plt = pyplot()
     sel = _last_cycles(res, cycles)
     t = res.t[sel]
     fig, axes = plt.subplots(2, 2, figsize=(10, 8))
@@ -121,7 +113,7 @@ def plot_spectra(res: Response, max_order: float = 32.0, name: str = ""):
     """Hanning-windowed single-sided spectra of the DTE and of the gear's left-bearing y acceleration against
     the mesh order: each line's height is the peak amplitude of that harmonic (a sine of amplitude A shows A,
     :func:`femgear.system.dynamics.response.spectrum`)."""
-    plt = _pyplot()
+    plt = pyplot()
     dt = float(np.median(np.diff(res.t)))
     specs = [("dynamic transmission error (DTE)\npeak amplitude [µm]", spectrum(res.dte, dt, res.mesh_frequency), 1e6),
              ("gear left-bearing acceleration y\npeak amplitude [m/s²]",
@@ -142,7 +134,7 @@ def plot_sweep(sweep, modal=None, name: str = "", harmonics: int = 4):
     """RMS of the dynamic transmission error against mesh frequency (driver speed on the top axis), with
     the natural frequencies whose mesh strain energy is ≥ 5 % marked where the mesh frequency or one of
     its first ``harmonics`` harmonics meets them (:func:`resonance_marks`); those modes are listed."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(8.5, 5.6))
     fm = np.asarray(sweep.mesh_frequency)
     ax.plot(fm, np.asarray(sweep.dte_rms) * 1e6, "o-", ms=3, label="DTE RMS")
@@ -182,7 +174,7 @@ def _mark_modes(ax, modal, lo: float, hi: float, harmonics: int) -> None:
 
 def plot_branches(up, down):
     """Kahraman–Singh sweeps: amplitude of up- and down-sweep against Ω."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4))
     ax.plot(up.frequency, up.amplitude, "o-", ms=3, label="sweep up")
     ax.plot(down.frequency, down.amplitude, "s--", ms=3, label="sweep down")

@@ -1,17 +1,16 @@
-"""Centre-line figure of an EHL solution (matplotlib imported inside the function)."""
+"""Centre-line figure of an EHL solution (matplotlib imported on the first figure)."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from femgear.edge.plot import pyplot
+
 
 def plot_centreline(result):
     """P and H along Y = 0 (point contact) or along X (line contact) of an
     :class:`femgear.physics.ehl.results.EHLResult`."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     if result.P.ndim == 2:
         j0 = int(np.argmin(np.abs(result.y)))

@@ -6,23 +6,15 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from femgear.edge.plot import pyplot
 from femgear.physics.ltca.maps import LoadMaps
 from femgear.physics.ltca.te import HarrisMap, TEAnalysis
-
-
-def _plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
 
 
 def plot_te_curves(analyses: Sequence[TEAnalysis], title: str = ""):
     """Loaded TE over one mesh period per torque: both helices together (solid), each helix alone (dashed,
     dotted) and the unloaded TE (thin grey), along the normal line of action [µm]."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 4.5))
     for k, a in enumerate(analyses):
         c = f"C{k % 10}"
@@ -45,7 +37,7 @@ def plot_te_curves(analyses: Sequence[TEAnalysis], title: str = ""):
 
 def plot_harmonics(analyses: Sequence[TEAnalysis], title: str = ""):
     """Loaded TE amplitudes at the mesh orders, grouped bars per torque [µm]."""
-    plt = _plt()
+    plt = pyplot()
     n = analyses[0].harmonics.size
     width = 0.8 / len(analyses)
     fig, ax = plt.subplots(figsize=(7, 4))
@@ -68,7 +60,7 @@ def plot_harmonics(analyses: Sequence[TEAnalysis], title: str = ""):
 
 def plot_harris(h: HarrisMap, title: str = ""):
     """Harris map: loaded TE peak-to-peak against torque, with the modification and unmodified [µm]."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     ax.plot(h.torque, h.peak_to_peak * 1e6, "o-", label="with the scene's modification")
     ax.plot(h.torque, h.peak_to_peak_unmodified * 1e6, "s--", label="unmodified")
@@ -84,7 +76,7 @@ def plot_harris(h: HarrisMap, title: str = ""):
 def plot_load_distribution(maps: LoadMaps, title: str = "", name: str = ""):
     """Load per unit length over the pinion's flank of each helix at the phase of the largest pressure
     (roll distance ρ₁ against face coordinate ζ) [N/mm]; loaded edge nodes marked (edge contact)."""
-    plt = _plt()
+    plt = pyplot()
     m = maps.members[0].fields
     shape = (2, maps.rho.size, maps.zeta.size)
     w = m["w_worst"].reshape(shape) / 1e3

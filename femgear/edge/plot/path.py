@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from femgear.edge.plot import pyplot
 from femgear.physics.contact.path import ContactPath
 
 
@@ -17,10 +18,7 @@ def _finish(fig, axes, title: str):
 
 def plot_contact_path(result: ContactPath, title: str = ""):
     """Hertz pressure, film thickness and sliding speed against the position on the path."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     s_mm = result.kin.s * 1e3
     fig, axes = plt.subplots(3, 1, figsize=(6.5, 7.5), sharex=True)
@@ -42,10 +40,7 @@ def plot_contact_path(result: ContactPath, title: str = ""):
 
 def plot_friction_path(s, mu, temperature_rise, title: str = ""):
     """Friction coefficient and maximum contact temperature rise along the path."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, axes = plt.subplots(2, 1, figsize=(6.5, 5.5), sharex=True)
     axes[0].plot(s * 1e3, mu, "k-")

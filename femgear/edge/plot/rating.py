@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from femgear.edge.plot import pyplot
 from femgear.edge.plot.path import _finish
 from femgear.physics.rating.suite import PairRating
 
@@ -11,10 +12,7 @@ from femgear.physics.rating.suite import PairRating
 def plot_rating_path(rating: PairRating, u_pitch: float, title: str = ""):
     """Top: ISO/TS 6336-20 contact temperature θ_B = θ_M + θ_fl, the scuffing temperature θ_S and femgear's
     contact temperature; bottom: ISO/TS 6336-22 λ_GF,Y with λ_GFP and femgear's λ = h_min/R_a (°C, mm from C)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     sc, mp, own = rating.scuffing, rating.micropitting, rating.own
     s_iso = (sc.path.u - u_pitch) * 1e3

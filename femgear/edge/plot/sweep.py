@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from femgear.edge.plot import pyplot
+
 #: at most this many lines per panel get a legend entry (the others are drawn, unlabelled)
 MAX_LEGEND = 12
 
@@ -31,10 +33,7 @@ def plot_sweep_summary(rows: Sequence[Mapping[str, Any]], keys: Sequence[str], o
     whose output is missing or not a number is left out of that panel.  A non-numeric x key is drawn at
     evenly spaced positions labelled with its values.
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     x = x_key(rows, keys)
     varied = [k for k in keys if len({repr(r.get(k)) for r in rows}) > 1]
