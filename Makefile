@@ -27,10 +27,13 @@ sysdeps:
 demo: $(STAMP)
 	$(BIN)/femgear run studies/paper_baseline.toml --out $(OUT)/paper_baseline
 
+# pytest workers (pytest-xdist): CI's two cores; more where there are cores and memory (~1 GB a worker)
+TEST_WORKERS ?= 2
+
 test: $(STAMP)
 	$(BIN)/ruff check femgear tests studies meshes docs/gen docs/examples
 	$(BIN)/mkdocs build --strict --quiet --site-dir $(OUT)/site
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS)
 
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -m slow
