@@ -161,6 +161,16 @@ def pareto_front(rows: list[dict[str, Any]], cost: str = "seconds", error: str =
     return front
 
 
+_FORK_UNSAFE: list[str] = []   #: why a forked child of this process could hang (threads that do not survive fork)
+
+
+def mark_fork_unsafe(reason: str) -> None:
+    """Record that this process started threads its forked children cannot use (GNU OpenMP's team, started by
+    the system's CHOLMOD: a child waits for it forever); :func:`interruptible` runs in this process from then on."""
+    if reason not in _FORK_UNSAFE:
+        _FORK_UNSAFE.append(reason)
+
+
 def interruptible(fn: Callable[..., Any], *args, **kwargs) -> Any:
     """``fn(*args, **kwargs)`` in a forked child process; its result (or exception) comes back pickled.
 
@@ -168,9 +178,10 @@ def interruptible(fn: Callable[..., Any], *args, **kwargs) -> Any:
     returns, up to a minute on the larger bodies; here the parent waits in a plain read, takes the
     KeyboardInterrupt at once, kills the child and re-raises.  The child's memory is returned to the system
     when it ends (the parent's peak stays low: benchmarks read ``RUSAGE_CHILDREN`` too).  Runs ``fn`` in
-    this process where ``os.fork`` is missing or ``FEMGEAR_FORK=0``.
+    this process where ``os.fork`` is missing, ``FEMGEAR_FORK=0`` or this process is unsafe to fork
+    (:func:`mark_fork_unsafe`: it ran the system's CHOLMOD itself, which ``femgear run`` leaves to the children).
     """
-    if not hasattr(os, "fork") or os.environ.get("FEMGEAR_FORK", "1") == "0":
+    if not hasattr(os, "fork") or os.environ.get("FEMGEAR_FORK", "1") == "0" or _FORK_UNSAFE:
         return fn(*args, **kwargs)
     r, w = os.pipe()
     pid = os.fork()

@@ -18,11 +18,15 @@ Two solvers (``solver``):
   factors in 26 s (83 M entries in L + U, ≈ 1 GB) and 63 load cases take 5 s together, against
   82 s of SA-CG (2 cores under load, 23 Nov 2026).  The factor's fill grows fast with P2, where
   the AMG stays.  A solution whose relative residual exceeds 1e-8 raises ConvergenceError.
-- ``"cholmod"``: a supernodal sparse Cholesky factor (CHOLMOD with a METIS ordering, through the
-  ``cholespy`` wheel, which carries its own reference BLAS), then block solves of all load cases.
-  Far less fill than SuperLU's minimum degree: the marine pinion body (102 k DOF) factors in 25 s
-  within the memory its assembly needs, where SuperLU needs several GB (``docs/cost.md``).
-  ``"auto"``: ``cholmod`` when ``cholespy`` is installed, else ``lu`` for P1 up to
+- ``"cholmod"``: a supernodal sparse Cholesky factor with a METIS ordering (CHOLMOD), then block
+  solves of all load cases.  Far less fill than SuperLU's minimum degree: the marine pinion body
+  (102 k DOF) factors within the memory its assembly needs, where SuperLU needs several GB
+  (``docs/cost.md``).  Two bindings (:func:`cholmod_backend`): the system's CHOLMOD through
+  ``scikit-sparse`` (SuiteSparse and OpenBLAS from the distribution; ``make`` installs them where it
+  can), else the ``cholespy`` wheel, which carries its own METIS and reference BLAS and is 10–20×
+  slower on these bodies (its METIS refinement took 90 % of the time: the marine gear's
+  ``p2-bending`` body, 185 k DOF, 212 s against 14 s on one core, ``docs/cost.md``).
+  ``"auto"``: ``cholmod`` when either binding is installed, else ``lu`` for P1 up to
   :data:`LU_MAX_DOFS` free DOF (memory: ≈ 1 GB at 58 k DOF, a few GB at 140 k), else ``amg``.
 
 Assembly.  P1 stiffness matrices are assembled directly (constant strain per tetrahedron,
@@ -34,6 +38,7 @@ assembly's transient memory bounded (scikit-fem over the whole marine pinion bod
 
 from __future__ import annotations
 
+import functools
 import time
 from dataclasses import dataclass
 
@@ -41,19 +46,29 @@ import numpy as np
 
 from femgear.errors import ConvergenceError
 
-LU_MAX_DOFS = 160_000  #: ``solver="auto"`` without cholespy: the sparse LU up to this many free DOF (P1 only), SA-CG above
-ASSEMBLY_CHUNK = 40_000  #: elements per assembly chunk
+LU_MAX_DOFS = 160_000  #: ``solver="auto"`` without CHOLMOD: the sparse LU up to this many free DOF (P1 only), SA-CG above
+ASSEMBLY_CHUNK = 40_000  #: elements per assembly chunk (P1: 144 matrix entries an element)
+P2_ASSEMBLY_CHUNK = 8_000  #: P2 elements per scikit-fem assembly chunk (900 entries an element: ≈ 0.3 GB transient)
 SOLVE_CHUNK = 16         #: load cases per block solve (a progress step)
 SOLVERS = ("amg", "lu", "cholmod", "auto")
 
 
+@functools.cache
+def cholmod_backend() -> str | None:
+    """The CHOLMOD binding the ``cholmod`` solver uses: ``"scikit-sparse"`` (the system's CHOLMOD), else
+    ``"cholespy"`` (the wheel), else None."""
+    for module, name in (("sksparse.cholmod", "scikit-sparse"), ("cholespy", "cholespy")):
+        try:
+            __import__(module)
+        except ImportError:
+            continue
+        return name
+    return None
+
+
 def cholmod_available() -> bool:
-    """True when the ``cholespy`` wheel (CHOLMOD) can be imported."""
-    try:
-        import cholespy  # noqa: F401
-    except ImportError:
-        return False
-    return True
+    """True when a CHOLMOD binding (:func:`cholmod_backend`) can be imported."""
+    return cholmod_backend() is not None
 
 
 def auto_solver(order: int, ndofs: int) -> str:
@@ -63,6 +78,11 @@ def auto_solver(order: int, ndofs: int) -> str:
     return "lu" if order == 1 and ndofs <= LU_MAX_DOFS else "amg"
 
 
+def solver_name(solver: str) -> str:
+    """``solver`` as the progress lines name it: ``cholmod`` with its binding."""
+    return f"cholmod ({cholmod_backend()})" if solver == "cholmod" else solver
+
+
 def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: str = "auto") -> tuple[float, float]:
     """(peak resident memory [B], wall time [s]) expected for meshing, assembling, factoring (or the SA
     hierarchy) and ``n_loads`` solves of a body with ``dofs`` unknowns and ``tets`` elements.
@@ -70,9 +90,11 @@ def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: s
     Fitted to measurements on the shared 2-core machine (``python studies/benchmarks/cost.py``, docs/cost.md):
     the process and the mesh ≈ 0.3 GB + 5 kB per DOF (basis, matrix, load vectors); CHOLMOD's factor
     ≈ 110 n^(4/3) B (METIS fill of these swept bodies); SuperLU's (minimum degree) ≈ 420 n^(4/3) B;
-    SA-AMG ≈ 3 kB per DOF.  Times: ≈ 80 µs per DOF to mesh and assemble, the factor ≈ 40 s (n/1e5)^1.5,
+    SA-AMG ≈ 3 kB per DOF.  Times: ≈ 80 µs per DOF to mesh and assemble, the factor ≈ 3.5 s (n/1e5)^1.5 with
+    the system's CHOLMOD (scikit-sparse, one BLAS thread; marine bodies: P1 88 k / 106 k DOF 3.4 / 3.9 s,
+    p2-bending 96 k / 185 k DOF 5.1 / 14.1 s, ×1.3² for quadratic elements) and ≈ 40 s (n/1e5)^1.5 with cholespy,
     0.3 µs per DOF and load case to solve; SA-CG ≈ 13 µs per DOF and load case.  Checked against the CPU
-    times of the cold LTCA (both members and the mesh cycle): baseline level 1 / 3 and marine level 1
+    times of the cold LTCA (both members and the mesh cycle; cholespy): baseline level 1 / 3 and marine level 1
     measured 23 / 82 / 120 s, modelled 23 / 65 / 120 s.
     """
     solver = auto_solver(order, dofs) if solver == "auto" else solver
@@ -82,7 +104,8 @@ def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: s
     if solver == "cholmod":      # quadratic elements couple more unknowns per row: more fill (marine gear, docs/cost.md)
         dense = 1.0 if order == 1 else 1.3
         memory += 110.0 * dense * n ** (4 / 3)
-        seconds += 40.0 * dense**2 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
+        factor = 3.5 if cholmod_backend() == "scikit-sparse" else 40.0
+        seconds += factor * dense**2 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
     elif solver == "lu":
         memory += 420.0 * n ** (4 / 3)
         seconds += 60.0 * (n / 1e5) ** 1.6 + 5e-7 * n * n_loads
@@ -149,11 +172,11 @@ def rigid_body_modes_3d(basis) -> np.ndarray:
 
 
 def check_arguments(mesh, solver: str, clamped: str | None) -> None:
-    """ValueError for an unknown ``solver``, ``cholmod`` without cholespy, or a ``clamped`` region the mesh lacks."""
+    """ValueError for an unknown ``solver``, ``cholmod`` without a CHOLMOD binding, or a ``clamped`` region the mesh lacks."""
     if solver not in SOLVERS:
         raise ValueError(f"solver must be one of {', '.join(SOLVERS)}, got {solver!r}")
     if solver == "cholmod" and not cholmod_available():
-        raise ValueError("solver 'cholmod' needs the cholespy package (pip install cholespy)")
+        raise ValueError("solver 'cholmod' needs scikit-sparse or cholespy (pip install cholespy)")
     if clamped is not None and clamped not in mesh.boundaries:
         raise ValueError(f"clamped: the mesh has no region {clamped!r} (has {', '.join(mesh.boundaries)})")
 
@@ -197,7 +220,7 @@ class Elastic3D:
         if order == 1:
             K = assemble_p1(mesh, self.basis.element_dofs, self.basis.N, lam, mu)
         else:
-            K = _assemble_chunks(mesh, elem, intorder, _elasticity_form(lam, mu))
+            K = _assemble_chunks(mesh, elem, intorder, _elasticity_form(lam, mu), chunk=P2_ASSEMBLY_CHUNK)
         held = [np.asarray(fixed if fixed is not None else [], dtype=np.int64)]
         if clamped is not None:
             held.append(self.basis.get_dofs(mesh.boundaries[clamped]).flatten())
@@ -318,32 +341,57 @@ class Elastic3D:
                           self.solves, self.iterations, nnz)
 
 
-def _assemble_chunks(mesh, elem, intorder: int, form, chunk: int = ASSEMBLY_CHUNK, elements: np.ndarray | None = None):
+def _assemble_chunks(mesh, elem, intorder: int, form, chunk: int = ASSEMBLY_CHUNK, elements: np.ndarray | None = None,
+                     transform=None):
     """``form`` assembled by scikit-fem over chunks of elements (``elements``: only these; None: all) and summed
-    (bounded transient memory)."""
+    (bounded transient memory); ``transform`` (a sparse T): the sum of Tᵀ K_chunk T instead."""
     from skfem import Basis
 
     K = None
     elements = np.arange(mesh.t.shape[1]) if elements is None else np.asarray(elements)
     for lo in range(0, elements.size, chunk):
-        part = form.assemble(Basis(mesh, elem, intorder=intorder, elements=elements[lo:lo + chunk]))
-        K = part.tocsr() if K is None else K + part.tocsr()
+        part = form.assemble(Basis(mesh, elem, intorder=intorder, elements=elements[lo:lo + chunk])).tocsr()
+        if transform is not None:
+            part = (transform.T @ part @ transform).tocsr()
+        K = part if K is None else K + part
     return K
 
 
 class _CholmodFactor:
-    """CHOLMOD's Cholesky factor of an SPD matrix (cholespy); ``solve`` takes one or a block of right-hand sides."""
+    """CHOLMOD's Cholesky factor of an SPD matrix (METIS ordering; the binding of :func:`cholmod_backend`);
+    ``solve`` takes one or a block of right-hand sides.  CHOLMOD running out of memory raises MemoryError.
+
+    The system's CHOLMOD runs parts of its supernodal factor in a GNU OpenMP team (of a fixed size, whatever
+    ``OMP_NUM_THREADS`` says), and GNU OpenMP does not survive ``fork``: a forked child that factors again
+    waits forever for its parent's team.  So the first factor marks the process unsafe to fork
+    (:func:`femgear.perf.mark_fork_unsafe`), and :func:`femgear.perf.interruptible` then runs the later
+    body stages in this process (``tests/body/test_cholmod_fork.py``).
+    """
 
     def __init__(self, K):
+        self.n = K.shape[0]
+        self.backend = cholmod_backend()
+        if self.backend == "scikit-sparse":
+            from sksparse.cholmod import CholmodOutOfMemoryError, cholesky
+
+            from femgear.perf import mark_fork_unsafe
+
+            mark_fork_unsafe("the system's CHOLMOD started its OpenMP threads")
+            try:
+                self._f = cholesky(K.T if K.format == "csr" else K.tocsc(), ordering_method="metis")  # Kᵀ = K
+            except CholmodOutOfMemoryError as exc:
+                raise MemoryError(f"CHOLMOD factor of {self.n} DOF: {exc}") from exc
+            return
         from cholespy import CholeskySolverD, MatrixType
 
         C = K.tocoo()
-        self.n = K.shape[0]
         self._s = CholeskySolverD(self.n, C.row.astype(np.int32), C.col.astype(np.int32),
                                   np.ascontiguousarray(C.data, dtype=np.float64), MatrixType.COO)
 
     def solve(self, rhs: np.ndarray) -> np.ndarray:
         b = np.ascontiguousarray(rhs, dtype=np.float64)
+        if self.backend == "scikit-sparse":
+            return self._f(b)
         x = np.zeros_like(b)
         self._s.solve(b, x)
         return x

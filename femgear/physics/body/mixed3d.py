@@ -30,6 +30,7 @@ import time
 import numpy as np
 
 from femgear.physics.body.elastic3d import (
+    P2_ASSEMBLY_CHUNK,
     Elastic3D,
     _assemble_chunks,
     _elasticity_form,
@@ -81,8 +82,8 @@ class MixedElastic3D(Elastic3D):
         K = assemble_p1(mesh, self.basis.element_dofs, self.N, lam, mu, elements=np.nonzero(~quadratic)[0])
         if quadratic.any():
             self.T = self._lagrange_map()
-            K2 = _assemble_chunks(mesh, self.elem2, 2, _elasticity_form(lam, mu), elements=np.nonzero(quadratic)[0])
-            K = K + (self.T.T @ K2 @ self.T).tocsr()
+            K = K + _assemble_chunks(mesh, self.elem2, 2, _elasticity_form(lam, mu), chunk=P2_ASSEMBLY_CHUNK,
+                                     elements=np.nonzero(quadratic)[0], transform=self.T)
         else:
             self.T = None
         held = self.basis.get_dofs(mesh.boundaries[clamped]).flatten() if clamped is not None else np.zeros(0, int)

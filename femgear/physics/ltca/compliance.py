@@ -380,6 +380,7 @@ def _body_model(mesh, pair, member, spec, E, nu, order):
 
 
 def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimate) -> MemberCompliance:
+    from femgear.physics.body.elastic3d import solver_name
     from femgear.physics.mesh.segment import helix_frame, member_body
 
     t0 = time.perf_counter()
@@ -389,7 +390,7 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimat
     model = _body_model(mesh, pair, member, spec, E, nu, order)
     log.log(NOTICE if estimate.seconds > LONG_STAGE_SECONDS else logging.INFO,
             f"{estimate.stage}: meshed and assembled ({model.free.size / 1e3:.0f} k DOF, "
-            f"{time.perf_counter() - t0:.0f} s); {model.solver} factor and {n_rho * n_z} unit loads next")
+            f"{time.perf_counter() - t0:.0f} s); {solver_name(model.solver)} factor and {n_rho * n_z} unit loads next")
     r0, r1 = roll_range(pair, member)
     grid_rho = np.linspace(r0, r1, n_rho)
     grid_z = np.linspace(0.0, pair.b, n_z)
