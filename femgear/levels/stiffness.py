@@ -141,11 +141,11 @@ def body_options(case: Case) -> dict:
 
 def ltca_options(case: Case) -> dict:
     """Force F_bn of the operating point, the flank modifications, the member bodies (bore, groove) and their
-    resolution ``numerics.body_level`` and elements ``numerics.body_elements`` for
+    resolution (``numerics.body_level`` or the ltca bodies' default) and elements ``numerics.body_elements`` for
     :func:`femgear.physics.ltca.level.ltca_cycle`."""
     body = {k: v for k, v in body_options(case).items() if k != "stagger"}   # the level passes the stagger itself
     return {"force": case.operating.normal_force, "modifications": case.modifications, "body": body,
-            "level": case.numerics.body_level, "order": body_order(case.numerics.body_elements)}
+            "level": case.numerics.level_of("ltca"), "order": body_order(case.numerics.body_elements)}
 
 
 def body_order(elements: str) -> int | str:
@@ -158,7 +158,7 @@ def case_arguments(case: Case, level: str) -> dict:
     """The keywords of :func:`mesh_stiffness` from the case: stagger, material, bores, ``[stiffness]``."""
     st = case.stiffness
     fe_options: dict = {} if st.fe_mesh_size is None else {"h": st.fe_mesh_size}
-    fe_options["level"] = case.numerics.body_level
+    fe_options["level"] = case.numerics.level_of("fe")
     args = dict(n_positions=st.n_positions, stagger=case.stagger,
                 youngs_modulus=case.material.youngs_modulus, poisson_ratio=case.material.poisson_ratio,
                 bore_radius=case.bore_radii, constant_per_width=st.mesh_stiffness_per_width, fe_options=fe_options)

@@ -77,11 +77,11 @@ def flank_deviation(pair: GearPair, member: int, u, level: str, dT_flank: float,
 
 def case_arguments(case: Case, member: int) -> dict:
     """The keywords of :func:`flank_deviation` of ``member`` (1 pinion, 2 gear) from the case: the material,
-    the member's bore, ``thermal.mesh_size``, the groove, the stagger and ``numerics.body_level``."""
+    the member's bore, ``thermal.mesh_size``, the groove, the stagger and the fe3d bodies' level (``numerics.body_level``)."""
     m = case.material
     return dict(expansion=m.thermal_expansion, youngs_modulus=m.youngs_modulus, poisson_ratio=m.poisson_ratio,
                 conductivity=m.conductivity, bore_radius=case.bore_radii[member - 1], h=case.thermal.mesh_size,
-                groove=case.groove_width, stagger=case.stagger, body_level=case.numerics.body_level)
+                groove=case.groove_width, stagger=case.stagger, body_level=case.numerics.level_of("fe3d"))
 
 
 def flank_deviation_of(case: Case, member: int, u, level: str | None = None, h: float | None = None) -> np.ndarray:
@@ -128,7 +128,7 @@ def _fe3d_units(case: Case, **_: Any) -> ThermalUnits:
 
     m = case.material
     bodies = tuple(thermal_units_3d(case.pair, j, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, b,
-                                    case.groove_width, case.stagger, level=case.numerics.body_level)
+                                    case.groove_width, case.stagger, level=case.numerics.level_of("fe3d"))
                    for j, b in zip((1, 2), case.bore_radii))
     return ThermalUnits.from_bodies(bodies, roll_distances(case.pair, case.path.u))
 

@@ -302,15 +302,32 @@ class Numerics(_Frozen):
     steps_per_mesh_period: int = Field(200, ge=10, le=100000, description="time steps per mesh period [-]")
     dynamics_cycles: Pos = Field(100.0, description="simulated mesh periods in all, the transient_cycles included; must exceed them [-]")
     transient_cycles: NonNeg = Field(50.0, description="mesh periods dropped as transient before the response is analysed (paper: 50) [-]")
-    body_level: int = Field(
-        1, ge=0, le=6, description="resolution of the 3-D member bodies (ltca stiffness, fe3d thermal) and of the "
-                                   "2-D sections (fe stiffness): element size m_n/(2 + level) on the loaded teeth, "
-                                   "in module units so that similar gears get the same mesh (docs/cost.md) [-]")
+    body_level: int | None = Field(
+        None, ge=0, le=6, description="resolution of the 3-D member bodies (ltca stiffness, fe3d thermal) and of the "
+                                      "2-D sections (fe stiffness): element size m_n/(2 + level) on the loaded teeth, "
+                                      "in module units so that similar gears get the same mesh; unset: each body's "
+                                      "default, the coarsest within 2 % mesh error where measured: 0 for the ltca "
+                                      "bodies with p2-bending elements (1 with p1), 1 for fe3d and fe (docs/cost.md) [-]")
     body_elements: Literal["p1", "p2-bending"] = Field(
-        "p1", description="elements of the ltca stiffness's 3-D member bodies: p1 linear tetrahedra everywhere; "
-                          "p2-bending quadratic ones in the loaded tooth (to 1 m_n below its root) and the rim "
-                          "(below 3 m_n under the root), linear elsewhere: stiff P1 bending removed at ≈ 1.3–2.5× "
-                          "the DOF of p1 (docs/cost.md) [-]")
+        "p2-bending", description="elements of the ltca stiffness's 3-D member bodies: p2-bending quadratic ones in "
+                                  "the loaded tooth (to 1 m_n below its root) and the rim (below 3 m_n under the "
+                                  "root), linear elsewhere (< 2 % mesh error at level 0); p1 linear tetrahedra "
+                                  "everywhere, stiff in bending (≈ 5 % on the mean stiffness at level 1, docs/cost.md) [-]")
+
+    def level_of(self, body: str) -> int:
+        """Resolution level of ``body`` (``"ltca"``, ``"fe3d"`` or ``"fe"``): ``body_level`` when the scene gives
+        it, else that body's default (:data:`DEFAULT_BODY_LEVELS`; the ``ltca`` bodies with p1 elements: 1)."""
+        if self.body_level is not None:
+            return self.body_level
+        if body == "ltca" and self.body_elements == "p1":
+            return 1
+        return DEFAULT_BODY_LEVELS[body]
+
+
+#: the default resolution of each FE body (``numerics.body_level`` unset; docs/cost.md): the ltca bodies at level 0
+#: with p2-bending elements (< 2 % on the mean stiffness and the LTE peak-to-peak), the fe3d thermal bodies and
+#: the fe stiffness sections at level 1
+DEFAULT_BODY_LEVELS = {"ltca": 0, "fe3d": 1, "fe": 1}
 
 
 class Rating(_Frozen):

@@ -2,7 +2,7 @@
 
     python studies/benchmarks/cost.py [--levels 0,1 | --levels "baseline=0,1,2,3/marine=0,1,2"]
                                       [--pairs baseline,marine] [--skip ltca,fe,refusal,fidelity]
-                                      [--elements p1 | p2-bending]
+                                      [--elements p1 | p2-bending] [--reference DIR]
 
 Pairs: the paper's baseline and every scene of ``studies/zoo/*.toml``.  Per pair and
 ``numerics.body_level``: the member bodies' DOF and tetrahedra; the ``ltca`` stiffness cold
@@ -18,9 +18,10 @@ address space capped at ``--cap-gb``), with a fresh cache folder.  The baseline'
 is the reference of the ratios, measured in the same run.  Prints a table and one JSON line
 (also written to ``out/benchmarks/cost.json``).  Timings are wall clock on a shared machine:
 compare the ratios and the CPU times, not the absolute seconds of a loaded run.
-``--elements``: the ``numerics.body_elements`` of every run (the LTCA bodies' elements; the DOF
-column then shows the bodies' actual DOF from the ``ltca`` run); the JSON goes to
-``out/benchmarks/cost-p2-bending.json`` for ``p2-bending``.
+``--elements``: the ``numerics.body_elements`` of every run (the LTCA bodies' elements; unset: the
+scene's default, p2-bending; the DOF column shows the bodies' actual DOF from the ``ltca`` run); the JSON
+goes to ``out/benchmarks/cost-ELEMENTS.json`` when it is given.  The ``fe`` stiffness and the full
+fidelity run at the scene's default body levels (``numerics.body_level`` unset).
 """
 
 from __future__ import annotations
@@ -60,12 +61,12 @@ def _usage() -> dict:
             "cpu_s": r.ru_utime + r.ru_stime + c.ru_utime + c.ru_stime}
 
 
-def one(kind: str, scene_path: str, level: int, elements: str = "p1") -> dict:
-    """One measurement in this (child) process."""
+def one(kind: str, scene_path: str, level: int | None, elements: str | None = None) -> dict:
+    """One measurement in this (child) process (``level``, ``elements`` None: the scene's defaults)."""
     from femgear.scene import load_scene
 
-    sets = [f"numerics.body_level={level}"]
-    if elements != "p1":        # (a reference tree may not know the key)
+    sets = [] if level is None else [f"numerics.body_level={level}"]
+    if elements is not None:        # (a reference tree may not know the key)
         sets.append(f'numerics.body_elements="{elements}"')
     if kind == "size":
         from femgear.physics.mesh.segment import body_size, default_spec
@@ -119,8 +120,8 @@ def _answer(path: Path) -> dict:
             "coupling_passes": s["coupling"]["iterations"]}
 
 
-def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | None = None,
-          elements: str = "p1") -> dict:
+def child(kind: str, scene_path: Path, level: int | None, cap_gb: float, env: dict | None = None,
+          elements: str | None = None) -> dict:
     """Run :func:`one` in a child process with a fresh cache and an address-space cap."""
     def limit():
         cap = int(cap_gb * 1024**3)
@@ -130,7 +131,8 @@ def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | No
         e = {**os.environ, "FEMGEAR_CACHE": cache, "PYTHONPATH": str(ROOT), **(env or {})}
         load0 = os.getloadavg()
         t0 = time.perf_counter()
-        run = subprocess.run([sys.executable, __file__, "--one", kind, str(scene_path), str(level), elements], env=e,
+        run = subprocess.run([sys.executable, __file__, "--one", kind, str(scene_path), _arg(level), _arg(elements)],
+                             env=e,
                              capture_output=True, text=True, preexec_fn=limit)
         wall = time.perf_counter() - t0
         load = [round(x, 2) for x in (*load0, *os.getloadavg())]
@@ -144,6 +146,11 @@ def child(kind: str, scene_path: Path, level: int, cap_gb: float, env: dict | No
     if notices:
         out["stderr"] = notices
     return out
+
+
+def _arg(value) -> str:
+    """A ``--one`` argument: ``-`` for None (the scene's default)."""
+    return "-" if value is None else str(value)
 
 
 def refusal(scene_path: Path) -> dict:
@@ -170,7 +177,7 @@ def parse_levels(text: str, pairs: list[str]) -> dict[str, list[int]]:
 
 
 def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: float,
-        reference: Path | None = None, elements: str = "p1") -> dict:
+        reference: Path | None = None, elements: str | None = None) -> dict:
     paths = scenes()
     out: dict = {"levels": levels, "elements": elements, "pairs": {}}
     for name in pairs:
@@ -185,16 +192,16 @@ def run(pairs: list[str], levels: dict[str, list[int]], skip: set[str], cap_gb: 
                 rec[f"ltca_{level}"] = child("ltca", paths[name], level, cap_gb, elements=elements)
                 print(f"{name} level {level}: ltca {json.dumps(rec[f'ltca_{level}'])}", file=sys.stderr, flush=True)
         if "fe" not in skip:
-            rec["fe"] = child("fe", paths[name], 1, cap_gb)
+            rec["fe"] = child("fe", paths[name], None, cap_gb)
             print(f"{name}: fe {json.dumps(rec['fe'])}", file=sys.stderr, flush=True)
         if "refusal" not in skip:
             rec["refusal"] = refusal(paths[name])
         rec["richardson"] = mesh_errors(rec)
         out["pairs"][name] = rec
     if "fidelity" not in skip:
-        out["fidelity"] = child("fidelity", paths["baseline"], 1, cap_gb, elements=elements)
+        out["fidelity"] = child("fidelity", paths["baseline"], None, cap_gb, elements=elements)
         if reference is not None:    # the same job with another checkout's femgear, right after (same load)
-            out["fidelity_reference"] = child("fidelity", paths["baseline"], 1, cap_gb,
+            out["fidelity_reference"] = child("fidelity", paths["baseline"], None, cap_gb,
                                               env={"PYTHONPATH": str(reference)})
             out["fidelity_reference"]["tree"] = str(reference)
     return out
@@ -311,8 +318,8 @@ def _fidelity_row(fid: dict | None, label: str) -> list[str]:
 def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--one", nargs=4, metavar=("KIND", "SCENE", "LEVEL", "ELEMENTS"), help=argparse.SUPPRESS)
-    ap.add_argument("--elements", default="p1", choices=("p1", "p2-bending"),
-                    help="numerics.body_elements of every run (the LTCA member bodies)")
+    ap.add_argument("--elements", default=None, choices=("p1", "p2-bending"),
+                    help="numerics.body_elements of every run (the LTCA member bodies; default: the scene's)")
     ap.add_argument("--levels", default="0,1")
     ap.add_argument("--pairs", default=",".join(scenes()))
     ap.add_argument("--skip", default="", help="comma list of ltca, fe, refusal, fidelity")
@@ -322,7 +329,8 @@ def main(argv=None) -> None:
                          "femgear too, right after this one's")
     a = ap.parse_args(argv)
     if a.one:
-        print(json.dumps(one(a.one[0], a.one[1], int(a.one[2]), a.one[3])))
+        level, elements = (None if x == "-" else x for x in a.one[2:])
+        print(json.dumps(one(a.one[0], a.one[1], None if level is None else int(level), elements)))
         return
     pairs = a.pairs.split(",")
     r = run(pairs, parse_levels(a.levels, pairs), set(filter(None, a.skip.split(","))), a.cap_gb, a.reference,
@@ -330,7 +338,7 @@ def main(argv=None) -> None:
     print("\n".join(table(r)))
     out = ROOT / "out" / "benchmarks"
     out.mkdir(parents=True, exist_ok=True)
-    (out / ("cost.json" if a.elements == "p1" else f"cost-{a.elements}.json")).write_text(json.dumps(r, indent=1))
+    (out / ("cost.json" if a.elements is None else f"cost-{a.elements}.json")).write_text(json.dumps(r, indent=1))
     print(json.dumps(r))
 
 

@@ -79,7 +79,7 @@ def test_ltca_over_the_budget_refuses_in_one_line_naming_the_level_that_fits(tmp
     from femgear.physics.ltca.level import body_estimates
 
     need = [max(e.memory_bytes for e in body_estimates(baseline_pair, 206e9, 0.3, k, bore_radius=(0.02, 0.02),
-                                                       cached=False)) for k in (0, 1)]
+                                                       cached=False, order="p2-bending")) for k in (0, 1)]
     budget = 0.5 * (need[0] + need[1])
     run = subprocess.run([sys.executable, "-m", "femgear", "run", BASE, "--out", str(tmp_path / "out"), *QUIET,
                           "--set", 'physics.stiffness="ltca"', "--set", "numerics.body_level=1"],

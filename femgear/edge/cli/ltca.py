@@ -94,7 +94,7 @@ def _run(args: argparse.Namespace) -> int:
     torques = check_torques(given, pair, E, nu, driver, "--torques")
     harris = check_torques(harris_torques(args.harris_range, design), pair, E, nu, driver, "--harris-range") \
         if args.harris else None
-    options = replace(_options(args), level=case.numerics.body_level, order=body_order(case.numerics.body_elements))
+    options = replace(_options(args), level=case.numerics.level_of("ltca"), order=body_order(case.numerics.body_elements))
     if not 1 <= options.n_harmonics <= options.n_phases // 2 - 1:
         raise ArgumentError("--harmonics", f"must be 1…{options.n_phases // 2 - 1} for {options.n_phases} phases, "
                             f"got {options.n_harmonics}")
