@@ -88,8 +88,10 @@ def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: s
     hierarchy) and ``n_loads`` solves of a body with ``dofs`` unknowns and ``tets`` elements.
 
     Fitted to measurements on the shared 2-core machine (``python studies/benchmarks/cost.py``, docs/cost.md):
-    the process and the mesh ≈ 0.3 GB + 5 kB per DOF (basis, matrix, load vectors); CHOLMOD's factor
-    ≈ 110 n^(4/3) B (METIS fill of these swept bodies); SuperLU's (minimum degree) ≈ 420 n^(4/3) B;
+    the process and the mesh ≈ 0.3 GB + 4 kB per DOF (basis, matrix, load vectors); CHOLMOD's factor
+    ≈ 110 n^(4/3) B (METIS fill of these swept bodies; ×1.3 for quadratic elements with cholespy's METIS; the
+    system's CHOLMOD: 93 and 114 n^(4/3) B measured on the marine gear's P1 and p2-bending bodies, and the
+    whole p2-bending marine LTCA peaked at 1.93 GiB where this gives 2.06 GiB); SuperLU's (minimum degree) ≈ 420 n^(4/3) B;
     SA-AMG ≈ 3 kB per DOF.  Times: ≈ 80 µs per DOF to mesh and assemble, the factor ≈ 3.5 s (n/1e5)^1.5 with
     the system's CHOLMOD (scikit-sparse, one BLAS thread; marine bodies: P1 88 k / 106 k DOF 3.4 / 3.9 s,
     p2-bending 96 k / 185 k DOF 5.1 / 14.1 s, ×1.3² for quadratic elements) and ≈ 40 s (n/1e5)^1.5 with cholespy,
@@ -99,13 +101,13 @@ def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: s
     """
     solver = auto_solver(order, dofs) if solver == "auto" else solver
     n = float(max(dofs, 1))
-    memory = 0.3e9 + 5.0e3 * n + 8.0 * n * n_loads
+    memory = 0.3e9 + 4.0e3 * n + 8.0 * n * n_loads
     seconds = 8.0e-5 * n + 1e-5 * tets
     if solver == "cholmod":      # quadratic elements couple more unknowns per row: more fill (marine gear, docs/cost.md)
         dense = 1.0 if order == 1 else 1.3
-        memory += 110.0 * dense * n ** (4 / 3)
-        factor = 3.5 if cholmod_backend() == "scikit-sparse" else 40.0
-        seconds += factor * dense**2 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
+        system = cholmod_backend() == "scikit-sparse"
+        memory += 110.0 * (1.0 if system else dense) * n ** (4 / 3)
+        seconds += (3.5 if system else 40.0) * dense**2 * (n / 1e5) ** 1.5 + 3e-7 * n * n_loads
     elif solver == "lu":
         memory += 420.0 * n ** (4 / 3)
         seconds += 60.0 * (n / 1e5) ** 1.6 + 5e-7 * n * n_loads

@@ -329,7 +329,7 @@ def build_estimate(pair: GearPair, member: int, spec: SegmentSpec, order: int | 
 
     nodes, tets = body_size(pair, member, spec)
     if order == BENDING:
-        dofs = 3 * nodes + int(3.8 * tets * _zone_share(pair, member, spec))
+        dofs = 3 * nodes + int(3.1 * tets * _zone_share(pair, member, spec))   # bubbles: 3 per free edge
     else:
         dofs = 3 * (nodes if order == 1 else nodes + int(1.2 * tets))
     memory, seconds = solve_cost(dofs, tets, 1 if order == 1 else 2, n_loads)
