@@ -5,7 +5,7 @@ Layout (the contract; keys are added, never renamed without a README note):
 - ``summary``: ``scene`` (name), ``geometry``, ``contact`` (pitch point and path
   extremes), ``rating`` (ISO 6336-2 pitting), ``stiffness_iso6336``, ``flash_temperature`` and ``power_loss``
   (from ``RunResult.figures``; the last two with the ``friction_level`` of their μ, the run's own), ``safety_factors``, ``bending``, ``scuffing``,
-  ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total,
+  ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total, with ``fe``/``ltca`` body_level [and body_elements],
   and statically mean_per_helix, seconds), ``friction`` (level, mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
   gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
@@ -76,6 +76,10 @@ def run_summary(result: RunResult) -> dict[str, Any]:
     summary = scene_summary(case, result.contact, result.figures, ratings=result.rating)
     summary["physics"] = case.levels.model_dump()
     summary["stiffness"] = {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()}
+    if ms.level in ("ltca", "fe"):     # the FE bodies' resolution (numerics.body_level unset: the body's default)
+        summary["stiffness"]["body_level"] = case.numerics.level_of(ms.level)
+        if ms.level == "ltca":
+            summary["stiffness"]["body_elements"] = case.numerics.body_elements
     static = result.coupled is None
     if static:
         summary["stiffness"].update(mean_per_helix=[ms.mean_left, ms.mean_right], seconds=ms.seconds)
