@@ -35,7 +35,9 @@ cholmod:
 	@v=$$(sed -n 's/^#define SUITESPARSE_MAIN_VERSION *\([0-9]*\).*/\1/p' /usr/include/suitesparse/SuiteSparse_config.h 2>/dev/null); \
 	if [ -z "$$v" ]; then echo "femgear: no SuiteSparse headers: the 3-D bodies use the cholespy wheel (slower, docs/cost.md)"; \
 	else if [ "$$v" -ge 7 ]; then spec='scikit-sparse>=0.5,<0.6'; else spec='scikit-sparse>=0.4.12,<0.5'; fi; \
-		$(BIN)/pip install -q "$$spec" || echo "femgear: scikit-sparse did not build: the 3-D bodies use the cholespy wheel (slower, docs/cost.md)"; \
+		echo "building $$spec against SuiteSparse $$v (log: $(VENV)/cholmod-build.log)"; \
+		$(BIN)/pip install "$$spec" > $(VENV)/cholmod-build.log 2>&1 || \
+			echo "femgear: scikit-sparse did not build ($(VENV)/cholmod-build.log): the 3-D bodies use the cholespy wheel (slower, docs/cost.md)"; \
 	fi
 
 demo: $(STAMP)
