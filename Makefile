@@ -28,13 +28,14 @@ sysdeps:
 		apt-get update -qq && apt-get install -y -qq $(SYSPKG) >/dev/null; \
 	fi
 
-# The 3-D body factors through the system's CHOLMOD (scikit-sparse, built against the SuiteSparse headers:
-# 0.4.x for SuiteSparse 5-6, 0.5 for 7): 10-20x faster than the cholespy wheel, which stays the fallback
-# (femgear.physics.body.elastic3d, docs/cost.md).  A failed build only costs speed.
+# The 3-D body factors through the system's CHOLMOD (scikit-sparse 0.4, built against the SuiteSparse 5-6
+# headers; its 0.5 for SuiteSparse 7 has another API, not used yet): 10-20x faster than the cholespy wheel,
+# which stays the fallback (femgear.physics.body.elastic3d, docs/cost.md).  A failed build only costs speed.
 cholmod:
 	@v=$$(sed -n 's/^#define SUITESPARSE_MAIN_VERSION *\([0-9]*\).*/\1/p' /usr/include/suitesparse/SuiteSparse_config.h 2>/dev/null); \
 	if [ -z "$$v" ]; then echo "femgear: no SuiteSparse headers: the 3-D bodies use the cholespy wheel (slower, docs/cost.md)"; \
-	else if [ "$$v" -ge 7 ]; then spec='scikit-sparse>=0.5,<0.6'; else spec='scikit-sparse>=0.4.12,<0.5'; fi; \
+	elif [ "$$v" -ge 7 ]; then echo "femgear: SuiteSparse $$v: scikit-sparse 0.4 needs 5-6; the 3-D bodies use the cholespy wheel (slower, docs/cost.md)"; \
+	else spec='scikit-sparse>=0.4.12,<0.5'; \
 		echo "building $$spec against SuiteSparse $$v (log: $(VENV)/cholmod-build.log)"; \
 		$(BIN)/pip install "$$spec" > $(VENV)/cholmod-build.log 2>&1 || \
 			echo "femgear: scikit-sparse did not build ($(VENV)/cholmod-build.log): the 3-D bodies use the cholespy wheel (slower, docs/cost.md)"; \

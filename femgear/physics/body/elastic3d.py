@@ -55,15 +55,19 @@ SOLVERS = ("amg", "lu", "cholmod", "auto")
 
 @functools.cache
 def cholmod_backend() -> str | None:
-    """The CHOLMOD binding the ``cholmod`` solver uses: ``"scikit-sparse"`` (the system's CHOLMOD), else
-    ``"cholespy"`` (the wheel), else None."""
-    for module, name in (("sksparse.cholmod", "scikit-sparse"), ("cholespy", "cholespy")):
-        try:
-            __import__(module)
-        except ImportError:
-            continue
-        return name
-    return None
+    """The CHOLMOD binding the ``cholmod`` solver uses: ``"scikit-sparse"`` (the system's CHOLMOD, scikit-sparse
+    0.4), else ``"cholespy"`` (the wheel), else None."""
+    try:
+        from sksparse.cholmod import analyze  # noqa: F401  (scikit-sparse 0.4's API; 0.5 changed it)
+    except ImportError:
+        pass
+    else:
+        return "scikit-sparse"
+    try:
+        import cholespy  # noqa: F401
+    except ImportError:
+        return None
+    return "cholespy"
 
 
 def cholmod_available() -> bool:
