@@ -71,6 +71,7 @@ from pathlib import Path
 import numpy as np
 
 from femgear.perf import LONG_STAGE_SECONDS, NOTICE, Estimate, Progress, announce, interruptible
+from femgear.physics.body.elastic3d import SOLVE_CHUNK
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.ltca.flank import flank_normals, flank_points, half_thickness, roll_range
 from femgear.physics.ltca.halfspace import boussinesq_depth
@@ -305,12 +306,15 @@ def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices,
         loads, xq, weights = flank_unit_loads(pair, member, model, grid_rho, grid_z, hl, frame)
         for h in (0, 1):
             G[(h, hl)] = np.zeros((offsets.size, rho_g.size, rho_g.size))
-        stage = f"LTCA unit loads, {'pinion' if member == 1 else 'gear'} body, helix {hl}"
-        U = model.solve_many(np.column_stack(loads), case=f"flank compliance member {member}, helix {hl}",
-                             progress=Progress(stage, len(loads), expected_seconds=progress_seconds))
-        for g in range(rho_g.size):
-            for h in (0, 1):
-                G[(h, hl)][:, :, g] = _readings(model, probes[h], U[:, g])
+        progress = Progress(f"LTCA unit loads, {'pinion' if member == 1 else 'gear'} body, helix {hl}", len(loads),
+                            expected_seconds=progress_seconds)
+        for lo in range(0, len(loads), SOLVE_CHUNK):      # a block at a time: the displacements are read, not kept
+            U = model.solve_many(np.column_stack(loads[lo:lo + SOLVE_CHUNK]),
+                                 case=f"flank compliance member {member}, helix {hl}",
+                                 progress=lambda done, lo=lo: progress(lo + done))
+            for j in range(U.shape[1]):
+                for h in (0, 1):
+                    G[(h, hl)][:, :, lo + j] = _readings(model, probes[h], U[:, j])
         if hl == 0:
             HS = [np.column_stack([halfspace_reading(x0, n0, xq, weights[g], E, nu) for g in range(rho_g.size)])
                   for x0, n0 in (reading_points(pair, member, rho_g, z_g, depth, 0, frame, h) for h in (0, 1))]
