@@ -14,7 +14,8 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
   TE p-p of the last coupling pass's worn and expanded flanks),
   with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`) and
-  ``coupling`` (mode, converged, iterations, seconds, history), ``outputs`` (every file in the folder, a
+  ``coupling`` (mode, converged, alternation: None or the two states' difference where the loop settled into a
+  two-pass cycle, iterations, seconds, history), ``outputs`` (every file in the folder, a
   ``.pvd`` collection's ``.vtu`` files under their relative path; docs/guide/outputs.md);
 - ``scene``: the validated scene;
 - ``along_path``: arrays over the ONE path grid of the case (s, radii, speeds, Hertz,
@@ -90,6 +91,8 @@ def run_summary(result: RunResult) -> dict[str, Any]:
         h = co.history
         summary["dynamics"] = dynamics_summary(co.state.dynamics)
         summary["coupling"] = {"mode": case.levels.coupling, "converged": co.converged,
+                               "alternation": None if co.alternation is None else
+                               {"mesh_force_change": co.alternation[0], "mu_change": co.alternation[1]},
                                "iterations": co.state.iteration, "seconds": co.seconds,
                                "history": {"iteration": h.iteration, "mesh_force_change": h.mesh_force_change,
                                            "mu_change": h.mu_change, "seconds": h.seconds}}
