@@ -101,7 +101,7 @@ def one(kind: str, scene_path: str, level: int | None, elements: str | None = No
         t0 = time.perf_counter()
         with tempfile.TemporaryDirectory() as out_dir:
             rc = cli(["run", scene_path, "--out", out_dir, "--no-plots", "--no-vtk", *FIDELITY,
-                      *[a for x in sets[1:] for a in ("--set", x)]])
+                      *[a for x in sets for a in ("--set", x)]])
             seconds = time.perf_counter() - t0
             answer = _answer(Path(out_dir) / "results.json") if rc == 0 else {}
         return {"seconds": seconds, "rc": rc, "answer": answer, **_usage()}
@@ -132,8 +132,7 @@ def child(kind: str, scene_path: Path, level: int | None, cap_gb: float, env: di
         load0 = os.getloadavg()
         t0 = time.perf_counter()
         run = subprocess.run([sys.executable, __file__, "--one", kind, str(scene_path), _arg(level), _arg(elements)],
-                             env=e,
-                             capture_output=True, text=True, preexec_fn=limit)
+                             env=e, capture_output=True, text=True, preexec_fn=limit)
         wall = time.perf_counter() - t0
         load = [round(x, 2) for x in (*load0, *os.getloadavg())]
     last = run.stdout.strip().splitlines()[-1] if run.stdout.strip() else ""

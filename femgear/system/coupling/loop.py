@@ -69,6 +69,7 @@ from femgear.system.dynamics.run import DynamicsRun, run_dynamics
 
 log = logging.getLogger(__name__)
 
+
 def line_stiffness(case: Case, mean_helix_stiffness: float, stiffness: MeshStiffness | None = None):
     """Stiffness per unit contact-line length c_l(u) at the case's path positions [N/m²].
 
@@ -473,7 +474,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
             state, iteration=state.iteration + 1, mesh_force=force, load_per_length=w, mu=mix(state.mu, mu_new),
             temperature_rise=dT, flank_temperature_rise=rise, thermal_deviation=mix(state.thermal_deviation, zeta_new),
             wear=mix(state.wear, wear_new),
-            mesh_force_change=float(np.max(np.abs(force - state.mesh_force)) / np.max(np.abs(force))),
+            mesh_force_change=_force_change(force, state.mesh_force),
             mu_change=float(np.max(np.abs(mu_new - state.mu))), dynamics=run, lte_peak_to_peak=lte,
             seconds=time.perf_counter() - t0, timings=timings,
             wear_face=None if face_new is None else mix(state.wear_face, face_new),
@@ -484,10 +485,14 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
         yield state
 
 
+def _force_change(new: np.ndarray, old: np.ndarray) -> float:
+    """The loop's mesh-force change: max |new − old| relative to max |new|."""
+    return float(np.max(np.abs(new - old)) / np.max(np.abs(new)))
+
+
 def _same(a: CouplingState, b: CouplingState, tol_force: float, tol_mu: float) -> bool:
     """Whether two passes agree to the loop's tolerances (mesh force relative, μ absolute)."""
-    force = float(np.max(np.abs(a.mesh_force - b.mesh_force)) / np.max(np.abs(a.mesh_force)))
-    return force < tol_force and float(np.max(np.abs(a.mu - b.mu))) < tol_mu
+    return _force_change(a.mesh_force, b.mesh_force) < tol_force and float(np.max(np.abs(a.mu - b.mu))) < tol_mu
 
 
 @document_fields
