@@ -120,6 +120,35 @@ def twin_half(model: Model, gear: Component) -> Component | None:
     return twins[0] if twins else None
 
 
+def _near_twin(model: Model, gear: Component, mate: Component) -> None:
+    """Raise naming the attribute where a gear on ``gear``'s shaft differs from it while its ``mate`` is a
+    double-helical member: the other half of ``gear`` with a typo (its module, tooth count or helix angle), which
+    would otherwise read as a pair of mixed helix kinds."""
+    shaft = shaft_of(model, gear)
+    if shaft is None:
+        return
+    z, m, beta = _signature(model, gear)
+    for gid in model.related("assembly", "assembly", shaft.id, "part"):
+        other = model.components.get(gid)
+        if other is None or other.id == gear.id or other.type not in GEAR_TYPES:
+            continue
+        z2, m2, beta2 = (model.value(other, a) for a in ("number_of_teeth", "normal_module",
+                                                          "helix_angle_reference_diameter"))
+        if None in (z2, m2, beta2):
+            continue
+        same = {"number_of_teeth": z2 == z, "normal_module": abs(m2 - m) <= 1e-9 * m,
+                "helix_angle_reference_diameter": abs(beta2 + beta) <= 1e-9 * abs(beta)}
+        if sum(same.values()) != 2:             # one attribute off: a half with a typo, not another gear
+            continue
+        attr = next(a for a, ok in same.items() if not ok)
+        value, own = {"number_of_teeth": (z2, z), "normal_module": (f"{m2 * 1e3:g} mm", f"{m * 1e3:g} mm"),
+                      "helix_angle_reference_diameter": (f"{beta2:+g}°", f"{-beta:+g}°")}[attr]
+        raise model.error(other, attr, f"{value} differs from {own} of its other half {gear.label()} on the same "
+                                       f"shaft {shaft.id}: the halves of a double-helical member agree in tooth "
+                                       f"count and module and have opposite hands (its mate {mate.label()} is "
+                                       "double-helical)")
+
+
 def pair_parts(model: Model, stage: Component) -> PairParts:
     """The pair of a supported cylindrical stage (double-helical halves found on the shafts)."""
     g1, g2 = stage_gears(model, stage)
@@ -128,6 +157,7 @@ def pair_parts(model: Model, stage: Component) -> PairParts:
     if (t1 is None) != (t2 is None):
         lone, other = (g1, g2) if t1 is not None else (g2, g1)
         half = t1 if t1 is not None else t2
+        _near_twin(model, other, lone)
         raise model.error(lone, "helix_angle_reference_diameter",
                           f"has an opposite-hand half (gear {half.id}) on its shaft, a double-helical member, but its "
                           f"mate {other.label()} has none: the pair is neither single- nor double-helical")

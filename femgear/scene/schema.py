@@ -15,6 +15,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from femgear.errors import SceneError
 from femgear.levels import coupling as coupling_levels
 from femgear.levels import dynamics as dynamics_levels
 from femgear.scene.levels import check_level
@@ -314,6 +315,16 @@ class Numerics(_Frozen):
                                   "root), linear elsewhere (< 2 % mesh error at level 0); p1 linear tetrahedra "
                                   "everywhere, stiff in bending (≈ 5 % on the mean stiffness at level 1, docs/cost.md) [-]")
 
+    @model_validator(mode="after")
+    def _records_a_period(self):
+        if not self.dynamics_cycles >= self.transient_cycles + 1:
+            raise SceneError("numerics.transient_cycles",
+                             f"{self.transient_cycles:g} mesh periods dropped as transient leave fewer than one "
+                             f"recorded period of numerics.dynamics_cycles = {self.dynamics_cycles:g} (the periods "
+                             "simulated in all, the transient included): raise numerics.dynamics_cycles to at least "
+                             f"{self.transient_cycles + 1:g} or lower numerics.transient_cycles")
+        return self
+
     def level_of(self, body: str) -> int:
         """Resolution level of ``body`` (``"ltca"``, ``"fe3d"`` or ``"fe"``): ``body_level`` when the scene gives
         it, else that body's default (:data:`DEFAULT_BODY_LEVELS`; the ``ltca`` bodies with p1 elements: 1)."""
@@ -511,6 +522,17 @@ class Scene(_Frozen):
     modifications: Modifications = Modifications()
     physics: Physics = Physics()
     rating: Rating = Rating()
+
+    @model_validator(mode="after")
+    def _cross_keys(self):
+        """Checks that read keys of two tables (the table-local ones sit in their tables' validators; those
+        of sizes against sizes in :mod:`femgear.scene.ranges`, after the unit checks), so that ``femgear info``
+        refuses what ``femgear run`` would, before anything is computed."""
+        dyn = dynamics_levels.spec(self.physics.dynamics)
+        if dyn.shaft_elements and self.pair.kind != "double-helical":
+            raise SceneError("physics.dynamics", f"{self.physics.dynamics!r} joins two helix halves by shaft elements; "
+                                                 f"a {self.pair.kind} pair (pair.kind, one mesh) runs with \"lumped\"")
+        return self
 
     @property
     def pinion_rpm(self) -> float:
