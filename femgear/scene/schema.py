@@ -261,7 +261,8 @@ class Wear(_Frozen):
     """``[wear]``: Archard wear (``physics.wear = "archard"``)."""
 
     coefficient: NonNeg = Field(
-        1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H), the paper's 'wear rate' [-]"
+        1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H) [-]: with wear.load = \"total\" the "
+                            "paper's 'wear rate' on the whole load, with \"asperity\" that of the asperity contacts"
     )
     cycles: NonNeg = Field(0.0, description="pinion revolutions of accumulated wear (load cycles of one pinion tooth) [-]")
     field: Literal["path", "face"] = Field(
@@ -269,6 +270,13 @@ class Wear(_Frozen):
                             "on both helices) or \"face\" (h(ρ, ζ) per member and helix from the LTCA's contact-line "
                             "loads, femgear.physics.wear.face; needs the ltca stiffness and an overlap ratio ε_β ≤ 1)")
     face_points: int = Field(21, ge=3, le=201, description="face positions ζ of the face-resolved wear grid [-]")
+    load: Literal["asperity", "total"] = Field(
+        "asperity", description="the load that wears in Archard's law: \"asperity\" the part the asperities carry "
+                                "through the film (the Greenwood–Tripp/JGP split of the formula level's film at each "
+                                "path position, roughness.rq or else the flanks' rating.roughness_ra / finishing; "
+                                "Akbarzadeh & Khonsari 2009), negligible in full film; \"total\" the paper's "
+                                "constant-coefficient form, K on the whole load whatever the film (its studies use "
+                                "it; a pair whose film carries the load is warned)")
 
 
 class Thermal(_Frozen):
