@@ -39,6 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from femgear.errors import ConvergenceError
+from femgear.perf import Progress
 from femgear.physics.geometry import GearPair, PathKinematics
 from femgear.physics.wear.load_sharing import ReferenceLoad, load_map, reference_load_map
 from femgear.physics.wear.regime import AsperityShare
@@ -119,6 +120,7 @@ def stepped(setup: WearSetup, rates, state, cycles: float, max_relative_change: 
     if not 0 < max_relative_change <= 1:
         raise ValueError(f"max_relative_change must be in (0, 1] (got {max_relative_change!r})")
     history: dict[str, list] = {"cycles": [], "max_depth": []}
+    progress = Progress(f"Archard wear to {cycles:.4g} cycles", None)
     while state.cycles < cycles * (1 - 1e-12):
         r1, r2, w = rates(state)
         if not all(np.all(np.isfinite(a)) for a in (r1, r2, w)):
@@ -131,6 +133,8 @@ def stepped(setup: WearSetup, rates, state, cycles: float, max_relative_change: 
             raise ConvergenceError("wear", f"the wear depth became non-finite at {state.cycles:.4g} cycles", history)
         history["cycles"].append(float(state.cycles))
         history["max_depth"].append(float(max(np.max(state.h1), np.max(state.h2))))
+        progress(state.steps, f"step {state.steps}, {state.cycles:.4g} cycles, largest depth "
+                              f"{history['max_depth'][-1] * 1e6:.3g} µm")
         yield state
 
 

@@ -50,6 +50,7 @@ from femgear.docfields import document_fields
 from femgear.errors import ConvergenceError, SceneError
 from femgear.levels import wear as wear_levels
 from femgear.levels.lubrication import Lubrication, lubrication_solver
+from femgear.perf import Progress
 from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.physics.wear.face import FaceReference
@@ -579,6 +580,7 @@ def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1
     history: dict[str, list] = {"iteration": [], "mesh_force_change": [], "mu_change": [], "seconds": []}
     start = time.perf_counter()
     passes: list[CouplingState] = []
+    lines = Progress(f"coupling of scene {setup.case.name!r}", None)     # shown once the loop has run 10 s
 
     def done(state: CouplingState, alternation: tuple[float, float] | None = None) -> CoupledResult:
         return CoupledResult(state, CouplingHistory(**{k: tuple(v) for k, v in history.items()}), True,
@@ -591,6 +593,9 @@ def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1
         history["seconds"].append(state.seconds)
         if progress is not None:
             progress(state)
+        lines(state.iteration, f"pass {state.iteration} done in {state.seconds:.1f} s, mesh-force change "
+                               f"{state.mesh_force_change:.3g}, μ change {state.mu_change:.3g}" if state.iteration else
+                               f"quasi-static start done in {state.seconds:.1f} s")
         if state.iteration == 0:
             continue
         if one_way or (state.mesh_force_change < tol_force and state.mu_change < tol_mu):
