@@ -66,7 +66,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=not coupling_levels.spec(case.levels.coupling).iterates, progress=progress)
     st = coupled.state
-    worn, lubricated = wear_levels.has_wear(case), setup.lubrication.friction
+    worn, lubricated = setup.wear is not None, setup.lubrication.friction
     tribology = Tribology(
         load_per_length=st.load_per_length,
         friction_coefficient=st.mu if lubricated else None,
@@ -74,6 +74,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         flank_temperature_rise=st.flank_temperature_rise,
         thermal_deviation=st.thermal_deviation if setup.thermal is not None else None,
         wear=st.wear if worn else None, wear_cycles=case.wear.cycles,
+        **wear_regime(setup.wear if worn else None, st.load_per_length),
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if worn else None, st.thermal_face),
         film=setup.lubrication.film(st.load_per_length))
@@ -147,8 +148,21 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         cycles, steps = state.cycles, state.steps
     return Tribology(load_per_length=w, friction_coefficient=mu, temperature_rise=dT,
                      flank_temperature_rise=case.thermal.flank_temperature_rise, thermal_deviation=zeta, wear=wear,
-                     wear_cycles=cycles, wear_steps=steps,
+                     wear_cycles=cycles, wear_steps=steps, **wear_regime(wear_model, w),
                      **face_fields(case, units, case.thermal.flank_temperature_rise, **faces))
+
+
+def wear_regime(wear_model, load_per_length: np.ndarray) -> dict:
+    """The :class:`Tribology` wear-regime fields of ``wear_model`` (an ``ArchardWear`` or None) at the run's load
+    ``load_per_length``; its warnings are logged."""
+    if wear_model is None:
+        return {}
+    r = wear_model.regime(load_per_length)
+    warnings = wear_model.warnings(load_per_length)
+    for text in warnings:
+        logging.getLogger("femgear.physics.wear").warning(text)
+    return {"wear_load": wear_model.load, "wear_film_parameter": None if r is None else r.film_parameter_min,
+            "wear_asperity_share": None if r is None else r.share_max, "wear_warnings": warnings}
 
 
 def face_fields(case: Case, units: ThermalUnits | None, rise: float, grid: np.ndarray | None = None,

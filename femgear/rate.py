@@ -22,6 +22,7 @@ from femgear.levels.lubrication import lubrication_solver
 from femgear.physics.contact.path import ContactPath, zone_grid
 from femgear.physics.geometry import GearPair
 from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
+from femgear.physics.lubrication.mixed import FINISHING_RA
 from femgear.physics.rating import (
     LoadFactors,
     MaterialLimits,
@@ -39,8 +40,6 @@ from femgear.results import ContactFigures
 
 log = logging.getLogger("femgear.physics.rating")
 
-#: R_a of the flank by finishing process [m] (typical values, docs/rating.md)
-FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
 DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5], "finishing": "ground",
             "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0}
 

@@ -50,6 +50,17 @@ class Tribology:
     """pinion revolutions of accumulated wear [rev]"""
     wear_steps: int = 0
     """update steps the wear integration took [-]"""
+    wear_load: str | None = None
+    """the load that wore, ``wear.load``: "asperity" (the asperity-borne part) or "total" (the whole load; None: wear
+    off) [-]"""
+    wear_film_parameter: float | None = None
+    """smallest film parameter λ = h/σ along the path at ``load_per_length``, of the JGP split the asperity-borne
+    wear takes (None: wear off) [-]"""
+    wear_asperity_share: float | None = None
+    """largest share of the load the asperities carry along the path at ``load_per_length`` (None: wear off) [-]"""
+    wear_warnings: tuple[str, ...] = ()
+    """what the wear result does not support, one ``key: message`` each (the constant-coefficient form on a pair
+    whose film carries the load) [-]"""
     face_grid: np.ndarray | None = None
     """(m,) face coordinate ζ of the face-resolved fields, 0 … b of each helix (``wear.field = "face"`` or ``thermal =
     "fe3d"``; else None) [m]"""

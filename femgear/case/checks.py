@@ -3,7 +3,7 @@
 The scene's own validation (schema, input ranges, temperatures) is :func:`femgear.scene.load_scene`;
 what follows needs the pair and runs where the pair is bound: the tip speed against the rim's
 burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), the face-resolved wear's
-needs, the TEHL levels' ranges, the pitch-line speed warning; the Hertz pressure warning needs the
+needs, the flank modifications' lengths against the flanks, the TEHL levels' ranges, the pitch-line speed warning; the Hertz pressure warning needs the
 run's own contact pass (:func:`contact_warnings`, called by the driver after it).
 """
 
@@ -34,6 +34,7 @@ def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
     scene, pair = case.scene, case.pair
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
+    check_modifications(case)
     check_lubrication_range(case)
     earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
     return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair), earlier, warn))
@@ -44,6 +45,15 @@ def check_lubrication_range(case: Case) -> None:
     from femgear.levels.lubrication import check_range
 
     check_range(case)
+
+
+def check_modifications(case: Case) -> None:
+    """Raise :class:`SceneError` for a relief longer than the active profile or half the helix's face (the
+    ``ltca`` level reads the flank modifications only once its member bodies are built, minutes later)."""
+    from femgear.physics.ltca.separation import check_modification
+
+    for member in (1, 2):
+        check_modification(case.pair, member, case.modifications.member(member))
 
 
 def check_wear_field(scene: Scene, pair: GearPair) -> None:

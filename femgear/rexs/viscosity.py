@@ -45,3 +45,21 @@ def temperature_coefficient(nu40: float, nu100: float, temperature: float, expan
     z = nu + _SHIFT
     dnu_dt = -z * math.log(z) * b / temperature
     return -dnu_dt / nu + expansion
+
+
+T38 = 311.15   #: the temperature of REXS's lubricant pressure_viscosity_coefficient_at_38_degrees_celsius [K]
+
+
+def pressure_viscosity_at(law, temperature: float) -> float:
+    """α(T) = ∂ln η/∂p at p = 0 [1/Pa] of femgear's oil law ``law`` (:class:`femgear.physics.lubrication.oil.OilLaw`)
+    at ``temperature`` [K]: Roelands' α0 ((T − 138)/(T0 − 138))^(−S0), the slope of its pressure term (Barus: α0)."""
+    if law.model == "barus":
+        return law.alpha
+    return law.alpha * ((temperature - 138.0) / (law.T0 - 138.0)) ** (-law.s0)
+
+
+def pressure_viscosity_from(alpha_t: float, temperature: float, eta0: float, beta_t: float, t0: float) -> float:
+    """α0 at the reference ``t0`` [1/Pa] of the Roelands law (η0, β_T at t0) whose α at ``temperature`` is
+    ``alpha_t`` (the inverse of :func:`pressure_viscosity_at`; S0 does not depend on α)."""
+    s0 = beta_t * (t0 - 138.0) / (math.log(eta0) + 9.67)
+    return alpha_t * ((temperature - 138.0) / (t0 - 138.0)) ** s0

@@ -63,17 +63,39 @@ REMOVED_KEYS = {
 }
 
 
-def _first_error(exc: ValidationError) -> SceneError:
-    err = exc.errors()[0]
+def _problem(err: dict) -> tuple[str, str]:
+    """(key, message) of one pydantic error: an unknown key with the closest key of its table."""
+    own = err.get("ctx", {}).get("error")
+    if isinstance(own, SceneError):          # a validator's check that names its own key (a cross-key check)
+        return own.key, own.message
     key = ".".join(str(p) for p in err["loc"]) or "scene"
-    message = err["msg"].removeprefix("Value error, ")
-    if err["type"] not in ("missing", "extra_forbidden") and "input" in err:
-        message += f" (got {err['input']!r})"
     if err["type"] == "extra_forbidden":
-        message = REMOVED_KEYS.get(key, "unknown key")
-    more = len(exc.errors()) - 1
-    if more:
-        message += f"; and {more} more error{'s' if more > 1 else ''}"
+        return key, REMOVED_KEYS.get(key) or "unknown key" + _closest(err["loc"])
+    message = err["msg"].removeprefix("Value error, ")
+    if err["type"] != "missing" and "input" in err:
+        message += f" (got {err['input']!r})"
+    return key, message
+
+
+def _closest(loc: tuple) -> str:
+    """'; did you mean pinion.teeth?' for an unknown key ``loc`` close to a key of its table (else '')."""
+    import difflib
+
+    from femgear.scene.keys import scene_keys, scene_tables
+
+    table = ".".join(str(p) for p in loc[:-1])
+    names = [k.name for k in scene_keys() if k.table == table]
+    names += [t.table.rpartition(".")[2] for t in scene_tables() if t.table.rpartition(".")[0] == table]
+    close = difflib.get_close_matches(str(loc[-1]), names, n=1, cutoff=0.6)
+    return f" (did you mean {table + '.' if table else ''}{close[0]}?)" if close else ""
+
+
+def _first_error(exc: ValidationError) -> SceneError:
+    """One :class:`SceneError` naming the first problem's key, its message listing every problem."""
+    problems = [_problem(err) for err in exc.errors()]
+    key, message = problems[0]
+    if len(problems) > 1:
+        message += f"; and {len(problems) - 1} more: " + "; ".join(f"{k}: {m}" for k, m in problems[1:])
     return SceneError(key, message)
 
 

@@ -15,6 +15,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from femgear.errors import SceneError
 from femgear.levels import coupling as coupling_levels
 from femgear.levels import dynamics as dynamics_levels
 from femgear.scene.levels import check_level
@@ -260,7 +261,8 @@ class Wear(_Frozen):
     """``[wear]``: Archard wear (``physics.wear = "archard"``)."""
 
     coefficient: NonNeg = Field(
-        1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H), the paper's 'wear rate' [-]"
+        1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H) [-]: with wear.load = \"total\" the "
+                            "paper's 'wear rate' on the whole load, with \"asperity\" that of the asperity contacts"
     )
     cycles: NonNeg = Field(0.0, description="pinion revolutions of accumulated wear (load cycles of one pinion tooth) [-]")
     field: Literal["path", "face"] = Field(
@@ -268,6 +270,13 @@ class Wear(_Frozen):
                             "on both helices) or \"face\" (h(ρ, ζ) per member and helix from the LTCA's contact-line "
                             "loads, femgear.physics.wear.face; needs the ltca stiffness and an overlap ratio ε_β ≤ 1)")
     face_points: int = Field(21, ge=3, le=201, description="face positions ζ of the face-resolved wear grid [-]")
+    load: Literal["asperity", "total"] = Field(
+        "asperity", description="the load that wears in Archard's law: \"asperity\" the part the asperities carry "
+                                "through the film (the Greenwood–Tripp/JGP split of the formula level's film at each "
+                                "path position, roughness.rq or else the flanks' rating.roughness_ra / finishing; "
+                                "Akbarzadeh & Khonsari 2009), negligible in full film; \"total\" the paper's "
+                                "constant-coefficient form, K on the whole load whatever the film (its studies use "
+                                "it; a pair whose film carries the load is warned)")
 
 
 class Thermal(_Frozen):
@@ -313,6 +322,16 @@ class Numerics(_Frozen):
                                   "the loaded tooth (to 1 m_n below its root) and the rim (below 3 m_n under the "
                                   "root), linear elsewhere (< 2 % mesh error at level 0); p1 linear tetrahedra "
                                   "everywhere, stiff in bending (≈ 5 % on the mean stiffness at level 1, docs/cost.md) [-]")
+
+    @model_validator(mode="after")
+    def _records_a_period(self):
+        if not self.dynamics_cycles >= self.transient_cycles + 1:
+            raise SceneError("numerics.transient_cycles",
+                             f"{self.transient_cycles:g} mesh periods dropped as transient leave fewer than one "
+                             f"recorded period of numerics.dynamics_cycles = {self.dynamics_cycles:g} (the periods "
+                             "simulated in all, the transient included): raise numerics.dynamics_cycles to at least "
+                             f"{self.transient_cycles + 1:g} or lower numerics.transient_cycles")
+        return self
 
     def level_of(self, body: str) -> int:
         """Resolution level of ``body`` (``"ltca"``, ``"fe3d"`` or ``"fe"``): ``body_level`` when the scene gives
@@ -511,6 +530,17 @@ class Scene(_Frozen):
     modifications: Modifications = Modifications()
     physics: Physics = Physics()
     rating: Rating = Rating()
+
+    @model_validator(mode="after")
+    def _cross_keys(self):
+        """Checks that read keys of two tables (the table-local ones sit in their tables' validators; those
+        of sizes against sizes in :mod:`femgear.scene.ranges`, after the unit checks), so that ``femgear info``
+        refuses what ``femgear run`` would, before anything is computed."""
+        dyn = dynamics_levels.spec(self.physics.dynamics)
+        if dyn.shaft_elements and self.pair.kind != "double-helical":
+            raise SceneError("physics.dynamics", f"{self.physics.dynamics!r} joins two helix halves by shaft elements; "
+                                                 f"a {self.pair.kind} pair (pair.kind, one mesh) runs with \"lumped\"")
+        return self
 
     @property
     def pinion_rpm(self) -> float:

@@ -38,7 +38,7 @@ CYCLES = (0.0, 1e6, 3e6)
 
 
 def setup(rq: float, cycles: float) -> list[str]:
-    return [f"roughness.rq={rq!r}", f"wear.cycles={cycles!r}"]
+    return [f"roughness.rq={rq!r}", f"wear.cycles={cycles!r}", C.PAPER_WEAR]
 
 
 def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:

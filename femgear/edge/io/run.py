@@ -8,7 +8,8 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total, with ``fe``/``ltca`` body_level [and body_elements],
   and statically mean_per_helix, seconds), ``friction`` (level, mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
-  gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
+  gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps; load: the load that
+  wore, "asperity" or "total"; film_parameter_min, asperity_share_max: the film's share along the path; warnings),
   with ``stiffness = "ltca"`` ``transmission_error`` (:func:`femgear.edge.io.ltca.te_summary`: loaded TE
   p-p, harmonics, stiffness mean/ripple, load share, peak pressure and its edge flag, unloaded TE;
   ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
@@ -67,7 +68,9 @@ def tribology_summary(t: Tribology, s: np.ndarray, static: bool, level: str) -> 
         out["thermal"] = _thermal_summary(t.flank_temperature_rise, t.thermal_deviation, s)
     if t.wear is not None:
         out["wear"] = {"cycles": t.wear_cycles, "max_depth_pinion": float(t.wear[0].max()),
-                       "max_depth_gear": float(t.wear[1].max()), **({"steps": t.wear_steps} if static else {})}
+                       "max_depth_gear": float(t.wear[1].max()), **({"steps": t.wear_steps} if static else {}),
+                       "load": t.wear_load, "film_parameter_min": t.wear_film_parameter,
+                       "asperity_share_max": t.wear_asperity_share, "warnings": list(t.wear_warnings)}
     return out
 
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from femgear.docfields import document_fields
+from femgear.perf import Progress
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.geometry.lines import hat_integrals
 from femgear.physics.ltca.compliance import MemberCompliance, member_compliance
@@ -324,6 +325,7 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
     lines, lengths = [], []
     Ep = reduced_modulus(E, nu)
     cb = math.cos(pair.beta_b)
+    progress = Progress(f"LTCA contact cycle ({n_line} points per contact line)", n_phases)
     for i, ph in enumerate(phases):
         pts = phase_points(pair, ph, stagger, n_line)
         eps = _eps(pair, modifications, pts, extra)
@@ -350,6 +352,7 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
         if keep_lines:
             lines.append(np.column_stack([pts.helix, pts.line, pts.u, pts.zeta, w]))
             lengths.append(pts.length)
+        progress(i + 1)
     return LTCAResult(phases, force, cols["lte"], cols["nl"], cols["nr"], cols["fl"], cols["fr"], cols["ksl"],
                       cols["ksr"], cols["ktl"], cols["ktr"], cols["pl"], cols["pr"], cols["err"], tuple(lines),
                       tuple(lengths), time.perf_counter() - t0, n_line=n_line, stagger=stagger,

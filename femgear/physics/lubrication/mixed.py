@@ -29,6 +29,14 @@ import numpy as np
 from scipy import integrate, optimize, special
 
 K_GT = 16.0 * math.sqrt(2.0) / 15.0 * math.pi
+#: R_a of the flank by finishing process [m] (typical values, docs/rating.md; the ratings' default is ground)
+FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
+
+
+def composite_sigma(ra1: float, ra2: float) -> float:
+    """σ = √(Rq1² + Rq2²) [m] of two flanks of arithmetic mean roughness R_a [m], with Rq = √(π/2) R_a of a
+    Gaussian height distribution (the one Greenwood–Tripp assume)."""
+    return math.sqrt(math.pi / 2) * math.hypot(ra1, ra2)
 
 
 def gt_function(n: float, t: np.ndarray | float) -> np.ndarray:
@@ -97,6 +105,26 @@ def jgp_split(w, R, film, E_red: float, roughness: Roughness) -> LoadSplit:
         g1[i] = 1.0 / inv
         h[i] = float(film(w[i] * inv, E_red * inv)[0])
     return LoadSplit(gamma1=g1, asperity_fraction=1 - 1 / g1, film=h, film_parameter=h / roughness.sigma)
+
+
+def split_table(loads, R, ue, srr, T_bulk: float, oil, E_red: float, solids, roughness: Roughness
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """(asperity fraction W_a/W, film parameter λ), each (n, m): the JGP split of the thermal central film
+    (:func:`femgear.physics.lubrication.traction.thermal_central_film`, as :func:`mixed_line_friction` takes it)
+    at the loads per unit length ``loads`` (m,) [N/m] of each of the n contacts of radius ``R``, entrainment
+    speed ``ue`` and slide-to-roll ratio ``srr`` (n,), oil at ``T_bulk`` [K]."""
+    from femgear.physics.lubrication.traction import thermal_central_film
+
+    loads = np.asarray(loads, float)
+    R, ue, srr = (np.atleast_1d(np.asarray(a, float)) for a in (R, ue, srr))
+    fraction, lam = np.empty((R.size, loads.size)), np.empty((R.size, loads.size))
+    for i in range(R.size):
+        def h_of(wf, Ef, i=i):
+            return thermal_central_film(np.atleast_1d(wf), R[i], ue[i], abs(srr[i]), T_bulk, oil, Ef, solids)[0]
+
+        s = jgp_split(loads, R[i], h_of, E_red, roughness)
+        fraction[i], lam[i] = s.asperity_fraction, s.film_parameter
+    return np.clip(fraction, 0.0, 1.0), lam
 
 
 def mixed_line_friction(w, R, ue, srr, T_bulk, oil, E_red: float, solids, roughness: Roughness,
