@@ -73,3 +73,12 @@ def test_sweep_writes_the_dynamic_factor_figure_and_json(tmp_path, capsys):
     kv = out["dynamic_factor"]
     assert len(kv["iso_method_b"]) == 2 and len(kv["femgear"]) == 1 and kv["resonance_speed_rpm"] > 0
     assert Path(out["files"]["dynamic_factor"]).name == "dynamics_K_v.png" and Path(out["files"]["dynamic_factor"]).exists()
+
+
+@pytest.mark.parametrize("scene", sorted((ROOT / "studies" / "zoo").glob("*.toml")), ids=lambda p: p.stem)
+def test_every_zoo_pair_lists_the_three_factors_with_sources(scene, capsys):
+    """``femgear info --json`` of every zoo pair (no dynamics, no LTCA there: ISO's three, each its own ISO value)."""
+    assert main(["-q", "info", str(scene), "--json"]) == 0
+    lf = json.loads(capsys.readouterr().out.strip().splitlines()[-1])["load_factors"]
+    for k, method in (("K_v", "method B"), ("K_Hbeta", "method C"), ("K_Halpha", "method B")):
+        assert lf[k]["source"] == f"ISO 6336-1 {method}" and lf[k]["value"] == lf[k]["iso"] >= 1
