@@ -62,7 +62,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint, lubrication)
         tribology = replace(tribology, film=lubrication.film(tribology.load_per_length))
         return derived_fields(RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0,
-                                        transmission_error=te, rating=case_rating(case, contact, tribology)))
+                                        transmission_error=te, rating=case_rating(case, contact, tribology,
+                                                                                  stiffness)))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=not coupling_levels.spec(case.levels.coupling).iterates, progress=progress)
     st = coupled.state
@@ -79,7 +80,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
                       st.wear_face if worn else None, st.thermal_face),
         film=setup.lubrication.film(st.load_per_length))
     return derived_fields(RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
-                                    transmission_error=te, rating=case_rating(case, contact, tribology)))
+                                    transmission_error=te,
+                                    rating=case_rating(case, contact, tribology, stiffness, st.amplitudes or None)))
 
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
@@ -93,15 +95,18 @@ def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 
     return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, op.torque, n_harmonics)
 
 
-def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
+def case_rating(case: Case, contact: ContactPath, tribology: Tribology, stiffness: MeshStiffness | None = None,
+                amplitudes=None):
     """The four ISO ratings with femgear's contact temperature and film of the run's lubrication level beside them
-    (defaults and range flags in results.json, logged at INFO); None (logged) when a rating input is
-    outside what the standards can compute (e.g. a rim too thin)."""
+    (defaults and range flags in results.json, logged at INFO), their K_v from the dynamics' ``amplitudes`` and
+    K_Hβ, K_Hα from the ``stiffness`` level's LTCA cycle where the run computed them (:func:`femgear.rate.rating_factors`);
+    None (logged) when a rating input is outside what the standards can compute (e.g. a rim too thin)."""
     from femgear.rate import rate_case
 
+    physics = {"amplitudes": amplitudes, "cycle": None if stiffness is None else stiffness.ltca}
     try:
         return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
-                         tribology.film, case=case)
+                         tribology.film, case=case, physics=physics)
     except ValueError as exc:
         logging.getLogger("femgear.physics.rating").warning("rating: not computed: %s", exc)
         return None

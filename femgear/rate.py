@@ -33,6 +33,7 @@ from femgear.physics.rating import (
 )
 from femgear.physics.rating import pitting_rating as _pitting_rating
 from femgear.physics.rating.bending import BendingInputs
+from femgear.physics.rating.load_factors import DynamicFactorCurve, RatingFactor, RatingFactors
 from femgear.physics.rating.scuffing import OIL_FACTOR, ScuffingInputs
 from femgear.physics.rating.suite import OwnFigures, PairRating, rate_pair
 from femgear.physics.stiffness.iso6336 import iso6336_stiffness
@@ -41,7 +42,7 @@ from femgear.results import ContactFigures
 log = logging.getLogger("femgear.physics.rating")
 
 DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5], "finishing": "ground",
-            "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0}
+            "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0, "accuracy_grade": 6}
 
 
 def _value(r, key: str, used: list[str]):
@@ -174,9 +175,10 @@ def _fillets(case):
 
 
 def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.ndarray | None = None,
-              level: str | None = None, film=None, case=None) -> PairRating:
+              level: str | None = None, film=None, case=None, physics: dict | None = None) -> PairRating:
     """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them
-    (``case``: the run's bound case, else bound here from ``scene`` and ``pair``).
+    (``case``: the run's bound case, else bound here from ``scene`` and ``pair``; ``physics``: what the run's
+    physics gives the load factors, ``amplitudes`` of its dynamics and its LTCA ``cycle``, :func:`rating_factors`).
 
     The defaults line and the range flags are logged at INFO (``-v``) and carried in the result
     (``defaults``, ``flags``), which ``femgear info`` prints and results.json holds; stderr keeps the
@@ -194,15 +196,18 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     oil_type = _value(r, "oil_type", used)
     stage_s = _value(r, "scuffing_load_stage", used)
     stage_m = _value(r, "micropitting_load_stage", used)
+    grade = _value(r, "accuracy_grade", used)
     if used:
         log.info("rating: defaults used for %s (docs/rating.md)", ", ".join(used))
+    factors = rating_factors(case, grade, **(physics or {}))
     rims = []
     for m, member in ((1, scene.pinion), (2, scene.gear)):
         rf, ra = (pair.rf1, pair.ra1) if m == 1 else (pair.rf2, pair.ra2)
         rims.append((rf - member.bore_radius) / (ra - rf) if member.bore_radius > 0 else math.inf)
-    K = r.application_factor * r.dynamic_factor * r.face_load_factor * r.transverse_load_factor
+    kv, khb, kha = factors.K_v.value, factors.K_Hbeta.value, factors.K_Halpha.value
+    K = r.application_factor * kv * khb * kha
     bending = BendingInputs(sigma_Flim=sigma_Flim, S_Fmin=r.bending_min_safety_factor, K_A=r.application_factor,
-                            K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor, K_Falpha=r.transverse_load_factor,
+                            K_v=kv, K_Hbeta=khb, K_Falpha=kha,
                             life_hours=r.life_hours, root_Rz=tuple(root_rz), rim_ratio=tuple(rims))
     eta = viscosity_law(scene)
     mat = scene.material
@@ -214,8 +219,10 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
                            X_W=r.structural_factor)
     own = own_figures(case, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
     T1 = case.operating.pinion_torque
-    rating = rate_pair(pair, scene_rating(scene, pair, T1), T1, scene.pinion_rpm, bending, scuff,
-                       float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
+    rating = rate_pair(pair, scene_rating(scene, pair, T1, load_factors(r, factors)), T1, scene.pinion_rpm, bending,
+                       scuff, float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own,
+                       defaults=tuple(used))
+    rating = replace(rating, factors=factors)
     for flag in rating.flags:
         log.info("rating: %s; the factor is flagged", flag)
     if r.fillet_fe:
@@ -223,15 +230,143 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     return rating
 
 
-def scene_rating(scene, pair: GearPair, pinion_torque: float | None = None) -> PittingRating:
+def scene_rating(scene, pair: GearPair, pinion_torque: float | None = None,
+                 factors: LoadFactors | None = None) -> PittingRating:
     """ISO 6336-2 method B rating of a scene's pair at its operating point (``pinion_torque`` [N m]: the bound
-    case's, else derived here) and ``[rating]`` table."""
+    case's, else derived here) and ``[rating]`` table; ``factors``: the load factors (None: ISO 6336-1's methods,
+    :func:`rating_factors` without the run's physics, where the scene does not give them)."""
     r = scene.rating
-    factors = LoadFactors(K_A=r.application_factor, K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor,
-                          K_Halpha=r.transverse_load_factor)
+    if factors is None:
+        factors = load_factors(r, rating_factors(build_case(scene, pair), r.accuracy_grade or DEFAULTS["accuracy_grade"]))
     T1 = operating_point(scene, pair).pinion_torque if pinion_torque is None else pinion_torque
     stress = contact_stress(pair, T1, scene.material.youngs_modulus, scene.material.poisson_ratio, factors)
     limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
                             nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
                             Z_W=r.work_hardening_factor, Z_X=r.size_factor)
     return _pitting_rating(pair, stress, scene.pinion_rpm, limits)
+
+
+def load_factors(r, factors: RatingFactors) -> LoadFactors:
+    """The ISO 6336-2 :class:`LoadFactors` of ``[rating]`` ``r`` (its K_A) and the chosen ``factors``."""
+    return LoadFactors(K_A=r.application_factor, K_v=factors.K_v.value, K_Hbeta=factors.K_Hbeta.value,
+                       K_Halpha=factors.K_Halpha.value)
+
+
+def _tip_relief(case) -> float:
+    """The larger member tip relief of ``[modifications]``, on the transverse base tangent [m] (ISO's C_a)."""
+    mods = case.modifications
+    return max(mods.member(m).tip_relief for m in (1, 2)) / math.cos(case.pair.beta_b)
+
+
+def _misalignment(case, tolerances) -> tuple[float, str]:
+    """(F_βx [m], its origin): the scene's helix slope deviation (the larger helix; on the transverse base
+    tangent, as ISO's F_β), else the accuracy grade's f_Hβ (ISO 1328-1), the manufacturing part f_ma of ISO's
+    F_βx.  The mesh's share of the shaft and bearing deflections (f_sh) is not in it: the dynamics levels do
+    not provide the static deflection of the shafts along the face yet."""
+    mods = case.modifications
+    f = max(abs(mods.helix_slope_deviation_left), abs(mods.helix_slope_deviation_right))
+    if f > 0:
+        return f / math.cos(case.pair.beta_b), f"modifications.helix_slope_deviation ({f * 1e6:.3g} µm)"
+    return max(tolerances.f_Hbeta), f"f_Hβ of accuracy grade {tolerances.grade} (no helix slope deviation given)"
+
+
+def dynamics_K_v(amplitudes) -> tuple[float, ...]:
+    """femgear's K_v per loaded helix: the largest dynamic mesh force over its mean (the static force), from the
+    response's ``mesh_force.<L|R>.max`` and ``.mean`` (:func:`femgear.system.dynamics.response.analyse`)."""
+    out = []
+    for side in ("L", "R"):
+        mean = amplitudes.get(f"mesh_force.{side}.mean", 0.0)
+        if mean > 0 and f"mesh_force.{side}.max" in amplitudes:
+            out.append(float(amplitudes[f"mesh_force.{side}.max"]) / mean)
+    return tuple(out)
+
+
+def rating_factors(case, grade: int, amplitudes=None, cycle=None) -> RatingFactors:
+    """K_v, K_Hβ, K_Hα of ``case``'s rating with their sources and ISO 6336-1's values beside (docs/rating.md).
+
+    A factor the scene gives (``rating.dynamic_factor`` …) is used as given ("scene"); else, with
+    ``rating.load_factors = "femgear"``, K_v comes from the run's dynamics ``amplitudes`` (:func:`dynamics_K_v`,
+    the largest helix) and K_Hβ, K_Hα from the LTCA ``cycle`` (:func:`femgear.physics.ltca.factors.ltca_load_factors`)
+    where the run computed them; otherwise ISO 6336-1: K_v method B, K_Hβ method C, K_Hα method B at the
+    accuracy ``grade`` (ISO 1328-1).  ISO's chain keeps the standard's order: K_Hβ at F_t K_A K_v, K_Hα at
+    F_t K_A K_v K_Hβ, each with the factors chosen before it."""
+    from femgear.physics.rating.contact_stress import contact_ratio_factor
+    from femgear.physics.rating.load_factors import (
+        dynamic_factor_b,
+        face_load_factor_c,
+        grade_tolerances,
+        transverse_load_factor_b,
+    )
+
+    scene, pair, r = case.scene, case.pair, case.scene.rating
+    own = r.load_factors == "femgear"
+    F_t = case.operating.pinion_torque / pair.r1 / pair.n_helices          # one helix
+    K_A, m = r.application_factor, case.material
+    iso = iso6336_stiffness(pair, line_load=F_t * K_A / pair.b, youngs_modulus=m.youngs_modulus)
+    tol = grade_tolerances(pair, int(grade))
+    kvb = dynamic_factor_b(pair, scene.pinion_rpm, F_t, K_A, iso.c_prime * 1e9, iso.c_gamma_alpha * 1e9, tol,
+                           m.density, _tip_relief(case), r.contact_stress_limit, case.bore_radii)
+    helices = dynamics_K_v(amplitudes) if own and amplitudes is not None else ()
+    method_b = "ISO 6336-1 method B"
+    K_v = _chosen(r.dynamic_factor, max(helices) if helices else None, "femgear dynamics", kvb.K_v, method_b,
+                  f"max over the helices of the largest dynamic over the static mesh force, at {scene.pinion_rpm:g} "
+                  f"rpm (N = {kvb.N:.3g})" if helices else f"N = {kvb.N:.3g}, {kvb.regime}")
+    ltca = None
+    if own and cycle is not None and cycle.result.line_load:
+        from femgear.physics.ltca.factors import ltca_load_factors
+
+        ltca = ltca_load_factors(cycle.result, pair)
+    F_bx, origin = _misalignment(case, tol)
+    crown = sum(case.modifications.member(k).crowning for k in (1, 2)) / math.cos(pair.beta_b)
+    face = face_load_factor_c(pair.b, F_t * K_A * K_v.value / pair.b, iso.c_gamma_beta * 1e9, F_bx, crown)
+    if ltca is not None:
+        seen = origin if origin.startswith("modifications") else "none (an aligned mesh: give " \
+            "modifications.helix_slope_deviation_left for the manufacturing and deflection misalignment)"
+        note = f"LTCA face load distribution at the operating torque, peak at ζ = {ltca.peak_zeta * 1e3:.3g} mm; " \
+               f"misalignment {seen}; ISO's F_βx = {F_bx * 1e6:.3g} µm"
+    else:
+        note = f"F_βx = {F_bx * 1e6:.3g} µm: {origin}"
+    K_Hb = _chosen(r.face_load_factor, None if ltca is None else ltca.K_Hbeta, "femgear LTCA", face.K_Hbeta,
+                   "ISO 6336-1 method C", note)
+    z_eps = contact_ratio_factor(pair.eps_alpha, pair.eps_beta)
+    kha, _ = transverse_load_factor_b(pair, iso.c_gamma_alpha * 1e9, tol.f_pb,
+                                      F_t * K_A * K_v.value * K_Hb.value / pair.b, z_eps)
+    K_Ha = _chosen(r.transverse_load_factor, None if ltca is None else max(1.0, ltca.K_Halpha), "femgear LTCA", kha,
+                   method_b, "LTCA sharing between the tooth pairs in contact, worst phase "
+                   f"{ltca.worst_phase:.3f}" if ltca is not None else f"f_pb = {tol.f_pb * 1e6:.3g} µm (grade {tol.grade})")
+    return RatingFactors(K_v=K_v, K_Hbeta=K_Hb, K_Halpha=K_Ha, tolerances=tol, dynamic_b=kvb, face_c=face,
+                         K_v_helices=helices)
+
+
+def _chosen(given: float | None, femgear: float | None, source: str, iso: float, iso_method: str,
+            note: str) -> RatingFactor:
+    """The factor of one K: the scene's value if given, else femgear's where computed, else ISO's."""
+    if given is not None:
+        return RatingFactor(float(given), "scene", iso, iso_method, femgear, "rating key given in the scene")
+    if femgear is not None:
+        return RatingFactor(float(femgear), source, iso, iso_method, femgear, note)
+    return RatingFactor(float(iso), iso_method, iso, iso_method, None, note)
+
+
+def dynamic_factor_curve(case, speed_rpm, amplitudes: dict, driver_speed: bool = True) -> DynamicFactorCurve:
+    """femgear's K_v per helix over a speed sweep (``amplitudes``: key -> array over the speeds, of
+    :func:`femgear.system.dynamics.sweep.speed_sweep`) beside ISO 6336-1 method B at each speed, at the case's
+    torque and accuracy grade (``rating.accuracy_grade``, default 6).  ``speed_rpm``: the sweep's driver speeds
+    (``driver_speed``), turned into pinion speeds."""
+    from femgear.physics.rating.load_factors import dynamic_factor_b, grade_tolerances
+
+    scene, pair, r, m = case.scene, case.pair, case.scene.rating, case.material
+    speeds = np.asarray(speed_rpm, float)
+    if driver_speed and scene.operating.driver == "gear":
+        speeds = speeds * pair.z2 / pair.z1
+    F_t = case.operating.pinion_torque / pair.r1 / pair.n_helices
+    iso = iso6336_stiffness(pair, line_load=F_t * r.application_factor / pair.b, youngs_modulus=m.youngs_modulus)
+    tol = grade_tolerances(pair, r.accuracy_grade or DEFAULTS["accuracy_grade"])
+    b = [dynamic_factor_b(pair, n, F_t, r.application_factor, iso.c_prime * 1e9, iso.c_gamma_alpha * 1e9, tol,
+                          m.density, _tip_relief(case), r.contact_stress_limit, case.bore_radii) for n in speeds]
+    helices = []
+    for side in ("L", "R")[:pair.n_helices]:
+        mean, peak = np.asarray(amplitudes[f"mesh_force.{side}.mean"]), np.asarray(amplitudes[f"mesh_force.{side}.max"])
+        helices.append(np.where(mean > 0, peak / np.where(mean > 0, mean, 1.0), np.nan))
+    return DynamicFactorCurve(speed_rpm=speeds, femgear=np.array(helices), iso=np.array([k.K_v for k in b]),
+                              N=np.array([k.N for k in b]), n_E1=b[0].n_E1, N_S=b[0].N_S)

@@ -64,6 +64,9 @@ def check_wear_field(scene: Scene, pair: GearPair) -> None:
     if not stiffness_levels.has_contact_lines(scene.physics.stiffness):
         raise SceneError("wear.field", f'"face" needs physics.stiffness = "ltca" (the face-resolved wear reads the '
                                        f"LTCA's contact-line loads; got {scene.physics.stiffness!r})")
+    if pair.beta_b == 0:
+        raise SceneError("wear.field", '"face" needs a helical pair: a spur contact line lies at one path position '
+                                       "(its load map is the Winkler sharing of the path model)")
     if pair.eps_beta > 1:
         raise SceneError("wear.field", f'"face" needs an overlap ratio ε_β ≤ 1 (one contact line per helix at each '
                                        f"path position); this pair has ε_β = {pair.eps_beta:.3f}")

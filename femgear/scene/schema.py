@@ -353,16 +353,31 @@ class Rating(_Frozen):
     """``[rating]``: ISO 6336-2 pitting, ISO 6336-3 bending, ISO/TS 6336-20/21 scuffing and ISO/TS 6336-22
     micropitting ratings (``femgear info``, ``femgear run``; docs/rating.md).
 
-    Defaults: K factors 1 (uniform load, no dynamic overload: give the K factors of the
-    application), σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
+    Defaults: K_A 1 (give the application's); K_v, K_Hβ, K_Hα from femgear's own dynamics and LTCA where
+    the scene's physics computes them, else by ISO 6336-1's methods (``load_factors``; a value given wins),
+    accuracy grade 6; σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
     life, lubricant and roughness factors are 1 (reference conditions) unless their
     inputs are given; Z_W = Z_X = 1.
     """
 
     application_factor: float = Field(1.0, ge=1, description="application factor K_A (ISO 6336-1) [-]")
-    dynamic_factor: float = Field(1.0, ge=1, description="dynamic factor K_v (ISO 6336-1) [-]")
-    face_load_factor: float = Field(1.0, ge=1, description="face load factor K_Hβ (contact, ISO 6336-1) [-]")
-    transverse_load_factor: float = Field(1.0, ge=1, description="transverse load factor K_Hα (contact, ISO 6336-1) [-]")
+    dynamic_factor: float | None = Field(
+        None, ge=1, description="dynamic factor K_v (ISO 6336-1) [-]; unset: from the run's dynamics (the largest "
+                                "dynamic over static mesh force of a helix) where a dynamics level runs, else "
+                                "ISO 6336-1 method B (rating.load_factors)")
+    face_load_factor: float | None = Field(
+        None, ge=1, description="face load factor K_Hβ (contact, ISO 6336-1) [-]; unset: from the LTCA's face load "
+                                "distribution with stiffness = 'ltca', else ISO 6336-1 method C (rating.load_factors)")
+    transverse_load_factor: float | None = Field(
+        None, ge=1, description="transverse load factor K_Hα (contact, ISO 6336-1) [-]; unset: from the LTCA's "
+                                "sharing between the tooth pairs with stiffness = 'ltca', else ISO 6336-1 method B")
+    load_factors: Literal["femgear", "iso"] = Field(
+        "femgear", description="source of K_v, K_Hβ, K_Hα not given above: femgear (the run's dynamics and LTCA where "
+                               "the physics levels compute them, ISO's methods otherwise) or iso (ISO 6336-1 "
+                               "methods B / C / B throughout); results.json lists each with its source and ISO's value")
+    accuracy_grade: int | None = Field(
+        None, ge=1, le=12, description="ISO 1328-1 accuracy grade Q of both members (f_pb, f_fα of ISO's K_v and K_Hα; "
+                                       "f_Hβ of its K_Hβ without a given helix slope deviation) [-]; default 6")
     contact_stress_limit: Pos = Field(1.5e9, description="σ_Hlim, allowable stress number (contact) [Pa]")
     min_safety_factor: Pos = Field(1.0, description="minimum required safety factor for pitting S_Hmin [-]")
     life_hours: Pos | None = Field(None, description="required life L_h [h]; sets N_L and Z_NT (None: Z_NT = 1)")

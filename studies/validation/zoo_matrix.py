@@ -11,7 +11,8 @@ A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
 - ``ok`` — exit 0 and the invariants hold: the time-mean load along the path carries the
   normal force (helical: b/(p_bt cos β_b) ∫ w̄ du = F_n per helix, to 2 %; spur, whose load jumps
   at B and D: w̄ b = F_n inside the single-contact zone; ``ltca``, whose w̄ is the mean over the
-  phases that load u: the LTCA's own force balance per phase, to 1e-6), films positive, contact temperatures
+  phases that load u: the LTCA's own force balance per phase, to 1e-6), the rating's K_v, K_Hβ, K_Hα listed with
+  their sources (K_v from the dynamics where the cell has them), films positive, contact temperatures
   finite and non-negative (zero only for the levels without heating), coupling converged, and
   the film and temperature within a factor of :data:`FACTOR` of the formula figures of
   ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
@@ -128,11 +129,20 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     h = path["film_central"][len(path["s"]) // 2]
     if not hand["film"] / FACTOR < h < hand["film"] * FACTOR:
         bad.append(f"mid-path film {h:.3g} m vs formula {hand['film']:.3g} m")
+    from femgear.physics.rating.load_factors import SOURCES
+
+    lf = summary.get("load_factors")
+    if lf is None or any(k not in lf or lf[k]["source"] not in SOURCES or not lf[k]["value"] >= 1
+                         for k in ("K_v", "K_Hbeta", "K_Halpha")):
+        bad.append("the rating's load factors K_v, K_Hbeta, K_Halpha with their sources missing")
+    elif summary.get("dynamics") and lf["K_v"]["source"] not in ("femgear dynamics", "scene"):
+        bad.append(f"K_v from {lf['K_v']['source']!r} although the run has dynamics")
     w, s = path["load_per_length"], path["s"]
     te = summary.get("transmission_error")
     if te is not None:      # ltca: w̄ is the mean over the phases that load u (crowning, reliefs and line-end
         # edge loads leave parts of the lines open), so its path integral is not F_n; the LTCA's own balance is
-        if abs(te["load_balance_error"]) > 1e-6 or abs(te["load_share_left"] + te["load_share_right"] - 1) > 1e-6:
+        shares = te.get("load_share_left", 1.0) + te.get("load_share_right", 0.0)    # one helix: no share
+        if abs(te["load_balance_error"]) > 1e-6 or abs(shares - 1) > 1e-6:
             bad.append(f"LTCA load balance error {te['load_balance_error']:.2g}")
         return bad
     if hand["single"] is None:

@@ -36,7 +36,8 @@ def register(sub) -> None:
                    help="instead of one run: time-domain speed sweep of the driver speed; plots the RMS of the "
                         "dynamic transmission error (DTE) against mesh frequency with the natural frequencies "
                         "(≥ 5 %% mesh strain energy) marked where the mesh frequency or its 2nd-4th harmonic "
-                        "meets them (writes dynamics_sweep.png)")
+                        "meets them (writes dynamics_sweep.png), and the dynamic factor K_v per helix beside ISO "
+                        "6336-1 method B with the resonance ratio N (dynamics_K_v.png)")
     p.add_argument("--kahraman-singh", action="store_true",
                    help="instead of one run: up/down frequency sweeps of the Kahraman-Singh backlash oscillator "
                         "(writes kahraman_singh.png)")
@@ -130,6 +131,8 @@ def _check_sweep_speeds(case, speeds) -> None:
 
 
 def _sweep(case, args, out: Path) -> int:
+    import numpy as np
+
     from femgear.system.dynamics import build_model
     from femgear.system.dynamics.modal import modal_analysis, resonance_marks
     from femgear.system.dynamics.sweep import speed_sweep
@@ -148,6 +151,7 @@ def _sweep(case, args, out: Path) -> int:
 
         files["sweep"] = save_figure(plot_sweep(sw, modal, name=f"{case.name} ({model.level}, {model.stiffness.label} stiffness)"),
                                      out / "dynamics_sweep.png")
+    kv = _dynamic_factor(case, sw, out, files, plots=not args.no_plots)
     if args.json:
         from femgear.edge.cli.common import emit_json
 
@@ -155,17 +159,37 @@ def _sweep(case, args, out: Path) -> int:
                    "natural_frequencies_hz": modal.frequencies, "mesh_energy": modal.energy["mesh"],
                    "resonances": [{"mesh_frequency": x, "harmonic": k, "natural_frequency": f}
                                   for x, k, f in marks],
+                   "dynamic_factor": {"pinion_speed_rpm": kv.speed_rpm, "femgear": kv.femgear,
+                                      "iso_method_b": kv.iso, "resonance_ratio": kv.N,
+                                      "resonance_speed_rpm": kv.n_E1, "N_S": kv.N_S},
                    "files": {k: str(v) for k, v in files.items()}})
         return 0
-    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s}  (DTE: dynamic transmission error)")
-    for r, f, d in zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms):
-        print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f}")
+    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s} {'K_v femgear':>11s} {'K_v ISO B':>9s} {'N':>6s}"
+          "  (DTE: dynamic transmission error)")
+    for i, (r, f, d) in enumerate(zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms)):
+        print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f} {np.nanmax(kv.femgear[:, i]):11.4f} {kv.iso[i]:9.4f} {kv.N[i]:6.3f}")
     _print_modes(modal)
     for x, k, f in marks:
         print(f"resonance in range: f_m = {x:.1f} Hz, mesh harmonic {k} meets the natural frequency {f:.1f} Hz")
     for name, path in files.items():
         print(f"{name}: {path}")
     return 0
+
+
+def _dynamic_factor(case, sw, out: Path, files: dict, plots: bool):
+    """K_v over the sweep, femgear's beside ISO 6336-1 method B (:func:`femgear.rate.dynamic_factor_curve`); with
+    ``plots`` its figure ``dynamics_K_v.png`` goes into ``files``."""
+    from femgear.rate import dynamic_factor_curve
+
+    kv = dynamic_factor_curve(case, sw.speed_rpm, sw.amplitudes)
+    if plots:
+        from femgear.edge.io.figures import save_figure
+        from femgear.edge.plot.rating import plot_dynamic_factor
+
+        files["dynamic_factor"] = save_figure(plot_dynamic_factor(kv, f"{case.name}: dynamic factor K_v, femgear's "
+                                                                      "dynamics beside ISO 6336-1 method B"),
+                                              out / "dynamics_K_v.png")
+    return kv
 
 
 def _kahraman_singh(args, out: Path) -> int:

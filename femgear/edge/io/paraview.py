@@ -6,8 +6,8 @@ file renamed into place), the ``.pvd`` last, so that a collection that exists is
 
 :func:`write_run_paraview` writes the main job (:class:`femgear.results.RunResult`):
 
-- ``flanks.pvd``: the active flank of one tooth of each member, both helices, as a
-  surface over (profile, face width), with the fields along the path of contact
+- ``flanks.pvd``: the active flank of one tooth of each member, both helices (the one helix of a
+  single-helical or spur pair, in the mid-plane), as a surface over (profile, face width), with the fields along the path of contact
   mapped onto it by radius: ``hertz_pressure`` [Pa], ``film_central``,
   ``film_minimum`` [m], ``load_per_length`` [N/m], ``sliding_speed`` [m/s] and, where
   the scene computes them, ``friction_coefficient`` [-], ``temperature_rise`` [K],

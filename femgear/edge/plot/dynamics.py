@@ -56,11 +56,21 @@ def plot_time_histories(res: Response, cycles: float = 5.0, name: str = ""):
 
 
 def plot_mesh_force(res: Response, cycles: float = 5.0, name: str = ""):
-    """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference."""
+    """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference; a pair with
+    one mesh (single-helical, spur: the right helix carries nothing) shows its one force."""
     plt = pyplot()
     sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
     left, right = res.mesh_force[sel, 0], res.mesh_force[sel, 1]
+    if not np.any(res.mesh_force[:, 1]):
+        fig, ax = plt.subplots(figsize=(8, 4))
+        ax.plot(t_ms, left, color="C0", lw=1.5, label="the mesh (one helix)")
+        ax.set_ylabel("dynamic mesh force N [N]")
+        ax.set_xlabel(TIME_LABEL)
+        ax.grid(alpha=0.3)
+        ax.legend()
+        fig.suptitle(_title(name, f"dynamic mesh force (normal to the flank), last {cycles:g} mesh periods"))
+        return fig
     fig, (ax, ax_d) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
     ax.plot(t_ms, left, color="C0", lw=2.5, alpha=0.6, label="left helix")
     ax.plot(t_ms, right, color="C3", lw=1.2, ls="--", label="right helix")

@@ -19,6 +19,7 @@ from femgear.docfields import document_fields
 from femgear.physics.body.fillet import FilletStress
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.rating.bending import BendingInputs, BendingRating, bending_rating
+from femgear.physics.rating.load_factors import RatingFactors
 from femgear.physics.rating.micropitting import MicropittingRating, micropitting_rating
 from femgear.physics.rating.permissible import PittingRating
 from femgear.physics.rating.scuffing import ScuffingInputs, ScuffingRating, scuffing_rating
@@ -73,6 +74,8 @@ class PairRating:
     """the ``[rating]`` keys that took their documented default [-]"""
     own: OwnFigures | None = None
     """femgear's own film, specific film, contact temperature and FE fillet stress beside the ISO figures [-]"""
+    factors: RatingFactors | None = None
+    """K_v, K_Hβ, K_Hα the ratings used, each with its source and ISO 6336-1's value beside (None: not bound) [-]"""
 
     @property
     def safety_factors(self) -> dict[str, float]:

@@ -46,7 +46,7 @@ class Amplitudes(Mapping[str, float]):
 
     ``<member>.displacement|velocity.x|y|z`` and ``<member>.torsion_velocity`` for the member
     centres (pinion, gear), ``<half>.displacement.x|y|z`` for the four helix halves,
-    ``mesh_force.L|R.mean|amplitude``, ``contact_loss_fraction.L|R``,
+    ``mesh_force.L|R.mean|amplitude|max``, ``contact_loss_fraction.L|R``,
     ``bearing_acceleration.<station>.peak`` and ``dte_rms`` (SI; amplitudes are half
     peak-to-peak).  The flat names are the JSON contract of ``dynamics.amplitudes``.
     """
@@ -284,12 +284,14 @@ def analyse(sim: Simulation, transient_cycles: float = 50.0) -> Response:
         amps[f"mesh_force.{side}.mean"] = float(N[:, s].mean())
         if loss > 0:
             amp = half_peak_to_peak(N[:, s])
+            hi = float(_refined_extreme(N[:, s:s + 1], 1.0)[0])
         else:      # Hermite between the samples, and the corners at the stiffness table's knots
             hi, lo = hermite_extremes(N[:, s], dN[:, s], dt)
             if Nk.shape[0]:
                 hi, lo = max(float(hi), Nk[:, s].max()), min(float(lo), Nk[:, s].min())
             amp = 0.5 * (hi - lo)
         amps[f"mesh_force.{side}.amplitude"] = float(amp)
+        amps[f"mesh_force.{side}.max"] = float(hi)
         amps[f"contact_loss_fraction.{side}"] = loss
     for j, station in enumerate(("pinion_L", "pinion_R", "gear_L", "gear_R")):
         amps[f"bearing_acceleration.{station}.peak"] = float(np.max(np.linalg.norm(bearing[:, j, :2], axis=1)))
