@@ -149,6 +149,7 @@ CUSTOM: dict[tuple[str, str], tuple[str, str]] = {
         "oil_type": ("none", "string"), "scuffing_load_stage": ("none", "floating_point"),
         "micropitting_load_stage": ("none", "floating_point"), "lubrication_method": ("none", "string"),
         "structural_factor": ("none", "floating_point"), "fillet_fe": ("none", "boolean"),
+        "load_factors": ("none", "string"), "accuracy_grade": ("none", "integer"),
         # the [physics] levels
         **{f"physics_{level}": ("none", "string")
            for level in ("stiffness", "lubrication", "thermal", "wear", "dynamics", "coupling")},

@@ -23,7 +23,8 @@ from femgear.rexs.units import normalise
 STAGE_KEYS = ("application_factor", "dynamic_factor", "face_load_factor", "transverse_load_factor",
               "contact_stress_limit", "min_safety_factor", "life_hours", "work_hardening_factor", "size_factor",
               "bending_stress_limit", "bending_min_safety_factor", "finishing", "oil_type", "scuffing_load_stage",
-              "micropitting_load_stage", "lubrication_method", "structural_factor", "fillet_fe")
+              "micropitting_load_stage", "lubrication_method", "structural_factor", "fillet_fe",
+              "load_factors", "accuracy_grade")
 NU40 = "custom_femgear_rating_oil_viscosity_40"
 MARKER = "custom_femgear_lubrication_method"     #: always written by femgear's export
 MEMBER_KEYS = ("root_roughness_rz", "roughness_ra")

@@ -101,6 +101,16 @@ SECTIONS: dict[str, Section] = {
         **_keys("micropitting", TEXT, "method"),
         **_keys("micropitting.femgear", NUMBER, "min_film lambda_min lambda_min_position"),
         **_keys("micropitting.femgear", TEXT, "film")}, when="where the ISO ratings could be computed"),
+    "load_factors": Section({
+        **_keys("load_factors.*", NUMBER, "value iso"), **_keys("load_factors.*", NUMBER, "femgear", optional=True),
+        **_keys("load_factors.*", TEXT, "source iso_method note"),
+        **_keys("load_factors.K_v", LIST, "helices"),
+        **_keys("load_factors.K_v", NUMBER, "resonance_ratio resonance_speed_rpm N_S B_p B_f B_k tip_relief"),
+        **_keys("load_factors.K_v", TEXT, "regime"),
+        **_keys("load_factors.K_Hbeta", NUMBER, "F_beta_x F_beta_y y_beta crowning c_gamma_beta"),
+        **_keys("load_factors.accuracy_grade", NUMBER, "grade f_pb"),
+        **_keys("load_factors.accuracy_grade", PAIR, "f_pt f_falpha f_Hbeta")},
+        when="where the ISO ratings could be computed"),
     "power_loss": Section({**_keys("power_loss", NUMBER, "mean_loss input_power efficiency energy_per_mesh_cycle "
                                                          "ohlendorf_HV equivalent_mu max_loss_density "
                                                          "mean_friction_coefficient"),
@@ -127,7 +137,7 @@ SECTIONS: dict[str, Section] = {
                                               "nlte_peak_to_peak nlte_max stiffness_mean stiffness_ripple "
                                               "load_share_left load_share_right load_balance_error max_pressure "
                                               "max_pressure_interior max_pressure_phase "
-                                              "max_pressure_u max_pressure_zeta resolved_orders"),
+                                              "max_pressure_u max_pressure_zeta resolved_orders helices"),
         **_keys("transmission_error", NUMBER, "lte_peak_to_peak_refined lte_left_peak_to_peak lte_right_peak_to_peak "
                                               "lte_peak_to_peak_deviated", optional=True),
         **_keys("transmission_error", LIST, "lte_harmonics lte_harmonics_orders"),
