@@ -269,7 +269,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         stagger=case.stagger, profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb,
         rayleigh=(a0, a1), geometry=geom, nominal_rate=rate, flexible_modes_hz=tuple(wflex / (2 * math.pi)),
         half_spacing=half, v_reg=case.friction.regularisation_speed if v_reg is None else v_reg,
-        load_stiffness=load_stiffness, base_deviation=tooth_contact_deviation(source),
+        load_stiffness=load_stiffness, bearings=st.bearings, base_deviation=tooth_contact_deviation(source),
     )
     if friction is None:
         from femgear.levels.lubrication import static_friction

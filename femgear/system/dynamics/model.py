@@ -51,6 +51,7 @@ from femgear.physics.excitation import Eccentricity, ProfileError, RandomError, 
 from femgear.physics.geometry import GearPair
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import FrictionTable, MeshGeometry, StiffnessTable, periodic_interp, periodic_slope
+from femgear.system.dynamics.structure import Bearings
 
 
 @dataclass(frozen=True)
@@ -131,6 +132,7 @@ class GearRotorModel:
     half_spacing: float             #: z of the helix centres [m]
     v_reg: float                    #: friction regularisation speed [m/s]
     load_stiffness: float           #: power-loop stiffness [N m/rad]
+    bearings: Bearings              #: springs, dashpots and positions of the four bearing stations
     #: flank deviations of the drive and coast flanks per helix over one mesh period
     deviation: MeshDeviation | None = None
     #: the part of ``deviation`` that belongs to the tooth geometry (the unloaded TE of the

@@ -9,6 +9,8 @@ Definitions (SI):
   and at the knots of a piecewise-linear stiffness table (its corners, the state there from
   the Hermite interpolants), else by a 3-point parabola through the extreme sample;
 - member displacement = mean of its two halves (the member's centre);
+- bearing loads = the force of the shaft on each bearing, radial x, y and axial z, with mean,
+  peak-to-peak and mesh orders (:mod:`femgear.system.dynamics.bearings`);
 - bearing acceleration = acceleration of the shaft at the bearing stations (the
   housing itself is rigid ground in this model; it is the quantity an accelerometer
   on a stiff housing sees, up to the housing's own transfer function);
@@ -27,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from femgear.docfields import document_fields
+from femgear.system.dynamics.bearings import BearingLoads, bearing_loads
 from femgear.system.dynamics.integrate import Simulation
 from femgear.system.dynamics.layout import BODIES
 
@@ -97,6 +100,9 @@ class Response:
     amplitudes: Amplitudes = field(default_factory=Amplitudes)
     """steady-state figures by name (:class:`Amplitudes`; amplitudes are half peak-to-peak, SI by quantity: displacement
     m, velocity m/s, acceleration m/s², force N) [m, m/s, m/s², N]"""
+    bearings: BearingLoads | None = None
+    """loads of the four bearing stations over the record: history, mean, peak-to-peak, mesh orders
+    (:func:`femgear.system.dynamics.bearings.bearing_loads`) [N]"""
 
     @property
     def dte(self) -> np.ndarray:
@@ -258,7 +264,8 @@ def analyse(sim: Simulation, transient_cycles: float = 50.0) -> Response:
     bearing = (acc @ model.bearing_map.T).reshape(t.size, 4, 3)
     x_full, v_full = q @ model.T.T, v @ model.T.T
     resp = Response(t=t, displacement=x_full, velocity=v_full, delta=delta, mesh_force=N,
-                    bearing_acceleration=bearing, mesh_frequency=model.mesh_frequency)
+                    bearing_acceleration=bearing, mesh_frequency=model.mesh_frequency,
+                    bearings=bearing_loads(model, t, q, v))
     amps: dict = {}
     a_full = acc @ model.T.T
     for i, name in enumerate(MEMBERS):

@@ -27,6 +27,20 @@ from femgear.scene.schema import Material, Member
 from femgear.system.dynamics.layout import NDOF, point_jacobian, tie_matrix
 from femgear.system.dynamics.timoshenko import ShaftSection, guyan, shaft_element
 
+#: the four bearing stations, in the order of every (4, …) bearing array
+STATIONS = ("pinion_L", "pinion_R", "gear_L", "gear_R")
+
+
+@dataclass(frozen=True)
+class Bearings:
+    """The four bearing stations (:data:`STATIONS`): a linear spring and dashpot per direction x, y (radial) and
+    z (axial) between the shaft and the rigid housing; none restrains a rotation."""
+
+    stiffness: np.ndarray    #: (4, 3) spring per station and direction x, y, z [N/m]
+    damping: np.ndarray      #: (4, 3) dashpot per station and direction [N s/m]
+    z: np.ndarray            #: (4,) axial station position in its member's frame (face centre at 0) [m]
+    centre: np.ndarray       #: (4, 3) the station's point on the shaft axis in the model frame [m]
+
 
 @dataclass(frozen=True)
 class Structure:
@@ -36,6 +50,7 @@ class Structure:
     T: np.ndarray            #: (24, n): full = T @ reduced
     bearing_map: np.ndarray  #: (12, n): displacements of the four bearing stations
     M24: np.ndarray          #: 24×24 diagonal mass of the halves (before any shaft mass)
+    bearings: Bearings       #: springs, dashpots and positions of the stations
 
 
 def require_positive(value: float, key: str) -> float:
@@ -126,4 +141,8 @@ def assemble_structure(members: tuple[Member, Member], material: Material, pair:
         Cb = Tg.T @ Cfull @ Tg
         T = np.eye(NDOF)
         bearing_map = np.vstack([Tg[node:node + 3] for node in bearing_nodes])
-    return Structure(M=M, K=K, C=Cb, T=T, bearing_map=bearing_map, M24=M24)
+    zb = np.array([[-bearing_span[m] / 2, bearing_span[m] / 2] for m in range(2)]).ravel()
+    bearings = Bearings(stiffness=np.array([np.diag(Kb_list[j // 2]) for j in range(4)]),
+                        damping=np.array([np.diag(Cb_list[j // 2]) for j in range(4)]), z=zb,
+                        centre=np.column_stack([[0.0, 0.0, pair.a_w, pair.a_w], np.zeros(4), zb]))
+    return Structure(M=M, K=K, C=Cb, T=T, bearing_map=bearing_map, M24=M24, bearings=bearings)
