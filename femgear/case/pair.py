@@ -24,7 +24,6 @@ import math
 from dataclasses import replace
 
 from femgear.errors import SceneError
-from femgear.levels import dynamics as dynamics_levels
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.geometry.involute import inv
 
@@ -50,10 +49,6 @@ def _check_kind(scene) -> None:
                 raise SceneError(f"{name}.axial_stiffness",
                                  "a single-helical pair needs the axial (thrust) bearing stiffness of each member: "
                                  "its axial mesh force is not balanced by a second helix")
-    if p.kind != "double-helical" and dynamics_levels.spec(scene.physics.dynamics).shaft_elements:
-        raise SceneError("physics.dynamics",
-                         f"the timoshenko level joins two helix halves by shaft elements; a {p.kind} pair has one "
-                         "mesh in the mid-plane: use physics.dynamics = 'lumped'")
 
 
 def rack_coefficients(pair_table) -> tuple[float, float, float]:

@@ -23,7 +23,8 @@ pinion/gear.tip_diameter        0.8–1.25 × m_n (z/cos β + 2)           0.5�
 pair.centre_distance            0.8–1.25 × reference a                 0.5–2 × (z1 + z2) m_n / (2 cos β)
 pinion/gear.bore_radius         —                                      < reference radius
 pinion/gear.shaft_diameter      ≤ d_a                                  ≤ 10 d_a
-pinion/gear.bearing_span        ≥ the member's total face width        ≤ 200 d_a
+pinion/gear.bearing_span        ≤ 50 d_a                               ≥ the member's total face width,
+                                                                       ≤ 200 d_a
 oil.viscosity                   1e-3–1 Pa s                            1e-4–5 Pa s
 oil.pressure_viscosity          5e-9–6e-8 1/Pa                         1e-9–1e-7 1/Pa
 oil.temperature_viscosity       ≤ 0.1 1/K                              ≤ 0.5 1/K
@@ -148,9 +149,9 @@ def _size_ranges(scene) -> list[Range]:
                          "m", f"the shaft of this {n} (tip diameter ≈ {_fmt(d_a * 1e3)} mm)", MM))
         width = (member.face_width or p.face_width) * (2 if p.kind == "double-helical" else 1)
         width += p.groove_width if p.kind == "double-helical" else 0.0
-        out.append(Range(f"{n}.bearing_span", member.bearing_span, (0.0, 200 * d_a), (width, 50 * d_a), "m",
-                         f"the bearing span of this {n} (its toothed width is {_fmt(width * 1e3)} mm: "
-                         "the bearings sit outside it)", MM))
+        out.append(Range(f"{n}.bearing_span", member.bearing_span, (width, 200 * d_a), (width, 50 * d_a), "m",
+                         f"the bearing span of this {n} (its toothed width is {_fmt(width * 1e3)} mm: the shaft "
+                         "between the bearings is longer, the bearings sit outside the teeth)", MM))
     return out
 
 

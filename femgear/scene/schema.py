@@ -108,7 +108,7 @@ class Member(_Frozen):
                          "the LTCA body half the shaft_diameter")
     support_stiffness: Pos = Field(
         description="bearing stiffness of the WHOLE member (the sum of its two bearings) in each direction x, y "
-                    "and, without axial_stiffness, z [N/m]; each of the two bearings at ±bearing_span/2 gets half")
+                    "and, without axial_stiffness, z [N/m]; each of the two bearings gets half")
     support_damping: NonNeg = Field(
         0.0, description="bearing damping of the WHOLE member (the sum of its two bearings) per direction, split "
                          "like support_stiffness [N s/m]")
@@ -116,7 +116,19 @@ class Member(_Frozen):
                     "rotation [m]")
     eccentricity_phase_deg: float = Field(0.0, description="phase θ of the eccentricity at t = 0 [deg]")
     unbalance: NonNeg = Field(0.0, description="mass unbalance U = m·e (rotating force U Ω²) [kg m]")
-    bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings, symmetric about the mid-plane [m]")
+    bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings (the shaft "
+                                                "between them must be longer than the toothed face) [m]")
+    face_offset: float = Field(
+        0.0, description="axial position of the toothed face's centre (the mesh station; a double-helical pair's "
+                         "groove centre) from the midpoint of the two bearings, towards the right bearing (+z) [m]: "
+                         "0 = symmetric straddle; |face_offset| < (bearing_span − face)/2 straddle, "
+                         "> (bearing_span + face)/2 overhung (both bearings on one side); a bearing under the "
+                         "toothed face is refused")
+    thrust_bearing: Literal["both", "left", "right"] = Field(
+        "both", description="which radial bearing also carries the axial load (axial_stiffness, axial_damping): "
+                            "'both' split equally (as a pair of angular-contact or tapered bearings), 'left' "
+                            "(the bearing at −z, station <member>_L) or 'right' (+z) alone, the other floating "
+                            "axially [-]")
     shaft_diameter: Pos = Field(0.040, description="diameter of the member's solid shaft [m]: the Timoshenko shaft elements between the bearings "
                     "(timoshenko dynamics level) and the LTCA body's bore when bore_radius = 0")
 

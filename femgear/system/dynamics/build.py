@@ -20,6 +20,7 @@ import numpy as np
 from scipy.linalg import eigh
 
 from femgear.case import Case
+from femgear.case.checks import bearing_stations, toothed_width
 from femgear.errors import SceneError
 from femgear.levels import dynamics as dynamics_levels
 from femgear.levels import stiffness as stiffness_levels
@@ -226,15 +227,11 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         raise SceneError("physics.dynamics", f"level {dyn.name!r} has no rotor model; choose a dynamic level")
     bearing_span = bearing_span or tuple(m.bearing_span for m in members)
     shaft_diameter = shaft_diameter or tuple(m.shaft_diameter for m in members)
-    # helix centres at ±half; a pair with one mesh (spur, single helix) meshes in the mid-plane: the
+    # helix centres at ±half; a pair with one mesh (spur, single helix) meshes in the mid-plane of its face: the
     # two "halves" coincide and the right one carries no mesh (k_right = 0 from the stiffness level)
     half = 0.5 * (pair.b + case.groove_width) if pair.n_helices == 2 else 0.0
-    if pair.n_helices == 1 and dyn.shaft_elements:
-        raise SceneError("physics.dynamics", f"a {pair.kind} pair (one mesh) runs with the lumped dynamics level")
-    for name, span in zip(("pinion", "gear"), bearing_span):
-        if not span > 2 * half:
-            raise SceneError(f"{name}.bearing_span",
-                             f"must exceed the distance of the helix centres {2 * half:.4g} m (got {span!r})")
+    stations = tuple(bearing_stations(name, span, m.face_offset, toothed_width(case.scene, name))
+                     for name, span, m in zip(("pinion", "gear"), bearing_span, members))
     load_stiffness = case.operating.loop_stiffness if load_stiffness is None else load_stiffness
     if load_stiffness < 0:
         raise ValueError(f"load_stiffness must be non-negative (got {load_stiffness!r})")
@@ -242,7 +239,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     if b0 < 0:
         raise ValueError(f"backlash must be non-negative (got {b0!r})")
 
-    st = assemble_structure(members, case.material, pair, dyn.shaft_elements, bearing_span, shaft_diameter, half)
+    st = assemble_structure(members, case.material, pair, dyn.shaft_elements, stations, shaft_diameter, half)
     K = st.K + (loop_spring(pair, st.T, load_stiffness) if load_stiffness > 0 else 0.0)
     geom = mesh_geometry(pair, half)
     G = geom.g @ st.T
