@@ -36,6 +36,8 @@ operating.speed_rpm             pitch-line speed ≥ 0.1 m/s             ≥ 1 m
 operating.torque                (Hertz pressure: plausibility)         nominal σ_H0 ≤ 8 GPa
 pinion/gear.eccentricity        ≤ backlash and ≤ ISO 1328 class-11     < m_n
                                 runout F_r/2
+pinion/gear.cumulative_pitch_   ≤ ISO 1328 class-11 F_p/2              < m_n
+  error
 errors.profile_error, .random   ≤ ISO 1328 class-12 f_fα               < m_n / 4
 pair.backlash                   ≤ 0.2 m_n                              < m_n
 pinion/gear.unbalance           —                                      unbalance/mass < tip radius
@@ -212,6 +214,10 @@ def _error_ranges(scene) -> list[Range]:
                          f"the eccentricity of this {n} (backlash {_fmt(p.backlash * 1e6)} µm: the teeth lose "
                          f"contact or jam once per revolution above it; ISO 1328 class 11 runout F_r/2 = "
                          f"{_fmt(F_r11 / 2 * 1e6)} µm)", UM_MM))
+        F_p11 = F_r11 / 0.8
+        out.append(Range(f"{n}.cumulative_pitch_error", member.cumulative_pitch_error, (0.0, m), (0.0, F_p11 / 2),
+                         "m", f"the cumulative pitch deviation of this {n} (ISO 1328 class 11 F_p/2 = "
+                              f"{_fmt(F_p11 / 2 * 1e6)} µm)", UM_MM))
         r_a = d / 2 + m
         out.append(Range(f"{n}.unbalance", member.unbalance, (0.0, member.mass * r_a), (0.0, member.mass * r_a),
                          "kg m", f"this {n}'s unbalance (mass × tip radius = {_fmt(member.mass * r_a)} kg m)",

@@ -116,6 +116,12 @@ class Member(_Frozen):
                     "rotation [m]")
     eccentricity_phase_deg: float = Field(0.0, description="phase θ of the eccentricity at t = 0 [deg]")
     unbalance: NonNeg = Field(0.0, description="mass unbalance U = m·e (rotating force U Ω²) [kg m]")
+    cumulative_pitch_error: NonNeg = Field(
+        0.0, description="amplitude A of a once-per-revolution cumulative pitch deviation along the line of action: "
+                         "tooth n sits A sin(2π n/z + φ) ahead (a sinusoidal pattern of ISO 1328's F_p = 2 A), seen "
+                         "tooth by tooth in the mesh [m]")
+    cumulative_pitch_phase_deg: float = Field(0.0, description="phase φ of the cumulative pitch deviation, at the tooth "
+                                                               "in mesh at t = 0 [deg]")
     bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings (the shaft "
                                                 "between them must be longer than the toothed face) [m]")
     face_offset: float = Field(

@@ -12,6 +12,7 @@ import numpy as np
 from femgear.edge.io.atomic import write_bytes_atomic
 from femgear.edge.io.results import write_json
 from femgear.system.dynamics.bearings import BearingLoads
+from femgear.system.dynamics.orders import Sidebands
 from femgear.system.dynamics.run import DynamicsRun
 
 
@@ -39,7 +40,26 @@ def dynamics_summary(run: DynamicsRun) -> dict[str, Any]:
         "modes": [{"frequency_hz": float(f), "dominant": modal.dominant_group(i),
                    "mesh_energy": float(modal.energy["mesh"][i])} for i, f in enumerate(modal.frequencies)],
         **({} if run.response.bearings is None else {"bearing_forces": bearing_summary(run.response.bearings)}),
+        **({"sidebands": {sb.member: sideband_summary(sb, run.response) for sb in run.response.sidebands}}
+           if run.response.sidebands else {}),
     }
+
+
+def sideband_summary(sb: Sidebands, res) -> dict[str, Any]:
+    """``sidebands.<member>``: the lines k f_m + j f_s of the member (f_s its shaft frequency) per signal
+    (``dte`` [m], ``mesh_force_L/R`` [N], ``bearing_<station>_x/y`` [N]): ``lines`` (K rows of mesh orders
+    ``mesh_orders``, columns of sideband orders ``sides``, 0 the mesh order itself), ``shaft_orders`` (j f_s,
+    j = 1 … J); amplitudes are half peak-to-peak.  A record shorter than one revolution of the member reports
+    ``resolved: false`` with the mesh periods a revolution needs."""
+    out: dict[str, Any] = {"shaft_frequency_hz": sb.shaft_frequency, "resolved": sb.revolutions > 0,
+                           "revolutions": sb.revolutions, "mesh_orders": list(sb.mesh_orders), "sides": list(sb.sides)}
+    if not sb.revolutions:
+        recorded = float((res.t[-1] - res.t[0]) * res.mesh_frequency)
+        out.update(needs_mesh_periods=round(res.mesh_frequency / sb.shaft_frequency), recorded_mesh_periods=recorded)
+        return out
+    out["lines"] = {k: v.tolist() for k, v in sb.lines.items()}
+    out["shaft_orders"] = {k: v.tolist() for k, v in sb.shaft_orders.items()}
+    return out
 
 
 def bearing_summary(loads: BearingLoads) -> dict[str, Any]:

@@ -24,7 +24,7 @@ from femgear.case.checks import bearing_stations, toothed_width
 from femgear.errors import SceneError
 from femgear.levels import dynamics as dynamics_levels
 from femgear.levels import stiffness as stiffness_levels
-from femgear.physics.excitation import Eccentricity, ProfileError, RandomError, Unbalance
+from femgear.physics.excitation import CumulativePitchError, Eccentricity, ProfileError, RandomError, Unbalance
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import (
     MeshGeometry,
@@ -186,6 +186,14 @@ def excitations(case: Case, omega: tuple[float, float], fm: float):
     return profile, rnd, ecc, unb
 
 
+def pitch_errors(case: Case, fm: float) -> tuple[tuple[CumulativePitchError, ...], ...]:
+    """Per helix (its mesh offset: the stagger), the cumulative pitch deviations of the members that have one."""
+    members = [(m.cumulative_pitch_error, z, math.radians(m.cumulative_pitch_phase_deg))
+               for m, z in zip(case.members, (case.pair.z1, case.pair.z2))]
+    return tuple(tuple(CumulativePitchError(a, fm, z, phi, off) for a, z, phi in members if a > 0)
+                 for off in (0.0, case.stagger))
+
+
 def rayleigh_damping(M: np.ndarray, K_struct: np.ndarray, K_mean: np.ndarray, ratio: float):
     """a0 M_f + a1 K_struct on the two lowest flexible modes of the mean system.
 
@@ -267,6 +275,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         rayleigh=(a0, a1), geometry=geom, nominal_rate=rate, flexible_modes_hz=tuple(wflex / (2 * math.pi)),
         half_spacing=half, v_reg=case.friction.regularisation_speed if v_reg is None else v_reg,
         load_stiffness=load_stiffness, bearings=st.bearings, base_deviation=tooth_contact_deviation(source),
+        pitch_errors=pitch_errors(case, fm),
     )
     if friction is None:
         from femgear.levels.lubrication import static_friction

@@ -9,6 +9,9 @@ leakage between lines whose spacing the record resolves (record length T ≥ 1/�
 that the record does not resolve (two lines closer than 1/T) is refused rather than split
 arbitrarily (:func:`resolves`).
 
+:func:`sidebands` reads the mesh orders with their sidebands k f_m ± j f_s of one member over its whole
+revolutions (the signature of eccentricity, run-out and once-per-revolution pitch errors).
+
 The mesh orders alone are fitted over the largest whole number of mesh periods at the end of the
 record (:func:`mesh_orders`), where the lines are orthogonal and content between them (a shaft
 order) leaks least.
@@ -17,8 +20,11 @@ order) leaks least.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
+
+from femgear.docfields import document_fields
 
 #: mesh orders reported by default (1 … ORDERS)
 ORDERS = 6
@@ -26,9 +32,9 @@ ORDERS = 6
 
 def resolves(t: np.ndarray, frequencies: np.ndarray) -> bool:
     """Whether a record at times ``t`` [s] separates the lines ``frequencies`` [Hz]: every two of them (and
-    the mean, f = 0) are at least 1/T apart, T the record length."""
+    the mean, f = 0) are at least 1/T apart, T the record length (n uniform samples: n steps)."""
     f = np.sort(np.concatenate([[0.0], np.abs(np.asarray(frequencies, dtype=float))]))
-    span = float(t[-1] - t[0])
+    span = float(t[-1] - t[0]) * t.size / max(t.size - 1, 1)      # n samples cover n steps
     return span > 0 and bool(np.all(np.diff(f) * span >= 1.0 - 1e-9))
 
 
@@ -64,7 +70,8 @@ def whole_periods(t: np.ndarray, frequency: float) -> np.ndarray:
     periods = math.floor(span * frequency + 1e-6)
     if periods < 1:
         return np.ones(t.size, bool)
-    return t >= t[-1] - periods / frequency - 1e-9 * span
+    dt = span / max(t.size - 1, 1)
+    return t > t[-1] - periods / frequency + 0.5 * dt          # the window's first sample is its last, once
 
 
 def mesh_orders(x: np.ndarray, t: np.ndarray, mesh_frequency: float, orders: int = ORDERS) -> np.ndarray:
@@ -72,3 +79,54 @@ def mesh_orders(x: np.ndarray, t: np.ndarray, mesh_frequency: float, orders: int
     :func:`line_fit` over the record's last whole mesh periods."""
     sel = whole_periods(t, mesh_frequency)
     return np.abs(line_fit(np.asarray(x)[sel], t[sel], mesh_frequency * np.arange(1, orders + 1))[1])
+
+
+#: sidebands reported by default: mesh orders 1 … SIDEBAND_ORDERS, sidebands ±1 … ±SIDEBANDS shaft orders
+SIDEBAND_ORDERS, SIDEBANDS = 3, 2
+
+
+@document_fields
+@dataclass(frozen=True)
+class Sidebands:
+    """The lines k f_m + j f_s of one member (f_s its shaft frequency) in recorded signals, over whole revolutions."""
+
+    member: str
+    """the member whose shaft frequency f_s the lines are of ("pinion", "gear") [-]"""
+    shaft_frequency: float
+    """f_s = f_m / z of the member [Hz]"""
+    revolutions: int
+    """whole revolutions of the member fitted (0: the record is shorter than one, nothing is reported) [-]"""
+    mesh_orders: tuple
+    """mesh orders k = 1 … K of the rows [-]"""
+    sides: tuple
+    """sideband orders j = −J … J of the columns (0: the mesh order itself) [-]"""
+    lines: dict
+    """signal name → (K, 2J + 1) amplitudes (half peak-to-peak) of the lines k f_m + j f_s [unit of the signal]"""
+    shaft_orders: dict
+    """signal name → (J,) amplitudes of the shaft orders j f_s, j = 1 … J [unit of the signal]"""
+
+
+def sidebands(signals: dict[str, np.ndarray], t: np.ndarray, mesh_frequency: float, teeth: int, member: str,
+              orders: int = SIDEBAND_ORDERS, sides: int = SIDEBANDS) -> Sidebands:
+    """The mesh orders, their sidebands ±1 … ±``sides`` shaft orders and the shaft orders 1 … ``sides`` of
+    ``member`` (``teeth`` z) in each of ``signals`` (name → (n_t,) samples at ``t``), fitted together
+    (:func:`line_fit`) over the record's last whole revolutions of the member.  Every line of a signal that
+    repeats once per revolution is a multiple of f_s, so over whole revolutions the fit separates them
+    exactly; lines of the other member leak in only as far as its revolutions do not close."""
+    f_s = mesh_frequency / teeth
+    j = np.arange(-sides, sides + 1)
+    k = np.arange(1, orders + 1)
+    span = float(t[-1] - t[0])
+    revolutions = math.floor(span * f_s + 1e-6)
+    empty = Sidebands(member, f_s, 0, tuple(int(x) for x in k), tuple(int(x) for x in j), {}, {})
+    if revolutions < 1 or sides >= teeth / 2:
+        return empty
+    sel = whole_periods(t, f_s)
+    freqs = np.concatenate([(k[:, None] * teeth + j[None, :]).ravel(), np.arange(1, sides + 1)]) * f_s
+    names = list(signals)
+    _, X = line_fit(np.column_stack([signals[n] for n in names])[sel], t[sel], freqs)
+    amp = np.abs(X)
+    n_side = k.size * j.size
+    return Sidebands(member, f_s, revolutions, empty.mesh_orders, empty.sides,
+                     {n: amp[:n_side, i].reshape(k.size, j.size) for i, n in enumerate(names)},
+                     {n: amp[n_side:, i] for i, n in enumerate(names)})

@@ -32,6 +32,7 @@ from femgear.docfields import document_fields
 from femgear.system.dynamics.bearings import BearingLoads, bearing_loads
 from femgear.system.dynamics.integrate import Simulation
 from femgear.system.dynamics.layout import BODIES
+from femgear.system.dynamics.orders import Sidebands, sidebands
 
 MEMBERS = ("pinion", "gear")
 AXES = ("x", "y", "z")
@@ -103,6 +104,10 @@ class Response:
     bearings: BearingLoads | None = None
     """loads of the four bearing stations over the record: history, mean, peak-to-peak, mesh orders
     (:func:`femgear.system.dynamics.bearings.bearing_loads`) [N]"""
+    sidebands: tuple[Sidebands, ...] = ()
+    """per member (pinion, gear) the lines k f_m ± j f_s of the DTE, the mesh forces and its bearing loads
+    (:func:`femgear.system.dynamics.orders.sidebands`; empty where the record is shorter than a revolution)
+    [m, N]"""
 
     @property
     def dte(self) -> np.ndarray:
@@ -301,4 +306,19 @@ def analyse(sim: Simulation, transient_cycles: float = 50.0) -> Response:
     for j, station in enumerate(("pinion_L", "pinion_R", "gear_L", "gear_R")):
         amps[f"bearing_acceleration.{station}.peak"] = float(np.max(np.linalg.norm(bearing[:, j, :2], axis=1)))
     amps["dte_rms"] = float(np.sqrt(np.mean(resp.dte**2)))
-    return Response(**{**resp.__dict__, "amplitudes": Amplitudes(amps)})
+    return Response(**{**resp.__dict__, "amplitudes": Amplitudes(amps), "sidebands": _sidebands(model, resp)})
+
+
+def _sidebands(model, resp: Response) -> tuple[Sidebands, ...]:
+    """Per member the sidebands of the DTE, the mesh force of each loaded helix and the radial loads of its
+    bearing stations."""
+    out = []
+    for member, z in enumerate((model.pair.z1, model.pair.z2)):
+        signals = {"dte": resp.dte, "mesh_force_L": resp.mesh_force[:, 0]}
+        if np.any(model.stiffness.k_right > 0):                 # a pair with one mesh has no right helix
+            signals["mesh_force_R"] = resp.mesh_force[:, 1]
+        for j in (2 * member, 2 * member + 1):
+            for d, axis in enumerate("xy"):
+                signals[f"bearing_{resp.bearings.stations[j]}_{axis}"] = resp.bearings.force[:, j, d]
+        out.append(sidebands(signals, resp.t, model.mesh_frequency, z, MEMBERS[member]))
+    return tuple(out)
