@@ -11,8 +11,9 @@ A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
 - ``ok`` — exit 0 and the invariants hold: the time-mean load along the path carries the
   normal force (helical: b/(p_bt cos β_b) ∫ w̄ du = F_n per helix, to 2 %; spur, whose load jumps
   at B and D: w̄ b = F_n inside the single-contact zone; ``ltca``, whose w̄ is the mean over the
-  phases that load u: the LTCA's own force balance per phase, to 1e-6), with dynamics the mean bearing
-  loads of each member balance the mean mesh force on it (radially and axially, to 1 %), films positive,
+  phases that load u: the LTCA's own force balance per phase, to 1e-6), the mean bearing loads of each
+  member balance the mean mesh force on it (radially and axially, to 1 %; without dynamics the static loads
+  the static normal force), films positive,
   contact temperatures finite and non-negative (zero only for the levels without heating), coupling converged, and
   the film and temperature within a factor of :data:`FACTOR` of the formula figures of
   ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
@@ -118,7 +119,12 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     if co and not co.get("converged"):
         bad.append("coupling not converged")
     if "dynamics" in summary:
-        bad += _bearing_balance(summary["dynamics"], hand["beta_b"])
+        amp = summary["dynamics"]["amplitudes"]
+        bad += _bearing_balance(summary["dynamics"].get("bearing_forces"),
+                                [amp["mesh_force.L.mean"], amp["mesh_force.R.mean"]], hand["beta_b"])
+    else:                   # the static loads against the static normal force of each loaded helix
+        bad += _bearing_balance(summary.get("bearing_forces_static"),
+                                [hand["force"], hand["force"] if hand["helices"] == 2 else 0.0], hand["beta_b"])
     path = results["along_path"]
     for key in ("film_central", "film_minimum"):
         if min(path[key]) <= 0 or not all(map(math.isfinite, path[key])):
@@ -166,14 +172,12 @@ def _single_contact_force(force: list[float], hand: dict, positions: list[float]
     return float(np.mean(np.interp(x, np.arange(f.size) / f.size, f, period=1.0)))
 
 
-def _bearing_balance(dyn: dict, beta_b: float) -> list[str]:
-    """The mean bearing loads of each member balance the run's mean mesh force on it, to
-    :data:`BEARING_TOLERANCE` of the mesh force: radially |Σ F̄_xy| = Σ_s N̄_s cos β_b (friction acts across the
-    line of action in the transverse plane and adds only (μ²/2)), axially |Σ F̄_z| = |N̄_L − N̄_R| sin β_b."""
-    bf, amp = dyn.get("bearing_forces"), dyn["amplitudes"]
+def _bearing_balance(bf: dict | None, N: list[float], beta_b: float) -> list[str]:
+    """The mean bearing loads ``bf`` of each member balance the mean normal mesh forces ``N`` (left, right helix) on
+    it, to :data:`BEARING_TOLERANCE` of the mesh force: radially |Σ F̄_xy| = Σ_s N̄_s cos β_b (friction acts across
+    the line of action in the transverse plane and adds only (μ²/2)), axially |Σ F̄_z| = |N̄_L − N̄_R| sin β_b."""
     if bf is None:
-        return ["no bearing forces in the dynamics summary"]
-    N = [amp["mesh_force.L.mean"], amp["mesh_force.R.mean"]]
+        return ["no bearing forces in the summary"]
     transverse, axial = sum(N) * math.cos(beta_b), abs(N[0] - N[1]) * math.sin(beta_b)
     bad = []
     for member in ("pinion", "gear"):
@@ -201,7 +205,7 @@ def hand_figures(path: Path) -> dict:
     contact = contact_pass(case)
     _, dT = friction_along_path(case, contact.line_load)
     u_B, u_D = single_contact_bounds(pair)
-    return {"single_phases": _single_phases(pair), "p_bt": pair.p_bt,"force": case.operating.normal_force / pair.n_helices, "beta_b": pair.beta_b,
+    return {"single_phases": _single_phases(pair), "p_bt": pair.p_bt,"force": case.operating.normal_force / pair.n_helices, "beta_b": pair.beta_b, "helices": pair.n_helices,
             "force_scale": pair.b / (pair.p_bt * math.cos(pair.beta_b)), "face_width": pair.b,
             "single": (min(u_B, u_D) - pair.u_pitch, max(u_B, u_D) - pair.u_pitch) if pair.beta_b == 0 else None,
             "film": float(contact.film_central[contact.pitch_index]), "flash": float(max(dT))}

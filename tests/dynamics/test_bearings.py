@@ -115,3 +115,22 @@ def test_run_reports_bearing_forces_in_the_summary(lumped):
     for name in ("pinion_L", "gear_R"):
         assert len(bf[name]["mean"]) == 3 and len(bf[name]["mesh_orders"]) == 6
         assert bf[name]["radial_mean"] > 1000 and all(map(math.isfinite, bf[name]["peak_to_peak"]))
+
+
+def test_a_run_without_dynamics_reports_the_static_bearing_loads():
+    """dynamics = "none" (the FZG C pair): results' static bearing loads are the hand statics (1e-9)."""
+    from pathlib import Path
+
+    from femgear.edge.io.run import run_summary
+    from femgear.pipeline import run_case
+
+    path = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
+    case = build_case(load_scene(path, ['physics.lubrication="constant"', "numerics.path_points=11"]))
+    assert case.levels.dynamics == "none"
+    result = run_case(case)
+    span = [m.bearing_span for m in case.members]
+    hand = hand_statics.bearing_loads(case.pair, case.operating.pinion_torque, (0.0,), (1,),
+                                      np.array([[-s / 2, s / 2] for s in span]))
+    assert np.allclose(result.static_bearing_loads, hand, rtol=1e-9, atol=1e-9 * np.abs(hand).max())
+    static = run_summary(result)["bearing_forces_static"]
+    assert static["gear_R"]["mean"] == pytest.approx(list(hand[3]), rel=1e-9, abs=1e-6)
