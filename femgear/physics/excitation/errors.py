@@ -83,8 +83,28 @@ class ProfileError:
         return self.amplitude * out
 
 
+class _ToothByTooth:
+    """A per-tooth error seen by the mesh: the value of the tooth pair of mesh cycle n (``_nodes``: the pair's
+    value, the next pair's, the fraction of the cycle), linear in mesh phase between cycles."""
+
+    amplitude: float
+    mesh_frequency: float
+
+    def value(self, t: np.ndarray) -> np.ndarray:
+        if self.amplitude == 0.0:
+            return np.zeros(np.shape(t))
+        a, b, frac = self._nodes(t)
+        return self.amplitude * (a + (b - a) * frac)
+
+    def rate(self, t: np.ndarray) -> np.ndarray:
+        if self.amplitude == 0.0:
+            return np.zeros(np.shape(t))
+        a, b, _ = self._nodes(t)
+        return self.amplitude * (b - a) * self.mesh_frequency
+
+
 @dataclass(frozen=True)
-class RandomError:
+class RandomError(_ToothByTooth):
     """Seeded random single-pitch deviations of both members, seen by one mesh.
 
     Each tooth of each member carries a deviation uniform in [−a, a]; the tooth pair in
@@ -116,21 +136,10 @@ class RandomError:
             return self._dev1[k % self.z1] + self._dev2[k % self.z2]
         return tooth(n), tooth(n + 1), frac
 
-    def value(self, t: np.ndarray) -> np.ndarray:
-        if self.amplitude == 0.0:
-            return np.zeros(np.shape(t))
-        a, b, frac = self._nodes(t)
-        return self.amplitude * (a + (b - a) * frac)
-
-    def rate(self, t: np.ndarray) -> np.ndarray:
-        if self.amplitude == 0.0:
-            return np.zeros(np.shape(t))
-        a, b, _ = self._nodes(t)
-        return self.amplitude * (b - a) * self.mesh_frequency
 
 
 @dataclass(frozen=True)
-class CumulativePitchError:
+class CumulativePitchError(_ToothByTooth):
     """Once-per-revolution cumulative pitch deviation of one member, along the line of action.
 
     Tooth n (counted from the one in mesh at t = 0) of the member's z teeth sits A sin(2π n/z + φ) ahead;
@@ -150,17 +159,6 @@ class CumulativePitchError:
         theta = 2 * math.pi / self.teeth
         return np.sin(theta * n + self.phase), np.sin(theta * (n + 1) + self.phase), u - n
 
-    def value(self, t: np.ndarray) -> np.ndarray:
-        if self.amplitude == 0.0:
-            return np.zeros(np.shape(t))
-        a, b, frac = self._nodes(t)
-        return self.amplitude * (a + (b - a) * frac)
-
-    def rate(self, t: np.ndarray) -> np.ndarray:
-        if self.amplitude == 0.0:
-            return np.zeros(np.shape(t))
-        a, b, _ = self._nodes(t)
-        return self.amplitude * (b - a) * self.mesh_frequency
 
     def line(self, k: int) -> tuple[float, complex]:
         """(frequency [Hz], complex amplitude X: value ∋ Re X e^{2πi f t}) of the Fourier line at f = (k + 1/z) f_m
