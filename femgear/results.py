@@ -133,6 +133,10 @@ class RunResult:
     """``stiffness = "ltca"``: the LTCA's pressure and load maps on the loaded flanks of both members in
     mesh (:func:`femgear.physics.ltca.maps.load_maps`, the stiffness level's cycle; ``w_worst`` at the phase
     of the largest pressure) [-]"""
+    static_bearing_loads: np.ndarray | None = None
+    """without a dynamics level: (4, 3) loads of the bearing stations (pinion_L, pinion_R, gear_L, gear_R; x, y
+    radial, z axial) at the static load, on the scene's mounting with rigid shafts and no friction
+    (:func:`femgear.stages.static_bearings`); with dynamics the dynamic run's own loads are in ``coupled`` [N]"""
 
 
 #: types reachable from :class:`RunResult` whose fields are inputs documented elsewhere (the Case and its gear pair:

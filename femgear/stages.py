@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+import numpy as np
+
 from femgear.case import Case
 from femgear.levels.thermal import has_sections
 from femgear.physics.body.fields import BodySection
@@ -29,7 +31,18 @@ def derived_fields(result: RunResult) -> RunResult:
     figures = contact_figures(case, result.contact, t.friction_coefficient, case.path.u, case.levels.lubrication,
                               result.rating)
     return replace(result, figures=figures, body=body_sections(case, t.flank_temperature_rise),
-                   ltca_maps=ltca_maps(result))
+                   ltca_maps=ltca_maps(result),
+                   static_bearing_loads=static_bearings(case, result.stiffness) if result.coupled is None else None)
+
+
+def static_bearings(case: Case, stiffness) -> np.ndarray:
+    """(4, 3) loads of the bearing stations at the static load [N]: the ``lumped`` rotor model of the scene's
+    mounting (bearing stations, thrust bearing) with the run's mesh stiffness and no friction
+    (:func:`femgear.system.dynamics.bearings.static_bearing_loads`; the loads are statically determinate)."""
+    from femgear.system.dynamics import build_model
+    from femgear.system.dynamics.bearings import static_bearing_loads
+
+    return static_bearing_loads(build_model(case, "lumped", stiffness=stiffness, friction=0.0))
 
 
 def body_sections(case: Case, flank_rise: float) -> tuple[BodySection, BodySection] | None:

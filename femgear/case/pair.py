@@ -26,7 +26,6 @@ import math
 from dataclasses import replace
 
 from femgear.errors import SceneError
-from femgear.levels import dynamics as dynamics_levels
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.geometry.involute import inv
 
@@ -54,10 +53,6 @@ def _check_kind(scene) -> None:
                                  "its axial mesh force is not balanced by a second helix")
     if p.kind != "double-helical":
         _check_one_helix(scene)
-    if p.kind != "double-helical" and dynamics_levels.spec(scene.physics.dynamics).shaft_elements:
-        raise SceneError("physics.dynamics",
-                         f"the timoshenko level joins two helix halves by shaft elements; a {p.kind} pair has one "
-                         "mesh in the mid-plane: use physics.dynamics = 'lumped'")
 
 
 def _check_one_helix(scene) -> None:

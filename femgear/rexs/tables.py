@@ -25,6 +25,7 @@ import math
 from femgear.rexs.convert import MEMBERS, Conversion
 from femgear.rexs.lookup import bearings_of, gear_data, lubricant_of, material_of
 from femgear.rexs.viscosity import T38, kinematic_viscosity, pressure_viscosity_from, temperature_coefficient
+from femgear.scene.schema import Member
 
 STEEL = {"youngs_modulus": 210e9, "poisson_ratio": 0.3, "density": 7850.0, "specific_heat": 460.0,
          "conductivity": 45.0, "thermal_expansion": 11.5e-6}
@@ -114,6 +115,14 @@ def _supports(conv: Conversion, name: str, shaft) -> None:
     if conv.get(f"{name}.bearing_span") is None and len(bearings) == 2 and None not in u:
         conv.put(f"{name}.bearing_span", abs(u[0] - u[1]),
                  [(b, "u_coordinate_on_shaft_inner_side") for b in bearings])
+    if conv.get(f"{name}.bearing_span") is None:
+        b = conv.get(f"{name}.face_width") or conv.get("pair.face_width")
+        width = 2 * b + (conv.get("pair.groove_width") or 0.0) if conv.parts.kind == "double-helical" else b
+        d = conv.get(f"{name}.shaft_diameter") or Member.model_fields["shaft_diameter"].default
+        default = Member.model_fields["bearing_span"].default
+        if width + 2 * d > default:       # the scene's default span would put the bearings under the teeth
+            conv.default(f"{name}.bearing_span", width + 2 * d, "no two bearings with u coordinates on the shaft: "
+                                                                "the toothed width and a shaft diameter each side")
 
 
 def oil(conv: Conversion) -> None:

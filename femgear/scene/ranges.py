@@ -23,8 +23,8 @@ pinion/gear.tip_diameter        0.8–1.25 × m_n (z/cos β + 2)           0.5�
 pair.centre_distance            0.8–1.25 × reference a                 0.5–2 × (z1 + z2) m_n / (2 cos β)
 pinion/gear.bore_radius         —                                      < reference radius
 pinion/gear.shaft_diameter      ≤ d_a                                  ≤ 10 d_a
-pinion/gear.bearing_span        ≥ the member's total face width        ≤ 200 d_a; with dynamics > the helix
-                                                                       centres' distance b + groove
+pinion/gear.bearing_span        ≤ 50 d_a                               ≥ the member's total face width,
+                                                                       ≤ 200 d_a
 oil.viscosity                   1e-3–1 Pa s                            1e-4–5 Pa s
 oil.pressure_viscosity          5e-9–6e-8 1/Pa                         1e-9–1e-7 1/Pa
 oil.temperature_viscosity       ≤ 0.1 1/K                              ≤ 0.5 1/K
@@ -36,6 +36,8 @@ operating.speed_rpm             pitch-line speed ≥ 0.1 m/s             ≥ 1 m
 operating.torque                (Hertz pressure: plausibility)         nominal σ_H0 ≤ 8 GPa
 pinion/gear.eccentricity        ≤ backlash and ≤ ISO 1328 class-11     < m_n
                                 runout F_r/2
+pinion/gear.cumulative_pitch_   ≤ ISO 1328 class-11 F_p/2              < m_n
+  error
 errors.profile_error, .random   ≤ ISO 1328 class-12 f_fα               < m_n / 4
 pair.backlash                   ≤ 0.2 m_n                              < m_n
 pinion/gear.unbalance           —                                      unbalance/mass < tip radius
@@ -167,24 +169,10 @@ def _size_ranges(scene) -> list[Range]:
                          "m", f"the shaft of this {n} (tip diameter ≈ {_fmt(d_a * 1e3)} mm)", MM))
         width = (member.face_width or p.face_width) * (2 if p.kind == "double-helical" else 1)
         width += p.groove_width if p.kind == "double-helical" else 0.0
-        centres = _helix_centres(scene)
-        out.append(Range(f"{n}.bearing_span", member.bearing_span, (centres, 200 * d_a), (max(width, centres), 50 * d_a),
-                         "m", f"the bearing span of this {n} (its toothed width is {_fmt(width * 1e3)} mm: the "
-                         "bearings sit outside it" + (f"; the {scene.physics.dynamics} rotor model needs more than the "
-                                                      f"{_fmt(centres * 1e3)} mm between the helix centres, face "
-                                                      "width + pair.groove_width" if centres else "") + ")", MM))
+        out.append(Range(f"{n}.bearing_span", member.bearing_span, (width, 200 * d_a), (width, 50 * d_a), "m",
+                         f"the bearing span of this {n} (its toothed width is {_fmt(width * 1e3)} mm: the shaft "
+                         "between the bearings is longer, the bearings sit outside the teeth)", MM))
     return out
-
-
-def _helix_centres(scene) -> float:
-    """Distance of the helix centres of a double-helical pair in a dynamics run, which the bearing span must exceed
-    (the rotor model's shaft runs between them; the contact width b + the groove) [m]; 0 otherwise."""
-    from femgear.levels import dynamics as dynamics_levels
-
-    p = scene.pair
-    if p.kind != "double-helical" or not dynamics_levels.spec(scene.physics.dynamics).is_dynamic:
-        return 0.0
-    return min(m.face_width or p.face_width for m in (scene.pinion, scene.gear)) + p.groove_width
 
 
 def _teeth_blame(scene, n: str, d: float) -> tuple[str, str] | None:
@@ -256,6 +244,10 @@ def _error_ranges(scene) -> list[Range]:
                          f"the eccentricity of this {n} (backlash {_fmt(p.backlash * 1e6)} µm: the teeth lose "
                          f"contact or jam once per revolution above it; ISO 1328 class 11 runout F_r/2 = "
                          f"{_fmt(F_r11 / 2 * 1e6)} µm)", UM_MM, hint_band=(FINEST_ERROR, limit)))
+        F_p11 = F_r11 / 0.8
+        out.append(Range(f"{n}.cumulative_pitch_error", member.cumulative_pitch_error, (0.0, m), (0.0, F_p11 / 2),
+                         "m", f"the cumulative pitch deviation of this {n} (ISO 1328 class 11 F_p/2 = "
+                              f"{_fmt(F_p11 / 2 * 1e6)} µm)", UM_MM, hint_band=(FINEST_ERROR, F_p11 / 2)))
         r_a = d / 2 + m
         out.append(Range(f"{n}.unbalance", member.unbalance, (0.0, member.mass * r_a), (0.0, member.mass * r_a),
                          "kg m", f"this {n}'s unbalance (mass × tip radius = {_fmt(member.mass * r_a)} kg m)",

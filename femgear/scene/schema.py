@@ -109,7 +109,7 @@ class Member(_Frozen):
                          "the LTCA body half the shaft_diameter")
     support_stiffness: Pos = Field(
         description="bearing stiffness of the WHOLE member (the sum of its two bearings) in each direction x, y "
-                    "and, without axial_stiffness, z [N/m]; each of the two bearings at ±bearing_span/2 gets half")
+                    "and, without axial_stiffness, z [N/m]; each of the two bearings gets half")
     support_damping: NonNeg = Field(
         0.0, description="bearing damping of the WHOLE member (the sum of its two bearings) per direction, split "
                          "like support_stiffness [N s/m]")
@@ -117,7 +117,25 @@ class Member(_Frozen):
                     "rotation [m]")
     eccentricity_phase_deg: float = Field(0.0, description="phase θ of the eccentricity at t = 0 [deg]")
     unbalance: NonNeg = Field(0.0, description="mass unbalance U = m·e (rotating force U Ω²) [kg m]")
-    bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings, symmetric about the mid-plane [m]")
+    cumulative_pitch_error: NonNeg = Field(
+        0.0, description="amplitude A of a once-per-revolution cumulative pitch deviation along the line of action: "
+                         "tooth n sits A sin(2π n/z + φ) ahead (a sinusoidal pattern of ISO 1328's F_p = 2 A), seen "
+                         "tooth by tooth in the mesh [m]")
+    cumulative_pitch_phase_deg: float = Field(0.0, description="phase φ of the cumulative pitch deviation, at the tooth "
+                                                               "in mesh at t = 0 [deg]")
+    bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings (the shaft "
+                                                "between them must be longer than the toothed face) [m]")
+    face_offset: float = Field(
+        0.0, description="axial position of the toothed face's centre (the mesh station; a double-helical pair's "
+                         "groove centre) from the midpoint of the two bearings, towards the right bearing (+z) [m]: "
+                         "0 = symmetric straddle; |face_offset| < (bearing_span − face)/2 straddle, "
+                         "> (bearing_span + face)/2 overhung (both bearings on one side); a bearing under the "
+                         "toothed face is refused")
+    thrust_bearing: Literal["both", "left", "right"] = Field(
+        "both", description="which radial bearing also carries the axial load (axial_stiffness, axial_damping): "
+                            "'both' split equally (as a pair of angular-contact or tapered bearings), 'left' "
+                            "(the bearing at −z, station <member>_L) or 'right' (+z) alone, the other floating "
+                            "axially [-]")
     shaft_diameter: Pos = Field(0.040, description="diameter of the member's solid shaft [m]: the Timoshenko shaft elements between the bearings "
                     "(timoshenko dynamics level) and the LTCA body's bore when bore_radius = 0")
 
@@ -545,17 +563,6 @@ class Scene(_Frozen):
     modifications: Modifications = Modifications()
     physics: Physics = Physics()
     rating: Rating = Rating()
-
-    @model_validator(mode="after")
-    def _cross_keys(self):
-        """Checks that read keys of two tables (the table-local ones sit in their tables' validators; those
-        of sizes against sizes in :mod:`femgear.scene.ranges`, after the unit checks), so that ``femgear info``
-        refuses what ``femgear run`` would, before anything is computed."""
-        dyn = dynamics_levels.spec(self.physics.dynamics)
-        if dyn.shaft_elements and self.pair.kind != "double-helical":
-            raise SceneError("physics.dynamics", f"{self.physics.dynamics!r} joins two helix halves by shaft elements; "
-                                                 f"a {self.pair.kind} pair (pair.kind, one mesh) runs with \"lumped\"")
-        return self
 
     @property
     def pinion_rpm(self) -> float:

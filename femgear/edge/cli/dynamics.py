@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from femgear.edge.cli.campbell import add_campbell_arguments, campbell_speeds, check_campbell_arguments, run_campbell
 from femgear.edge.cli.common import add_scene_arguments, emit_json, load_case_arg
 from femgear.edge.cli.levels import level_choices
 
@@ -41,6 +42,7 @@ def register(sub) -> None:
     p.add_argument("--kahraman-singh", action="store_true",
                    help="instead of one run: up/down frequency sweeps of the Kahraman-Singh backlash oscillator "
                         "(writes kahraman_singh.png)")
+    add_campbell_arguments(p)
     p.set_defaults(func=_run)
 
 
@@ -55,13 +57,19 @@ def _run(args: argparse.Namespace) -> int:
     finite("--transient", args.transient, nonnegative=True)
     if args.transient >= args.cycles:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
+    if args.campbell:
+        check_campbell_arguments(args)
     case = load_case_arg(args)
     if args.sweep:
         _check_sweep_speeds(case, sweep_speeds(args.sweep))
+    if args.campbell:
+        _check_sweep_speeds(case, [s for s in campbell_speeds(args.campbell)[[0, -1]] if s > 0], "--campbell")
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
     else:
         out = prepare_output_dir(args.out, "--out")
+    if args.campbell:
+        return run_campbell(case, args, out)
     if args.sweep:
         return _sweep(case, args, out)
     if args.kahraman_singh:
@@ -113,21 +121,21 @@ def sweep_speeds(text: str):
     return np.linspace(lo, hi, count)
 
 
-def _check_sweep_speeds(case, speeds) -> None:
+def _check_sweep_speeds(case, speeds, argument: str = "--sweep") -> None:
     """The sweep's end speeds pass the scene's speed checks (:mod:`femgear.scene.ranges`, the burst
-    speed of the case's pair), before any computing; a refusal names ``--sweep``."""
+    speed of the case's pair), before any computing; a refusal names ``argument``."""
     from femgear.errors import ArgumentError, SceneError
     from femgear.scene.load import scene_from_dict
     from femgear.scene.plausibility import check_operating_limits
 
     data = case.scene.model_dump(exclude_none=True)
-    for rpm in (float(speeds[0]), float(speeds[-1])):
+    for rpm in {float(speeds[0]), float(speeds[-1])} if len(speeds) else ():
         try:
             check_operating_limits(scene_from_dict(data, [f"operating.speed_rpm={rpm!r}"], warn=False), case.pair)
         except SceneError as exc:
             if exc.key != "operating.speed_rpm":
                 raise
-            raise ArgumentError("--sweep", exc.message) from None
+            raise ArgumentError(argument, exc.message) from None
 
 
 def _sweep(case, args, out: Path) -> int:

@@ -66,7 +66,7 @@ def dynamics_frames(result: RunResult) -> list[Frame]:
     period = 1.0 / res.mesh_frequency
     idx = np.flatnonzero(t >= t[-1] - period)
     idx = idx[np.linspace(0, len(idx) - 1, min(len(idx), MAX_FRAMES)).round().astype(int)]
-    half = 0.5 * (pair.b + result.case.scene.pair.groove_width)
+    half = result.coupled.state.dynamics.model.half_spacing
     angle = np.linspace(0.0, 2.0 * np.pi, N_RING, endpoint=False)
     rings = []
     for body in BODIES:
@@ -86,7 +86,21 @@ def dynamics_frames(result: RunResult) -> list[Frame]:
         mesh = meshio.Mesh(points, [("line", lines)],
                            point_data={"displacement": u, "vibration": w, "mesh_force": force})
         frames.append(Frame(time=float(t[i] - t[idx[0]]), part=0, name="response", mesh=mesh))
+        if res.bearings is not None:
+            frames.append(Frame(time=float(t[i] - t[idx[0]]), part=1, name="bearings",
+                                mesh=bearing_mesh(result, res.bearings, i)))
     return frames
+
+
+def bearing_mesh(result: RunResult, loads, i: int):
+    """The four bearing stations at time index ``i`` as vertices on the shaft axes, with ``bearing_force`` (the load
+    of the shaft on the bearing) and ``bearing_force_dynamic`` (about its mean over the record) [N]."""
+    import meshio
+
+    model = result.coupled.state.dynamics.model
+    points = model.bearings.centre
+    return meshio.Mesh(points, [("vertex", np.arange(len(points))[:, None])],
+                       point_data={"bearing_force": loads.force[i], "bearing_force_dynamic": loads.force[i] - loads.mean})
 
 
 def body_frames(result: RunResult) -> list[Frame]:

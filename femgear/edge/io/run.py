@@ -14,7 +14,9 @@ Layout (the contract; keys are added, never renamed without a README note):
   p-p, harmonics, stiffness mean/ripple, load share, peak pressure and its edge flag, unloaded TE;
   ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
   TE p-p of the last coupling pass's worn and expanded flanks),
-  with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`) and
+  without dynamics ``bearing_forces_static`` (the static loads of the bearing stations, ``RunResult.static_bearing_loads``),
+  with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`, its ``bearing_forces`` and
+  ``sidebands`` included) and
   ``coupling`` (mode, converged, alternation: None or the two states' difference where the loop settled into a
   two-pass cycle, iterations, seconds, history), ``outputs`` (every file in the folder, a
   ``.pvd`` collection's ``.vtu`` files under their relative path; docs/guide/outputs.md);
@@ -87,6 +89,13 @@ def run_summary(result: RunResult) -> dict[str, Any]:
     static = result.coupled is None
     if static:
         summary["stiffness"].update(mean_per_helix=[ms.mean_left, ms.mean_right], seconds=ms.seconds)
+        if result.static_bearing_loads is not None:
+            from femgear.system.dynamics.structure import STATIONS
+
+            loads = result.static_bearing_loads
+            summary["bearing_forces_static"] = {"axes": ["x", "y", "z"], "units": "N", **{
+                name: {"mean": loads[j].tolist(), "radial_mean": float(np.hypot(*loads[j, :2]))}
+                for j, name in enumerate(STATIONS)}}
     else:
         from femgear.edge.io.dynamics import dynamics_summary
 

@@ -140,6 +140,45 @@ def plot_spectra(res: Response, max_order: float = 32.0, name: str = ""):
     return fig
 
 
+def plot_bearing_forces(res: Response, cycles: float = 5.0, max_order: float = 16.0, name: str = ""):
+    """Loads of the four bearing stations: the dynamic part (about the mean) of x, y and z over the last
+    ``cycles`` mesh periods (top row per member) and their Hanning spectra against the mesh order (bottom), the
+    means and peak-to-peak values in the legends."""
+    plt = pyplot()
+    loads = res.bearings
+    sel = _last_cycles(res, cycles)
+    t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
+    dt = float(np.median(np.diff(res.t)))
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
+    for col, member in enumerate(("pinion", "gear")):
+        for j in (2 * col, 2 * col + 1):
+            station = loads.stations[j]
+            for d, axis in enumerate("xyz"):
+                if d == 2 and np.max(np.abs(loads.force[:, j, 2])) <= 1e-9 * np.max(np.abs(loads.force[:, j])):
+                    continue            # no axial load (double-helical, lumped): round-off only
+                f = loads.force[sel, j, d]
+                style = dict(color=f"C{d}", ls="-" if j % 2 == 0 else "--", lw=1.0)
+                axes[0, col].plot(t_ms, f - loads.mean[j, d], **style,
+                                  label=f"{station} {axis}: mean {loads.mean[j, d]:.4g} N, "
+                                        f"p-p {loads.peak_to_peak[j, d]:.3g} N")
+                sp = spectrum(loads.force[:, j, d], dt, res.mesh_frequency)
+                keep = sp.order <= max_order
+                axes[1, col].plot(sp.order[keep], sp.amplitude[keep], **style, label=f"{station} {axis}")
+        axes[0, col].set_title(f"{member} bearings: load − mean", fontsize=10)
+        axes[0, col].set_xlabel(TIME_LABEL)
+        axes[0, col].set_ylabel("bearing load − mean [N]")
+        axes[0, col].legend(fontsize=6.5)
+        axes[1, col].set_xlabel(f"mesh order f/f_m  (f_m = {res.mesh_frequency:.1f} Hz)")
+        axes[1, col].set_ylabel("peak amplitude [N]")
+        axes[1, col].legend(fontsize=6.5, ncol=2)
+        for ax in axes[:, col]:
+            ax.grid(alpha=0.3)
+    fig.suptitle(_title(name, f"bearing loads (force of the shaft on each bearing; x, y radial, z axial), "
+                              f"last {cycles:g} mesh periods and spectra (Hanning, peak amplitudes)"), fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
 def plot_sweep(sweep, modal=None, name: str = "", harmonics: int = 4):
     """RMS of the dynamic transmission error against mesh frequency (driver speed on the top axis), with
     the natural frequencies whose mesh strain energy is ≥ 5 % marked where the mesh frequency or one of

@@ -18,6 +18,9 @@
   ``simulation`` the recorded :class:`Simulation` and shared input helpers.
 - ``response``   amplitudes (half peak-to-peak), mesh forces, bearing accelerations,
                  Hanning spectra with mesh orders; frozen :class:`Response`.
+- ``bearings``   bearing loads F = K_F q + C_F q̇ of the four stations from a state history (every level),
+                 their mean, peak-to-peak and mesh orders; Newton's law per member.
+- ``orders``     least-squares line fits at known frequencies (mesh and shaft orders).
 - ``modal``      linearised (mean-stiffness) modal analysis with modal energy per DOF group;
                  the highest mode the mesh excitation reaches.
 - ``sweep``      time-domain speed sweeps (DTE RMS vs mesh frequency).

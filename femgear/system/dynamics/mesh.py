@@ -124,11 +124,12 @@ def as_stiffness_table(source, samples: int = 256) -> StiffnessTable:
 
 
 def constant_stiffness(pair: GearPair, c_gamma: float) -> StiffnessTable:
-    """``constant`` level: k = c_γ b per helix (c_γ [N/m per m of face width])."""
+    """``constant`` level: k = c_γ b per helix (c_γ [N/m per m of face width]); a pair with one mesh (spur,
+    single helix) has no right helix (k_right = 0)."""
     if not c_gamma > 0:
         raise ValueError(f"c_gamma (stiffness.mesh_stiffness_per_width) must be positive (got {c_gamma!r})")
     k = c_gamma * pair.b
-    return StiffnessTable(np.array([k]), np.array([k]), label="constant")
+    return StiffnessTable(np.array([k]), np.array([k if pair.n_helices == 2 else 0.0]), label="constant")
 
 
 def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0, samples: int = 256) -> StiffnessTable:
@@ -138,7 +139,7 @@ def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0,
     mean mesh stiffness per face width, so the time mean of k equals the ``constant``
     level's c_γ b; equivalently k = c_γ L(φ) cos β_b / ε_α).  L_s(φ) comes from
     :func:`femgear.physics.geometry.double_helical_contact`, the right helix shifted by the
-    ``stagger`` (in base pitches).
+    ``stagger`` (in base pitches); a pair with one mesh has no right helix (k_right = 0).
     """
     if not c_gamma > 0:
         raise ValueError(f"c_gamma (stiffness.mesh_stiffness_per_width) must be positive (got {c_gamma!r})")
@@ -146,7 +147,8 @@ def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0,
     c = double_helical_contact(pair, phases, stagger)
     mean_length = pair.mean_contact_length
     scale = c_gamma * pair.b / mean_length
-    return StiffnessTable(scale * c["length_left"], scale * c["length_right"], label="contact-line")
+    right = scale * c["length_right"] if pair.n_helices == 2 else np.zeros(samples)
+    return StiffnessTable(scale * c["length_left"], right, label="contact-line")
 
 
 @dataclass(frozen=True)
