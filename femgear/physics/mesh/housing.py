@@ -49,16 +49,20 @@ class HousingGeometry:
     end_position: float | None = None  #: z of the end walls' mid-planes (± this) [m]; None: the outer stations
     clearance: float = 0.020        #: cavity beyond each tip circle [m]
     boss: float = 0.010             #: radial thickness of the bosses around the bores [m]
-    boss_length: float | None = None  #: axial length of the bosses [m]; None: the end wall's thickness, or more, so
-                                      #: that every bearing seat lies in its boss (:func:`default_boss_length`)
+    boss_length: float | None = None  #: axial length of the bosses [m]; None: with the default ``end_position`` the
+                                      #: shortest that holds every bearing seat (:func:`default_boss_length`), with
+                                      #: a given one the end wall's thickness
     foot: float = 0.040             #: edge length of the square feet [m]
     foot_height: float = 0.020      #: height of the feet below the floor [m]
     size: float = 0.012             #: target element size [m]
 
     @property
     def boss_axial(self) -> float:
-        """The bosses' axial length [m] (``boss_length`` or :func:`default_boss_length`)."""
-        return default_boss_length(self) if self.boss_length is None else float(self.boss_length)
+        """The bosses' axial length [m] (``boss_length``, else :func:`default_boss_length` with the default end walls,
+        else the end wall's thickness)."""
+        if self.boss_length is not None:
+            return float(self.boss_length)
+        return default_boss_length(self) if self.end_position is None else float(self.end_wall)
 
     @property
     def walls_at(self) -> float:
