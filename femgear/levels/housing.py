@@ -4,7 +4,7 @@ Each factory returns a :class:`HousingLayer`, whose attributes tell the driver w
 ``reduced`` (an FE housing, Craig–Bampton-reduced: the dynamics model couples it, the bearings then join the shafts
 to its seats) or ``frf`` (an FRF set, applied in the frequency domain), and ``coupling`` (how: ``craig-bampton``,
 ``lm-fbs`` or ``receiver``).  Absent ``[housing]``: :func:`of` is None and the bearings stand on rigid ground.
-The FE housing is built once per geometry, material, elements, modes and sensors (:func:`reduced_housing`).
+The FE housing is built once per geometry, material, elements, modes and sensors (:func:`fe_layer`).
 """
 
 from __future__ import annotations
@@ -68,11 +68,19 @@ def _fe(case: Any) -> HousingLayer:
     else:
         sensors = tuple(tuple(p) for p in h.sensors)
         dirs = None if h.sensor_directions is None else tuple(tuple(d) for d in h.sensor_directions)
-    red, st = reduced_housing(geometry, material, 2 if h.elements == "p2" else 1, h.modes, sensors, dirs,
-                              bool(h.end_position or h.boss_length))
-    check = reduction_check(red, st) if h.check_reduction else None
+    return fe_layer(geometry, material, 2 if h.elements == "p2" else 1, h.modes, sensors, dirs,
+                    bool(h.end_position or h.boss_length), h.check_reduction)
+
+
+@functools.lru_cache(maxsize=4)
+def fe_layer(geometry, material, order: int, modes: int, sensors, directions, user_walls: bool,
+             check: bool) -> HousingLayer:
+    """The FE housing's layer, built once per argument set (a run asks for it at its start, in the model and in
+    its outputs)."""
+    red, st = reduced_housing(geometry, material, order, modes, sensors, directions, user_walls)
     names = tuple(f"S{i + 1}" for i in range(len(sensors)))
-    return HousingLayer("fe", "craig-bampton", names, reduced=red, check=check, full_dofs=st.n_dofs)
+    return HousingLayer("fe", "craig-bampton", names, reduced=red, check=reduction_check(red, st) if check else None,
+                        full_dofs=st.n_dofs)
 
 
 @REGISTRY.register("frf", "measured or supplied FRFs from the bearing seats to sensors (UFF 58 or CSV): a receiver "
@@ -125,11 +133,9 @@ def _structure(geometry, material, order: int, user_walls: bool):
         raise SceneError(key, str(exc)) from None
 
 
-@functools.lru_cache(maxsize=4)
 def reduced_housing(geometry, material, order: int, modes: int, sensors, directions, user_walls: bool = False):
-    """(:class:`~femgear.physics.housing.fe.ReducedHousing`, its unreduced structure) of the FE housing, built once per
-    argument set; :class:`SceneError` naming the key for a mesh that misses a seat, too many modes or a sensor
-    off the surface."""
+    """(:class:`~femgear.physics.housing.fe.ReducedHousing`, its unreduced structure) of the FE housing;
+    :class:`SceneError` naming the key for a mesh that misses a seat, too many modes or a sensor off the surface."""
     st = _structure(geometry, material, order, user_walls)
     try:
         red = st.reduce(modes, np.array(sensors), None if directions is None else np.array(directions))

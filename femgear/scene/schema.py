@@ -552,7 +552,7 @@ class Housing(_Frozen):
     poisson_ratio: float = Field(0.26, gt=0, lt=0.5, description="Poisson's ratio of the housing [-]")
     density: Pos = Field(7200.0, description="density of the housing [kg/m^3]")
     damping_ratio: float = Field(0.02, ge=0, lt=1, description="modal damping ratio of every housing mode [-]")
-    modes: int = Field(40, ge=0, description="fixed-interface modes kept by the Craig–Bampton reduction [-]")
+    modes: int = Field(60, ge=0, description="fixed-interface modes kept by the Craig–Bampton reduction [-]")
     check_reduction: bool = Field(
         False, description="also solve the unreduced FE housing's modes and report the Craig–Bampton error in the "
                            "retained band (0.4 × the highest retained fixed-interface frequency); costs "

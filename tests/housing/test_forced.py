@@ -31,11 +31,11 @@ def test_orders_match_the_time_integration_on_the_fe_housing(rigid_model, reduce
     """The same on the coupled FE housing (bearings on the seats): bearing forces and the sensors' accelerations."""
     model = couple_housing(rigid_model, reduced)
     r = order_response(model, [500.0], 6, mesh_excitation(rigid_model))
-    run = run_dynamics(model, cycles=160, transient_cycles=80)
-    assert run.settings.method == "expo"
+    run = run_dynamics(model, cycles=100, transient_cycles=60)      # the housing's modes (ζ 0.02, > 700 Hz) decay
+    assert run.settings.method == "rk4"                              # the default for more than 12 coordinates
     assert _close(r.bearing_force[0], run.response.bearings.orders, 0.02)
     s = run.simulation
-    keep = s.t >= 80 * model.mesh_period - 1e-12
+    keep = s.t >= 60 * model.mesh_period - 1e-12
     a_td = mesh_orders(housing_acceleration(model, s.t[keep], s.q[keep], s.v[keep]), s.t[keep], model.mesh_frequency, 6)
     w = 2 * np.pi * r.frequency[0]
     a_fd = -(w**2)[:, None] * (model.housing.housing_part(r.state[0]) @ reduced.sensor_map.T)

@@ -64,9 +64,8 @@ class DynamicsRun:
 
 def default_method(model: GearRotorModel) -> str:
     """``expo`` for the 12 rigid-member coordinates of ``lumped``, ``rk4`` for ``timoshenko``
-    (24 coordinates: expo's 48-state propagators cost more to build than RK4 needs); ``expo`` on a coupled
-    housing (its stiff seat modes would hold RK4 to a far smaller step than the response needs)."""
-    return "expo" if model.n <= 12 or model.housing is not None else "rk4"
+    (24 coordinates: expo's 48-state propagators cost more to build than RK4 needs)."""
+    return "expo" if model.n <= 12 else "rk4"
 
 
 def step_plan(model: GearRotorModel, steps_per_period: int = 200) -> tuple[int, int]:
