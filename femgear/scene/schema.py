@@ -571,7 +571,7 @@ class Housing(_Frozen):
         None, description="what the FRF file holds (m/N, m/s per N, m/s^2 per N); required for CSV, read from "
                           "the UFF's ordinate type (and checked against this when given)")
     seat_nodes: Annotated[list[int], Field(min_length=4, max_length=4)] | None = Field(
-        None, description="UFF: the node numbers of the bearing seats pinion_L, pinion_R, gear_L, gear_R (their "
+        None, description="UFF: the node numbers of the bearing seats pinion_L, pinion_R, gear_L, gear_R [-] (their "
                           "directions 1/2/3 = x/y/z of the dynamics' frame; every other response node is a sensor)")
     coupling: Literal["auto", "receiver", "lm-fbs"] = Field(
         "auto", description="FRF housing: receiver (sensor = H · bearing forces on a rigid housing), lm-fbs "

@@ -26,6 +26,18 @@ def _femgear(args, cwd, pythonpath=ROOT, check=True):
     return r
 
 
+def _cli(argv, capsys, cwd, monkeypatch):
+    """``femgear argv`` in-process in ``cwd``: (exit code, stderr)."""
+    from femgear.edge.cli import main
+
+    monkeypatch.chdir(cwd)
+    try:
+        rc = main(argv)
+    except SystemExit as exc:
+        rc = exc.code
+    return rc, capsys.readouterr().err
+
+
 def _sets(overrides):
     return [a for o in overrides for a in ("--set", o)]
 
@@ -120,7 +132,7 @@ def test_fe_housing_run_writes_its_files(tmp_path):
         assert (out / f).is_file() and f.split(".")[0] in " ".join(summary["outputs"])
 
 
-def test_frf_housing_receiver_and_lm_fbs(tmp_path):
+def test_frf_housing_receiver_and_lm_fbs(tmp_path, capsys, monkeypatch):
     """A CSV FRF set: a receiver without the seat block, LM-FBS with it; a static case runs the sweep alone."""
     f = np.linspace(20.0, 6000.0, 300)
     for block, coupling in ((False, "receiver"), (True, "lm-fbs")):
@@ -128,8 +140,10 @@ def test_frf_housing_receiver_and_lm_fbs(tmp_path):
         scene = _scene(tmp_path, _housing(model="frf", frf_file=csv.name, frf_kind="receptance", speed_points=4,
                                           orders=2))
         out = f"run_{block}"
-        _femgear(["run", str(scene), "--out", out, "-q", "--no-plots", "--no-vtk", *_sets(QUICK),
-                  "--set", 'physics.dynamics="none"'], tmp_path)
+        rc, err = _cli(["run", str(scene), "--out", out, "-q", "--no-plots", "--no-vtk", *_sets(QUICK),
+                        "--set", 'physics.dynamics="none"', "--set", 'physics.preset="fast"'], capsys, tmp_path,
+                       monkeypatch)
+        assert rc == 0, err
         h = json.loads((tmp_path / out / "results.json").read_text())["summary"]["housing"]
         assert h["coupling"] == coupling and h["operating"]["source"] == "linear"
         assert h["sensors"] == ["S1"] and max(max(a) for a in h["operating"]["sensor_acceleration"]) > 0
@@ -138,7 +152,7 @@ def test_frf_housing_receiver_and_lm_fbs(tmp_path):
 @pytest.mark.parametrize("case, key", [
     ("uff-dofs", "h.uff"), ("frf-frequencies", "frf.csv"), ("mesh-misses-seats", "housing.end_position"),
     ("too-many-modes", "housing.modes")])
-def test_bad_housing_input_is_one_line_exit_2(tmp_path, case, key):
+def test_bad_housing_input_is_one_line_exit_2(tmp_path, capsys, monkeypatch, case, key):
     """A UFF file whose DOFs do not match the bearing seats, an FRF with non-increasing frequencies, a housing mesh
     that does not touch the bearing seats, a retained-mode count above the mesh's DOF: one line naming the key or
     the file, exit code 2."""
@@ -158,8 +172,8 @@ def test_bad_housing_input_is_one_line_exit_2(tmp_path, case, key):
         housing = _housing(model="fe", end_position=0.08, mesh_size=0.03, modes=4)
     else:
         housing = _housing(model="fe", mesh_size=0.04, elements="p1", modes=100000)
-    r = _femgear(["run", str(_scene(tmp_path, housing)), "--out", "run", "--no-plots", "--no-vtk", *_sets(QUICK),
-                  "--set", 'physics.dynamics="none"'], tmp_path, check=False)
-    assert r.returncode == 2, r.stderr
-    lines = [ln for ln in r.stderr.strip().splitlines() if ln.strip()]
-    assert len(lines) == 1 and key in lines[0], r.stderr
+    rc, err = _cli(["run", str(_scene(tmp_path, housing)), "--out", "run", "--no-plots", "--no-vtk", *_sets(QUICK),
+                    "--set", 'physics.dynamics="none"'], capsys, tmp_path, monkeypatch)
+    assert rc == 2, err
+    lines = [ln for ln in err.strip().splitlines() if ln.strip()]
+    assert len(lines) == 1 and key in lines[0], err
