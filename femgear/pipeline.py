@@ -30,6 +30,7 @@ from femgear.case import Case
 from femgear.case.checks import contact_warnings
 from femgear.levels import coupling as coupling_levels
 from femgear.levels import dynamics as dynamics_levels
+from femgear.levels import housing as housing_levels
 from femgear.levels import stiffness as stiffness_levels
 from femgear.levels import wear as wear_levels
 from femgear.levels.contact import contact_pass
@@ -53,6 +54,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
              wear_checkpoint: Path | None = None) -> RunResult:
     """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
     t0 = time.perf_counter()
+    housing_levels.of(case)        # the housing first (built once, cached): its bad input fails before any work
     stiffness = stiffness_levels.of(case)
     contact = contact_pass(case, stiffness=stiffness)
     contact_warnings(case, float(contact.hertz_pressure.max()))     # the scene's plausibility, on the run's pass

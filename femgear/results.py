@@ -24,6 +24,7 @@ from femgear.physics.rating.suite import PairRating
 from femgear.physics.stiffness.iso6336 import IsoStiffness
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.system.coupling.loop import CoupledResult
+from femgear.system.dynamics.housing_result import HousingResult
 
 
 @document_fields
@@ -137,6 +138,10 @@ class RunResult:
     """without a dynamics level: (4, 3) loads of the bearing stations (pinion_L, pinion_R, gear_L, gear_R; x, y
     radial, z axial) at the static load, on the scene's mounting with rigid shafts and no friction
     (:func:`femgear.stages.static_bearings`); with dynamics the dynamic run's own loads are in ``coupled`` [N]"""
+    housing: HousingResult | None = None
+    """with ``[housing]``: sensor accelerations, bearing and mesh forces and (FE) radiated power per mesh order over
+    speed and at the operating point, and the FE housing's deflection shape
+    (:func:`femgear.stages.housing_fields`; docs/models/housing.md) [-]"""
 
 
 #: types reachable from :class:`RunResult` whose fields are inputs documented elsewhere (the Case and its gear pair:

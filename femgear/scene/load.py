@@ -147,6 +147,16 @@ def read_toml(path: str | Path, what: str = "scene") -> dict[str, Any]:
         raise SceneError(str(path), f"not valid TOML: {exc}") from None
 
 
+#: scene keys that name a file: a relative path is read from the scene file's folder
+PATH_KEYS = (("housing", "frf_file"),)
+
+
 def load_scene(path: str | Path, overrides: Iterable[str] = ()) -> Scene:
-    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it (no geometry is built)."""
-    return scene_from_dict(read_toml(path), overrides)
+    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it (no geometry is built); the file
+    keys of :data:`PATH_KEYS` given relative are taken from the scene file's folder."""
+    data = apply_overrides(read_toml(path), overrides)
+    for table, key in PATH_KEYS:
+        node = data.get(table)
+        if isinstance(node, dict) and isinstance(node.get(key), str) and not Path(node[key]).is_absolute():
+            node[key] = str(Path(path).parent / node[key])
+    return scene_from_dict(data)

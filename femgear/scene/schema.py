@@ -500,6 +500,118 @@ class Modifications(FlankModification):
         return FlankModification(**{k: getattr(self, k) for k in FlankModification.model_fields})
 
 
+Point = Annotated[list[float], Field(min_length=3, max_length=3)]
+PerMember = Annotated[list[Pos], Field(min_length=2, max_length=2)]
+
+
+def _housing_doc() -> str:
+    from femgear.levels.housing import REGISTRY
+
+    return "the housing model: " + "; ".join(f"{k} ({v.summary})" for k, v in REGISTRY.items())
+
+
+class Housing(_Frozen):
+    """``[housing]``: the path from the bearings to a sensor and to the surroundings (docs/models/housing.md).
+
+    Absent: the bearings stand on rigid ground, as before.  ``model = "fe"``: a parametric gearbox housing
+    (gmsh, quadratic tetrahedra) around the pair, Craig–Bampton-reduced at the four bearing seats and coupled
+    into the dynamics (the bearings join the shafts to the seats; the ``lumped`` dynamics level).
+    ``model = "frf"``: receptances, mobilities or accelerances from the bearing-seat DOFs to sensors (and to the
+    seats), read from ``frf_file`` (UFF dataset 58 or CSV); a receiver (sensor = H · bearing forces of the model on
+    a rigid housing) or, with the whole seat-to-seat block, coupled by LM-FBS in the frequency domain.  Outputs per
+    mesh order over ``speed_range`` (the linear response of the coupled model) and at the operating speed.
+    """
+
+    model: str = Field(description=_housing_doc())
+    # ---- the FE housing: geometry in the dynamics' frame (shafts along z, pinion axis at (0, 0), gear at (a_w, 0))
+    wall_thickness: Pos = Field(0.010, description="side wall thickness of the FE housing [m]")
+    end_wall_thickness: Pos = Field(0.012, description="thickness of the two end walls that carry the bearings [m]")
+    end_position: Pos | None = Field(
+        None, description="z of the end walls' mid-planes, ± this [m]; default the outer bearing stations "
+                          "(± the larger bearing_span/2)")
+    clearance: Pos = Field(0.020, description="cavity beyond each gear's tip circle, radially [m]")
+    bore_diameter: PerMember | None = Field(
+        None, description="diameter of the bearing seats (the bearings' outer diameter) of the pinion and the gear "
+                          "shaft [m]; default 2 × shaft_diameter")
+    bearing_width: PerMember | None = Field(
+        None, description="axial width of the bearing seats of the pinion and the gear shaft [m]; default "
+                          "shaft_diameter/2")
+    boss_thickness: Pos = Field(0.010, description="radial thickness of the bosses around the bores [m]")
+    boss_length: Pos | None = Field(
+        None, description="axial length of the bosses, centred on the end walls [m]; default: with the default "
+                          "end_position the shortest (at least the end wall's thickness) that holds every bearing "
+                          "seat, with a given end_position the end wall's thickness")
+    foot_size: Pos = Field(0.040, description="edge length of the four square feet, clamped on their soles [m]")
+    foot_height: Pos = Field(0.020, description="height of the feet below the floor [m]")
+    mesh_size: Pos = Field(0.015, description="target element size of the housing mesh [m]")
+    elements: Literal["p2", "p1"] = Field(
+        "p2", description="quadratic (p2, bends a wall right with one element through its thickness) or linear "
+                          "tetrahedra (p1, stiff in bending: for quick looks only)")
+    youngs_modulus: Pos = Field(1.1e11, description="Young's modulus of the housing [Pa] (grey cast iron EN-GJL-250, "
+                                                    "EN 1561: 103-118 GPa)")
+    poisson_ratio: float = Field(0.26, gt=0, lt=0.5, description="Poisson's ratio of the housing [-]")
+    density: Pos = Field(7200.0, description="density of the housing [kg/m^3]")
+    damping_ratio: float = Field(0.02, ge=0, lt=1, description="modal damping ratio of every housing mode [-]")
+    modes: int = Field(60, ge=0, description="fixed-interface modes kept by the Craig–Bampton reduction [-]")
+    check_reduction: bool = Field(
+        False, description="also solve the unreduced FE housing's modes and report the Craig–Bampton error in the "
+                           "retained band (0.4 × the highest retained fixed-interface frequency); costs "
+                           "one more factorisation and eigen-solve")
+    sensors: list[Point] | None = Field(
+        None, description="FE housing: sensor points [m] (x, y, z), each read at the nearest vertex of the outer "
+                          "surface; default one on the top wall above each bearing station")
+    sensor_directions: list[Point] | None = Field(
+        None, description="FE housing: the sensors' directions (x, y, z), one per sensor; default the outward "
+                          "surface normal [-]")
+    # ---- measured or supplied FRFs
+    frf_file: str | None = Field(
+        None, description="FRF file (model = 'frf'): UFF/UNV dataset 58 (.uff, .unv) or CSV (.csv, columns "
+                          "frequency, output, input, real, imag); a relative path is read from the scene's folder")
+    frf_kind: Literal["receptance", "mobility", "accelerance"] | None = Field(
+        None, description="what the FRF file holds (m/N, m/s per N, m/s^2 per N); required for CSV, read from "
+                          "the UFF's ordinate type (and checked against this when given)")
+    seat_nodes: Annotated[list[int], Field(min_length=4, max_length=4)] | None = Field(
+        None, description="UFF: the node numbers of the bearing seats pinion_L, pinion_R, gear_L, gear_R [-] (their "
+                          "directions 1/2/3 = x/y/z of the dynamics' frame; every other response node is a sensor)")
+    coupling: Literal["auto", "receiver", "lm-fbs"] = Field(
+        "auto", description="FRF housing: receiver (sensor = H · bearing forces on a rigid housing), lm-fbs "
+                            "(coupled by substructuring: needs the 12 × 12 seat-to-seat block) or auto (lm-fbs "
+                            "when the file has that block)")
+    # ---- outputs
+    speed_range: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
+        None, description="driving-member speeds of the order sweep, [from, to] [rev/min]; default 10 % to 150 % "
+                          "of operating.speed_rpm")
+    speed_points: int = Field(41, ge=2, le=2000, description="speeds of the order sweep [-]")
+    orders: int = Field(6, ge=1, le=50, description="mesh orders 1 … orders of the sweep and of the operating "
+                                                    "point [-]")
+    ods_speed_rpm: Pos | None = Field(None, description="driving-member speed of the operating deflection shape "
+                                                        "[rev/min]; default operating.speed_rpm")
+    ods_order: int = Field(1, ge=1, le=50, description="mesh order of the operating deflection shape [-]")
+    air_impedance: Pos = Field(411.0, description="characteristic impedance ρc of the air the housing radiates into "
+                                                  "[N s/m^3] (ISO/TS 7849: 411)")
+
+    @field_validator("model")
+    @classmethod
+    def _model_exists(cls, name: str) -> str:
+        from femgear.levels.housing import REGISTRY
+
+        problem = REGISTRY.problem(name)
+        if problem:
+            raise ValueError(problem)
+        return name
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        if self.sensor_directions is not None and (self.sensors is None or
+                                                   len(self.sensor_directions) != len(self.sensors)):
+            raise ValueError("sensor_directions needs one direction per point of sensors")
+        if self.speed_range is not None and not self.speed_range[1] > self.speed_range[0]:
+            raise ValueError("speed_range must be [from, to] with to > from")
+        if self.ods_order > self.orders:
+            raise ValueError(f"ods_order {self.ods_order} is above orders = {self.orders}")
+        return self
+
+
 def _levels_doc(submodel: str, what: str) -> str:
     """The description of a ``[physics]`` key, listing its levels from the registry (cheapest first)."""
     from femgear.scene.levels import LEVELS
@@ -563,6 +675,7 @@ class Scene(_Frozen):
     modifications: Modifications = Modifications()
     physics: Physics = Physics()
     rating: Rating = Rating()
+    housing: Housing | None = None
 
     @property
     def pinion_rpm(self) -> float:

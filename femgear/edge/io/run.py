@@ -15,6 +15,7 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
   TE p-p of the last coupling pass's worn and expanded flanks),
   without dynamics ``bearing_forces_static`` (the static loads of the bearing stations, ``RunResult.static_bearing_loads``),
+  with ``[housing]`` ``housing`` (:func:`femgear.edge.io.housing.housing_summary`),
   with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`, its ``bearing_forces`` and
   ``sidebands`` included) and
   ``coupling`` (mode, converged, alternation: None or the two states' difference where the loop settled into a
@@ -113,6 +114,10 @@ def run_summary(result: RunResult) -> dict[str, Any]:
         summary["transmission_error"] = _te_summary(result)
     if result.tribology.film is not None:
         summary["film"] = film_summary(result.tribology.film, case.path.s, result.contact.pitch_index)
+    if result.housing is not None:
+        from femgear.edge.io.housing import housing_summary
+
+        summary["housing"] = housing_summary(result.housing)
     return summary
 
 
@@ -150,6 +155,10 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: b
         files.update({f"dynamics_{k}": v for k, v in dyn.items()})
     if plots:
         files.update(_figures(result, out_dir))
+    if result.housing is not None:
+        from femgear.edge.io.housing import write_housing
+
+        files.update(write_housing(result.housing, out_dir, plots, vtk, name=result.case.name))
     if vtk:
         from femgear.edge.io.paraview_run import write_run_paraview
 

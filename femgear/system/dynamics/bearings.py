@@ -2,7 +2,9 @@
 
 Each member runs on two bearing stations (:data:`femgear.system.dynamics.structure.STATIONS`:
 pinion_L, pinion_R, gear_L, gear_R), each a linear spring K_j and dashpot C_j per direction
-x, y (radial) and z (axial, the thrust bearing) between the shaft and the rigid housing.  The
+x, y (radial) and z (axial, the thrust bearing) between the shaft and the housing (rigid ground, or the seats of
+a compliant housing, :mod:`femgear.system.dynamics.housing`: u_j is then the bearing's deflection, shaft minus
+seat).  The
 force a station carries, i.e. the load the shaft puts on the bearing and the housing
 (positive along +x, +y, +z of the model frame), is
 
@@ -36,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.docfields import document_fields
+from femgear.system.dynamics.housing import bearing_deflection_map
 from femgear.system.dynamics.model import GearRotorModel
 from femgear.system.dynamics.orders import ORDERS, mesh_orders
 from femgear.system.dynamics.structure import STATIONS
@@ -46,7 +49,7 @@ AXES = ("x", "y", "z")
 def force_matrices(model: GearRotorModel) -> tuple[np.ndarray, np.ndarray]:
     """(K_F, C_F), each (4, 3, n): the station loads F = K_F q + C_F q̇ [N/m, N s/m] (module docstring)."""
     b = model.bearings
-    B = model.bearing_map.reshape(4, 3, model.n)
+    B = bearing_deflection_map(model).reshape(4, 3, model.n)
     a1 = model.rayleigh[1]
     return b.stiffness[..., None] * B, (b.damping + a1 * b.stiffness)[..., None] * B
 

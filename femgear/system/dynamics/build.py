@@ -23,8 +23,10 @@ from femgear.case import Case
 from femgear.case.checks import bearing_stations, toothed_width
 from femgear.errors import SceneError
 from femgear.levels import dynamics as dynamics_levels
+from femgear.levels import housing as housing_levels
 from femgear.levels import stiffness as stiffness_levels
 from femgear.physics.excitation import CumulativePitchError, Eccentricity, ProfileError, RandomError, Unbalance
+from femgear.system.dynamics.housing import couple_housing
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import (
     MeshGeometry,
@@ -215,7 +217,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
                 mesh_damping_ratio: float | None = None, v_reg: float | None = None,
                 bearing_span: tuple[float, float] | None = None, shaft_diameter: tuple[float, float] | None = None,
                 backlash: float | None = None, load_stiffness: float | None = None,
-                deviation: MeshDeviation | None = None) -> GearRotorModel:
+                deviation: MeshDeviation | None = None, rigid_housing: bool = False) -> GearRotorModel:
     """Assemble the model of ``case``.
 
     ``level``: "lumped" or "timoshenko" (default: ``physics.dynamics``, "lumped" when that
@@ -228,6 +230,8 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     ``<member>.shaft_diameter``, ``stiffness.rayleigh_ratio``, ``stiffness.damping_ratio``,
     ``friction.regularisation_speed``, ``pair.backlash`` and ``operating.loop_stiffness``.
     ``deviation``: flank deviations of the drive and coast flanks (:class:`MeshDeviation`).
+    An FE ``[housing]`` is coupled (:func:`femgear.system.dynamics.housing.couple_housing`: the bearings join the
+    shafts to its seats) unless ``rigid_housing``.
     """
     pair, members = case.pair, case.members
     dyn = dynamics_levels.model_level(level, case.levels.dynamics)
@@ -277,6 +281,12 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         load_stiffness=load_stiffness, bearings=st.bearings, base_deviation=tooth_contact_deviation(source),
         pitch_errors=pitch_errors(case, fm),
     )
+    layer = None if rigid_housing else housing_levels.of(case)
+    if layer is not None and layer.reduced is not None:
+        try:
+            model = couple_housing(model, layer.reduced)
+        except ValueError as exc:
+            raise SceneError("housing.model", str(exc)) from None
     if friction is None:
         from femgear.levels.lubrication import static_friction
 

@@ -44,6 +44,7 @@ both thresholds together.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -140,6 +141,9 @@ class GearRotorModel:
     base_deviation: MeshDeviation | None = None
     #: per helix, the once-per-revolution cumulative pitch deviations of pinion and gear it sees
     pitch_errors: tuple[tuple[CumulativePitchError, ...], ...] = ()
+    #: the compliant housing the bearings sit in (:class:`femgear.system.dynamics.housing.HousingCoupling`,
+    #: :func:`femgear.system.dynamics.housing.couple_housing`); None: the bearings stand on rigid ground
+    housing: Any = None
 
     @property
     def n(self) -> int:
