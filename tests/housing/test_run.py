@@ -10,6 +10,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from tests.io.test_summary_schema import conforms
+
 ROOT = Path(__file__).resolve().parents[2]
 #: the tree the housing layer was built on (the bearing forces it reads, cherry-picked from the NVH work)
 BEFORE = "c777cbb"
@@ -123,6 +125,7 @@ def test_fe_housing_run_writes_its_files(tmp_path):
     _femgear(["run", str(scene), "--out", "run", "-q", "--no-plots", *_sets(QUICK)], tmp_path)
     out = tmp_path / "run"
     summary = json.loads((out / "results.json").read_text())["summary"]
+    conforms(summary)
     h = summary["housing"]
     assert h["coupling"] == "craig-bampton" and h["operating"]["source"] == "time integration"
     assert len(h["operating"]["sensor_acceleration"]) == 3 and len(h["sensors"]) == 4
@@ -144,7 +147,9 @@ def test_frf_housing_receiver_and_lm_fbs(tmp_path, capsys, monkeypatch):
                         "--set", 'physics.dynamics="none"', "--set", 'physics.preset="fast"'], capsys, tmp_path,
                        monkeypatch)
         assert rc == 0, err
-        h = json.loads((tmp_path / out / "results.json").read_text())["summary"]["housing"]
+        summary = json.loads((tmp_path / out / "results.json").read_text())["summary"]
+        conforms(summary)                                            # every key in the result schema, with its kind
+        h = summary["housing"]
         assert h["coupling"] == coupling and h["operating"]["source"] == "linear"
         assert h["sensors"] == ["S1"] and max(max(a) for a in h["operating"]["sensor_acceleration"]) > 0
 

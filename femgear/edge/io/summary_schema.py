@@ -172,6 +172,23 @@ SECTIONS: dict[str, Section] = {
         **_keys("coupling", TABLE, "alternation", optional=True),
         **_keys("coupling.history", LIST, "iteration mesh_force_change mu_change seconds")}, _dynamic,
         "with a dynamics level"),
+    "housing": Section({
+        **_keys("housing", TEXT, "model coupling"), **_keys("housing", FLAG, "linear_valid"),
+        **_keys("housing", LIST, "sensors rigid_natural_frequencies ignored_inputs natural_frequencies "
+                                 "housing_frequencies sensor_points sensor_directions"),
+        **_keys("housing", NUMBER, "fixed_interface_modes fixed_interface_max_hz full_dofs housing_mass "
+                                   "surface_area"),
+        **_keys("housing.operating", NUMBER, "pinion_rpm sound_power_level_total sound_power_level_a "
+                                             "sweep_max_sound_power_level sweep_max_sound_power_level_speed"),
+        **_keys("housing.operating", TEXT, "source"),
+        **_keys("housing.operating", LIST, "frequency sensor_acceleration bearing_force_radial sound_power_level"),
+        **_keys("housing.sweep", PAIR, "pinion_rpm"), **_keys("housing.sweep", NUMBER, "points orders lines_valid"),
+        **_keys("housing.sweep", LIST, "max_sensor_acceleration max_sensor_acceleration_rpm"),
+        **_keys("housing.force_change.*", NUMBER, "median p90 max"),
+        **_keys("housing.reduction_check", PAIR, "band_hz"),
+        **_keys("housing.reduction_check", NUMBER, "modes_in_band max_error"),
+        **_keys("housing.reduction_check", FLAG, "flagged")},
+        lambda scene: scene.housing is not None, "with a [housing] table"),
     "outputs": Section(_keys("outputs", TEXT, "*"), when="in every run (the files written; not in results.csv)"),
 }
 

@@ -32,10 +32,11 @@ ORDERS = 6
 
 def resolves(t: np.ndarray, frequencies: np.ndarray) -> bool:
     """Whether a record at times ``t`` [s] separates the lines ``frequencies`` [Hz]: every two of them (and
-    the mean, f = 0) are at least 1/T apart, T the record length (n uniform samples: n steps)."""
+    the mean, f = 0) are at least 1/T apart, T the record length (n uniform samples: n steps), to one sample (a
+    window of whole periods that the time step does not divide, :func:`whole_periods`, is up to one step short)."""
     f = np.sort(np.concatenate([[0.0], np.abs(np.asarray(frequencies, dtype=float))]))
     span = float(t[-1] - t[0]) * t.size / max(t.size - 1, 1)      # n samples cover n steps
-    return span > 0 and bool(np.all(np.diff(f) * span >= 1.0 - 1e-9))
+    return span > 0 and bool(np.all(np.diff(f) * span >= 1.0 - 1.0 / t.size))
 
 
 def line_fit(x: np.ndarray, t: np.ndarray, frequencies: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
