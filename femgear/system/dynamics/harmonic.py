@@ -50,6 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.docfields import document_fields
+from femgear.system.dynamics.bearings import force_matrices
 from femgear.system.dynamics.model import GearRotorModel
 
 #: mesh harmonics per family to start with (:func:`harmonic_response` doubles them until converged)
@@ -274,10 +275,11 @@ class HarmonicSolution:
     truncation: float
     """the truncation estimate: largest change of the mesh-force and DTE lines of orders ≤ H/4 between H/2 and H
     harmonics, relative to the largest line [-]"""
-    bearing_force: np.ndarray | None = None
-    """(4, 3, L) complex amplitude of the bearing forces (pinion-L/R, gear-L/R; x, y, z) on the housing [N]"""
-    bearing_force_mean: np.ndarray | None = None
-    """(4, 3) mean bearing forces [N]"""
+    bearing_force: np.ndarray
+    """(4, 3, L) complex amplitude of the bearing-station loads (pinion-L/R, gear-L/R; x, y, z), the force of the
+    shaft on the bearing (:func:`femgear.system.dynamics.bearings.force_matrices`) [N]"""
+    bearing_force_mean: np.ndarray
+    """(4, 3) mean bearing-station loads [N]"""
 
     @property
     def order(self) -> np.ndarray:
@@ -370,7 +372,12 @@ def _solve(model: GearRotorModel, H: int):
     kappa_long = np.array([periodic_coefficients(k, 2 * L) for k in (model.stiffness.k_left, model.stiffness.k_right)])
     fams = [_mesh_family(model, H, kappa_long, L)] + _member_families(model, H, ops.kappa)
     sols = [_solve_family(model, ops, fam, H) for fam in fams]
-    values = [(N, 0.5 * (Y - fam.error).sum(axis=0), Q.T) for fam, (Y, N, Q) in zip(fams, sols)]
+    KF, CF = force_matrices(model)
+    values = []
+    for fam, (Y, N, Q) in zip(fams, sols):
+        w = (fam.nu + np.arange(-H, H + 1)) * 2 * math.pi * model.mesh_frequency
+        bearing = np.einsum("jdn,kn->jdk", KF, Q) + 1j * w * np.einsum("jdn,kn->jdk", CF, Q)
+        values.append((N, 0.5 * (Y - fam.error).sum(axis=0), Q.T, bearing))
     return fams, sols, _lines(fams, values, H, model.mesh_frequency)
 
 
@@ -385,10 +392,12 @@ def _truncation(coarse, fine, order: float, fm: float) -> float:
     """Largest change of the mesh-force and DTE lines of order ≤ ``order`` from ``coarse`` to ``fine``, relative to the
     largest line of each quantity [-]."""
     (fc, vc), (ff, vf) = _upto(coarse, order, fm), _upto(fine, order, fm)
+    if fc.shape != ff.shape or not np.allclose(fc, ff):     # both hold every line of order ≤ H/4
+        raise AssertionError("harmonic balance: the line sets of H/2 and H harmonics differ")
     err = 0.0
     for a, b in zip(vc[:2], vf[:2]):
         scale = np.abs(b).max(initial=0.0)
-        if scale > 0 and a.shape == b.shape:
+        if scale > 0:
             err = max(err, float(np.abs(b - a).max() / scale))
     return err
 
@@ -418,10 +427,10 @@ def harmonic_response(model: GearRotorModel, harmonics: int | None = None,
         if harmonics is not None or err <= tol or 2 * H > MAX_HARMONICS:
             break
         H, coarse = 2 * H, fine
-    freq, (force, dte, q) = _upto(fine, H // 2, fm)
+    freq, (force, dte, q, bearing) = _upto(fine, H // 2, fm)
     margin, nmin = _contact(model, fams, sols, H)
     return HarmonicSolution(
         mesh_frequency=model.mesh_frequency, harmonics=H, families=tuple(f.name for f in fams), frequency=freq,
         mesh_force=force, mesh_force_mean=sols[0][1][:, H].real, dte=dte, displacement=model.T @ q,
         displacement_mean=model.T @ sols[0][2][H].real, contact_margin=margin, normal_force_min=nmin,
-        truncation=err)
+        truncation=err, bearing_force=bearing, bearing_force_mean=force_matrices(model)[0] @ sols[0][2][H].real)

@@ -37,6 +37,7 @@ import numpy as np
 
 from femgear.docfields import document_fields
 from femgear.physics.excitation import contact_indicator, gap_function
+from femgear.system.dynamics.bearings import bearing_forces
 from femgear.system.dynamics.family import SpeedFamily
 from femgear.system.dynamics.model import GearRotorModel
 
@@ -192,8 +193,8 @@ class RunUp:
     """(n_t, 2) dynamic mesh force of the left and right helix [N]"""
     dte: np.ndarray
     """dynamic transmission error, the mean of the helices' deflections δ_L, δ_R [m]"""
-    bearing_force: np.ndarray | None
-    """(n_t, 4, 3) bearing-station loads (pinion-L/R, gear-L/R; x, y, z) [N]"""
+    bearing_force: np.ndarray
+    """(n_t, 4, 3) bearing-station loads (pinion-L/R, gear-L/R; x, y, z), the force of the shaft on the bearing [N]"""
     settle_time: float
     """end of the settling phase at the start speed; the ramp follows [s]"""
     ramp_end: float
@@ -245,7 +246,7 @@ def simulate_runup(family: SpeedFamily, ramp: Ramp, *, progress: Progress | None
     delta = q_rec @ hi.G.T - inputs(t)[2].T
     ratio = abs(hi.omega[0]) * 60 / (2 * math.pi) / inputs.grid[-1]        # pinion revolutions per driver revolution
     return RunUp(t=t, speed=ramp.speed(t, inputs.t_settle), pinion_revolutions=ratio * ramp.revolutions(t, inputs.t_settle),
-                 mesh_force=N, dte=delta.mean(axis=1), bearing_force=_bearing_forces(hi, q_rec, v_rec),
+                 mesh_force=N, dte=delta.mean(axis=1), bearing_force=bearing_forces(hi, q_rec, v_rec),
                  settle_time=inputs.t_settle, ramp_end=inputs.end_time, teeth=int(hi.pair.z1), dt=dt, steps=total,
                  seconds=time.perf_counter() - t0)
 
@@ -260,75 +261,3 @@ def _end_state(model, sim, steps, dt, every, inputs, done):
     th = (2 * (done + steps - rest) + np.arange(2 * rest + 1)) * (dt / 2)
     end = rk4(model, rest, dt, sim.q[-1], sim.v[-1], rest, 0.0, known=inputs(th))
     return end.q[-1], end.v[-1]
-
-
-def _bearing_forces(model: GearRotorModel, q: np.ndarray, v: np.ndarray) -> np.ndarray | None:
-    try:
-        from femgear.system.dynamics.bearings import bearing_forces
-    except ImportError:
-        return None
-    return bearing_forces(model, q, v)
-
-
-@document_fields
-@dataclass(frozen=True)
-class OrderMap:
-    """Order spectra of a signal over a run-up: the waterfall and the mesh-order cuts."""
-
-    orders: np.ndarray
-    """pinion orders of the spectrum bins (resolution 1/``revolutions``) [-]"""
-    speed: np.ndarray
-    """driver speed at the centre of each block [rpm]"""
-    amplitude: np.ndarray
-    """(blocks, orders, …) single-sided amplitude of each pinion order per block (Hanning, amplitude-corrected)
-    [unit of the signal]"""
-    mesh_orders: np.ndarray
-    """the mesh orders k of the cuts [-]"""
-    cuts: np.ndarray
-    """(blocks, mesh orders, …) amplitude of the mesh order k = pinion order k z₁ per block [unit of the signal]"""
-    revolutions: int
-    """pinion revolutions per block [-]"""
-
-
-def order_track(run: RunUp, signal: np.ndarray, *, revolutions: int = 4, samples_per_rev: int | None = None,
-                mesh_orders: int = 4, max_order: float | None = None) -> OrderMap:
-    """The order spectra of ``signal`` (n_t, …) of ``run`` over its ramp (module docstring).
-
-    ``revolutions``: pinion revolutions per block (50 % overlap); ``samples_per_rev``: the angle grid (default: the
-    record's densest sampling in angle, at the start speed, so that the resampling never decimates and folds the
-    response's high orders onto the tracked ones; at least 16 samples per tooth); ``max_order``: the highest
-    pinion order kept (default (``mesh_orders`` + 0.5) z₁).
-    """
-    from scipy.interpolate import CubicSpline
-
-    if revolutions < 1:
-        raise ValueError(f"revolutions must be ≥ 1 (got {revolutions!r})")
-    z1 = run.teeth
-    on = (run.t >= run.settle_time - 1e-12) & (run.t <= run.ramp_end + 1e-12)
-    rev = run.pinion_revolutions[on]
-    spr = samples_per_rev or max(16 * z1, math.ceil(1.0 / float(np.diff(rev).min())))
-    x = np.asarray(signal, dtype=float)[on]
-    n_blocks = math.floor(2 * (rev[-1] - rev[0]) / revolutions) - 1
-    if n_blocks < 1:
-        raise ValueError(f"the ramp turns the pinion {rev[-1] - rev[0]:.3g} revolutions: fewer than one block of "
-                         f"{revolutions}; lengthen the ramp or shorten the blocks")
-    spline = CubicSpline(rev, x, axis=0)
-    width = revolutions * spr
-    window = np.hanning(width)
-    order = np.fft.rfftfreq(width, 1.0 / spr)
-    top = (mesh_orders + 0.5) * z1 if max_order is None else max_order
-    keep = order <= top
-    starts = rev[0] + 0.5 * revolutions * np.arange(n_blocks)
-    amps, speeds = [], []
-    for r0 in starts:
-        grid = r0 + np.arange(width) / spr
-        block = spline(grid)
-        block = block - block.mean(axis=0)
-        X = np.fft.rfft(block * window.reshape((-1,) + (1,) * (block.ndim - 1)), axis=0)
-        amps.append(2 * np.abs(X[keep]) / window.sum())
-        speeds.append(float(np.interp(r0 + 0.5 * revolutions, rev, run.speed[on])))
-    amp = np.array(amps)
-    k = np.arange(1, mesh_orders + 1)
-    bins = np.rint(k * z1 * revolutions).astype(int)
-    return OrderMap(orders=order[keep], speed=np.array(speeds), amplitude=amp, mesh_orders=k.astype(float),
-                    cuts=amp[:, bins], revolutions=int(revolutions))
