@@ -248,3 +248,19 @@ def continuation(problem: PeriodicProblem, omega0: float, omega1: float, x0: np.
     x_arr = np.array(xs)
     stable = None if stability is None else np.array([stability(xx, ww) for xx, ww in zip(x_arr, oms)])
     return Branch(omega=np.array(oms), x=x_arr, folds=tuple(folds), iterations=np.array(its), stable=stable)
+
+
+def solutions_at(problem: PeriodicProblem, branch: Branch, omega: float, tol: float = 1e-10) -> list[np.ndarray]:
+    """Every solution of ``branch`` at the frequency ``omega``: for each segment of the branch that brackets it, Newton at
+    fixed ω from the segment's linear interpolation (the branch's points themselves lie at the continuation's ω)."""
+    out = []
+    w = branch.omega
+    for i in range(w.size - 1):
+        lo, hi = sorted((w[i], w[i + 1]))
+        if not lo <= omega <= hi or hi == lo:
+            continue
+        s = (omega - w[i]) / (w[i + 1] - w[i])
+        x = solve(problem, omega, (1 - s) * branch.x[i] + s * branch.x[i + 1], tol)
+        if not any(np.allclose(x, y, rtol=1e-6, atol=1e-9 * max(1.0, float(np.abs(y).max()))) for y in out):
+            out.append(x)
+    return out

@@ -21,7 +21,14 @@ from scipy.linalg import expm
 
 from femgear.docfields import document_fields
 from femgear.physics.excitation import contact_indicator, gap_function
-from femgear.system.dynamics.aft import PeriodicProblem, continuation, harmonics_of, time_signal, unknowns_of
+from femgear.system.dynamics.aft import (
+    PeriodicProblem,
+    continuation,
+    harmonics_of,
+    solutions_at,
+    time_signal,
+    unknowns_of,
+)
 
 #: samples of the reconstructed period for amplitudes and contact fractions
 READ_SAMPLES = 4096
@@ -75,6 +82,10 @@ class KSBranch:
     """Ω of the turning points, in the order the branch meets them [-]"""
     harmonics: int
     """harmonics H of the balance [-]"""
+    at: np.ndarray
+    """the frequencies Ω asked for by ``at`` of :func:`kahraman_singh_hb` [-]"""
+    stable_at: np.ndarray
+    """(len(at), 2) amplitudes of the stable solutions at ``at``, ascending (NaN where fewer), over b [-]"""
 
     @property
     def stable(self) -> np.ndarray:
@@ -83,9 +94,10 @@ class KSBranch:
 
 def kahraman_singh_hb(omega0: float = 0.6, omega1: float = 1.3, zeta: float = 0.05, mean_load: float = 0.1,
                       alternating_load: float = 0.02, harmonics: int = 32, samples: int = 512,
-                      ds: float = 0.01) -> KSBranch:
+                      ds: float = 0.01, at=None) -> KSBranch:
     """Trace the oscillator's response from Ω = ``omega0`` to ``omega1`` (defaults: those of
-    :func:`femgear.system.dynamics.sdof.kahraman_singh_sweep` and ``femgear dynamics --kahraman-singh``)."""
+    :func:`femgear.system.dynamics.sdof.kahraman_singh_sweep` and ``femgear dynamics --kahraman-singh``);
+    ``at``: frequencies at which the stable solutions are solved exactly (:func:`~femgear.system.dynamics.aft.solutions_at`)."""
     if not (0 < omega0 < omega1 and zeta > 0 and mean_load > 0 and alternating_load >= 0):
         raise ValueError("need 0 < omega0 < omega1, zeta > 0, mean_load > 0 and alternating_load ≥ 0")
     prob = ks_problem(zeta, mean_load, alternating_load, harmonics, samples)
@@ -94,7 +106,17 @@ def kahraman_singh_hb(omega0: float = 0.6, omega1: float = 1.3, zeta: float = 0.
     Y[0, 1] = 0.5 * alternating_load / (1 - omega0**2 + 2j * zeta * omega0)
     br = continuation(prob, omega0, omega1, unknowns_of(prob, Y), ds=ds, ds_max=0.05, x_scale=1.0)
     x_t = time_signal(np.array([harmonics_of(prob, x)[0] for x in br.x]), READ_SAMPLES)
+    at = np.asarray([] if at is None else at, dtype=float)
+    stable_at = np.full((at.size, 2), np.nan)
+    for i, om in enumerate(at):
+        amps = sorted(_amplitude(prob, x) for x in solutions_at(prob, br, om) if ks_stability(prob, zeta, x, om) < 1)
+        stable_at[i, :len(amps[:2])] = amps[:2]
     return KSBranch(frequency=br.omega, amplitude=0.5 * np.ptp(x_t, axis=1),
                     contact_loss=np.mean(np.abs(x_t) <= 1.0, axis=1),
                     multiplier=np.array([ks_stability(prob, zeta, x, w) for x, w in zip(br.x, br.omega)]),
-                    folds=tuple(float(br.omega[i]) for i in br.folds), harmonics=prob.harmonics)
+                    folds=tuple(float(br.omega[i]) for i in br.folds), harmonics=prob.harmonics, at=at,
+                    stable_at=stable_at)
+
+
+def _amplitude(problem: PeriodicProblem, x: np.ndarray) -> float:
+    return float(0.5 * np.ptp(time_signal(harmonics_of(problem, x), READ_SAMPLES)))
