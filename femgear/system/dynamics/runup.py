@@ -88,15 +88,6 @@ class Ramp:
         after = np.maximum(t - t_settle - self.duration, 0.0) * self.rpm1
         return (self.rpm0 * np.minimum(t, t_settle) + ramp + after) / 60.0
 
-    def time_of(self, revolutions: np.ndarray, t_settle: float) -> np.ndarray:
-        """Inverse of :meth:`revolutions` on the settling and ramp phases [s]."""
-        r = np.asarray(revolutions, dtype=float) * 60.0
-        r_settle = self.rpm0 * t_settle
-        a = 0.5 * (self.rpm1 - self.rpm0) / self.duration
-        rr = np.maximum(r - r_settle, 0.0)
-        tau = np.where(a > 0, (-self.rpm0 + np.sqrt(self.rpm0**2 + 4 * a * rr)) / (2 * a), rr / self.rpm0)
-        return np.where(r <= r_settle, r / self.rpm0, t_settle + tau)
-
 
 def speed_grid(rpm0: float, rpm1: float, step: float = SPEED_GRID_STEP) -> np.ndarray:
     """Speeds from ``rpm0`` to ``rpm1`` [rpm], geometrically spaced at most ``step`` apart (relative)."""
@@ -261,3 +252,68 @@ def _end_state(model, sim, steps, dt, every, inputs, done):
     th = (2 * (done + steps - rest) + np.arange(2 * rest + 1)) * (dt / 2)
     end = rk4(model, rest, dt, sim.q[-1], sim.v[-1], rest, 0.0, known=inputs(th))
     return end.q[-1], end.v[-1]
+
+
+
+@document_fields
+@dataclass(frozen=True)
+class OrderMap:
+    """Order spectra of a signal over a run-up: the waterfall and the mesh-order cuts."""
+
+    orders: np.ndarray
+    """pinion orders of the spectrum bins (resolution 1/``revolutions``) [-]"""
+    speed: np.ndarray
+    """driver speed at the centre of each block [rpm]"""
+    amplitude: np.ndarray
+    """(blocks, orders, …) single-sided amplitude of each pinion order per block (Hanning, amplitude-corrected)
+    [unit of the signal]"""
+    mesh_orders: np.ndarray
+    """the mesh orders k of the cuts [-]"""
+    cuts: np.ndarray
+    """(blocks, mesh orders, …) amplitude of the mesh order k = pinion order k z₁ per block [unit of the signal]"""
+    revolutions: int
+    """pinion revolutions per block [-]"""
+
+
+def order_track(run: RunUp, signal: np.ndarray, *, revolutions: int = 4, samples_per_rev: int | None = None,
+                mesh_orders: int = 4, max_order: float | None = None) -> OrderMap:
+    """The order spectra of ``signal`` (n_t, …) of ``run`` over its ramp (module docstring).
+
+    ``revolutions``: pinion revolutions per block (50 % overlap); ``samples_per_rev``: the angle grid (default: the
+    record's densest sampling in angle, at the start speed, so that the resampling never decimates and folds the
+    response's high orders onto the tracked ones; at least 16 samples per tooth); ``max_order``: the highest
+    pinion order kept (default (``mesh_orders`` + 0.5) z₁).
+    """
+    from scipy.interpolate import CubicSpline
+
+    if revolutions < 1:
+        raise ValueError(f"revolutions must be ≥ 1 (got {revolutions!r})")
+    z1 = run.teeth
+    on = (run.t >= run.settle_time - 1e-12) & (run.t <= run.ramp_end + 1e-12)
+    rev = run.pinion_revolutions[on]
+    spr = samples_per_rev or max(16 * z1, math.ceil(1.0 / float(np.diff(rev).min())))
+    x = np.asarray(signal, dtype=float)[on]
+    n_blocks = math.floor(2 * (rev[-1] - rev[0]) / revolutions) - 1
+    if n_blocks < 1:
+        raise ValueError(f"the ramp turns the pinion {rev[-1] - rev[0]:.3g} revolutions: fewer than one block of "
+                         f"{revolutions}; lengthen the ramp or shorten the blocks")
+    spline = CubicSpline(rev, x, axis=0)
+    width = revolutions * spr
+    window = np.hanning(width)
+    order = np.fft.rfftfreq(width, 1.0 / spr)
+    top = (mesh_orders + 0.5) * z1 if max_order is None else max_order
+    keep = order <= top
+    starts = rev[0] + 0.5 * revolutions * np.arange(n_blocks)
+    amps, speeds = [], []
+    for r0 in starts:
+        grid = r0 + np.arange(width) / spr
+        block = spline(grid)
+        block = block - block.mean(axis=0)
+        X = np.fft.rfft(block * window.reshape((-1,) + (1,) * (block.ndim - 1)), axis=0)
+        amps.append(2 * np.abs(X[keep]) / window.sum())
+        speeds.append(float(np.interp(r0 + 0.5 * revolutions, rev, run.speed[on])))
+    amp = np.array(amps)
+    k = np.arange(1, mesh_orders + 1)
+    bins = np.rint(k * z1 * revolutions).astype(int)
+    return OrderMap(orders=order[keep], speed=np.array(speeds), amplitude=amp, mesh_orders=k.astype(float),
+                    cuts=amp[:, bins], revolutions=int(revolutions))
