@@ -23,7 +23,8 @@ def order_sweep_summary(sw, modal) -> dict[str, Any]:
     marks = resonance_marks(modal.frequencies, modal.energy["mesh"], float(sw.mesh_frequency.min()),
                             float(sw.mesh_frequency.max()), harmonics=len(sw.orders))
     return {"speed_rpm": sw.speed_rpm, "mesh_frequency": sw.mesh_frequency, "dte_rms": sw.dte_rms,
-            "method": list(sw.method), "orders": sw.orders, "mesh_force_orders": sw.mesh_force,
+            "method": list(sw.method), "orders": sw.orders, "mesh_force_mean": sw.mesh_force_mean,
+            "mesh_force_orders": sw.mesh_force,
             "bearing_force_orders": sw.bearing_force, "contact_margin": sw.contact_margin,
             "warnings": list(sw.warnings), "natural_frequencies_hz": modal.frequencies,
             "mesh_energy": modal.energy["mesh"],
@@ -36,7 +37,8 @@ def write_order_sweep(sw, modal, folder: str | Path, plots: bool = True, name: s
     folder = Path(folder)
     files = {"json": write_json(folder / "dynamics_sweep.json", order_sweep_summary(sw, modal)),
              "npz": _save_npz(folder / "dynamics_sweep.npz", speed_rpm=sw.speed_rpm, mesh_frequency=sw.mesh_frequency,
-                              dte_rms=sw.dte_rms, orders=sw.orders, mesh_force=sw.mesh_force,
+                              dte_rms=sw.dte_rms, orders=sw.orders, mesh_force_mean=sw.mesh_force_mean,
+                              mesh_force=sw.mesh_force,
                               bearing_force=sw.bearing_force, contact_margin=sw.contact_margin,
                               harmonic=np.array([m == "harmonic" for m in sw.method]))}
     if plots:

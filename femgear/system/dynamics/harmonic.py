@@ -317,25 +317,22 @@ class HarmonicSolution:
 def _lines(fams: list[_Family], values: list[tuple[np.ndarray, ...]], H: int, fm: float):
     """Line frequencies and complex amplitudes of per-family harmonics ``values`` (each (…, 2H+1)): the lines of every
     family summed where they coincide, conjugate lines (f < 0) folded onto f > 0, the mean (f = 0) left out."""
-    freqs: list[float] = []
-    amps: list[list[np.ndarray]] = [[] for _ in values[0]]
-    for fam, vals in zip(fams, values):
-        for idx in range(2 * H + 1):
-            order = fam.nu + idx - H
-            if fam.nu == 0.0 and order <= 0:
-                continue
-            for q, v in enumerate(vals):
-                x = 2 * v[..., idx]
-                amps[q].append(np.conj(x) if order < 0 else x)
-            freqs.append(abs(order))
-    key = np.round(np.array(freqs) * 1e9).astype(np.int64)
+    orders, picks = [], []
+    for fam in fams:
+        o = fam.nu + np.arange(-H, H + 1)
+        keep = o > 0 if fam.nu == 0.0 else np.ones(o.size, bool)
+        orders.append(o[keep])
+        picks.append(keep)
+    o = np.concatenate(orders)
+    key = np.round(np.abs(o) * 1e9).astype(np.int64)
     uniq, inv = np.unique(key, return_inverse=True)
     out = []
-    for a in amps:
-        arr = np.array(a)                                   # (lines, …)
-        summed = np.zeros((uniq.size,) + arr.shape[1:], dtype=complex)
-        np.add.at(summed, inv, arr)
-        out.append(np.moveaxis(summed, 0, -1))
+    for q in range(len(values[0])):
+        x = np.concatenate([2 * vals[q][..., keep] for vals, keep in zip(values, picks)], axis=-1)
+        x = np.where(o < 0, np.conj(x), x)
+        summed = np.zeros(x.shape[:-1] + (uniq.size,), dtype=complex)
+        np.add.at(np.moveaxis(summed, -1, 0), inv, np.moveaxis(x, -1, 0))
+        out.append(summed)
     return uniq / 1e9 * fm, out
 
 

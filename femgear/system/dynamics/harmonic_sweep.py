@@ -49,6 +49,8 @@ class OrderSweep:
     """per speed: ``harmonic`` (harmonic balance) or ``time`` (time integration) [-]"""
     orders: np.ndarray
     """the mesh orders k reported (1 … K) [-]"""
+    mesh_force_mean: np.ndarray
+    """(speeds, 2) mean dynamic mesh force per helix [N]"""
     mesh_force: np.ndarray
     """(speeds, 2, K) amplitude of mesh order k of the dynamic mesh force per helix (left, right) [N]"""
     bearing_force: np.ndarray
@@ -88,7 +90,7 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
     k = np.arange(1, orders + 1)
     S = speeds.size
     fm, dte = np.empty(S), np.empty(S)
-    force, bearing = np.empty((S, 2, orders)), np.empty((S, 4, 3, orders))
+    mean, force, bearing = np.empty((S, 2)), np.empty((S, 2, orders)), np.empty((S, 4, 3, orders))
     margin = np.full((S, 2), np.nan)
     used, why_not = [], np.zeros(S, dtype=object)
     for i, rpm in enumerate(speeds):
@@ -99,7 +101,7 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
             hb = harmonic_response(model, harmonics)
             margin[i] = hb.contact_margin
             if hb.contact_kept:
-                dte[i] = hb.dte_rms
+                dte[i], mean[i] = hb.dte_rms, hb.mesh_force_mean
                 force[i] = hb.order_amplitudes(hb.mesh_force, k)
                 bearing[i] = hb.order_amplitudes(hb.bearing_force, k)
                 used.append("harmonic")
@@ -111,7 +113,7 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
         why_not[i] = reason
         run = run_dynamics(model, method=integrator, cycles=cycles, transient_cycles=transient_cycles)
         res = run.response
-        dte[i] = res.amplitudes["dte_rms"]
+        dte[i], mean[i] = res.amplitudes["dte_rms"], res.mesh_force.mean(axis=0)
         force[i] = mesh_orders(res.mesh_force, res.t, model.mesh_frequency, orders).T
         bearing[i] = np.moveaxis(mesh_orders(res.bearings.force, res.t, model.mesh_frequency, orders), 0, -1)
         used.append("time")
@@ -124,4 +126,4 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
                 span = f"{lo:.6g} rpm" if n == 1 else f"{lo:.6g}–{hi:.6g} rpm ({n} speeds)"
                 warnings.append(f"{span}: time integration, harmonic balance does not apply: {reason}")
     return OrderSweep(speed_rpm=speeds, mesh_frequency=fm, dte_rms=dte, method=tuple(used), orders=k.astype(float),
-                      mesh_force=force, bearing_force=bearing, contact_margin=margin, warnings=tuple(warnings))
+                      mesh_force_mean=mean, mesh_force=force, bearing_force=bearing, contact_margin=margin, warnings=tuple(warnings))
