@@ -28,10 +28,12 @@ import numpy as np
 from femgear.case import Case
 from femgear.docfields import document_fields
 from femgear.system.dynamics.family import SpeedFamily
-from femgear.system.dynamics.harmonic import applies, harmonic_response
+from femgear.system.dynamics.harmonic import applies, harmonic_responses
 from femgear.system.dynamics.orders import ORDERS, mesh_orders
 
 METHODS = ("auto", "harmonic", "time")
+#: speeds solved together by the harmonic balance (one batch of numpy calls)
+BATCH = 50
 
 
 @document_fields
@@ -92,33 +94,38 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
     fm, dte = np.empty(S), np.empty(S)
     mean, force, bearing = np.empty((S, 2)), np.empty((S, 2, orders)), np.empty((S, 4, 3, orders))
     margin = np.full((S, 2), np.nan)
-    used, why_not = [], np.zeros(S, dtype=object)
-    for i, rpm in enumerate(speeds):
-        model = family.at(rpm)
-        fm[i] = model.mesh_frequency
-        reason = "time integration asked for" if method == "time" else applies(model)
-        if reason is None:
-            hb = harmonic_response(model, harmonics)
+    models = [family.at(rpm) for rpm in speeds]
+    fm[:] = [m.mesh_frequency for m in models]
+    reasons: list[str | None] = ["time integration asked for" if method == "time" else applies(m) for m in models]
+    hb_idx = [i for i, r in enumerate(reasons) if r is None]
+    done = 0
+    for c in range(0, len(hb_idx), BATCH):
+        chunk = hb_idx[c:c + BATCH]
+        for i, hb in zip(chunk, harmonic_responses([models[i] for i in chunk], harmonics)):
             margin[i] = hb.contact_margin
-            if hb.contact_kept:
-                dte[i], mean[i] = hb.dte_rms, hb.mesh_force_mean
-                force[i] = hb.order_amplitudes(hb.mesh_force, k)
-                bearing[i] = hb.order_amplitudes(hb.bearing_force, k)
-                used.append("harmonic")
-                why_not[i] = None
-                if progress is not None:
-                    progress(i + 1)
+            if not hb.contact_kept:
+                reasons[i] = "the loaded flanks separate (backlash): the linear answer does not hold"
                 continue
-            reason = "the loaded flanks separate (backlash): the linear answer does not hold"
-        why_not[i] = reason
+            dte[i], mean[i] = hb.dte_rms, hb.mesh_force_mean
+            force[i] = hb.order_amplitudes(hb.mesh_force, k)
+            bearing[i] = hb.order_amplitudes(hb.bearing_force, k)
+            done += 1
+        if progress is not None:
+            progress(done)
+    for i, reason in enumerate(reasons):
+        if reason is None:
+            continue
+        model = models[i]
         run = run_dynamics(model, method=integrator, cycles=cycles, transient_cycles=transient_cycles)
         res = run.response
         dte[i], mean[i] = res.amplitudes["dte_rms"], res.mesh_force.mean(axis=0)
         force[i] = mesh_orders(res.mesh_force, res.t, model.mesh_frequency, orders).T
         bearing[i] = np.moveaxis(mesh_orders(res.bearings.force, res.t, model.mesh_frequency, orders), 0, -1)
-        used.append("time")
+        done += 1
         if progress is not None:
-            progress(i + 1)
+            progress(done)
+    used = ["harmonic" if r is None else "time" for r in reasons]
+    why_not = np.array(reasons, dtype=object)
     warnings = []
     if method != "time":
         for reason in sorted({r for r in why_not if r is not None}):
