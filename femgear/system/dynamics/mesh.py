@@ -211,15 +211,19 @@ class FrictionTable:
 
 @dataclass(frozen=True)
 class FrictionLines:
-    """The contact-line sample points of both helices over one mesh period (speed-independent).
+    """The contact-line sample points of both helices over one mesh period (speed-independent), flattened and
+    sorted by their path position u (a speed sweep evaluates μ(u) and the sliding sign on them per speed).
 
-    ``u`` (2, samples, P): path positions of the points [m] (P = lines × points per line, padded);
-    ``weight`` (2, samples, P): each point's share of its helix's total contact length (0 for padding)
-    [-], so that a contact-line average is Σ weight · value.
+    ``u`` (P,): path positions of the points [m]; ``weight`` (P,): each point's share of its helix's total contact
+    length at its phase [-], so that a contact-line average is Σ weight · value over the points of one (helix,
+    phase); ``helix`` (P,) 0 or 1 and ``cell`` (P,) = helix · samples + phase index of each point [-].
     """
 
     u: np.ndarray
     weight: np.ndarray
+    helix: np.ndarray
+    cell: np.ndarray
+    samples: int
     u_pitch: float
 
 
@@ -230,23 +234,21 @@ def friction_lines(pair: GearPair, stagger: float = 0.0, samples: int = 256,
     from femgear.physics.geometry import contact_lines
 
     xi = (np.arange(points_per_line) + 0.5) / points_per_line
-    rows: list[list[tuple[np.ndarray, np.ndarray]]] = [[], []]
-    for i in range(samples):
-        for s, offset in enumerate((0.0, stagger)):
+    us, ws, cells = [], [], []
+    for s, offset in enumerate((0.0, stagger)):
+        for i in range(samples):
             lines = contact_lines(pair, i / samples, offset)
             if lines.count == 0:
-                rows[s].append((np.zeros(0), np.zeros(0)))
                 continue
             u = lines.u_lo[:, None] + (lines.u_hi - lines.u_lo)[:, None] * xi[None, :]
             w = np.repeat(lines.length[:, None], points_per_line, axis=1) / points_per_line / lines.total_length
-            rows[s].append((u.ravel(), w.ravel()))
-    width = max(u.size for row in rows for u, _ in row)
-    U = np.full((2, samples, width), pair.u_pitch)
-    W = np.zeros((2, samples, width))
-    for s, row in enumerate(rows):
-        for i, (u, w) in enumerate(row):
-            U[s, i, :u.size], W[s, i, :w.size] = u, w
-    return FrictionLines(u=U, weight=W, u_pitch=float(pair.u_pitch))
+            us.append(u.ravel())
+            ws.append(w.ravel())
+            cells.append(np.full(u.size, s * samples + i))
+    u, w, cell = np.concatenate(us), np.concatenate(ws), np.concatenate(cells)
+    order = np.argsort(u, kind="stable")
+    return FrictionLines(u=u[order], weight=w[order], helix=cell[order] // samples, cell=cell[order], samples=samples,
+                         u_pitch=float(pair.u_pitch))
 
 
 def friction_from_lines(lines: FrictionLines, rate0: np.ndarray, rate1: np.ndarray, v_reg: float = 0.01,
@@ -257,11 +259,13 @@ def friction_from_lines(lines: FrictionLines, rate0: np.ndarray, rate1: np.ndarr
         raise ValueError(f"v_reg must be positive (got {v_reg!r})")
     du = lines.u - lines.u_pitch
     rate0, rate1 = np.asarray(rate0, dtype=float), np.asarray(rate1, dtype=float)
-    sg = np.tanh((rate0[:, None, None] + du * rate1[:, None, None]) / v_reg)
+    wsg = lines.weight * np.tanh((rate0[lines.helix] + du * rate1[lines.helix]) / v_reg)
     if mu_of_u is not None:
-        sg = sg * mu_of_u(lines.u)
-    wsg = lines.weight * sg
-    return FrictionTable(A=wsg.sum(axis=-1), B=(wsg * du).sum(axis=-1))
+        wsg = wsg * mu_of_u(lines.u)
+    n = 2 * lines.samples
+    A = np.bincount(lines.cell, wsg, minlength=n).reshape(2, lines.samples)
+    B = np.bincount(lines.cell, wsg * du, minlength=n).reshape(2, lines.samples)
+    return FrictionTable(A=A, B=B)
 
 
 def friction_table(pair: GearPair, rate0: np.ndarray, rate1: np.ndarray, stagger: float = 0.0,
