@@ -7,7 +7,7 @@ from pathlib import Path
 
 from femgear.edge.cli.campbell import add_campbell_arguments, campbell_speeds, check_campbell_arguments, run_campbell
 from femgear.edge.cli.common import add_scene_arguments, emit_json, load_case_arg
-from femgear.edge.cli.dynamics_nvh import add_nvh_arguments
+from femgear.edge.cli.dynamics_nvh import add_nvh_arguments, print_modes, sweep_speeds
 from femgear.edge.cli.levels import level_choices
 
 #: a mesh stiffness of the dynamics only (not a scene level): c_γ times the contact-line length
@@ -108,30 +108,8 @@ def _run(args: argparse.Namespace) -> int:
         for name, path in files.items():
             print(f"{name}: {path}")
     if args.modes and not args.json:
-        _print_modes(run.modal)
+        print_modes(run.modal)
     return 0
-
-
-def _print_modes(modal) -> None:
-    print(f"{'mode':>4s} {'f [Hz]':>9s} {'mesh energy':>11s}  dominant kinetic-energy group")
-    for i, f in enumerate(modal.frequencies):
-        print(f"{i:4d} {f:9.1f} {modal.energy['mesh'][i]:11.2f}  {modal.dominant_group(i)}")
-
-
-def sweep_speeds(text: str):
-    """``RPM0:RPM1:N`` as N speeds [rpm]; :class:`ArgumentError` naming ``--sweep`` otherwise."""
-    import numpy as np
-
-    from femgear.errors import ArgumentError
-
-    try:
-        a, b, n = text.split(":")
-        lo, hi, count = float(a), float(b), int(n)
-    except ValueError:
-        raise ArgumentError("--sweep", f"expected RPM0:RPM1:N, got {text!r}") from None
-    if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= hi and count >= 1):
-        raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {text!r}")
-    return np.linspace(lo, hi, count)
 
 
 def _check_sweep_speeds(case, speeds, argument: str = "--sweep") -> None:

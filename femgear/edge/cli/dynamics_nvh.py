@@ -27,6 +27,27 @@ def add_nvh_arguments(p: argparse.ArgumentParser) -> None:
                    help="with --runup: pinion revolutions per order-tracking block (order resolution 1/N; default 4)")
 
 
+def print_modes(modal) -> None:
+    """The natural frequencies, mesh strain energies and dominant groups of ``modal``, one line each."""
+    print(f"{'mode':>4s} {'f [Hz]':>9s} {'mesh energy':>11s}  dominant kinetic-energy group")
+    for i, f in enumerate(modal.frequencies):
+        print(f"{i:4d} {f:9.1f} {modal.energy['mesh'][i]:11.2f}  {modal.dominant_group(i)}")
+
+
+def sweep_speeds(text: str):
+    """``RPM0:RPM1:N`` as N speeds [rpm]; :class:`ArgumentError` naming ``--sweep`` otherwise."""
+    import numpy as np
+
+    try:
+        a, b, n = text.split(":")
+        lo, hi, count = float(a), float(b), int(n)
+    except ValueError:
+        raise ArgumentError("--sweep", f"expected RPM0:RPM1:N, got {text!r}") from None
+    if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= hi and count >= 1):
+        raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {text!r}")
+    return np.linspace(lo, hi, count)
+
+
 def runup_ramp(text: str):
     """``RPM0:RPM1:SECONDS`` as a :class:`~femgear.system.dynamics.runup.Ramp`; :class:`ArgumentError` naming
     ``--runup`` otherwise (end speed not above the start speed, duration not positive, speeds not positive)."""
@@ -71,7 +92,6 @@ def _progress(stage: str, total: int, expected: float):
 def run_sweep(case, args: argparse.Namespace, out: Path) -> int:
     """``--sweep``: the order sweep by the chosen method; files and summary."""
     from femgear.edge.cli.common import emit_json
-    from femgear.edge.cli.dynamics import _print_modes, sweep_speeds
     from femgear.edge.io.nvh import order_sweep_summary, write_order_sweep
     from femgear.system.dynamics.family import SpeedFamily
     from femgear.system.dynamics.harmonic_sweep import harmonic_sweep
@@ -98,7 +118,7 @@ def run_sweep(case, args: argparse.Namespace, out: Path) -> int:
     for i, (r, f, d) in enumerate(zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms)):
         orders = " ".join(f"{x:8.4g}" for x in sw.mesh_force[i, 0, :3])
         print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f} {orders:>26s}  {sw.method[i]}")
-    _print_modes(modal)
+    print_modes(modal)
     for r in order_sweep_summary(sw, modal)["resonances"]:
         print(f"resonance in range: f_m = {r['mesh_frequency']:.1f} Hz, mesh harmonic {r['harmonic']} meets the "
               f"natural frequency {r['natural_frequency']:.1f} Hz")
