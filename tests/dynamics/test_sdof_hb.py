@@ -53,3 +53,24 @@ def test_jumps_of_the_sweeps_fall_at_the_folds(branches):
         j = int(np.argmax(np.abs(np.diff(amp))))                     # the jump lies between W[j] and W[j + 1]
         assert W[j] - STEP <= fold <= W[j + 1] + STEP
     assert np.argmax(np.diff(up.amplitude)) > np.argmax(np.diff(down.amplitude[::-1]))   # hysteresis
+
+
+def test_spur_pair_with_its_own_mesh_stiffness_by_continuation():
+    """The spur pair of ``studies/dynamics/spur_jump.py`` (FZG C14, PEM stiffness, 20 N m, 50 µm backlash): the
+    time-varying stiffness is the excitation.  Both swept branches are stable continuation solutions to 1 %; the
+    up-sweep jumps at the upper fold, the impacting branch the down-sweep follows reaches below the sweep's range."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "studies" / "dynamics"))
+    from spur_jump import run, setup
+
+    res = run(*setup(), coarse=True)
+    stable = np.array(res["hb"]["stable_at_ratio"])
+    for d in ("up", "down"):
+        err = np.nanmin(np.abs(stable / res[d]["amplitude"][:, None] - 1), axis=1)
+        assert np.all(err < 0.01), (d, err)
+    upper, lower = max(res["hb"]["folds"]), min(res["hb"]["folds"])
+    r, a_up = res["ratio"], res["up"]["amplitude"]
+    j = int(np.argmax(np.diff(a_up)))
+    assert r[j] <= upper <= r[j + 1] and lower < r[0]

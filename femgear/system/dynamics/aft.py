@@ -191,15 +191,18 @@ class Branch:
 
 def continuation(problem: PeriodicProblem, omega0: float, omega1: float, x0: np.ndarray, *, ds: float = 0.02,
                  ds_min: float = 1e-5, ds_max: float = 0.1, x_scale: float = 1.0, max_points: int = 5000,
-                 tol: float = 1e-10, stability: Callable[[np.ndarray, float], bool] | None = None) -> Branch:
+                 tol: float = 1e-10, stability: Callable[[np.ndarray, float], bool] | None = None,
+                 omega_min: float | None = None) -> Branch:
     """Trace the branch from (x0, ``omega0``) towards ``omega1`` by pseudo-arclength continuation.
 
     The arclength is measured in (x / ``x_scale``, ω / |omega0|); ``ds`` the first step, adapted within
-    [``ds_min``, ``ds_max``]; ends when ω passes ``omega1`` (or falls back below ``omega0``: a branch that
-    turns for good) or after ``max_points``.  Raises ConvergenceError when the step falls below ``ds_min``.
+    [``ds_min``, ``ds_max``]; ends when ω passes ``omega1``, or when it turns back past ``omega_min`` (default
+    ``omega0``: a branch that turns for good; lower lets a strongly bent resonance turn again below ``omega0``), or
+    after ``max_points``.  Raises ConvergenceError when the step falls below ``ds_min``.
     """
     w_scale = abs(omega0)
     direction = 1.0 if omega1 > omega0 else -1.0
+    omega_min = omega0 if omega_min is None else omega_min
     x, om, _ = _newton(problem, np.asarray(x0, float), float(omega0), tol, 50)
     xs, oms, its, folds = [x], [om], [0], []
     tangent = None
@@ -243,7 +246,7 @@ def continuation(problem: PeriodicProblem, omega0: float, omega1: float, x0: np.
         oms.append(om)
         its.append(it)
         ds = min(ds_max, ds * 1.5) if it <= 3 else (max(ds_min, ds * 0.5) if it > 6 else ds)
-        if (om - omega1) * direction > 0 or (om - omega0) * direction < -1e-9 * w_scale:
+        if (om - omega1) * direction > 0 or (om - omega_min) * direction < -1e-9 * w_scale:
             break
     x_arr = np.array(xs)
     stable = None if stability is None else np.array([stability(xx, ww) for xx, ww in zip(x_arr, oms)])

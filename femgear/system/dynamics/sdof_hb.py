@@ -17,10 +17,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import expm
 
 from femgear.docfields import document_fields
 from femgear.physics.excitation import contact_indicator, gap_function
+from femgear.physics.geometry.gear import GearPair
 from femgear.system.dynamics.aft import (
     PeriodicProblem,
     continuation,
@@ -29,15 +29,19 @@ from femgear.system.dynamics.aft import (
     time_signal,
     unknowns_of,
 )
+from femgear.system.dynamics.mesh import periodic_interp
 
 #: samples of the reconstructed period for amplitudes and contact fractions
 READ_SAMPLES = 4096
 
 
-def ks_problem(zeta: float, mean_load: float, alternating_load: float, harmonics: int = 32,
-               samples: int = 512) -> PeriodicProblem:
-    """The oscillator's harmonic-balance problem (lengths over the backlash b, time over 1/ω_n)."""
+def ks_problem(zeta: float, mean_load: float, alternating_load: float, harmonics: int = 32, samples: int = 512,
+               backlash: float = 1.0, stiffness: np.ndarray | None = None) -> PeriodicProblem:
+    """The oscillator x'' + 2ζx' + κ(φ) f(x; ``backlash``) = F_m + F_a cos Ωτ as a harmonic-balance problem (lengths
+    over a reference length, time over 1/ω_n); ``stiffness``: κ over one excitation period at the phases i/n (mean 1;
+    default 1: Kahraman–Singh's time-invariant mesh, lengths over the backlash, ``backlash`` = 1)."""
     H = int(harmonics)
+    kappa = None if stiffness is None else np.asarray(stiffness, dtype=float)
 
     def receptance(omega: float):
         k = np.arange(H + 1)
@@ -47,21 +51,39 @@ def ks_problem(zeta: float, mean_load: float, alternating_load: float, harmonics
         return R[:, None, None], (R * F)[:, None]
 
     def law(y, v, phase):
-        return gap_function(y, 1.0), contact_indicator(y, 1.0), np.zeros_like(y)
+        k = 1.0 if kappa is None else periodic_interp(kappa, phase)
+        return k * gap_function(y, backlash), k * contact_indicator(y, backlash), np.zeros_like(y)
 
     return PeriodicProblem(channels=1, harmonics=H, samples=samples, receptance=receptance, law=law,
                            mean_stiffness=np.ones(1), mean_damping=np.zeros(1))
 
 
+def _expm2(a: np.ndarray, zeta: float, h: float) -> np.ndarray:
+    """(…, 2, 2) e^{Ah} of A = [[0, 1], [−a, −2ζ]] in closed form: e^{−ζh} [cosh(sh) I + sinh(sh)/s (A + ζI)],
+    s = √(ζ² − a) (the limit h at s = 0)."""
+    s = np.sqrt(zeta**2 - np.asarray(a, dtype=float) + 0j)
+    sh = np.where(np.abs(s) * h > 1e-8, np.sinh(s * h) / np.where(s == 0, 1, s), h)
+    ch = np.cosh(s * h)
+    e = np.exp(-zeta * h)
+    out = np.empty(np.shape(a) + (2, 2))
+    out[..., 0, 0] = (e * (ch + zeta * sh)).real
+    out[..., 0, 1] = (e * sh).real
+    out[..., 1, 0] = (-a * e * sh).real
+    out[..., 1, 1] = (e * (ch - zeta * sh)).real
+    return out
+
+
 def ks_stability(problem: PeriodicProblem, zeta: float, x: np.ndarray, omega: float) -> float:
-    """Largest Floquet multiplier modulus of the periodic solution ``x`` at Ω = ``omega`` [-] (< 1: stable)."""
+    """Largest Floquet multiplier modulus of the periodic solution ``x`` at Ω = ``omega`` [-] (< 1: stable): the
+    monodromy of z' = [[0, 1], [−∂N/∂x, −2ζ]] z with ∂N/∂x of the law at the AFT intervals' midpoints (exact for
+    that piecewise-constant stiffness)."""
     n = problem.samples
-    y = time_signal(harmonics_of(problem, x), 2 * n)[0, 1::2]            # interval midpoints
-    h = 2 * math.pi / omega / n
-    open_, closed = (expm(np.array([[0.0, 1.0], [-c, -2 * zeta]]) * h) for c in (0.0, 1.0))
+    y = time_signal(harmonics_of(problem, x), 2 * n)[:, 1::2]            # interval midpoints
+    stiff = problem.law(y, np.zeros_like(y), (np.arange(n) + 0.5) / n)[1][0]
+    steps = _expm2(stiff, zeta, 2 * math.pi / omega / n)
     phi = np.eye(2)
-    for chi in np.abs(y) > 1.0:
-        phi = (closed if chi else open_) @ phi
+    for E in steps:
+        phi = E @ phi
     return float(np.abs(np.linalg.eigvals(phi)).max())
 
 
@@ -92,6 +114,29 @@ class KSBranch:
         return self.multiplier < 1.0
 
 
+def _trace(prob: PeriodicProblem, zeta: float, backlash: float, omega0: float, omega1: float, guess: np.ndarray,
+           ds: float, at, omega_min: float | None = None) -> KSBranch:
+    """Continue ``prob`` from its solution near ``guess`` at ``omega0`` to ``omega1`` (turning back no lower than
+    ``omega_min``); the stable solutions at ``at``."""
+    br = continuation(prob, omega0, omega1, unknowns_of(prob, guess), ds=ds, ds_max=0.05, x_scale=1.0,
+                      omega_min=omega_min)
+    x_t = time_signal(np.array([harmonics_of(prob, x)[0] for x in br.x]), READ_SAMPLES)
+    at = np.asarray([] if at is None else at, dtype=float)
+    stable_at = np.full((at.size, 2), np.nan)
+    for i, om in enumerate(at):
+        amps = sorted(_amplitude(prob, x) for x in solutions_at(prob, br, om) if ks_stability(prob, zeta, x, om) < 1)
+        stable_at[i, :len(amps[:2])] = amps[:2]
+    return KSBranch(frequency=br.omega, amplitude=0.5 * np.ptp(x_t, axis=1),
+                    contact_loss=np.mean(np.abs(x_t) <= backlash, axis=1),
+                    multiplier=np.array([ks_stability(prob, zeta, x, w) for x, w in zip(br.x, br.omega)]),
+                    folds=tuple(float(br.omega[i]) for i in br.folds), harmonics=prob.harmonics, at=at,
+                    stable_at=stable_at)
+
+
+def _amplitude(problem: PeriodicProblem, x: np.ndarray) -> float:
+    return float(0.5 * np.ptp(time_signal(harmonics_of(problem, x), READ_SAMPLES)))
+
+
 def kahraman_singh_hb(omega0: float = 0.6, omega1: float = 1.3, zeta: float = 0.05, mean_load: float = 0.1,
                       alternating_load: float = 0.02, harmonics: int = 32, samples: int = 512,
                       ds: float = 0.01, at=None) -> KSBranch:
@@ -104,19 +149,25 @@ def kahraman_singh_hb(omega0: float = 0.6, omega1: float = 1.3, zeta: float = 0.
     Y = np.zeros((1, prob.harmonics + 1), dtype=complex)
     Y[0, 0] = 1.0 + mean_load                                   # drive-flank contact, linear guess
     Y[0, 1] = 0.5 * alternating_load / (1 - omega0**2 + 2j * zeta * omega0)
-    br = continuation(prob, omega0, omega1, unknowns_of(prob, Y), ds=ds, ds_max=0.05, x_scale=1.0)
-    x_t = time_signal(np.array([harmonics_of(prob, x)[0] for x in br.x]), READ_SAMPLES)
-    at = np.asarray([] if at is None else at, dtype=float)
-    stable_at = np.full((at.size, 2), np.nan)
-    for i, om in enumerate(at):
-        amps = sorted(_amplitude(prob, x) for x in solutions_at(prob, br, om) if ks_stability(prob, zeta, x, om) < 1)
-        stable_at[i, :len(amps[:2])] = amps[:2]
-    return KSBranch(frequency=br.omega, amplitude=0.5 * np.ptp(x_t, axis=1),
-                    contact_loss=np.mean(np.abs(x_t) <= 1.0, axis=1),
-                    multiplier=np.array([ks_stability(prob, zeta, x, w) for x, w in zip(br.x, br.omega)]),
-                    folds=tuple(float(br.omega[i]) for i in br.folds), harmonics=prob.harmonics, at=at,
-                    stable_at=stable_at)
+    return _trace(prob, zeta, 1.0, omega0, omega1, Y, ds, at)
 
 
-def _amplitude(problem: PeriodicProblem, x: np.ndarray) -> float:
-    return float(0.5 * np.ptp(time_signal(harmonics_of(problem, x), READ_SAMPLES)))
+def spur_torsional_hb(pair: GearPair, k_mesh: np.ndarray, I1: float, I2: float, pinion_torque: float, backlash: float,
+                      ratio0: float = 0.6, ratio1: float = 1.3, damping_ratio: float = 0.05, harmonics: int = 32,
+                      samples: int = 512, ds: float = 0.01, at=None) -> KSBranch:
+    """The spur pair's dynamic transmission error of :func:`femgear.system.dynamics.one_mesh.torsional_sweep`,
+    m_e ẍ + c ẋ + k(f_m t) f(x; b0) = F_bn with the pair's own mesh stiffness over one period, by continuation
+    in f_m/f_n from ``ratio0`` to ``ratio1``: lengths over the static deflection x_s = F_bn/k̄ (the amplitudes are
+    those the study ``spur_jump`` prints), time over 1/ω_n, ω_n = √(k̄/m_e) (the torsional mode on rigid supports)."""
+    if pair.beta_b != 0:
+        raise ValueError("spur_torsional_hb reduces a spur pair (β_b = 0) to its transmission error")
+    k = np.asarray(k_mesh, dtype=float)
+    if not (I1 > 0 and I2 > 0 and pinion_torque > 0 and backlash >= 0 and np.all(k > 0) and 0 < ratio0 < ratio1):
+        raise ValueError("need I1, I2, pinion_torque > 0, backlash ≥ 0, a positive stiffness and 0 < ratio0 < ratio1")
+    x_s = pinion_torque / pair.rb1 / float(k.mean())
+    beta = backlash / x_s
+    prob = ks_problem(damping_ratio, 1.0, 0.0, harmonics, samples, backlash=beta, stiffness=k / k.mean())
+    Y = np.zeros((1, prob.harmonics + 1), dtype=complex)
+    Y[0, 0] = 1.0 + beta
+    # the impacting resonance bends far below f_n (both flanks): let the branch turn again below ratio0
+    return _trace(prob, damping_ratio, beta, ratio0, ratio1, Y, ds, at, omega_min=0.25 * ratio0)
