@@ -99,6 +99,7 @@ INPUT_ERRORS = [
     (["dynamics", BASE, "--runup", "500:1000"], "--runup"),
     (["dynamics", BASE, "--runup", "500:1e6:2"], "--runup"),                 # above the pair's burst speed
     (["dynamics", BASE, "--runup", "500:600:1", "--revolutions", "0"], "--revolutions"),
+    (["dynamics", BASE, "--runup", "500:600:0.01"], "--runup"),             # shorter than one tracking block
     (["dynamics", BASE, "--sweep", "500:600:2", "--runup", "500:600:1"], "--runup"),
     (["dynamics", BASE, "--level", "rigid"], "--level"),
     (["run", BASE, "--out", "{file}/sub"], "--out"),

@@ -73,6 +73,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.runup:
         ramp = nvh.runup_ramp(args.runup)
         _check_sweep_speeds(case, (ramp.rpm0, ramp.rpm1), "--runup")
+        nvh.check_runup_blocks(case, ramp, args.revolutions)
     if args.campbell:
         _check_sweep_speeds(case, [s for s in campbell_speeds(args.campbell)[[0, -1]] if s > 0], "--campbell")
     if args.out is None:

@@ -83,6 +83,17 @@ def check_nvh_arguments(args: argparse.Namespace) -> None:
         runup_ramp(args.runup)
 
 
+def check_runup_blocks(case, ramp, revolutions: int) -> None:
+    """The ramp turns the pinion through at least one order-tracking block (and its overlap); else an
+    :class:`ArgumentError` naming ``--runup``, before any computing."""
+    pinion_per_driver = case.operating.pinion_rpm / case.scene.operating.speed_rpm
+    turns = 0.5 * (ramp.rpm0 + ramp.rpm1) * ramp.duration / 60.0 * pinion_per_driver
+    if math.floor(2 * turns / revolutions) - 1 < 1:
+        raise ArgumentError("--runup", f"the ramp turns the pinion {turns:.3g} revolutions, fewer than the "
+                                       f"{1.5 * revolutions:g} that one block of --revolutions {revolutions} and its "
+                                       "overlap need: lengthen the ramp or shorten the blocks")
+
+
 def _progress(stage: str, total: int, expected: float):
     from femgear.perf import Progress
 
@@ -100,11 +111,8 @@ def run_sweep(case, args: argparse.Namespace, out: Path) -> int:
     rpm = sweep_speeds(args.sweep)
     kw = {"level": args.level, "stiffness": args.stiffness}
     progress = _progress("speed sweep", rpm.size, 0.5 * rpm.size if args.sweep_method == "time" else 0.0)
-    try:
-        sw = harmonic_sweep(case, rpm, method=args.sweep_method, harmonics=args.harmonics, integrator=args.method,
-                            progress=progress, **kw)
-    except ValueError as exc:
-        raise ArgumentError("--harmonics" if args.harmonics else "--sweep-method", str(exc)) from None
+    sw = harmonic_sweep(case, rpm, method=args.sweep_method, harmonics=args.harmonics, integrator=args.method,
+                        progress=progress, **kw)
     model = SpeedFamily(case, **kw).base
     modal = modal_analysis(model)
     label = f"{case.name} ({model.level}, {model.stiffness.label} stiffness)"
@@ -140,12 +148,8 @@ def run_runup(case, args: argparse.Namespace, out: Path) -> int:
     est = (ramp.duration + ramp.settle_cycles / family.at(ramp.rpm0).mesh_frequency) * 5.0   # ~5 s per second run
     progress = _progress("run-up", 100, est)
     run = simulate_runup(family, ramp, progress=lambda f: progress(round(100 * f)))
-    try:
-        maps = {key: order_track(run, sig, revolutions=args.revolutions)
-                for key, sig in (("mesh_force", run.mesh_force), ("dte", run.dte),
-                                 ("bearing_force", run.bearing_force))}
-    except ValueError as exc:
-        raise ArgumentError("--revolutions", str(exc)) from None
+    maps = {key: order_track(run, sig, revolutions=args.revolutions)
+            for key, sig in (("mesh_force", run.mesh_force), ("dte", run.dte), ("bearing_force", run.bearing_force))}
     steady = harmonic_sweep(case, maps["mesh_force"].speed, level=args.level, stiffness=args.stiffness)
     cuts = steady.mesh_force[:, 0, :maps["mesh_force"].mesh_orders.size]
     model = family.base
