@@ -322,19 +322,20 @@ def friction_along_path(case: Case, w: np.ndarray, solver: Solver | None = None,
     return np.asarray(mu, dtype=float), np.asarray(dT, dtype=float)
 
 
-def static_friction(case: Case) -> float | Callable[[np.ndarray], np.ndarray]:
+def static_friction(case: Case, line_load: np.ndarray | None = None) -> float | Callable[[np.ndarray], np.ndarray]:
     """μ for the dynamics without coupling: the level's one number where it has one (0 for ``none``,
     ``friction.coefficient`` for ``constant``), else μ(u) of the lubrication level at the static line load
     of the contact pass (load shared between the tooth pairs in contact,
     :func:`femgear.levels.contact.contact_pass`; U-shaped, zero at the pitch point), interpolated along the
-    path."""
+    path.  ``line_load``: that pass's line load [N/m] when already known (it does not depend on the speed:
+    a speed sweep computes it once)."""
     from femgear.levels.contact import contact_pass
 
     lubrication = lubrication_solver(case)
     if lubrication.uniform is not None:
         return lubrication.uniform
     u = case.path.u
-    mu = friction_along_path(case, contact_pass(case).line_load, lubrication)[0]
+    mu = friction_along_path(case, contact_pass(case).line_load if line_load is None else line_load, lubrication)[0]
     return lambda x: np.interp(x, u, mu)
 
 

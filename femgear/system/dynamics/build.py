@@ -29,11 +29,13 @@ from femgear.physics.excitation import CumulativePitchError, Eccentricity, Profi
 from femgear.system.dynamics.housing import couple_housing
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import (
+    FrictionLines,
     MeshGeometry,
     StiffnessTable,
     as_stiffness_table,
     constant_stiffness,
     contact_line_stiffness,
+    friction_from_lines,
     friction_table,
     mesh_geometry,
 )
@@ -294,8 +296,11 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     return with_deviation(with_friction(model, friction), deviation)
 
 
-def with_friction(model: GearRotorModel, friction: Friction) -> GearRotorModel:
-    """``model`` with friction μ (a number or μ(u)); the load torque absorbs the mean friction torque."""
+def with_friction(model: GearRotorModel, friction: Friction, lines: FrictionLines | None = None) -> GearRotorModel:
+    """``model`` with friction μ (a number or μ(u)); the load torque absorbs the mean friction torque.
+
+    ``lines``: the contact-line points of :func:`femgear.system.dynamics.mesh.friction_lines` when already
+    built (they do not depend on speed or friction; :class:`femgear.system.dynamics.family.SpeedFamily`)."""
     mu_of_u = None
     if callable(friction):              # μ(u) along the path is folded into the tables
         mu_of_u, mu = friction, 1.0
@@ -309,7 +314,10 @@ def with_friction(model: GearRotorModel, friction: Friction) -> GearRotorModel:
         torque[6 * (2 + side) + 5] = T1 * model.pair.rb2 / model.pair.rb1 / 2
     if mu == 0:
         return replace(model, mu=0.0, friction=None, torque_full=torque)
-    ftab = friction_table(model.pair, geom.h0 @ rate, geom.h1 @ rate, model.stagger, model.v_reg, mu_of_u=mu_of_u)
+    if lines is None:
+        ftab = friction_table(model.pair, geom.h0 @ rate, geom.h1 @ rate, model.stagger, model.v_reg, mu_of_u=mu_of_u)
+    else:
+        ftab = friction_from_lines(lines, geom.h0 @ rate, geom.h1 @ rate, model.v_reg, mu_of_u)
     # the load torque absorbs the mean friction power, so the free rotation does not drift
     N0 = T1 / model.pair.n_helices / geom.g[0, 5]     # mean normal force of a loaded helix
     Qf = -mu * N0 * (ftab.A.mean(axis=1) @ geom.h0 + ftab.B.mean(axis=1) @ geom.h1)
