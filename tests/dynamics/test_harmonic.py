@@ -92,6 +92,10 @@ def test_order_amplitudes_equal_time_integration_to_one_percent(sets, level, rpm
     assert rel_n < 0.01 and rel_b < 0.01
     assert low_n < 1.0 and low_b < 1.0
     assert np.allclose(hb.mesh_force_mean, run.response.mesh_force.mean(axis=0), rtol=1e-5)
+    # K_v = largest over mean mesh force, from the lines (orders ≤ H/2), against the record's: to 0.5 % (on the
+    # baseline 1.0017 against 1.0038: the lines above order 12 carry half the record's small dynamic part)
+    mean = run.response.mesh_force.mean(axis=0)
+    assert np.allclose(hb.mesh_force_peak() / hb.mesh_force_mean, run.response.mesh_force.max(axis=0) / mean, rtol=5e-3)
     assert np.allclose(hb.bearing_force_mean, run.response.bearings.mean, rtol=1e-4,
                        atol=1e-4 * np.abs(hb.bearing_force_mean).max())
 

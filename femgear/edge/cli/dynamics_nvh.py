@@ -8,6 +8,8 @@ import math
 import sys
 from pathlib import Path
 
+import numpy as np
+
 from femgear.errors import ArgumentError
 
 
@@ -71,7 +73,7 @@ def runup_ramp(text: str):
 
 def check_nvh_arguments(args: argparse.Namespace) -> None:
     """Argument checks before any computing."""
-    chosen = [name for name, on in (("--sweep", args.sweep), ("--runup", args.runup),
+    chosen = [name for name, on in (("--sweep", args.sweep), ("--runup", args.runup), ("--campbell", args.campbell),
                                     ("--kahraman-singh", args.kahraman_singh)) if on]
     if len(chosen) > 1:
         raise ArgumentError(chosen[1], f"choose one of {', '.join(chosen)}")
@@ -117,15 +119,21 @@ def run_sweep(case, args: argparse.Namespace, out: Path) -> int:
     modal = modal_analysis(model)
     label = f"{case.name} ({model.level}, {model.stiffness.label} stiffness)"
     files = write_order_sweep(sw, modal, out, plots=not args.no_plots, name=label)
+    kv = _dynamic_factor(case, sw, out, files, plots=not args.no_plots)
     for w in sw.warnings:
         print(f"warning: {w}", file=sys.stderr)
     if args.json:
-        emit_json({**order_sweep_summary(sw, modal), "files": {k: str(v) for k, v in files.items()}})
+        emit_json({**order_sweep_summary(sw, modal),
+                   "dynamic_factor": {"pinion_speed_rpm": kv.speed_rpm, "femgear": kv.femgear, "iso_method_b": kv.iso,
+                                      "resonance_ratio": kv.N, "resonance_speed_rpm": kv.n_E1, "N_S": kv.N_S},
+                   "files": {k: str(v) for k, v in files.items()}})
         return 0
-    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s} {'N_L order 1..3 [N]':>26s}  method")
+    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s} {'N_L order 1..3 [N]':>26s} {'K_v femgear':>11s} "
+          f"{'K_v ISO B':>9s} {'N':>6s}  method")
     for i, (r, f, d) in enumerate(zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms)):
         orders = " ".join(f"{x:8.4g}" for x in sw.mesh_force[i, 0, :3])
-        print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f} {orders:>26s}  {sw.method[i]}")
+        print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f} {orders:>26s} {np.nanmax(kv.femgear[:, i]):11.4f} {kv.iso[i]:9.4f} "
+              f"{kv.N[i]:6.3f}  {sw.method[i]}")
     print_modes(modal)
     for r in order_sweep_summary(sw, modal)["resonances"]:
         print(f"resonance in range: f_m = {r['mesh_frequency']:.1f} Hz, mesh harmonic {r['harmonic']} meets the "
@@ -133,6 +141,25 @@ def run_sweep(case, args: argparse.Namespace, out: Path) -> int:
     for name, path in files.items():
         print(f"{name}: {path}")
     return 0
+
+
+def _dynamic_factor(case, sw, out: Path, files: dict, plots: bool):
+    """K_v over the sweep, femgear's (the largest over the mean mesh force of each helix) beside ISO 6336-1 method B
+    (:func:`femgear.rate.dynamic_factor_curve`); with ``plots`` its figure ``dynamics_K_v.png`` goes into
+    ``files``."""
+    from femgear.rate import dynamic_factor_curve
+
+    amplitudes = {f"mesh_force.{side}.{what}": values[:, j] for j, side in enumerate("LR")
+                  for what, values in (("mean", sw.mesh_force_mean), ("max", sw.mesh_force_max))}
+    kv = dynamic_factor_curve(case, sw.speed_rpm, amplitudes)
+    if plots:
+        from femgear.edge.io.figures import save_figure
+        from femgear.edge.plot.rating import plot_dynamic_factor
+
+        files["dynamic_factor"] = save_figure(plot_dynamic_factor(kv, f"{case.name}: dynamic factor K_v, femgear's "
+                                                                      "dynamics beside ISO 6336-1 method B"),
+                                              out / "dynamics_K_v.png")
+    return kv
 
 
 def run_runup(case, args: argparse.Namespace, out: Path) -> int:

@@ -53,6 +53,8 @@ class OrderSweep:
     """the mesh orders k reported (1 … K) [-]"""
     mesh_force_mean: np.ndarray
     """(speeds, 2) mean dynamic mesh force per helix [N]"""
+    mesh_force_max: np.ndarray
+    """(speeds, 2) largest dynamic mesh force per helix over the steady state (K_v: its ratio to the static one) [N]"""
     mesh_force: np.ndarray
     """(speeds, 2, K) amplitude of mesh order k of the dynamic mesh force per helix (left, right) [N]"""
     bearing_force: np.ndarray
@@ -92,7 +94,8 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
     k = np.arange(1, orders + 1)
     S = speeds.size
     fm, dte = np.empty(S), np.empty(S)
-    mean, force, bearing = np.empty((S, 2)), np.empty((S, 2, orders)), np.empty((S, 4, 3, orders))
+    mean, peak = np.empty((S, 2)), np.empty((S, 2))
+    force, bearing = np.empty((S, 2, orders)), np.empty((S, 4, 3, orders))
     margin = np.full((S, 2), np.nan)
     models = [family.at(rpm) for rpm in speeds]
     fm[:] = [m.mesh_frequency for m in models]
@@ -106,7 +109,7 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
             if not hb.contact_kept:
                 reasons[i] = "the loaded flanks separate (backlash): the linear answer does not hold"
                 continue
-            dte[i], mean[i] = hb.dte_rms, hb.mesh_force_mean
+            dte[i], mean[i], peak[i] = hb.dte_rms, hb.mesh_force_mean, hb.mesh_force_peak()
             force[i] = hb.order_amplitudes(hb.mesh_force, k)
             bearing[i] = hb.order_amplitudes(hb.bearing_force, k)
             done += 1
@@ -118,7 +121,7 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
         model = models[i]
         run = run_dynamics(model, method=integrator, cycles=cycles, transient_cycles=transient_cycles)
         res = run.response
-        dte[i], mean[i] = res.amplitudes["dte_rms"], res.mesh_force.mean(axis=0)
+        dte[i], mean[i], peak[i] = res.amplitudes["dte_rms"], res.mesh_force.mean(axis=0), res.mesh_force.max(axis=0)
         force[i] = mesh_orders(res.mesh_force, res.t, model.mesh_frequency, orders).T
         bearing[i] = np.moveaxis(mesh_orders(res.bearings.force, res.t, model.mesh_frequency, orders), 0, -1)
         done += 1
@@ -133,4 +136,4 @@ def harmonic_sweep(case: Case, speeds_rpm, *, method: str = "auto", orders: int 
                 span = f"{lo:.6g} rpm" if n == 1 else f"{lo:.6g}–{hi:.6g} rpm ({n} speeds)"
                 warnings.append(f"{span}: time integration, harmonic balance does not apply: {reason}")
     return OrderSweep(speed_rpm=speeds, mesh_frequency=fm, dte_rms=dte, method=tuple(used), orders=k.astype(float),
-                      mesh_force_mean=mean, mesh_force=force, bearing_force=bearing, contact_margin=margin, warnings=tuple(warnings))
+                      mesh_force_mean=mean, mesh_force_max=peak, mesh_force=force, bearing_force=bearing, contact_margin=margin, warnings=tuple(warnings))
