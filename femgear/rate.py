@@ -39,9 +39,7 @@ from femgear.results import ContactFigures
 
 log = logging.getLogger("femgear.physics.rating")
 
-#: R_a of the flank by finishing process [m] (typical values, docs/rating.md)
-FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
-DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5], "finishing": "ground",
+DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5],
             "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0}
 
 
@@ -130,10 +128,13 @@ def scene_info(case: Case) -> SceneInfo:
     return SceneInfo(case=case, contact=contact, rating=rating, figures=figures)
 
 
-def viscosity_law(scene):
-    """η(T) of the scene's oil: η0 exp(−β_T (T − T0)) [Pa s]."""
-    oil, T0 = scene.oil, scene.oil_reference_temperature
-    return lambda T: oil.viscosity * math.exp(-oil.temperature_viscosity * (T - T0))
+def oil_laws(case: Case):
+    """(η(T) [Pa s], α(T) [1/Pa]) at ambient pressure: the case's oil law (Roelands, the oil bound at the supply
+    temperature, :func:`femgear.case.oil.oil_at`), which the ratings' films and μ_mC read."""
+    from femgear.levels.lubrication import oil_law
+
+    law = oil_law(case)
+    return (lambda T: float(law.viscosity(0.0, T))), (lambda T: float(law.pressure_viscosity(T)))
 
 
 def own_figures(case, contact: ContactPath, Ra: float, temperature_rise: np.ndarray | None,
@@ -188,10 +189,9 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     r, used = scene.rating, []
     sigma_Flim = _value(r, "bending_stress_limit", used)
     root_rz = _value(r, "root_roughness_rz", used)
-    if r.roughness_ra is not None:
-        Ra = tuple(r.roughness_ra)
-    else:
-        Ra = (FINISHING_RA[_value(r, "finishing", used)],) * 2
+    Ra = case.flanks.ra
+    if case.flanks.finishing is not None and "(default)" in case.flanks.source:
+        used.append(f"roughness.finishing={case.flanks.finishing}")
     oil_type = _value(r, "oil_type", used)
     stage_s = _value(r, "scuffing_load_stage", used)
     stage_m = _value(r, "micropitting_load_stage", used)
@@ -205,7 +205,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     bending = BendingInputs(sigma_Flim=sigma_Flim, S_Fmin=r.bending_min_safety_factor, K_A=r.application_factor,
                             K_v=r.dynamic_factor, K_Hbeta=r.face_load_factor, K_Falpha=r.transverse_load_factor,
                             life_hours=r.life_hours, root_Rz=tuple(root_rz), rim_ratio=tuple(rims))
-    eta = viscosity_law(scene)
+    eta, alpha = oil_laws(case)
     mat = scene.material
     theta_oil = scene.operating.ambient_temperature
     scuff = ScuffingInputs(oil_temperature=theta_oil, oil_viscosity=eta(theta_oil), youngs_modulus=mat.youngs_modulus,
@@ -216,7 +216,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     own = own_figures(case, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
     T1 = case.operating.pinion_torque
     rating = rate_pair(pair, scene_rating(scene, pair, T1), T1, scene.pinion_rpm, bending, scuff,
-                       float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own, defaults=tuple(used))
+                       float(stage_s), float(stage_m), eta, alpha, own=own, defaults=tuple(used))
     for flag in rating.flags:
         log.info("rating: %s; the factor is flagged", flag)
     if r.fillet_fe:
