@@ -18,7 +18,7 @@ import numpy as np
 from femgear.case import Case, build_case, operating_point
 from femgear.docfields import document_fields
 from femgear.levels.contact import contact_pass
-from femgear.levels.lubrication import lubrication_solver
+from femgear.levels.lubrication import bulk_temperature, lubrication_solver
 from femgear.physics.contact.path import ContactPath, zone_grid
 from femgear.physics.geometry import GearPair
 from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
@@ -66,10 +66,14 @@ def contact_figures(case: Case, contact: ContactPath, mu: np.ndarray | None, mu_
     T1 = case.operating.pinion_torque
     line_load = T1 / pair.r1 * scene.rating.application_factor / (pair.b * pair.n_helices)
     iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=m.youngs_modulus)
+    iso_loss = None
+    if rating is not None:
+        mu_mC = rating.scuffing.path.mu_m
+        iso_loss = power_loss(case, contact, lambda u: np.full(np.shape(u), mu_mC))
     return ContactFigures(pitting=scene_rating(scene, pair, T1) if rating is None else rating.pitting,
                           iso_stiffness=iso, iso_line_load=line_load, friction_level=level,
                           flash_position=np.asarray(k.s, float), flash_temperature=theta,
-                          power_loss=power_loss(case, contact, mu_at))
+                          power_loss=power_loss(case, contact, mu_at), power_loss_iso=iso_loss)
 
 
 def _friction_at(mu: np.ndarray | None, mu_u: np.ndarray):
@@ -111,7 +115,9 @@ def scene_info(case: Case) -> SceneInfo:
     """The figures of ``femgear info``: the contact pass, the ratings, and μ at the contact pass's static line load
     and the oil temperature for the flash temperature and the power loss, of the case's lubrication level where it
     is a closed form (``none``, ``constant``, ``formula``) and of ``formula`` beyond it (the EHL and TEHL
-    levels solve for seconds to minutes; ``femgear run`` carries their own μ): ``figures.friction_level`` says which."""
+    levels solve for seconds to minutes; ``femgear run`` carries their own μ): ``figures.friction_level`` says which.
+    The contacts see the flanks' bulk temperature (the supply temperature plus ``thermal.flank_temperature_rise``,
+    :func:`femgear.levels.lubrication.bulk_temperature`)."""
     from femgear.case.checks import contact_warnings
     from femgear.levels.lubrication import summary_level
 
@@ -122,8 +128,8 @@ def scene_info(case: Case) -> SceneInfo:
     k = contact.kin
     w = contact.line_loads()
     level = summary_level(case.levels.lubrication)
-    mu, _ = lubrication_solver(case, level)(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
-                                            T=np.full(k.u.shape, case.operating.ambient_temperature))
+    T = bulk_temperature(case, case.thermal.flank_temperature_rise)
+    mu, _ = lubrication_solver(case, level)(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, T))
     figures = contact_figures(case, contact, np.asarray(mu, float), k.u, level, rating)
     return SceneInfo(case=case, contact=contact, rating=rating, figures=figures)
 
@@ -143,18 +149,26 @@ def own_figures(case, contact: ContactPath, Ra: float, temperature_rise: np.ndar
     lubrication level ``level`` on the same positions; None: computed with the ``formula`` level; ``film``: the
     :class:`femgear.levels.lubrication.LevelFilm` of the level that ran, else the contact pass's h_min)."""
     scene = case.scene
+    bulk = bulk_temperature(case, scene.thermal.flank_temperature_rise)
+    k = contact.kin
     if temperature_rise is None or level is None or not lubrication_solver(case, level).heats:
-        k = contact.kin
         w = contact.line_loads()
         solver = lubrication_solver(case, "formula")
-        _, temperature_rise = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
-                                     T=np.full(k.u.shape, scene.operating.ambient_temperature))
+        _, temperature_rise = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, bulk))
         level = "formula"
-    bulk = scene.operating.ambient_temperature + scene.thermal.flank_temperature_rise
     if film is not None and np.shape(film.minimum) == np.shape(contact.kin.u):
         h, label = np.asarray(film.minimum, float), f"{film.level}: h_min of {film.method}"
-    else:
+    elif bulk == case.operating.ambient_temperature:
         h, label = np.asarray(contact.film_minimum, float), "contact pass: Dowson–Higginson h_min of the shared line load"
+    else:
+        from femgear.levels.contact import reduced_modulus_of
+        from femgear.levels.lubrication import oil_law
+        from femgear.physics.contact.film import line_film
+
+        law = oil_law(case)
+        h = line_film(contact.line_loads(), k.R, k.ue, reduced_modulus_of(case), float(law.viscosity(0.0, bulk)),
+                      float(law.pressure_viscosity(bulk))).minimum_dh
+        label = "contact pass: Dowson–Higginson h_min of the shared line load at the bulk temperature"
     return OwnFigures(u=np.asarray(contact.kin.u, float), film=h, film_level=label, specific_film=h / Ra,
                       temperature=bulk + np.asarray(temperature_rise, float), temperature_level=level)
 

@@ -221,7 +221,7 @@ class RoughnessPeak(_Frozen):
 class SyntheticSurface(_Frozen):
     """``[roughness.synthetic]``: a seeded Gaussian random surface on one flank (FFT filtering,
     :func:`femgear.physics.ehl.core.surface.random_surface`) for deterministic rough EHL.  Independent of
-    ``roughness.rq``, which feeds the statistical (Greenwood–Tripp) mixed-lubrication model.
+    ``roughness.ra``/``rq``, which feed the statistical (Greenwood–Tripp) mixed-lubrication model.
     """
 
     rq: Pos = Field(description="RMS height Rq of the synthetic surface [m]")

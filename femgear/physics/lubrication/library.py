@@ -31,9 +31,10 @@ T15 = 288.15
 _P_ROELANDS = 5.1e-9
 
 ISO3448 = "ISO 3448:1992, viscosity grade mid-point ν40 [mm²/s]"
-GEARPIE_MINERAL = ("ν100 of ISO VG mineral gear oils (VI ≈ 95–100): the ASTM D341 lines of the GEARpie library "
-                   "(Fernandes, FEUP; cfernandesFEUP/GEARpie, CLASSES/LUBRICANT_LIBRARY.py, mineral M32–M460) at "
-                   "100 °C; ρ15 902 kg/m³ and ε 5.8e-4 1/K of the same library")
+GEARPIE = "GEARpie library (C. Fernandes, FEUP; github cfernandesFEUP/GEARpie, CLASSES/LUBRICANT_LIBRARY.py)"
+GEARPIE_MINERAL = (f"ν100 of ISO VG mineral gear oils (VI ≈ 95–100): the ASTM D341 lines M32–M460 of the {GEARPIE} "
+                   "at 100 °C")
+GEARPIE_MINERAL_DENSITY = f"ρ15 902 kg/m³, ε 5.8e-4 1/K of mineral oils in the {GEARPIE}"
 IMECHE_Z = ("Roelands z0 = 0.67 from the Tribology Handbook (IMechE), Table 25, paraffinic oils "
             "(α at 30/60/100 °C)")
 CRAGOE = "Cragoe, US Bureau of Standards Misc. Publ. 97 (1929): c_p and k of petroleum oils from ρ15"
@@ -87,7 +88,7 @@ def _mineral(vg: int, **over) -> LibraryOil:
         name=over.pop("name", f"mineral-vg{vg}"), base="mineral",
         description=over.pop("description", f"paraffinic mineral gear oil, ISO VG {vg}"),
         points=((313.15, vg * 1e-6), (373.15, _VG_MINERAL[vg] * 1e-6)), rho15=902.0, expansion=5.8e-4, z0=0.67,
-        sources={"viscosity": f"{ISO3448}; {GEARPIE_MINERAL}", "density": GEARPIE_MINERAL,
+        sources={"viscosity": f"{ISO3448}; {GEARPIE_MINERAL}", "density": GEARPIE_MINERAL_DENSITY,
                  "pressure_viscosity": IMECHE_Z, "thermal": CRAGOE, "traction": traction}, **over)
 
 
@@ -100,18 +101,17 @@ LIBRARY: dict[str, LibraryOil] = {o.name: o for o in [
     LibraryOil(
         name="pao-vg100", base="pao", description="polyalphaolefin gear oil, ISO VG 100 (VI ≈ 150)",
         points=((313.15, 99.4e-6), (373.15, 14.46e-6)), rho15=859.0, expansion=5.5e-4, z0=0.67,
-        sources={"viscosity": "GEARpie library (cfernandesFEUP/GEARpie, LUBRICANT_LIBRARY.py, P100): ASTM D341 line",
-                 "density": "GEARpie library, PAO: ρ15 859 kg/m³, ε 5.5e-4 1/K",
+        sources={"viscosity": f"the ASTM D341 line P100 of the {GEARPIE}",
+                 "density": f"ρ15 859 kg/m³, ε 5.5e-4 1/K of PAO in the {GEARPIE}",
                  "pressure_viscosity": None, "thermal": CRAGOE, "traction": None}),
     LibraryOil(
         name="pag-eo-po", base="pag",
         description="polyalkylene glycol (ethylene oxide–propylene oxide copolymer), ≈ ISO VG 120",
         points=((303.15, 0.204 / 1054.0), (373.15, 0.0225 / 1009.3)), rho15=1059.0, expansion=7.1e-4, z0=0.427,
         specific_heat=None, conductivity=None,
-        sources={"viscosity": "Stachowiak & Batchelor, Engineering Tribology, Table 2.3 (after Hamrock): η 204 / "
+        sources={"viscosity": "Stachowiak & Batchelor, Engineering Tribology, Table 2.3 (adapted from its ref. 12): η 204 / "
                               "62.5 / 22.5 mPa s at 30 / 60 / 100 °C (ν = η/ρ)",
-                 "density": "GEARpie library (cfernandesFEUP/GEARpie, LUBRICANT_LIBRARY.py, PAG): ρ15 1059 kg/m³, "
-                            "ε 7.1e-4 1/K",
+                 "density": f"ρ15 1059 kg/m³, ε 7.1e-4 1/K of PAG in the {GEARPIE}",
                  "pressure_viscosity": "Stachowiak & Batchelor, Table 2.3: α 17.6 GPa⁻¹ at 30 °C, z0 = 0.427",
                  "thermal": None, "traction": None}),
 ]}
