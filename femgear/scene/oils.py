@@ -39,8 +39,9 @@ def fill_named_oil(raw: Mapping[str, Any]) -> dict[str, Any]:
     if t_ref is None:
         op = raw.get("operating")
         t_ref = op.get("ambient_temperature", 313.0) if isinstance(op, Mapping) else 313.0
-    if not isinstance(t_ref, int | float) or isinstance(t_ref, bool) or not t_ref > 200.0:
-        return dict(raw)        # the schema names the bad temperature
+    if not isinstance(t_ref, int | float) or isinstance(t_ref, bool) or not 200.0 < t_ref < 600.0:
+        t_ref = 313.15          # a temperature no oil has (°C typed as K): filled at 40 °C so that the schema and
+        #                         the input ranges reach the temperature key and name it
     table = oil_table(entry, float(t_ref))
     return {**raw, "oil": {**table, **oil}}
 

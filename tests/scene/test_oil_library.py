@@ -95,3 +95,11 @@ def test_an_unknown_oil_name_is_one_line_exit_2(baseline_path, capsys):
     rc = main(["info", str(baseline_path), "--set", 'oil.name="mineral-vg1000"'])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2 and len(err) == 1 and "oil.name" in err[0] and "mineral-vg100" in err[0]
+
+
+def test_a_celsius_temperature_with_a_named_oil_names_the_temperature(baseline_path, tmp_path, capsys):
+    """The library fills the oil even at an impossible temperature, so that the input ranges name the key typed."""
+    path = _strip_oil(baseline_path, tmp_path)
+    rc = main(["info", str(path), "--set", "operating.ambient_temperature=40.0"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2 and len(err) == 1 and "operating.ambient_temperature" in err[0] and "40 °C" in err[0], err
