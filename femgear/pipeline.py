@@ -34,7 +34,7 @@ from femgear.levels import housing as housing_levels
 from femgear.levels import stiffness as stiffness_levels
 from femgear.levels import wear as wear_levels
 from femgear.levels.contact import contact_pass
-from femgear.levels.lubrication import Lubrication, friction_along_path, lubrication_solver
+from femgear.levels.lubrication import Lubrication, bulk_temperature, friction_along_path, lubrication_solver
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.results import RunResult, Tribology
@@ -62,7 +62,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     if not dynamics_levels.spec(case.levels.dynamics).is_dynamic:
         lubrication = lubrication_solver(case)
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint, lubrication)
-        tribology = replace(tribology, film=lubrication.film(tribology.load_per_length))
+        tribology = replace(tribology, film=lubrication.film(tribology.load_per_length,
+                                                             bulk_temperature(case, tribology.flank_temperature_rise)))
         return derived_fields(RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0,
                                         transmission_error=te, rating=case_rating(case, contact, tribology,
                                                                                   stiffness)))
@@ -80,7 +81,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         **wear_regime(setup.wear if worn else None, st.load_per_length),
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if worn else None, st.thermal_face),
-        film=setup.lubrication.film(st.load_per_length))
+        film=setup.lubrication.film(st.load_per_length, bulk_temperature(case, st.flank_temperature_rise)))
     return derived_fields(RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
                                     transmission_error=te,
                                     rating=case_rating(case, contact, tribology, stiffness, st.amplitudes or None)))
@@ -117,14 +118,16 @@ def case_rating(case: Case, contact: ContactPath, tribology: Tribology, stiffnes
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,
                      wear_checkpoint: Path | None = None, lubrication: Lubrication | None = None) -> Tribology:
     """Friction, thermal deviation and wear once, at the static load: friction at the contact
-    pass's shared line load w(u) (:mod:`femgear.physics.contact.sharing`), wear with the load shared
+    pass's shared line load w(u) (:mod:`femgear.physics.contact.sharing`) and the flanks' bulk temperature
+    (the supply temperature plus ``thermal.flank_temperature_rise``), wear with the load shared
     along the contact lines by the local pair stiffness (:func:`line_stiffness`), with ``ltca`` as the
     LTCA cycle shares it (:func:`ltca_reference`); ``lubrication``: the case's level (default: built here)."""
     w = np.asarray(contact.line_load, dtype=float)      # load sharing between the pairs in contact
     mu = dT = zeta = wear = None
     lubrication = lubrication or lubrication_solver(case)
     if lubrication.friction:
-        mu, dT = friction_along_path(case, w, lubrication)
+        T = np.full(case.path.u.shape, bulk_temperature(case, case.thermal.flank_temperature_rise))
+        mu, dT = friction_along_path(case, w, lubrication, T)
     units = thermal_units(case)
     if units is not None:
         zeta = units.deviation(case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)

@@ -18,11 +18,10 @@ import numpy as np
 from femgear.case import Case, build_case, operating_point
 from femgear.docfields import document_fields
 from femgear.levels.contact import contact_pass
-from femgear.levels.lubrication import lubrication_solver
+from femgear.levels.lubrication import bulk_temperature, lubrication_solver
 from femgear.physics.contact.path import ContactPath, zone_grid
 from femgear.physics.geometry import GearPair
 from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
-from femgear.physics.lubrication.mixed import FINISHING_RA
 from femgear.physics.rating import (
     LoadFactors,
     MaterialLimits,
@@ -41,8 +40,9 @@ from femgear.results import ContactFigures
 
 log = logging.getLogger("femgear.physics.rating")
 
-DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5], "finishing": "ground",
-            "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0, "accuracy_grade": 6}
+DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5],
+            "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0,
+            "accuracy_grade": 6}
 
 
 def _value(r, key: str, used: list[str]):
@@ -68,10 +68,14 @@ def contact_figures(case: Case, contact: ContactPath, mu: np.ndarray | None, mu_
     T1 = case.operating.pinion_torque
     line_load = T1 / pair.r1 * scene.rating.application_factor / (pair.b * pair.n_helices)
     iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=m.youngs_modulus)
+    iso_loss = None
+    if rating is not None:
+        mu_mC = rating.scuffing.path.mu_m
+        iso_loss = power_loss(case, contact, lambda u: np.full(np.shape(u), mu_mC))
     return ContactFigures(pitting=scene_rating(scene, pair, T1) if rating is None else rating.pitting,
                           iso_stiffness=iso, iso_line_load=line_load, friction_level=level,
                           flash_position=np.asarray(k.s, float), flash_temperature=theta,
-                          power_loss=power_loss(case, contact, mu_at))
+                          power_loss=power_loss(case, contact, mu_at), power_loss_iso=iso_loss)
 
 
 def _friction_at(mu: np.ndarray | None, mu_u: np.ndarray):
@@ -113,7 +117,9 @@ def scene_info(case: Case) -> SceneInfo:
     """The figures of ``femgear info``: the contact pass, the ratings, and μ at the contact pass's static line load
     and the oil temperature for the flash temperature and the power loss, of the case's lubrication level where it
     is a closed form (``none``, ``constant``, ``formula``) and of ``formula`` beyond it (the EHL and TEHL
-    levels solve for seconds to minutes; ``femgear run`` carries their own μ): ``figures.friction_level`` says which."""
+    levels solve for seconds to minutes; ``femgear run`` carries their own μ): ``figures.friction_level`` says which.
+    The contacts see the flanks' bulk temperature (the supply temperature plus ``thermal.flank_temperature_rise``,
+    :func:`femgear.levels.lubrication.bulk_temperature`)."""
     from femgear.case.checks import contact_warnings
     from femgear.levels.lubrication import summary_level
 
@@ -124,16 +130,19 @@ def scene_info(case: Case) -> SceneInfo:
     k = contact.kin
     w = contact.line_loads()
     level = summary_level(case.levels.lubrication)
-    mu, _ = lubrication_solver(case, level)(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
-                                            T=np.full(k.u.shape, case.operating.ambient_temperature))
+    T = bulk_temperature(case, case.thermal.flank_temperature_rise)
+    mu, _ = lubrication_solver(case, level)(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, T))
     figures = contact_figures(case, contact, np.asarray(mu, float), k.u, level, rating)
     return SceneInfo(case=case, contact=contact, rating=rating, figures=figures)
 
 
-def viscosity_law(scene):
-    """η(T) of the scene's oil: η0 exp(−β_T (T − T0)) [Pa s]."""
-    oil, T0 = scene.oil, scene.oil_reference_temperature
-    return lambda T: oil.viscosity * math.exp(-oil.temperature_viscosity * (T - T0))
+def oil_laws(case: Case):
+    """(η(T) [Pa s], α(T) [1/Pa]) at ambient pressure: the case's oil law (Roelands, the oil bound at the supply
+    temperature, :func:`femgear.case.oil.oil_at`), which the ratings' films and μ_mC read."""
+    from femgear.levels.lubrication import oil_law
+
+    law = oil_law(case)
+    return (lambda T: float(law.viscosity(0.0, T))), (lambda T: float(law.pressure_viscosity(T)))
 
 
 def own_figures(case, contact: ContactPath, Ra: float, temperature_rise: np.ndarray | None,
@@ -142,18 +151,26 @@ def own_figures(case, contact: ContactPath, Ra: float, temperature_rise: np.ndar
     lubrication level ``level`` on the same positions; None: computed with the ``formula`` level; ``film``: the
     :class:`femgear.levels.lubrication.LevelFilm` of the level that ran, else the contact pass's h_min)."""
     scene = case.scene
+    bulk = bulk_temperature(case, scene.thermal.flank_temperature_rise)
+    k = contact.kin
     if temperature_rise is None or level is None or not lubrication_solver(case, level).heats:
-        k = contact.kin
         w = contact.line_loads()
         solver = lubrication_solver(case, "formula")
-        _, temperature_rise = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr),
-                                     T=np.full(k.u.shape, scene.operating.ambient_temperature))
+        _, temperature_rise = solver(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(k.u.shape, bulk))
         level = "formula"
-    bulk = scene.operating.ambient_temperature + scene.thermal.flank_temperature_rise
     if film is not None and np.shape(film.minimum) == np.shape(contact.kin.u):
         h, label = np.asarray(film.minimum, float), f"{film.level}: h_min of {film.method}"
-    else:
+    elif bulk == case.operating.ambient_temperature:
         h, label = np.asarray(contact.film_minimum, float), "contact pass: Dowson–Higginson h_min of the shared line load"
+    else:
+        from femgear.levels.contact import reduced_modulus_of
+        from femgear.levels.lubrication import oil_law
+        from femgear.physics.contact.film import line_film
+
+        law = oil_law(case)
+        h = line_film(contact.line_loads(), k.R, k.ue, reduced_modulus_of(case), float(law.viscosity(0.0, bulk)),
+                      float(law.pressure_viscosity(bulk))).minimum_dh
+        label = "contact pass: Dowson–Higginson h_min of the shared line load at the bulk temperature"
     return OwnFigures(u=np.asarray(contact.kin.u, float), film=h, film_level=label, specific_film=h / Ra,
                       temperature=bulk + np.asarray(temperature_rise, float), temperature_level=level)
 
@@ -189,10 +206,9 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     r, used = scene.rating, []
     sigma_Flim = _value(r, "bending_stress_limit", used)
     root_rz = _value(r, "root_roughness_rz", used)
-    if r.roughness_ra is not None:
-        Ra = tuple(r.roughness_ra)
-    else:
-        Ra = (FINISHING_RA[_value(r, "finishing", used)],) * 2
+    Ra = case.flanks.ra
+    if case.flanks.finishing is not None and "(default)" in case.flanks.source:
+        used.append(f"roughness.finishing={case.flanks.finishing}")
     oil_type = _value(r, "oil_type", used)
     stage_s = _value(r, "scuffing_load_stage", used)
     stage_m = _value(r, "micropitting_load_stage", used)
@@ -209,7 +225,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     bending = BendingInputs(sigma_Flim=sigma_Flim, S_Fmin=r.bending_min_safety_factor, K_A=r.application_factor,
                             K_v=kv, K_Hbeta=khb, K_Falpha=kha,
                             life_hours=r.life_hours, root_Rz=tuple(root_rz), rim_ratio=tuple(rims))
-    eta = viscosity_law(scene)
+    eta, alpha = oil_laws(case)
     mat = scene.material
     theta_oil = scene.operating.ambient_temperature
     scuff = ScuffingInputs(oil_temperature=theta_oil, oil_viscosity=eta(theta_oil), youngs_modulus=mat.youngs_modulus,
@@ -220,8 +236,7 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     own = own_figures(case, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
     T1 = case.operating.pinion_torque
     rating = rate_pair(pair, scene_rating(scene, pair, T1, load_factors(r, factors)), T1, scene.pinion_rpm, bending,
-                       scuff, float(stage_s), float(stage_m), eta, scene.oil.pressure_viscosity, own=own,
-                       defaults=tuple(used))
+                       scuff, float(stage_s), float(stage_m), eta, alpha, own=own, defaults=tuple(used))
     rating = replace(rating, factors=factors)
     for flag in rating.flags:
         log.info("rating: %s; the factor is flagged", flag)

@@ -98,6 +98,9 @@ class ContactFigures:
     power_loss: MeshPowerLoss
     """mesh power loss of μ(u) of ``friction_level`` at the contact pass's line load (its fields carry
     their units) [-]"""
+    power_loss_iso: MeshPowerLoss | None = None
+    """the same mesh power loss with ISO/TS 6336-20's constant μ_mC instead of femgear's μ(u), beside it (None: no
+    rating) [-]"""
 
 
 @document_fields

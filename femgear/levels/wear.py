@@ -11,8 +11,9 @@ film, from the JGP split of the ``formula`` level's thermal film at every path p
 way :meth:`ArchardWear.regime` says how much of the load the film carries, and :meth:`ArchardWear.warnings`
 warns where the constant-coefficient form wears a pair whose film carries it.
 
-Roughness of the split: ``roughness.rq`` when given, else σ = √(π/2) √(R_a1² + R_a2²) of the flanks'
-``rating.roughness_ra`` (or of ``rating.finishing``, ground by default: R_a 0.4 µm, σ 0.71 µm).
+Roughness of the split: the tribology's composite σ of the flanks' one description (``[roughness]``: R_a or R_q
+per member, or the finishing, ground by default: R_a 0.4 µm, σ 0.71 µm; :attr:`femgear.case.Case.flanks`), also
+where the tribology takes the flanks as smooth (``roughness.model = "smooth"``: σ = √(Rq1² + Rq2²) then).
 """
 
 from __future__ import annotations
@@ -127,15 +128,15 @@ def _archard(case: Case, **_: Any) -> ArchardWear:
 
 
 def wear_roughness(case: Case) -> Roughness:
-    """The composite roughness of the wear's split: ``roughness.rq``, else from the flanks' R_a (module docstring)."""
-    from femgear.physics.lubrication.mixed import FINISHING_RA, Roughness, composite_sigma
+    """The composite roughness σ of the wear's split, from the flanks' one roughness description
+    (:attr:`femgear.case.Case.flanks`; also where the tribology takes the flanks as smooth, ``roughness.model =
+    "smooth"``: the wear needs the asperities), with the scene's Greenwood–Tripp statistics."""
+    import math
 
-    rough, rating = case.roughness, case.scene.rating
-    if rough.rq > 0:
-        sigma = rough.rq
-    else:
-        ra = rating.roughness_ra or [FINISHING_RA[rating.finishing or "ground"]] * 2
-        sigma = composite_sigma(*ra)
+    from femgear.physics.lubrication.mixed import Roughness
+
+    rough, flanks = case.roughness, case.flanks
+    sigma = flanks.sigma if flanks.sigma > 0 else math.hypot(*flanks.rq)
     return Roughness(sigma, rough.eta_beta_sigma, rough.sigma_over_beta)
 
 

@@ -137,6 +137,7 @@ CUSTOM: dict[tuple[str, str], tuple[str, str]] = {
     ("lubricant", "custom_femgear_limiting_shear_coefficient"): ("none", "floating_point"),
     ("lubricant", "custom_femgear_viscosity_reference_temperature"): ("C", "floating_point"),
     ("lubricant", "custom_femgear_viscosity_at_reference_temperature"): ("mPa s", "floating_point"),
+    ("lubricant", "custom_femgear_pressure_viscosity_at_reference_temperature"): ("mm^2 / N", "floating_point"),
     # the [rating] table (femgear.rexs.ratings) on each cylindrical_stage, its per-member lists on the gears
     **{("cylindrical_stage", f"custom_femgear_{key}"): spec_ for key, spec_ in {
         "application_factor": ("none", "floating_point"), "dynamic_factor": ("none", "floating_point"),

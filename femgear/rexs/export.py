@@ -25,7 +25,7 @@ from femgear.rexs.model import Attribute, Component, Model, Ref, Relation
 from femgear.rexs.ratings import member_values, nu40_attribute, stage_values
 from femgear.rexs.tables import HV_TO_PA, MEMBER_CUSTOM, OIL_CUSTOM
 from femgear.rexs.units import from_scene_unit
-from femgear.rexs.viscosity import T38, pressure_viscosity_at
+from femgear.rexs.viscosity import T38
 
 MEMBERS = ("pinion", "gear")
 
@@ -99,7 +99,7 @@ def _lubricant(scene, law) -> dict:
     if scene.rating.oil_viscosity_40 is not None:
         nu[313.15] = scene.rating.oil_viscosity_40 * 1e-6
     out = {"density_at_15_degree_celsius": oil.density * (1 - oil.thermal_expansion * (288.15 - t0)),
-           "pressure_viscosity_coefficient_at_38_degrees_celsius": pressure_viscosity_at(law, T38),
+           "pressure_viscosity_coefficient_at_38_degrees_celsius": float(law.pressure_viscosity(T38)),
            "custom_femgear_temperature_viscosity_coefficient": oil.temperature_viscosity}
     if nu[313.15] > nu[373.15] > 0:
         out["viscosity_at_40_degree_celsius"] = nu[313.15]
@@ -109,6 +109,7 @@ def _lubricant(scene, law) -> dict:
     if oil.reference_temperature is not None:
         out["custom_femgear_viscosity_reference_temperature"] = oil.reference_temperature
         out["custom_femgear_viscosity_at_reference_temperature"] = oil.viscosity
+    out["custom_femgear_pressure_viscosity_at_reference_temperature"] = oil.pressure_viscosity   # exact, back
     return out
 
 

@@ -158,7 +158,10 @@ def oil(conv: Conversion) -> None:
         conv.put("oil.density", rho15 / (1 - eps * (288.15 - t0)), src)
     _viscosity(conv, lubs, t0, t_ref is not None, eps)
     alpha, src = conv.agree(lubs, "pressure_viscosity_coefficient_at_38_degrees_celsius", "the oil's α")
-    if alpha is None:
+    own, src_own = conv.agree(lubs, "custom_femgear_pressure_viscosity_at_reference_temperature", "the oil's α")
+    if own is not None:     # femgear's own α at the reference temperature (written beside the 38 °C value)
+        conv.put("oil.pressure_viscosity", own, src_own)
+    elif alpha is None:
         conv.default("oil.pressure_viscosity", 2.0e-8, "no pressure_viscosity_coefficient_at_38_degrees_celsius: "
                                                        "a mineral oil's 20 GPa⁻¹")
     else:       # α at 38 °C carried to the reference temperature by the oil's own (Roelands) law

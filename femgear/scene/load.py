@@ -17,6 +17,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from femgear.errors import SceneError
+from femgear.scene.oils import fill_named_oil
 from femgear.scene.plausibility import check_temperatures, log_warnings, scene_warnings
 from femgear.scene.presets import expand_preset
 from femgear.scene.ranges import check_input_ranges
@@ -108,7 +109,7 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     key the user typed.  The gear's feasibility and the checks of the operating point that need the
     pair run when the case is bound (:func:`femgear.case.build_case`).
     """
-    raw = expand_preset(apply_overrides(data, overrides))
+    raw = fill_named_oil(expand_preset(apply_overrides(data, overrides)))
     try:
         scene = Scene.model_validate(raw)
     except ValidationError as exc:

@@ -46,7 +46,7 @@ material.density                —                                      500–2
 material.hardness               —                                      0.1–20 GPa
 material.thermal_expansion      —                                      1e-7–1e-4 1/K
 material.conductivity, .spec.h. —                                      1–500 W/(m K), 100–5000 J/(kg K)
-roughness.rq                    ≤ 10 µm                                ≤ min(100 µm, 0.1 m_n)
+roughness.ra, .rq (per member)  R_a 0.02–12.5 µm (ISO 1302 N1–N10)     R_a ≤ min(50 µm, 0.05 m_n) (R_q × 1.25)
 ==============================  =====================================  ===================================
 
 Sources of the bounds: ISO 54 / DIN 780 module series (0.05–100 mm), ISO 6336-1 (b/d1 of
@@ -72,7 +72,6 @@ LOW_PITCH_SPEED = 0.1         #: m/s, below: warned (boundary lubrication)
 #: (below ISO 1328 class 1), a composite roughness of 0.01 µm (below superfinished flanks)
 BACKLASH_MIN = 0.005
 FINEST_ERROR = 1e-7
-FINEST_ROUGHNESS = 1e-8
 
 
 @dataclass(frozen=True)
@@ -265,10 +264,6 @@ def _error_ranges(scene) -> list[Range]:
                   "a gear material's conductivity"),
             Range("material.specific_heat", mat.specific_heat, (100.0, 5000.0), (100.0, 5000.0), "J/(kg K)",
                   "a gear material's specific heat", ((1e3, 0.0, "kJ/(kg K)"),))]
-    rq = scene.roughness.rq
-    out.append(Range("roughness.rq", rq, (0.0, min(1e-4, 0.1 * m)), (0.0, 1e-5), "m",
-                     "a composite RMS flank roughness (ground 0.1–0.5 µm, hobbed 1–3 µm)", UM_MM,
-                     hint_band=(FINEST_ROUGHNESS, 1e-5)))
     return out
 
 
@@ -339,6 +334,9 @@ def check_input_ranges(scene) -> list[str]:
         message = _judge(r)
         if message:
             warnings.append(message)
+    from femgear.scene.roughness import check_roughness
+
+    warnings += check_roughness(scene)
     warnings += _operating_checks(scene)
     return warnings
 

@@ -153,8 +153,14 @@ class Material(_Frozen):
 
 
 class Oil(_Frozen):
-    """``[oil]``: the lubricant.  Viscosity data refer to ``reference_temperature``."""
+    """``[oil]``: the lubricant.  Viscosity data refer to ``reference_temperature``.  ``name`` picks an oil of
+    femgear's library (``femgear oils``), which fills every key the table does not give."""
 
+    name: str | None = Field(
+        None, description="a named oil of femgear's library (femgear oils lists them with their sources: "
+                          "mineral-vg32 … mineral-vg460, min100-fzg, pao-vg100, pag-eo-po); it fills every oil key "
+                          "not given here, at reference_temperature (default: operating.ambient_temperature); "
+                          "None: the table's own values")
     viscosity: Pos = Field(description="dynamic viscosity η0 at ambient pressure and the reference temperature [Pa s] (kinematic "
                     "viscosity [mm²/s] × density [kg/m³] × 1e-6)")
     density: Pos = Field(description="density ρ0 at ambient pressure and the reference temperature [kg/m^3]")
@@ -209,7 +215,7 @@ class Friction(_Frozen):
     regularisation_speed: Pos = Field(0.01, description="v_reg of the sliding sign tanh(v_s/v_reg) [m/s]")
     boundary_coefficient: float = Field(
         0.1, ge=0, le=0.5, description="boundary friction coefficient μ_b of asperity contacts (mixed lubrication, "
-                                       "used when roughness.rq > 0) [-]")
+                                       "roughness.model = \"greenwood-tripp\") [-]")
 
 
 class RoughnessPeak(_Frozen):
@@ -234,7 +240,7 @@ class RoughnessPeak(_Frozen):
 class SyntheticSurface(_Frozen):
     """``[roughness.synthetic]``: a seeded Gaussian random surface on one flank (FFT filtering,
     :func:`femgear.physics.ehl.core.surface.random_surface`) for deterministic rough EHL.  Independent of
-    ``roughness.rq``, which feeds the statistical (Greenwood–Tripp) mixed-lubrication model.
+    ``roughness.ra``/``rq``, which feed the statistical (Greenwood–Tripp) mixed-lubrication model.
     """
 
     rq: Pos = Field(description="RMS height Rq of the synthetic surface [m]")
@@ -246,15 +252,39 @@ class SyntheticSurface(_Frozen):
     moving: bool = Field(True, description="the surface moves with its flank through the contact")
 
 
-class SurfaceRoughness(_Frozen):
-    """``[roughness]``: flank roughness for mixed lubrication (Greenwood–Tripp asperities, JGP split).
+#: R_a of a flank by its finishing process [m] (typical values, docs/roughness.md)
+FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
+Finishing = Literal["ground", "honed", "shaved", "hobbed"]
+MemberPair = Annotated[list[Pos], Field(min_length=2, max_length=2)]
 
-    0 = smooth flanks (full-film EHL everywhere).  Used by the ``formula`` lubrication level.
-    The sub-tables ``[roughness.peak]`` (the paper's single peak) and ``[roughness.synthetic]``
-    (a seeded random surface) describe deterministic roughness for the EHL solvers; absent = none.
+
+class SurfaceRoughness(_Frozen):
+    """``[roughness]``: the one description of the flanks' roughness, read by the ratings (λ_GF, μ_mC) and the
+    tribology (the Greenwood–Tripp asperity share of the mixed lubrication, λ).
+
+    Per member R_a (``ra``) or R_q (``rq``), or both (then R_q/R_a must lie in 1…1.6; Gaussian heights:
+    √(π/2) = 1.25); neither: R_a from ``finishing`` (default ground, R_a 0.4 µm).  The missing one of R_a, R_q
+    follows the Gaussian ratio; the tribology takes the composite σ = √(R_q1² + R_q2²).  ``model = "smooth"``
+    keeps the tribology's flanks smooth (full film; the seed paper's model) while the ratings still read the
+    roughness.  The sub-tables ``[roughness.peak]`` (the paper's single peak) and ``[roughness.synthetic]`` (a
+    seeded random surface) describe deterministic roughness for the EHL solvers; absent = none.  Until the next
+    release the old keys keep working, each with a log line naming its new key: ``rating.roughness_ra`` (now
+    ``roughness.ra``), ``rating.finishing`` (``roughness.finishing``) and one number ``roughness.rq`` (the
+    composite σ; 0: smooth, now ``roughness.model = "smooth"``).
     """
 
-    rq: NonNeg = Field(0.0, description="composite RMS roughness σ = √(Rq1² + Rq2²) of the two flanks [m]")
+    ra: MemberPair | None = Field(
+        None, description="arithmetic mean roughness R_a of the pinion and gear flanks, [R_a1, R_a2] [m]")
+    rq: MemberPair | NonNeg | None = Field(
+        None, description="RMS roughness R_q of the pinion and gear flanks, [R_q1, R_q2] [m]; one number is the old "
+                          "composite σ = √(R_q1² + R_q2²) (deprecated: give the pair; 0 = smooth flanks)")
+    finishing: Finishing | None = Field(
+        None, description="flank finishing, which sets R_a of both flanks when neither ra nor rq is given (ground 0.4, "
+                          "honed 0.3, shaved 0.8, hobbed 1.6 µm); default ground")
+    model: Literal["greenwood-tripp", "smooth"] = Field(
+        "greenwood-tripp", description="the tribology's flanks: greenwood-tripp (the asperities carry a share of the "
+                                       "load at low λ, μ rising towards friction.boundary_coefficient) or smooth "
+                                       "(full film everywhere; the ratings still read the roughness)")
     eta_beta_sigma: Pos = Field(0.04, le=1.0, description="Greenwood–Tripp ηβσ (asperity density × radius × σ) [-]")
     sigma_over_beta: Pos = Field(
         3e-3, le=1.0, description="σ/β, roughness over the asperity tip radius (typical 1e-3…1e-2) [-]")
@@ -412,12 +442,10 @@ class Rating(_Frozen):
     bending_min_safety_factor: Pos = Field(1.0, description="minimum required safety factor for bending S_Fmin [-]")
     root_roughness_rz: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
         None, description="root fillet roughness R_z of pinion and gear [m] (Y_RrelT); default 1e-5 each")
-    finishing: Literal["ground", "honed", "shaved", "hobbed"] | None = Field(
-        None, description="flank finishing; sets roughness_ra when that is not given (ground 0.4, honed 0.3, "
-                          "shaved 0.8, hobbed 1.6 µm); default ground")
-    roughness_ra: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
-        None, description="arithmetic mean flank roughness R_a of pinion and gear [m] (scuffing μ, micropitting λ); "
-                          "default from finishing")
+    finishing: Finishing | None = Field(
+        None, description="deprecated (read for one release): use roughness.finishing [-]")
+    roughness_ra: MemberPair | None = Field(
+        None, description="deprecated (read for one release): use roughness.ra; R_a of pinion and gear [m]")
     oil_type: Literal["mineral", "pao", "pag", "pag-water", "traction", "phosphate-ester"] | None = Field(
         None, description="base oil, sets the lubricant factor X_L of ISO/TS 6336-20/21; default mineral")
     scuffing_load_stage: float | None = Field(

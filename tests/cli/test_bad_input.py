@@ -52,6 +52,12 @@ def _binary(tmp_path: Path) -> str:
 
 
 INPUT_ERRORS = [
+    # issue 38: the oil library and the one roughness description
+    (["info", BASE, "--set", 'oil.name="vg100"'], "oil.name"),
+    (["info", BASE, "--set", "roughness.ra=[0.0, 0.4e-6]"], "roughness.ra"),
+    (["info", BASE, "--set", "roughness.ra=[0.4, 0.4]"], "roughness.ra"),
+    (["info", BASE, "--set", "roughness.ra=[0.4e-6, 0.4e-6]", "--set", "roughness.rq=[0.2e-6, 0.2e-6]"],
+     "roughness.rq"),
     # the cases of issue 17
     (["info", BASE, "--set", "operating.torque=inf"], "operating.torque"),
     (["info", BASE, "--set", "pair.normal_module=inf"], "pair.normal_module"),

@@ -28,7 +28,10 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``film_minimum`` (and ``film_pressure_max``, thermal levels ``film_temperature_rise``) are those of
   the lubrication level that ran (``summary.film``: level, method, pitch and minimum values), the
   formula films stay as ``film_*_formula``; ``specific_film`` λ = h_min / R_a (R_a the mean of both
-  flanks, ``rating.roughness_ra`` or its default by ``rating.finishing``);
+  flanks, ``roughness.ra`` or its default by ``roughness.finishing``: ``summary.roughness``);
+  ``summary.oil`` (the oil at the supply temperature and its sources), ``summary.roughness`` and
+  ``summary.beside_iso`` (femgear's μ̄, contact temperature and loss beside ISO/TS 6336-20/21's) come from
+  :func:`femgear.summary.scene_summary`;
 - ``units``: ``{field path: unit}`` of every field of the typed result (``"contact.hertz_pressure": "Pa"``,
   ``"stiffness.k_left": "N/m"``; "-" dimensionless), generated from the field docs (:func:`result_units`);
   the keys above take the unit of the field they are written from;

@@ -118,7 +118,7 @@ def validity_flags(pair: GearPair, bending: BendingRating, pitch_line_velocity: 
 
 def rate_pair(pair: GearPair, pitting: PittingRating, pinion_torque: float, pinion_rpm: float,
               bending: BendingInputs, scuffing: ScuffingInputs, scuffing_stage: float, micropitting_stage: float,
-              viscosity: Callable[[float], float], pressure_viscosity: float,
+              viscosity: Callable[[float], float], pressure_viscosity: float | Callable[[float], float],
               own: OwnFigures | None = None, defaults: tuple[str, ...] = ()) -> PairRating:
     """The four ratings of ``pair`` (``pitting`` computed by :func:`femgear.physics.rating.pitting_rating`)."""
     b = bending_rating(pair, pinion_torque, pinion_rpm, bending)

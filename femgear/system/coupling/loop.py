@@ -16,7 +16,8 @@ One iteration:
    layer c_l(u) on the flank deviations, or with ``ltca`` the load distribution of the
    pass's (deviated) LTCA cycle scaled to the dynamic force (:func:`ltca_reference`);
 4. lubrication at every path position (load, radius, entrainment, slide-to-roll,
-   bulk temperature) → μ(u) and the contact temperature rise ΔT(u);
+   bulk temperature: the supply temperature plus the previous pass's bulk flank rise of step 5,
+   :func:`femgear.levels.lubrication.bulk_temperature`) → μ(u) and the contact temperature rise ΔT(u);
 5. thermal expansion of both flanks for the bulk (body) temperature rise
    (:func:`femgear.system.coupling.thermal.bulk_temperature_rise`: the scene's ``thermal.flank_temperature_rise``, or,
    when that is 0, ``thermal.bulk_fraction`` × the mean contact temperature rise along
@@ -49,7 +50,7 @@ from femgear.case import Case
 from femgear.docfields import document_fields
 from femgear.errors import ConvergenceError, SceneError
 from femgear.levels import wear as wear_levels
-from femgear.levels.lubrication import Lubrication, lubrication_solver
+from femgear.levels.lubrication import Lubrication, bulk_temperature, lubrication_solver
 from femgear.perf import Progress
 from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.stiffness.tvms import MeshStiffness
@@ -290,8 +291,9 @@ def _references(setup: CouplingSetup, cycle: LTCACycle | None, wear: np.ndarray,
 
 
 def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray,
-                      reference: ReferenceLoad | None = None):
-    """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication."""
+                      reference: ReferenceLoad | None = None, flank_rise: float = 0.0):
+    """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication at the flanks' bulk
+    temperature (the supply temperature plus ``flank_rise`` [K], the previous pass's bulk rise)."""
     pair, kin = setup.pair, setup.kin
     if reference is None:
         maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
@@ -300,7 +302,7 @@ def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarr
     else:
         w = reference_load_map(pair, kin.u, force, removed, setup.c_l, reference).mean_load
     w = np.maximum(w, 1e-3 * setup.static_force / pair.mean_contact_length)   # never-loaded ends
-    T0 = setup.case.operating.ambient_temperature
+    T0 = bulk_temperature(setup.case, flank_rise)
     mu, dT = setup.lubrication(w=w, R=kin.R, ue=kin.ue, srr=np.abs(kin.srr), T=np.full(w.shape, T0))
     return w, np.asarray(mu, dtype=float), np.asarray(dT, dtype=float)
 
@@ -482,7 +484,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
     zero = np.zeros((2, setup.kin.u.size))
     ref_wear, ref_contact = _references(setup, setup.ltca, zero, zero)
     wear, face = _wear(setup, force, ref_wear)
-    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact)
+    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact, setup.case.thermal.flank_temperature_rise)
     rise, zeta, zeta_face = _thermal(setup, dT)
     state = CouplingState(iteration=0, mesh_force=force, load_per_length=w, mu=mu, temperature_rise=dT,
                           flank_temperature_rise=rise, thermal_deviation=zeta, wear=wear,
@@ -496,7 +498,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
                                             state.thermal_face)
         wear_new, face_new = _wear(setup, force, ref_wear)
         t2 = time.perf_counter()
-        w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact)
+        w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact, state.flank_temperature_rise)
         rise, zeta_new, zeta_face = _thermal(setup, dT)
         mix = lambda old, new: old + relax * (new - old)  # noqa: E731
         lte = math.nan if cycle is None else cycle.lte_peak_to_peak
