@@ -111,6 +111,21 @@ SECTIONS: dict[str, Section] = {
         **_keys("load_factors.accuracy_grade", NUMBER, "grade f_pb"),
         **_keys("load_factors.accuracy_grade", PAIR, "f_pt f_falpha f_Hbeta")},
         when="where the ISO ratings could be computed"),
+    "beside_iso": Section({
+        **_keys("beside_iso", NUMBER, "mu_mean mu_path_mean iso_mu_mC mu_ratio oil_temperature max_contact_temperature "
+                                      "iso_bulk_temperature iso_max_contact_temperature iso_integral_temperature "
+                                      "power_loss iso_power_loss efficiency iso_efficiency"),
+        **_keys("beside_iso", TEXT, "friction_level temperature_level")},
+        when="where the ISO ratings could be computed"),
+    "oil": Section({
+        **_keys("oil", TEXT, "name", optional=True),
+        **_keys("oil", NUMBER, "supply_temperature viscosity pressure_viscosity temperature_viscosity density "
+                               "eyring_stress limiting_shear_coeff"),
+        **_keys("oil.sources", TEXT, "viscosity pressure_viscosity density thermal traction", optional=True),
+        **_keys("oil", LIST, "unsourced")}),
+    "roughness": Section({
+        **_keys("roughness", PAIR, "ra rq"), **_keys("roughness", NUMBER, "sigma"),
+        **_keys("roughness", TEXT, "model source"), **_keys("roughness", TEXT, "finishing", optional=True)}),
     "power_loss": Section({**_keys("power_loss", NUMBER, "mean_loss input_power efficiency energy_per_mesh_cycle "
                                                          "ohlendorf_HV equivalent_mu max_loss_density "
                                                          "mean_friction_coefficient"),
