@@ -83,7 +83,7 @@ GROUPS: dict[str, tuple[str, str]] = {
              "figure shows what the loop converged to."),
     "dynamics": ("Vibration: `femgear dynamics`",
                  "One dynamic run at the scene's speed (the same four figures come with `femgear run` when "
-                 "`physics.dynamics` is on)."),
+                 "`physics.dynamics` is on). How to read them: [Reading the vibration outputs](guide/vibration.md)."),
     "speed": ("Against speed: `femgear dynamics --sweep`",
               "A time-domain run per speed, the natural frequencies marked, and the dynamic factor K_v from "
               "femgear's dynamics beside ISO 6336-1 method B."),

@@ -127,7 +127,9 @@ def test_the_page_and_the_markers_show_every_entry():
     page = gallery.page()
     for f in gallery.FIGURES:
         assert f"(gallery/{f.name}.png)" in page and f.command in page and f.read[0] in page, f.name
-    vibration = "# A page\n\n<!-- figure: baseline_dynamics_sweep -->\n\nText.\n"
+    vibration = (ROOT / "docs" / "guide" / "vibration.md").read_text(encoding="utf-8")
+    markers = gallery.MARKER.findall(vibration)
+    assert {"baseline_dynamics_mesh_force", "marine_dynamics_spectra", "baseline_dynamics_sweep"} <= set(markers)
     expanded = gallery.expand(vibration, prefix="../")
     assert not gallery.MARKER.search(expanded) and "(../gallery/baseline_dynamics_sweep.png)" in expanded
     with pytest.raises(KeyError, match="no_such_figure"):
