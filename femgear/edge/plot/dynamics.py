@@ -113,6 +113,7 @@ def plot_phase_planes(res: Response, cycles: float = 10.0, name: str = ""):
             ax.plot(x * 1e6, xd * 1e3, lw=0.8, color=f"C{row}")
             ax.set_title(f"{member}, {ax_name}: phase plane ({cycles:g} mesh periods)", fontsize=10)
             ax.set_xlabel(f"displacement {ax_name} − mean [µm]")
+            ax.locator_params(axis="x", nbins=6)                 # the default crowded its labels into each other
             ax.set_ylabel(f"velocity {ax_name} − mean [mm/s]")
             ax.grid(alpha=0.3)
     fig.suptitle(_title(name, "phase planes (velocity against displacement) of the pinion and gear centres"))
