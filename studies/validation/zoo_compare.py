@@ -84,15 +84,25 @@ def compare(before: Path, after: Path, rtol: float, atol: float) -> dict:
     return report
 
 
-def main(argv: list[str] | None = None) -> int:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed: the two folders and the tolerances."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("before", type=Path)
     ap.add_argument("after", type=Path)
     ap.add_argument("--rtol", type=float, default=1e-9, help="relative tolerance (default 1e-9)")
     ap.add_argument("--atol", type=float, default=1e-300, help="absolute tolerance for values near zero")
     ap.add_argument("--json", action="store_true", help="print one JSON object as the last line")
-    args = ap.parse_args(argv)
-    report = compare(args.before, args.after, args.rtol, args.atol)
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> dict:
+    """The comparison report of the two folders (see :func:`compare`)."""
+    return compare(args.before, args.after, args.rtol, args.atol)
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = setup(argv)
+    report = run(args)
     bad = 0
     for name, c in report["cells"].items():
         flag = "equal" if not (c["differ"] or c["removed"]) else "DIFFER"
