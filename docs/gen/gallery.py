@@ -250,7 +250,7 @@ FIGURES: tuple[Figure, ...] = (
             "(bottom) against speed, by harmonic balance at every speed (no × marks: the flanks never separate); "
             "dotted: f_n / k.",
             "Each order peaks where it meets a mode with mesh energy: order 1 at 5500 rpm (80 N, 2.85 kHz), order "
-            "4 at 4000 rpm (78 N, 8.1/8.3 kHz), order 2 at 8250 rpm (141 N); the bearings feel order 1 most (150 "
+            "4 at 4000 rpm (78 N, 8.1/8.3 kHz), order 2 at 8250 rpm (141 N); the bearings feel order 1 most (143 "
             "N at 5500 rpm).")),
     Figure("marine_dynamics_orders", "speed", "Whine per mesh order against speed (marine)", SPEED_M,
            "dynamics_orders.png", (P + "nvh.py::plot_order_sweep", *SWEEP_FIG),
@@ -297,8 +297,8 @@ FIGURES: tuple[Figure, ...] = (
            "runup_bearing.png", RUNUP_FIG,
            ("The same run-up read on the bearing-load component with the largest first mesh order (gear_L x): the "
             "map and the mesh-order cuts as for the mesh force.",
-            "Order 1 stays at 3.3 N over the ramp; the order-4 resonance at 1391 rpm lifts its line to 13 N, four "
-            "times order 1, and order 3's resonance at 1837 rpm shows as well.")),
+            "Order 1 stays at 3.3–3.5 N over the ramp; the order-4 resonance at 1391 rpm lifts its line to 12.7 N, "
+            "nearly four times order 1, and order 3's resonance at 1837 rpm shows as well.")),
     # ---- housing
     Figure("baseline_housing_orders", "housing", "Sensor accelerations and sound power of an FE housing (baseline)",
            HOUSING, "housing_orders.png", (P + "housing.py::plot_housing_orders", IO + "housing.py::write_housing"),
