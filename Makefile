@@ -60,7 +60,8 @@ test-slow: $(STAMP)
 
 # the docs site (mkdocs.yml): warnings are errors; open $(OUT)/site/index.html.  First the gallery's stale
 # figures are remade (docs/gen/gallery.py: none when its inputs did not change, a few seconds to check;
-# each stale command 10-90 s, all of them 4-6 minutes on 2 shared cores); `make gallery` remakes every figure.
+# each stale command 5-50 s, all of them about 4.5 minutes on 2 shared cores); `make gallery` remakes every figure
+# (also those whose physics moved under an unchanged digest: the digest sees scenes, commands and drawing code).
 docs: $(STAMP)
 	@$(BIN)/python docs/gen/gallery.py || echo "docs: some gallery figures could not be remade (above): the site shows the committed ones"
 	$(BIN)/mkdocs build --strict --site-dir $(OUT)/site
