@@ -118,9 +118,20 @@ def _te_summary(result: RunResult) -> dict[str, Any]:
 def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
     """The film of the lubrication level that ran, labelled with it."""
     i = int(np.argmin(film.minimum))
-    return {"level": film.level, "method": film.method, "central_pitch": float(film.central[pitch]),
-            "minimum": float(film.minimum[i]), "minimum_position": float(s[i]),
-            "pressure_max": float(np.max(film.pressure_max))}
+    out = {"level": film.level, "method": film.method, "central_pitch": float(film.central[pitch]),
+           "minimum": float(film.minimum[i]), "minimum_position": float(s[i]),
+           "pressure_max": float(np.max(film.pressure_max))}
+    if film.error_estimate is not None:
+        out["error_estimate_max"] = float(np.max(film.error_estimate))
+    if film.central_isothermal is not None:
+        out["central_isothermal_pitch"] = float(film.central_isothermal[pitch])
+    if film.thermal is not None:
+        th = film.thermal
+        out.update(thermal_loading_max=float(np.max(th["thermal_loading"])),
+                   phi_tehl_pitch=float(th["phi_tehl"][pitch]), phi_murch_wilson_pitch=float(th["phi_murch_wilson"][pitch]),
+                   phi_gupta_pitch=float(th["phi_gupta"][pitch]), flash_tehl_max=float(np.max(th["flash_tehl"])),
+                   flash_blok_max=float(np.max(th["flash_blok"])))
+    return out
 
 
 def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: bool = True

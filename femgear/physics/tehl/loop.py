@@ -47,11 +47,14 @@ def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> n
 
 def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol: float, relax: float,
                  max_step: float, max_rise: float, max_iter: int, case: str, depth: int = 5,
-                 solved: bool = True, growth: float = 1.0):
+                 solved: bool = True, growth: float = 1.0, history: list | None = None):
     """Returns (state, θ, thermal iterations, Newton iterations).  ``solved`` = False: the
     EHL state that ``energy`` sees is only a prediction (a prolonged coarse-grid solution),
-    not yet re-solved at θ; the loop then does not stop before one ``resolve``."""
-    history: list[float] = []
+    not yet re-solved at θ; the loop then does not stop before one ``resolve``.  ``history``: a
+    list the temperature changes are appended to (the caller's record across loops); the
+    ConvergenceError of a failed loop carries the changes of this loop."""
+    record = history if history is not None else []
+    history = []
     d_theta: list[np.ndarray] = []
     d_res: list[np.ndarray] = []
     beta, newton_its, previous = relax, 0, None
@@ -60,6 +63,7 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
         res = new - theta
         change = float(np.max(np.abs(res))) if res.size else 0.0
         history.append(change)
+        record.append(change)
         if not np.isfinite(change):
             raise ConvergenceError(case, "non-finite temperatures", {"temperature_change": history})
         if change < tol and solved:

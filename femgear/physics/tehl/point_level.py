@@ -47,13 +47,13 @@ POINT_LEVEL = 1
 log = logging.getLogger("femgear.physics.tehl")
 
 
-def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, roughness=None, level: int | None = None,
+def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict, roughness=None, level: int | None = None,
                       details: list | None = None, **options):
     """Direct thermal point-EHL solves (one per query point) in the map signature.
 
     ``geo``: the crowned contact of the pair (:func:`femgear.physics.contact.crowning.crowned_contact`);
     ``setup``: oil, solids and traction; ``roughness``: a ``[roughness]`` table with stationary features, or
-    None (smooth); ``line_level``: the grid level of the line-contact fallback (:func:`_line_contact`).
+    None (smooth); ``line_options``: the tolerance options of the line-contact fallback (:func:`_line_contact`).
     ``details``: a list that receives each :class:`femgear.physics.tehl.point.TEHLPointResult`
     (films, pressure, temperature for studies); a contact queried again (same radii, speeds, temperature)
     at a load that changed so little that the change of μ and ΔT is estimated below 1e-4 reuses its latest
@@ -79,7 +79,7 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, ro
                 try:
                     r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **kw)
                 except ConvergenceError as exc:
-                    r = _line_contact(float(w[i]), args, setup, line_level, exc)
+                    r = _line_contact(float(w[i]), args, setup, line_options, exc)
                 memory[key] = (memory.get(key, []) + [(args[0], r)])[-2:]
             mu[i], dT[i] = r.mu, r.dT_max
             results.append(r)
@@ -97,8 +97,8 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, ro
     return solve
 
 
-def _line_contact(w: float, args: tuple, setup: TEHLSetup, level: int, exc: ConvergenceError):
-    """The line-contact TEHL solve (grid ``level``) of a contact the point solver could not hold (R_x/R_y → 0
+def _line_contact(w: float, args: tuple, setup: TEHLSetup, options: dict, exc: ConvergenceError):
+    """The line-contact TEHL solve (``options`` of :func:`solve_tehl_line`) of a contact the point solver could not hold (R_x/R_y → 0
     limit: the same load per unit length on the radius R_x across the line), logged as a warning naming the
     contact."""
     from femgear.physics.tehl.line import solve_tehl_line
@@ -107,4 +107,4 @@ def _line_contact(w: float, args: tuple, setup: TEHLSetup, level: int, exc: Conv
     log.warning("tehl-point: the point solver failed at F = %.4g N, R_x = %.4g m (%s); this contact is solved "
                 "as a line contact (physics.lubrication = \"tehl\" there)", F, Rx,
                 str(exc).split(": ", 1)[-1].split(" (last:")[0][:100])
-    return solve_tehl_line(w, Rx, ue, srr, T, level=level, **setup.kwargs())
+    return solve_tehl_line(w, Rx, ue, srr, T, **setup.kwargs(), **options)
