@@ -23,6 +23,7 @@ Imports of the physics are lazy: the scene schema imports this registry for the 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -322,14 +323,22 @@ def tehl_point_solver(case: Case, level: int | None = None, details: list | None
     """The ``tehl-point`` direct solver of the case (:func:`femgear.physics.tehl.point_level.tehl_point_solver`):
     its crowned contact, TEHL set-up and stationary roughness; ``level`` the point grid (default
     :data:`~femgear.physics.tehl.point_level.POINT_LEVEL`), ``details`` receives each contact's result."""
-    from femgear.physics.contact.crowning import crowned_contact
+    from femgear.physics.contact.crowning import CrownedContact, crowned_contact
     from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
+    from femgear.physics.tehl.slices import SliceGeometry
 
-    rough = case.roughness
-    return point_solver(crowned_contact(case.pair, crowning(case)), tehl_setup(case),
-                        {"tol": case.numerics.ehl_tol, "min_level": case.numerics.ehl_level},
+    pair, rough = case.pair, case.roughness
+    if sum(crowning(case)) > 0:
+        geo = crowned_contact(pair, crowning(case))
+    else:   # uncrowned: a line contact along the whole line, handed over to the face slices
+        geo = CrownedContact(kappa=0.0, beta_b=pair.beta_b,
+                             contact_length=pair.b / math.cos(pair.beta_b) * pair.eps_alpha / pair.eps_gamma)
+    omega1 = 2.0 * math.pi * case.operating.pinion_rpm / 60.0
+    slices = SliceGeometry(omega1=omega1, omega2=omega1 * pair.z1 / pair.z2, beta_b=pair.beta_b,
+                           contact_length=geo.contact_length, kappa=geo.kappa)
+    return point_solver(geo, tehl_setup(case), {"tol": case.numerics.ehl_tol, "min_level": case.numerics.ehl_level},
                         roughness=rough if (rough.peak or rough.synthetic) else None, level=level, details=details,
-                        **options)
+                        slices=slices, **options)
 
 
 # ---------------------------------------------------------------- the case's lubrication
@@ -375,18 +384,10 @@ def _tehl_envelope(case: Case) -> None:
     check_envelope(float(np.max(case.path.ue)), case.levels.lubrication)
 
 
-def _point_range(case: Case) -> None:
-    from femgear.physics.contact.crowning import check_point_range
-    from femgear.physics.geometry import kinematics, path_positions
-
-    pair = case.pair
-    check_point_range(pair, crowning(case), kinematics(pair, path_positions(pair, 41), 1.0).R)
-
-
 #: what each level checks of a case before it runs (SceneError naming ``physics.lubrication``)
 RANGE_CHECKS: dict[str, tuple[Callable[[Case], None], ...]] = {
     "tehl": (_tehl_envelope,),
-    "tehl-point": (_tehl_envelope, _point_range),
+    "tehl-point": (_tehl_envelope,),
 }
 
 

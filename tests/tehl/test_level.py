@@ -70,5 +70,6 @@ def test_static_pass_reports_tehl_figures(scene):
     case = build_case(scene.model_copy(update={"numerics": scene.numerics.model_copy(update={"path_points": 3})}))
     contact = contact_pass(case, n=3)
     mu, dT = friction_along_path(case, np.full(case.path.u.size, contact.load_per_length))
-    direct = tehl_along_path(contact, tehl_setup(case), case.operating.ambient_temperature, level=3)
+    direct = tehl_along_path(contact, tehl_setup(case), case.operating.ambient_temperature,
+                             tol=case.numerics.ehl_tol, min_level=case.numerics.ehl_level)
     assert mu == pytest.approx(direct.mu) and dT == pytest.approx(direct.dT_max)

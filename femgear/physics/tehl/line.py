@@ -246,7 +246,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     ks = [max(top - 1, 0), top] if level is None or top > 0 else [top]
     opts = dict(model=model, tau0=tau0, limiting_shear=limiting_shear, heat=heat)
     loop = dict(thermal_tol=thermal_tol, relax=relax, max_iter=max_iter, max_rise=max_rise, max_step=max_step)
-    run = _Run(prob, c, oil, props, opts, loop, nz, reuse, case)
+    run = _Run(prob, c, oil, props, opts, loop, nz, reuse, case, (top, iso.P[1:-1], float(iso.H0)))
     state = _inject(iso, prob, ks[0])
     k = ks[0]
     while True:
@@ -275,8 +275,9 @@ def _inject(iso, prob: LineProblem, k: int):
 class _Run:
     """The thermal levels of one solve: the loop on each, summaries, history."""
 
-    def __init__(self, prob, c: _Contact, oil, props, opts, loop, nz, reuse, case):
+    def __init__(self, prob, c: _Contact, oil, props, opts, loop, nz, reuse, case, iso: tuple):
         self.prob, self.c, self.oil, self.props, self.opts, self.loop = prob, c, oil, props, opts, loop
+        self.iso = iso     # (level, PI, H0) of the isothermal solution
         self.nz, self.reuse, self.case = nz, reuse, case
         self.summaries: list[dict] = []
         self.history: dict = {"temperature_change": [], "continuation": []}
@@ -298,7 +299,9 @@ class _Run:
 
     def level(self, k: int, state):
         """Solve the thermal loop on level ``k`` from ``state`` = (PI, H0, theta | None) of the level below
-        (or injected from the isothermal solution); returns the state here."""
+        (or injected from the isothermal solution); returns the state here.  On the isothermal solve's own
+        level a cold start is that solution itself (exact: with the heat off the loop returns it untouched);
+        any other start is re-solved at least once."""
         PI, H0, theta = state
         if self.last is not None and self.last.k == k - 1:
             X = self.prob.dom.nodes(k)
@@ -307,12 +310,15 @@ class _Run:
                 Xt = X[::THERMAL_STEP]
                 xc = 0.5 * (Xt[:-1] + Xt[1:]) * self.c.b
                 theta = np.stack([np.interp(xc, self.last.xc, col) for col in theta.T], axis=1)
+        exact = k == self.iso[0] and (theta is None or not np.any(theta))
+        if exact:
+            PI, H0 = self.iso[1].copy(), self.iso[2]
         lv = _Level(self.prob, k, self.c, self.props, PI.copy(), H0, self.reuse)
         nt = lv.xf.size - 1
         theta = np.zeros((nt, self.nz)) if theta is None else theta
         cold = not np.any(theta)
         try:
-            st, theta = self._loop(lv, theta, 1.0, solved=cold)
+            st, theta = self._loop(lv, theta, 1.0, solved=exact)
         except ConvergenceError as exc:
             if not cold:
                 raise

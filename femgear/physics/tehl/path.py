@@ -3,10 +3,7 @@
 
 Positions, load per length, radii, entrainment speeds and SRR come from
 :func:`femgear.physics.contact.path.contact_along_path` (or any ``load_per_length`` array, e.g.
-the coupling's dynamic w̄').  One discretisation for the path: the position with the largest Moes M
-(the thinnest film for its width) is solved first to the tolerance, and its grid level is kept for every
-position, so that the path fields are smooth to the solver's tolerance (a level that changed between
-positions would step them by up to that tolerance).
+the coupling's dynamic w̄'), solved on one grid level (:func:`femgear.physics.tehl.solver.tehl_path_results`).
 """
 
 from __future__ import annotations
@@ -15,10 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from femgear.errors import ConvergenceError
-from femgear.physics.contact.film import moes_line
-from femgear.physics.tehl.line import TEHLResult, ehl_oil_at, solve_tehl_line
-from femgear.physics.tehl.solver import TEHLSetup, _level_of_nodes
+from femgear.physics.tehl.solver import TEHLSetup, tehl_path_results
 
 
 @dataclass(frozen=True)
@@ -33,35 +27,6 @@ class TEHLPath:
     mu_poiseuille: np.ndarray
     seconds: float
     results: list = field(repr=False, default_factory=list)
-
-
-def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int | None = None,
-                      **options) -> list[TEHLResult]:
-    """TEHL line solves at the contacts (arrays ``w``, ``R``, ``ue``, ``srr``; oil at ``T`` [K]) on one grid
-    level: ``level``, or the one the heaviest contact's tolerance-driven solve picks (module docstring);
-    ``options`` to :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
-    w, R, ue, srr = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr)))
-    kw = {**setup.kwargs(), **options}
-    out: list[TEHLResult | None] = [None] * w.size
-    if level is None:
-        oil = ehl_oil_at(setup.oil, T)
-        E = setup.E_red
-        M = [moes_line(wi / (E * Ri), oil.eta0 * ui / (E * Ri), oil.alpha * E)[0] for wi, Ri, ui in zip(w, R, ue)]
-        first = int(np.argmax(M))
-        out[first] = _one(first, w, R, ue, srr, T, kw)
-        level = _level_of_nodes(out[first].nodes)
-    kw.pop("min_level", None)
-    for i in range(w.size):
-        if out[i] is None:
-            out[i] = _one(i, w, R, ue, srr, T, {**kw, "level": level})
-    return out
-
-
-def _one(i: int, w, R, ue, srr, T, kw) -> TEHLResult:
-    try:
-        return solve_tehl_line(float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), T, **kw)
-    except ConvergenceError as exc:
-        raise ConvergenceError(f"tehl path position {i}", str(exc), exc.history) from exc
 
 
 def tehl_along_path(contact, setup: TEHLSetup, T_bulk: float, level: int | None = None, load_per_length=None,
