@@ -12,9 +12,10 @@ A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
   normal force (helical: b/(p_bt cos β_b) ∫ w̄ du = F_n per helix, to 2 %; spur, whose load jumps
   at B and D: w̄ b = F_n inside the single-contact zone; ``ltca``, whose w̄ is the mean over the
   phases that load u: the LTCA's own force balance per phase, to 1e-6), films positive, contact temperatures
-  finite and non-negative (zero only for the levels without heating), coupling converged, and
-  the film and temperature within a factor of :data:`FACTOR` of the formula figures of
-  ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
+  finite and non-negative (zero only for the levels without heating), coupling converged, the
+  film's own error estimate (the ``ehl-line`` and ``tehl`` levels must carry one; ``tehl-point``'s face slices
+  do) at most :data:`MAX_ESTIMATE`, and the film and temperature within a factor of :data:`FACTOR` of the
+  formula figures of ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
 - ``refused: <line>`` — exit 2 within :data:`REFUSAL_SECONDS` of CPU time with one line naming the key;
 - ``FAIL: ...`` — anything else (a raw solver line, a broken invariant, a late refusal).
 
@@ -44,6 +45,8 @@ FACTOR = 5.0              #: films and temperatures within this factor of the fo
 REFUSAL_SECONDS = 30.0    #: CPU seconds: a refusal comes before (long) computing: the CLI's start-up (imports) ~2 s;
 #: CPU time, not wall time, so that a loaded machine does not turn a refusal into a late one
 FORCE_TOLERANCE = 0.02    #: the path integral of the time-mean load against F_n
+MAX_ESTIMATE = 0.02       #: the largest film error estimate (``summary.film.error_estimate_max``) a cell may report
+ESTIMATED = ("ehl-line", "tehl")  #: the lubrication levels whose films must carry an error estimate
 COARSE = ("numerics.dynamics_cycles=20", "numerics.transient_cycles=10", "numerics.path_points=21")
 
 
@@ -91,7 +94,7 @@ def cells(path: Path) -> dict[str, list[str]]:
 
 def full_fidelity(path: Path) -> list[str]:
     """The scene's full fidelity: LTCA, 3-D thermal, and the finest lubrication level its range allows: the point
-    TEHL, else the line TEHL, else the FE line EHL (the turbo pair, above the TEHL levels' speed range)."""
+    TEHL (which hands slender contacts over to face slices of line TEHL), else the line TEHL, else the line EHL."""
     from femgear.errors import SceneError
 
     base = ['physics.stiffness="ltca"', 'physics.thermal="fe3d"']
@@ -125,6 +128,12 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
             bad.append("temperature rise negative or not finite")
         elif hand["flash"] > 1.0 and not hand["flash"] / FACTOR < max(dT) < hand["flash"] * FACTOR:
             bad.append(f"max temperature rise {max(dT):.3g} K vs formula {hand['flash']:.3g} K")
+    level = summary["physics"]["lubrication"]
+    est = (summary.get("film") or {}).get("error_estimate_max")
+    if level in ESTIMATED and est is None:
+        bad.append(f"{level} film without its error estimate")
+    elif est is not None and est > MAX_ESTIMATE:
+        bad.append(f"film error estimate {100 * est:.2g} % above {100 * MAX_ESTIMATE:g} %")
     h = path["film_central"][len(path["s"]) // 2]
     if not hand["film"] / FACTOR < h < hand["film"] * FACTOR:
         bad.append(f"mid-path film {h:.3g} m vs formula {hand['film']:.3g} m")
