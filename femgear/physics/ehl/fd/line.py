@@ -16,11 +16,12 @@ are refactorised only when it needs more than :data:`REUSE_KRYLOV` iterations.
 
 Cold start (the coarsest level): the dry Hertz pressure with Moes's central film; when
 Newton fails from it (heavy loads: the steps are capped at 4/alpha_bar and the line search
-stalls at the contact edges), continuation in the load from M = :data:`M_EASY` upward, the
-ratio doubled after each converged step and halved after a failed one (Allgower & Georg
+stalls at the contact edges; light ones: the pressure is far from Hertzian), continuation in the load from
+M = :data:`M_EASY` up or down to M, the ratio doubled after each converged step and its root taken after a failed
+one (Allgower & Georg
 1990, *Numerical Continuation Methods*, ch. 2: step-size adaptation), each start the
 previous solution in Hertzian units with H0 shifted by the change of Moes's film; when that
-fails too, the next finer level is tried.  Warm start (``start``, a neighbouring line
+fails too, the next finer level is tried (:data:`COLD_LEVELS` in all).  Warm start (``start``, a neighbouring line
 solution: the previous position of a path, the previous point of a map): the levels of
 ``start`` are solved from it (interpolated to the new grid, H0 shifted likewise), falling
 back to the cold start.
@@ -53,7 +54,8 @@ MIN_LEVEL = 4        #: the coarsest level a result may end on (257 intervals)
 MAX_LEVEL = 8        #: the finest level a solve may reach (4097 intervals)
 DENSE_NODES = 2049   #: grids up to this size are factorised densely
 REUSE_KRYLOV = 12    #: GMRES iterations allowed on reused factors before refactorising
-M_EASY = 10.0        #: where the load continuation of a cold start begins
+M_EASY = 10.0        #: where the load continuation of a cold start begins (up or down to M)
+COLD_LEVELS = 3      #: the levels a cold start is tried on, from COARSE_LEVEL up
 NEWTON_TOL = 1e-8    #: Newton's step tolerance (relative |dP|, |dH0|)
 
 
@@ -71,8 +73,8 @@ class LineProblem:
     """The levels of one line contact (M, L) on a domain, with the oil's rheology."""
 
     def __init__(self, M: float, L: float, dom: LineDomain, rheology: dict, surface=None,
-                 rheology_factory=None):
-        self.M, self.L, self.dom = M, L, dom
+                 rheology_factory=None, rigid: bool = False):
+        self.M, self.L, self.dom, self.rigid = M, L, dom, rigid
         self.rheology, self.surface = rheology, surface
         self.factory = rheology_factory or (lambda M_, frac: Rheology(pr.line_alpha_bar(M_, L) * frac, **rheology))
         self.fac = pr.line_h_moes_factor(M)
@@ -81,8 +83,9 @@ class LineProblem:
         M_ = self.M if M_ is None else M_
         X = self.dom.nodes(k)
         R = None if self.surface is None else self.surface(X)
+        K = _kernel(self.dom, k)
         return FDLine(X, self.factory(M_, frac), pr.line_lam_bar(M_), pr.LINE_LOAD, surface=R,
-                      kernel=_kernel(self.dom, k))
+                      kernel=np.zeros_like(K) if self.rigid else K)
 
     def summary(self, lv: FDLine, PI, H0, its: int, t0: float) -> dict:
         P, H = lv.film(PI, H0)
@@ -159,12 +162,13 @@ class NestedLine:
         got = self.newton(lv, *self.hertz(lv, M))
         if got:
             return lv, *got
-        Mc = min(M_EASY, M / 2.0)
+        Mc = M_EASY if M < M_EASY else min(M_EASY, M / 2.0)
         lvc = self.prob.level(k, Mc)
         got = self.newton(lvc, *self.hertz(lvc, Mc))
         ratio = 2.0
-        while got and Mc < M:
-            Mn = min(M, Mc * ratio)
+        up = M > Mc
+        while got and Mc != M:
+            Mn = min(M, Mc * ratio) if up else max(M, Mc / ratio)
             H0 = got[1] + expected_film(Mn, self.prob.L) - expected_film(Mc, self.prob.L)
             nxt = self.newton(self.prob.level(k, Mn), got[0], H0)
             if nxt:
@@ -197,7 +201,7 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
                   x1: float | None = None, viscosity: str = "barus", compressible: bool = False,
                   ph: float | None = None, z: float = 0.68, newton_tol: float = NEWTON_TOL,
                   max_iter: int = 60, start: EHLResult | None = None, reuse: dict | None = None,
-                  surface=None, graded: bool = True, rheology_factory=None) -> EHLResult:
+                  surface=None, graded: bool = True, rheology_factory=None, rigid: bool = False) -> EHLResult:
     """Isothermal line-contact EHL in Moes line groups (M, L), converged to ``tol``.
 
     ``tol``: relative accuracy of Hc and Hmin by the two-level Richardson estimate (None:
@@ -208,8 +212,8 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
     explicit inlet inside m* is solved and flagged).  Rheology as :class:`Rheology`;
     ``surface``: stationary roughness R(X) (a callable, Hertzian units); ``start``/``reuse``:
     warm starts along a sequence (module docstring).  ``graded=False``: uniform grids (for
-    convergence studies).  Raises :class:`ConvergenceError` with the history when no level
-    converges."""
+    convergence studies); ``rigid``: no elastic deflection (the rigid limits' checks).  Raises
+    :class:`ConvergenceError` with the history when no level converges."""
     if not (M > 0 and L >= 0 and np.isfinite(M) and np.isfinite(L)):
         raise ValueError("need finite M > 0 and L >= 0")
     if tol is not None and not 0.0 < tol < 1.0:
@@ -221,7 +225,7 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
     inlet = acc.inlet_problem(dom.x0, H_exp) if x0 is not None else None
     top = max_level if level is None else level
     prob = LineProblem(M, L, dom, dict(viscosity=viscosity, ph=ph, z=z, compressible=compressible), surface,
-                       rheology_factory)
+                       rheology_factory, rigid)
     run = NestedLine(prob, reuse, f"ehl line M={M:g} L={L:g}", newton_tol, max_iter)
     got, k = None, min(COARSE_LEVEL, top)
     if start is not None:
@@ -232,7 +236,7 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
         got = run.warm(start, k)
         if got:
             run.record(*got, n0)
-    while got is None and k <= top:
+    while got is None and k <= min(top, COARSE_LEVEL + COLD_LEVELS - 1):
         n0 = len(run.hist.residual)
         got = run.cold(k)
         if got:
