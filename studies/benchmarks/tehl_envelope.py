@@ -5,7 +5,10 @@
 Points (60, corners included): gear contacts built from an oil at its inlet temperature, the entrainment
 speed u_e, the Hertz pressure p_H, the slide-to-roll ratio and the reduced radius R (steel, E' 226 GPa,
 Eyring τ0 5 MPa, limiting shear 0.08 p): the 24 corners u_e 0.05 / 60 m/s x p_H 0.5 / 2.5 GPa x SRR 0 / +2 / −2
-(one surface at rest) x inlet oil 20 °C (ISO VG 220) / 150 °C (VG 100); a turbo line (VG 32 at 50 °C, u_e 20–85
+(one surface at rest) x the coldest and the hottest inlet, with the oil of each speed: ISO VG 220 at 20 / 150 °C
+on R 10 mm at 0.05 m/s, the turbine oil VG 32 at 40 / 150 °C on R 20 mm at 60 m/s (colder, or on a smaller
+radius, the contact leaves L ≤ 25 and M ≥ 1: VG 32 at 20 °C and 60 m/s has L = 36, any oil at 20 °C and 60 m/s
+L ≥ 35); a turbo line (VG 32 at 50 °C, u_e 20–85
 m/s, 0.8 GPa); heavy wind and mill contacts (PAO VG 320 at 60 °C, 1.5–2 GPa, R 40 mm); middle points (VG 100 at
 80 °C).  Each point prints its Moes M and L, converged, thermal iterations, CPU seconds, h_c/h_c,iso, the energy
 balance error and the film's error estimate; the summary the median and largest CPU seconds of the converged
@@ -47,11 +50,11 @@ OILS = {  # eta0 [Pa s], alpha [1/Pa], beta_T [1/K], T0 [K], rho0 [kg/m3] (the z
 def points(quick: bool = False) -> list[dict]:
     """The envelope grid (oil, inlet °C, u_e m/s, p_H Pa, SRR, R m)."""
     pts = []
-    for ue in (0.05, 60.0):
+    for ue, oil, temps, R in ((0.05, "VG220", (20.0, 150.0), 0.01), (60.0, "VG32", (40.0, 150.0), 0.02)):
         for ph in (0.5e9, 2.5e9):
             for srr in (0.0, 2.0, -2.0):
-                for oil, T in (("VG220", 20.0), ("VG100", 150.0)):
-                    pts.append(dict(oil=oil, T=T, ue=ue, ph=ph, srr=srr, R=0.01, group="corner"))
+                for T in temps:
+                    pts.append(dict(oil=oil, T=T, ue=ue, ph=ph, srr=srr, R=R, group="corner"))
     for ue in (20.0, 40.0, 60.0, 85.0):
         for srr in (0.0, 0.4, -0.4):
             pts.append(dict(oil="VG32", T=50.0, ue=ue, ph=0.8e9, srr=srr, R=0.02, group="turbo"))

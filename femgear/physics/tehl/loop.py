@@ -34,6 +34,11 @@ import numpy as np
 from femgear.errors import ConvergenceError
 
 
+class ThermalRunaway(ConvergenceError):
+    """No steady state below the loop's ``max_rise``: a physical limit (the film would heat beyond it), which
+    neither a finer grid nor a continuation removes."""
+
+
 def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> np.ndarray:
     """Walker & Ni's Anderson update θ_{k+1} − θ_k from the residual and the history."""
     step = beta * res
@@ -81,8 +86,8 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
             previous = (theta, res)
         step = np.clip(anderson_step(res, d_theta, d_res, beta), -max_step, max_step)
         if float(np.max(np.abs(theta + step))) > max_rise:
-            raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
-                                   {"temperature_change": history})
+            raise ThermalRunaway(case, f"temperatures run away (max rise > {max_rise} K)",
+                                 {"temperature_change": history})
         for attempt in range(4):
             try:
                 newton_its += resolve(theta + step)

@@ -49,9 +49,10 @@ from femgear.physics.ehl.fe.krylov import gmres_right
 from femgear.physics.ehl.fe.newton import _dense_forcing, _newton
 
 DEFAULT_TOL = 0.01   #: the accuracy a line solve is converged to by default (Hc and Hmin) [-]
-COARSE_LEVEL = 3     #: the cold start's level (129 intervals)
+COARSE_LEVEL = 2     #: the cold start's level (65 intervals)
+ESTIMATE_LEVELS = 3  #: the levels a result's Richardson estimate is taken from (their observed order)
 MIN_LEVEL = 4        #: the coarsest level a result may end on (257 intervals)
-MAX_LEVEL = 8        #: the finest level a solve may reach (4097 intervals)
+MAX_LEVEL = 7        #: the finest level a solve may reach (2049 intervals)
 DENSE_NODES = 2049   #: grids up to this size are factorised densely
 REUSE_KRYLOV = 12    #: GMRES iterations allowed on reused factors before refactorising
 M_EASY = 10.0        #: where the load continuation of a cold start begins (up or down to M)
@@ -231,7 +232,7 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
     if start is not None:
         if start.kind != "line":
             raise ValueError("start must be a line-contact EHLResult")
-        k = min(max(_level_of(start) - 1, COARSE_LEVEL), top)
+        k = min(max(_level_of(start) - ESTIMATE_LEVELS + 1, COARSE_LEVEL), top)
         n0 = len(run.hist.residual)
         got = run.warm(start, k)
         if got:
@@ -248,12 +249,12 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
     lv, PI, H0 = got
     while k < top:
         est = estimate(run.per_level)
-        if tol is not None and level is None and k >= min_level and all(
+        if tol is not None and level is None and k >= min_level and len(run.per_level) >= ESTIMATE_LEVELS and all(
                 e is not None and e <= tol for e in est.values()):
             break
         k += 1
         n0 = len(run.hist.residual)
-        nxt = run.refine(lv, PI, H0, k)
+        nxt = run.refine(lv, PI, H0, k) or run.cold(k)   # a coarse solution too poor to start from: afresh
         if nxt is None:
             raise ConvergenceError(run.case, f"Newton failed on level {k} ({16 * 2**k + 1} nodes)",
                                    run.hist.as_dict())
@@ -269,11 +270,13 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
 
 
 def estimate(per_level: list[dict]) -> dict:
-    """The two-level Richardson estimates of Hc and Hmin (:func:`femgear.physics.ehl.core.accuracy.
-    error_estimate` of the last two levels: order 2, the FD scheme's, observed cleanly on the graded grids,
-    e.g. Hc changes 0.053 / 0.013 / 0.0034 at (300, 4) from 257 to 2049 nodes), so that a warm solve, which
-    solves two levels, and a cold one, which solves more, estimate alike."""
-    return acc.error_estimate(per_level[-2:])
+    """The Richardson estimates of Hc and Hmin from the last :data:`ESTIMATE_LEVELS` levels with their observed
+    order (:func:`femgear.physics.ehl.core.accuracy.error_estimate`, clamped to 1..2): Hc converges at second order
+    on the graded grids (changes 0.053 / 0.013 / 0.0034 at (300, 4) from 257 to 2049 nodes), but Hmin, set at the
+    outlet constriction beside the free cavitation boundary, can converge at first order (Roelands and
+    Dowson-Higginson at (23, 13.9): changes 0.045 / 0.022 / 0.008 from 513 to 2049 nodes), which a two-level
+    estimate of assumed order 2 would read up to three times too small."""
+    return acc.error_estimate(per_level[-ESTIMATE_LEVELS:])
 
 
 def _level_of(res: EHLResult) -> int:
