@@ -47,7 +47,7 @@ UNITS = {
     "mean_flash_temperature": "K", "bulk_temperature": "K", "max_contact_temperature": "K",
     "scuffing_temperature": "K", "bulk_temperature_integral": "K", "integral_temperature": "K",
     "permissible_integral_temperature": "K", "max_contact_temperature_position": "m", "min_film": "m",
-    "lambda_GFmin_position": "m", "lambda_min_position": "m",
+    "lambda_GFmin_position": "m", "lambda_min_position": "m", "position": "m",
 }
 
 

@@ -66,7 +66,8 @@ from femgear.physics.tehl.rheology import ThermalRheology
 #: films uses their observed order (clamped to 1..2; :func:`femgear.physics.ehl.core.accuracy.error_estimate`): the
 #: minimum film of a hot contact converges at first order (1.5 GPa, 10 m/s, SRR 0.5, 240-260 K: h_min moves 4.1 and
 #: 1.7 % per halving, while h_c moves 3.4 and 0.7 %), and the two-level estimate, which assumes second order,
-#: would read it three times too small
+#: would read it three times too small (when the coarsest thermal level is skipped, the two finer ones give the
+#: estimate, order 2 assumed, rather than a third, costlier level above the isothermal one)
 THERMAL_LEVELS = 3
 MIN_THERMAL_LEVEL = 2   #: the coarsest thermal level (65 nodes; where its loop does not settle, the hottest contacts, it is skipped)
 
@@ -275,7 +276,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
             est = dict(iso.error_estimate)
             break
         est = acc.error_estimate(run.summaries)
-        enough = len(run.summaries) >= THERMAL_LEVELS or level is not None
+        skipped = any("skipped" in c["reason"] for c in run.history["continuation"])
+        enough = len(run.summaries) >= THERMAL_LEVELS or level is not None or (skipped and len(run.summaries) >= 2)
         if k >= max_level or (level is not None and k >= top) or (
                 k >= top and enough and all(e is not None and e <= tol for e in est.values())):
             break
