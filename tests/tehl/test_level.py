@@ -60,7 +60,8 @@ def test_path_mu_u_shaped_minimum_at_pitch_and_vtk(scene, case, tmp_path):
     from femgear.edge.io.fields import write_tehl_vtu
 
     g = meshio.read(write_tehl_vtu(tmp_path / "t.vtu", path.results[0]))
-    assert np.max(g.cell_data["temperature"][0]) == pytest.approx(path.dT_max[0] + scene.operating.ambient_temperature)
+    assert np.max(g.cell_data["temperature"][0]) == pytest.approx(path.results[0].T_film.max())
+    assert path.dT_max[0] + scene.operating.ambient_temperature >= path.results[0].T_film.max()  # the peak's vertex
 
 
 def test_static_pass_reports_tehl_figures(scene):
@@ -72,4 +73,4 @@ def test_static_pass_reports_tehl_figures(scene):
     mu, dT = friction_along_path(case, np.full(case.path.u.size, contact.load_per_length))
     direct = tehl_along_path(contact, tehl_setup(case), case.operating.ambient_temperature,
                              tol=case.numerics.ehl_tol, min_level=case.numerics.ehl_level)
-    assert mu == pytest.approx(direct.mu) and dT == pytest.approx(direct.dT_max)
+    assert mu == pytest.approx(direct.mu) and dT == pytest.approx(direct.dT_surface)

@@ -285,6 +285,22 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     return run.result(iso, t0, t_iso, est)
 
 
+def peak(values: np.ndarray, x: np.ndarray) -> float:
+    """The largest value of a field given at the cell centres ``x`` (≥ 0): the vertex of the parabola through the
+    largest cell value and its neighbours, never below that value.  The film's hottest point sits on the outlet
+    pressure spike, which moves across the cells from one path position to the next; the cell maximum then steps
+    along the path (up to 17 % of the peak between neighbouring positions of the baseline's path), the vertex far
+    less."""
+    i = int(np.argmax(values))
+    top = float(max(values[i], 0.0))
+    if 0 < i < values.size - 1:
+        xs = x[i - 1:i + 2] - x[i]
+        a, b, c0 = np.polyfit(xs, values[i - 1:i + 2], 2)
+        if a < 0:
+            top = max(top, float(c0 - b * b / (4.0 * a)))
+    return top
+
+
 def _regrid(theta: np.ndarray, xc0: np.ndarray, xc: np.ndarray, nz: int) -> np.ndarray:
     """The film temperatures (cells ``xc0`` x layers) linearly interpolated to the cells ``xc`` and ``nz`` layers
     (along the layer centres ζ in (0, 1))."""
@@ -393,7 +409,7 @@ class _Run:
         i0 = int(np.argmin(np.abs(lv.lv.X)))
         dx = np.diff(lv.xf)
         self.summaries.append({"nodes": lv.lv.n, "Hc": float(H[i0] * c.hs), "Hmin": float(H.min() * c.hs),
-                               "mu": float(abs(st.tau_couette @ dx) / c.w), "dT_max": float(max(theta.max(), 0.0)),
+                               "mu": float(abs(st.tau_couette @ dx) / c.w), "dT_max": peak(theta.max(axis=1), lv.xc),
                                "iterations": self.its})
 
     def result(self, iso, t0: float, t_iso: float, est) -> TEHLResult:
@@ -408,7 +424,7 @@ class _Run:
         hs = c.hs
         out = TEHLResult(
             hc=float(H[i0] * hs), hmin=float(H.min() * hs), pmax=float(P.max() * c.ph), hc_isothermal=float(iso.Hc_hertz * hs),
-            dT_max=float(max(theta.max(), 0.0)), dT_surface=float(max(st.surface1.max(), st.surface2.max(), 0.0)),
+            dT_max=peak(theta.max(axis=1), lv.xc), dT_surface=max(peak(st.surface1, lv.xc), peak(st.surface2, lv.xc)),
             mu=abs(mu_c), mu_couette=mu_c, mu_poiseuille=mu_p, heat=st.heat, iterations=self.its,
             newton_iterations=self.newton_its, seconds=time.perf_counter() - t0, seconds_isothermal=t_iso, b=c.b,
             ph=c.ph, x=X * c.b, p=P * c.ph, h=H * hs, x_cells=lv.xc, T_film=c.T_bulk + theta,

@@ -98,7 +98,7 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
                             handed.append("failed")
                             r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options)
                 memory[key] = (memory.get(key, []) + [(args[0], r)])[-2:]
-            mu[i], dT[i] = r.mu, r.dT_max
+            mu[i], dT[i] = r.mu, r.dT_surface
             results.append(r)
         if handed:
             log.warning("tehl-point: %d of %d contacts handed over to line TEHL in %d face slices each, with each "
