@@ -23,7 +23,7 @@ import numpy as np
 from femgear.errors import SceneError
 from femgear.physics.contact.film import moes_line
 from femgear.physics.ehl.dimensional import DimensionalEHL, EHLOil, solve_line_dimensional
-from femgear.physics.ehl.fd.line import DEFAULT_TOL, MIN_LEVEL, _level_of
+from femgear.physics.ehl.fd.line import DEFAULT_TOL, MAX_LEVEL, MIN_LEVEL, _level_of
 from femgear.physics.lubrication.flash import blok_flash_temperature
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.traction import Solids, shear_stress
@@ -47,9 +47,10 @@ def _oil(oil: OilLaw, T: float) -> EHLOil:
 
 
 def line_ehl_path(w, R, ue, T, oil: OilLaw, E_red: float, *, tol: float = DEFAULT_TOL,
-                  min_level: int | None = None) -> LineFilms:
+                  min_level: int | None = None, refined: bool = False) -> LineFilms:
     """Isothermal line EHL at each contact (arrays ``w``, ``R``, ``ue``, bulk temperatures ``T`` broadcast
-    against them), one grid level for all (module docstring)."""
+    against them), one grid level for all (module docstring); when a contact's estimate exceeds ``tol`` on the
+    probe's level, the path is solved once more one level finer (``refined``: that second pass)."""
     w, R, ue, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, T)))
     shape = w.shape
     w, R, ue, T = (a.ravel() for a in (w, R, ue, T))
@@ -68,6 +69,10 @@ def line_ehl_path(w, R, ue, T, oil: OilLaw, E_red: float, *, tol: float = DEFAUL
             out[i] = _solve(w[i], R[i], ue[i], E_red, oils[i], dict(level=level, tol=tol, start=prev, reuse=reuse))
         prev = out[i].result
     est = np.array([max(v for v in r.result.error_estimate.values() if v is not None) for r in out])
+    if est.max() > tol and level < MAX_LEVEL and not refined:
+        # a position other than the probe needs more: the whole path one level finer, once
+        return line_ehl_path(w.reshape(shape), R.reshape(shape), ue.reshape(shape), T.reshape(shape), oil, E_red,
+                             tol=tol, min_level=level + 1, refined=True)
     films = (np.array([getattr(r, k) for r in out]).reshape(shape) for k in ("hc", "hmin", "pmax"))
     return LineFilms(*films, error_estimate=est.reshape(shape), level=level, results=tuple(out))
 

@@ -20,6 +20,7 @@ import numpy as np
 from femgear.errors import ConvergenceError, SceneError
 from femgear.physics.contact.film import moes_line
 from femgear.physics.contact.hertz import reduced_modulus
+from femgear.physics.ehl.fd.line import DEFAULT_TOL, MAX_LEVEL
 from femgear.physics.lubrication.map import FrictionMap
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.path import solids_of
@@ -106,7 +107,8 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
     level: ``level``, or the one that the tolerance-driven solve of the contact with the largest Moes M (the
     thinnest film for its width, which needs the finest grid) picks, kept for the others, so that the fields
     of a path or map are smooth to the solver's tolerance (a level that changed from point to point would step
-    them by up to that tolerance); ``options`` to :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
+    them by up to that tolerance); when another contact's estimate then exceeds the tolerance, the whole sequence
+    is solved once more one level finer.  ``options`` to :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
     w, R, ue, srr = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr)))
     kw = {**setup.kwargs(), **options}
     out: list = [None] * w.size
@@ -119,12 +121,23 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
         progress(0)
         out[first] = _one(first, w, R, ue, srr, T, kw)
         level = _level_of_nodes(out[first].nodes)
+        auto = True
+    else:
+        auto = False
     kw.pop("min_level", None)
     for i in range(w.size):
         if out[i] is None:
             progress(i)
             out[i] = _one(i, w, R, ue, srr, T, {**kw, "level": level})
+    tol = kw.get("tol", DEFAULT_TOL)
+    if auto and level < MAX_LEVEL and max(_estimate(r) for r in out) > tol:
+        # a position other than the probe needs more: the whole sequence one level finer, once
+        return tehl_path_results(w, R, ue, srr, T, setup, level=level + 1, **options)
     return out
+
+
+def _estimate(r) -> float:
+    return max((e for e in r.error_estimate.values() if e is not None), default=0.0)
 
 
 def _one(i: int, w, R, ue, srr, T, kw) -> TEHLResult:
