@@ -15,7 +15,9 @@ balance error and the film's error estimate; the summary the median and largest 
 points (targets ≤ 1 s and ≤ 5 s) and the M, L covered.
 
 Also: the isothermal (M, L) = (1000, 4.3) to 1 % (target ≤ 0.5 s), the Galerkin (FE) solver of the base tree at
-its own tolerance-driven grid for the same accuracy (``--no-base`` skips it), and with ``--zoo`` the wall time of the
+its own tolerance-driven grid for the same accuracy, the base tree's line TEHL at five contacts where it converges
+(its default level 5 and level 6, against this tree at its tolerance; ``--no-base`` skips both), and with ``--zoo``
+the wall time of the
 ``tehl`` zoo cells of the turbo pair and the baseline (target: turbo ≤ 3x baseline).  CPU seconds are process
 time (the machine is shared); timings are medians of 3 where marked.
 """
@@ -131,6 +133,58 @@ def _export_base(into: Path, rev: str = "7e5b70f") -> None:
     export_base(rev, into)
 
 
+#: contacts where the base tree's TEHL converges (the baseline's mid-path contact and 10 m/s, 1 GPa), for the
+#: same-run comparison: (w N/m, R m, u_e m/s, SRR)
+COMPARE = [(84332.0, 0.0123, 1.09, 0.0), (84332.0, 0.0123, 1.09, 0.3), (84332.0, 0.0123, 1.09, 1.0),
+           (336000.0, 0.0123, 10.0, 0.0), (336000.0, 0.0123, 10.0, 0.5)]
+
+
+def compare_base() -> list[dict]:
+    """The base tree's line TEHL (its default level 5, and level 6 to gauge its error) against this one at its
+    default tolerance, on the baseline's oil and steel, CPU seconds in the same run."""
+    code = """
+import json, sys, time
+sys.path.insert(0, sys.argv[1])
+from femgear_base.case import build_case
+from femgear_base.levels.lubrication import tehl_setup
+from femgear_base.physics.tehl.line import solve_tehl_line
+from femgear_base.scene import load_scene
+setup = tehl_setup(build_case(load_scene(sys.argv[2])))
+out = []
+for w, R, ue, srr in json.loads(sys.argv[3]):
+    row = {}
+    for lev in (5, 6):
+        t = time.process_time()
+        r = solve_tehl_line(w, R, ue, srr, 313.0, level=lev, **setup.kwargs())
+        row[lev] = {"hc": r.hc, "hmin": r.hmin, "mu": r.mu, "cpu": time.process_time() - t}
+    out.append(row)
+print(json.dumps(out))
+"""
+    from femgear.case import build_case
+    from femgear.levels.lubrication import tehl_setup
+    from femgear.physics.tehl.line import solve_tehl_line
+    from femgear.scene import load_scene
+
+    baseline = str(ROOT / "studies" / "paper_baseline.toml")
+    with tempfile.TemporaryDirectory() as tmp:
+        _export_base(Path(tmp))
+        p = subprocess.run([sys.executable, "-c", code, tmp, baseline, json.dumps(COMPARE)], capture_output=True,
+                           text=True, cwd=tmp)
+    if p.returncode != 0:
+        return [{"error": p.stderr.strip()[-300:]}]
+    base = json.loads(p.stdout.strip().splitlines()[-1])
+    setup = tehl_setup(build_case(load_scene(baseline)))
+    rows = []
+    for (w, R, ue, srr), b in zip(COMPARE, base):
+        t = time.process_time()
+        r = solve_tehl_line(w, R, ue, srr, 313.0, **setup.kwargs())
+        rows.append({"contact": [w, R, ue, srr], "new": {"hc": r.hc, "hmin": r.hmin, "mu": r.mu,
+                                                          "cpu": time.process_time() - t,
+                                                          "estimate": max(r.error_estimate.values())},
+                     "base5": b["5"], "base6": b["6"]})
+    return rows
+
+
 def zoo_cells() -> dict:
     """Wall seconds of the ``tehl`` zoo cells of the turbo pair and the baseline (--coarse), in this run."""
     out = {}
@@ -148,7 +202,7 @@ def main(argv: list[str] | None = None) -> dict:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--json", help="write the figures to this file")
     ap.add_argument("--quick", action="store_true", help="every sixth point only")
-    ap.add_argument("--no-base", action="store_true", help="skip the base tree's FE line solve")
+    ap.add_argument("--no-base", action="store_true", help="skip the base tree's FE line and TEHL solves")
     ap.add_argument("--zoo", action="store_true", help="also time the turbo and baseline tehl zoo cells")
     args = ap.parse_args(argv)
     rows = []
@@ -183,6 +237,17 @@ def main(argv: list[str] | None = None) -> dict:
     if "fe_base" in iso:
         print(f"  base tree's FE solver, tol 1 %: {iso['fe_base']}")
     out = {"summary": summary, "isothermal": iso, "points": rows}
+    if not args.no_base:
+        out["compare"] = compare_base()
+        for c in out["compare"]:
+            if "error" in c:
+                print("base TEHL:", c["error"])
+                continue
+            n, b5, b6 = c["new"], c["base5"], c["base6"]
+            print(f"TEHL {c['contact']}: new {n['cpu']:.2f} s (estimate {100 * n['estimate']:.2f} %), base level 5 "
+                  f"{b5['cpu']:.2f} s (h_c {b5['hc'] / b6['hc'] - 1:+.2%}, h_min {b5['hmin'] / b6['hmin'] - 1:+.2%} "
+                  f"from its level 6, {b6['cpu']:.2f} s); new - base level 6: h_c {n['hc'] / b6['hc'] - 1:+.2%}, "
+                  f"h_min {n['hmin'] / b6['hmin'] - 1:+.2%}")
     if args.zoo:
         out["zoo"] = zoo_cells()
         print(f"zoo tehl cells: turbo {out['zoo']['turbo']['seconds']:.1f} s, baseline "

@@ -224,7 +224,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     max_level: int = MAX_LEVEL, nz: int = 16,
                     heat: bool = True, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                     max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0,
-                    x0: float | None = None) -> TEHLResult:
+                    x0: float | None = None, estimate: bool = True) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m], entrainment speed
     ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature ``T_bulk`` [K].
 
@@ -232,7 +232,9 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     ``min_level``, the thermal levels are refined until their own Richardson estimate meets it, up to
     ``max_level``); ``level``: the finest level instead (no refinement).  Thermal loop to ``thermal_tol`` [K] with
     damping ``relax`` and at most ``max_step`` [K] per iteration; ``x0`` the inlet [b] (default: sized by
-    the isothermal solver).  ``heat=False`` switches the heat sources off.  Raises
+    the isothermal solver).  ``heat=False`` switches the heat sources off.  ``estimate=False``: the thermal
+    loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
+    level the heaviest corner's estimated solve fixed).  Raises
     :class:`ConvergenceError` with the history when the isothermal start, a Newton solve or the thermal
     loop fails (or temperatures run away beyond ``max_rise``); never returns NaN."""
     for name, v in (("w", w), ("R", R), ("ue", ue), ("T_bulk", T_bulk), ("E_red", E_red)):
@@ -253,7 +255,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     t_iso = time.perf_counter() - t0
     prob = LineProblem(c.M, c.L, _domain_of(iso), {}, rheology_factory=factory)
     top = _level_of(iso)
-    ks = [max(top - THERMAL_LEVELS + 1, MIN_THERMAL_LEVEL), top]
+    ks = [max(top - THERMAL_LEVELS + 1, MIN_THERMAL_LEVEL) if estimate else top, top]
     opts = dict(model=model, tau0=tau0, limiting_shear=limiting_shear, heat=heat)
     loop = dict(thermal_tol=thermal_tol, relax=relax, max_iter=max_iter, max_rise=max_rise, max_step=max_step)
     run = _Run(prob, c, oil, props, opts, loop, nz, reuse, case, (top, iso.P[1:-1], float(iso.H0)))
@@ -275,7 +277,9 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
             run.level(k, state)
             est = dict(iso.error_estimate)
             break
-        est = acc.error_estimate(run.summaries)
+        est = acc.error_estimate(run.summaries) if estimate else {"Hc": None, "Hmin": None}
+        if not estimate:
+            break
         skipped = any("skipped" in c["reason"] for c in run.history["continuation"])
         enough = len(run.summaries) >= THERMAL_LEVELS or level is not None or (skipped and len(run.summaries) >= 2)
         if k >= max_level or (level is not None and k >= top) or (

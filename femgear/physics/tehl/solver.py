@@ -173,7 +173,7 @@ def tehl_map(setup: TEHLSetup, axes: dict, level: int | None = None, validate: i
     if level is None:
         level = _level_of_nodes(solve_tehl_line(*_corner(axes), **setup.kwargs(), **options).nodes)
     options.pop("min_level", None)
-    solver = tehl_line_solver(setup, level=level, **options)
+    solver = tehl_line_solver(setup, level=level, estimate=False, **options)
     fmap = FrictionMap.build(solver, axes)
     return fmap.validate(solver, samples=validate, seed=seed) if validate else fmap
 
