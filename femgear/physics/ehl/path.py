@@ -1,7 +1,7 @@
 """The ``ehl-line`` lubrication level: line-contact EHL at the positions of the path.
 
 At each contact the isothermal line solution (:func:`solve_line_dimensional`, the FD solver on graded
-grids, Roelands viscosity and Dowson–Higginson density at the inlet viscosity η(0, T_bulk)) gives the
+grids, Roelands viscosity and Dowson–Higginson density at the inlet viscosity η(0, T_bulk) and α(T_bulk)) gives the
 pressure and film fields; the sliding traction is the Ree–Eyring shear τ0 asinh(η(p, T) γ̇/τ0),
 γ̇ = |v1 − v2|/h, integrated over them, and the contact temperature rise is Blok's flash temperature for
 that μ.  μ = ∫τ dx / w'.  (The thermal film and its feedback on the viscosity are the ``tehl`` level.)
@@ -43,7 +43,8 @@ class LineFilms:
 
 
 def _oil(oil: OilLaw, T: float) -> EHLOil:
-    return EHLOil(eta0=float(oil.viscosity(0.0, T)), alpha=oil.alpha, viscosity="roelands", compressible=True)
+    return EHLOil(eta0=float(oil.viscosity(0.0, T)), alpha=float(oil.pressure_viscosity(T)), viscosity="roelands",
+                  compressible=True)
 
 
 def line_ehl_path(w, R, ue, T, oil: OilLaw, E_red: float, *, tol: float = DEFAULT_TOL,

@@ -1,6 +1,6 @@
 """Thermal inlet factors and flash temperatures beside a TEHL solve (what a turbo-gear engineer compares).
 
-* Thermal loading L_th = β η0 u_e² / k_f (β = −∂ln η/∂T, η0 the inlet viscosity, u_e the entrainment
+* Thermal loading L_th = β η0 u_e² / k_f (β = −∂ln η/∂T and η0 at the inlet temperature, u_e the entrainment
   speed (u1 + u2)/2, k_f the oil conductivity): the ratio of the inlet's shear heating to conduction.
 * Murch & Wilson (1975, J. Lubr. Technol. 97:212, inlet-zone analysis, pure rolling):
   φ_MW = 3.94 / (3.94 + L_th^0.62).
@@ -24,8 +24,8 @@ from femgear.physics.lubrication.traction import gupta_thermal_factor
 
 def thermal_loading(ue, T, oil: OilLaw, k_oil: float) -> np.ndarray:
     """L_th = β η0 u_e² / k_f [-] at the bulk temperatures ``T`` [K]."""
-    eta0 = oil.viscosity(0.0, np.asarray(T, dtype=float))
-    return oil.beta_t * eta0 * np.asarray(ue, dtype=float) ** 2 / k_oil
+    T = np.asarray(T, dtype=float)
+    return oil.temperature_viscosity(T) * oil.viscosity(0.0, T) * np.asarray(ue, dtype=float) ** 2 / k_oil
 
 
 def murch_wilson_factor(L_th) -> np.ndarray:
@@ -46,7 +46,7 @@ def inlet_figures(results, w, R, ue, srr, T, oil: OilLaw, E_red: float, props) -
     v1, v2 = ue * (1 + srr / 2), ue * (1 - srr / 2)
     eta0 = oil.viscosity(0.0, T)
     return {"thermal_loading": Lth, "phi_murch_wilson": murch_wilson_factor(Lth),
-            "phi_gupta": gupta_thermal_factor(ph, E_red, srr, ue, eta0, oil.beta_t, props.k_oil),
+            "phi_gupta": gupta_thermal_factor(ph, E_red, srr, ue, eta0, oil.temperature_viscosity(T), props.k_oil),
             "phi_tehl": np.array([r.hc / r.hc_isothermal for r in results]),
             "flash_tehl": np.array([r.dT_surface for r in results]),
             "flash_blok": blok_flash_temperature(mu, w, srr * ue, b, v1, v2, props.B1, props.B2)}
