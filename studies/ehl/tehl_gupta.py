@@ -60,28 +60,46 @@ def case(oil: str, T_C: float, lth: float, ph: float, srr: float) -> dict:
             "estimate": max(r.error_estimate.values())}
 
 
-def main(argv: list[str] | None = None) -> list[dict]:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed: the grid of oils, pressures, slide-to-roll ratios and thermal loadings."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--lth", default="0.1,0.3,1,3,10")
     ap.add_argument("--ph", default="0.5,1,1.5", help="Hertz pressures [GPa]")
     ap.add_argument("--srr", default="0")
     ap.add_argument("--oil", default="VG32,VG100")
     ap.add_argument("--json", default=str(ROOT / "out" / "tehl_gupta.json"))
-    args = ap.parse_args(argv)
-    temps = {"VG32": 50.0, "VG100": 80.0}
+    return ap.parse_args(argv)
+
+
+TEMPERATURES = {"VG32": 50.0, "VG100": 80.0}
+"""inlet temperature of each oil [°C] (the benchmark's)"""
+
+
+def run(args: argparse.Namespace, report=None) -> list[dict]:
+    """One row of :func:`case` per grid point, each passed to ``report`` as it is solved."""
     rows = []
-    print(f"{'oil':6} {'p_H':>4} {'SRR':>4} {'L_th':>5} {'u_e':>6} {'M':>6} {'L':>5} {'phi':>6} {'MW':>6} {'phi/MW':>7} "
-          f"{'G':>6} {'phi/G':>6} {'G/2':>6} {'phi/G2':>6}")
     for oil in args.oil.split(","):
         for ph in _floats(args.ph):
             for srr in _floats(args.srr):
                 for lth in _floats(args.lth):
-                    r = case(oil, temps[oil], lth, ph * 1e9, srr)
-                    rows.append(r)
-                    print(f"{oil:6} {ph:4.1f} {srr:4.1f} {lth:5.1f} {r['ue']:6.2f} {r['M']:6.3g} {r['L']:5.3g} "
-                          f"{r['phi']:6.3f} {r['murch_wilson']:6.3f} {r['phi'] / r['murch_wilson']:7.3f} "
-                          f"{r['gupta']:6.3f} {r['phi'] / r['gupta']:6.3f} {r['gupta_half']:6.3f} "
-                          f"{r['phi'] / r['gupta_half']:6.3f}", flush=True)
+                    rows.append(case(oil, TEMPERATURES[oil], lth, ph * 1e9, srr))
+                    if report is not None:
+                        report(rows[-1])
+    return rows
+
+
+def _print(r: dict) -> None:
+    print(f"{r['oil']:6} {r['ph'] / 1e9:4.1f} {r['srr']:4.1f} {r['L_th']:5.1f} {r['ue']:6.2f} {r['M']:6.3g} "
+          f"{r['L']:5.3g} {r['phi']:6.3f} {r['murch_wilson']:6.3f} {r['phi'] / r['murch_wilson']:7.3f} "
+          f"{r['gupta']:6.3f} {r['phi'] / r['gupta']:6.3f} {r['gupta_half']:6.3f} "
+          f"{r['phi'] / r['gupta_half']:6.3f}", flush=True)
+
+
+def main(argv: list[str] | None = None) -> list[dict]:
+    args = setup(argv)
+    print(f"{'oil':6} {'p_H':>4} {'SRR':>4} {'L_th':>5} {'u_e':>6} {'M':>6} {'L':>5} {'phi':>6} {'MW':>6} {'phi/MW':>7} "
+          f"{'G':>6} {'phi/G':>6} {'G/2':>6} {'phi/G2':>6}")
+    rows = run(args, _print)
     Path(args.json).parent.mkdir(parents=True, exist_ok=True)
     Path(args.json).write_text(json.dumps(rows, indent=1))
     return rows
