@@ -133,6 +133,28 @@ def power_loss_summary(loss: MeshPowerLoss, level: str) -> dict[str, Any]:
     }
 
 
+def inlet_heating_summary(case, contact: ContactPath) -> dict[str, Any]:
+    """The thermal loading L_th = β η0 u_e²/k_f of the contact pass (oil at the supply temperature) and the two
+    inlet-heating factors of the isothermal film at the pitch point and where L_th is largest
+    (:mod:`femgear.physics.tehl.inlet`: Murch & Wilson 1975, Gupta et al. 1992): what the thermal film is read
+    against before a TEHL run."""
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.levels.lubrication import oil_law
+    from femgear.physics.lubrication.traction import gupta_thermal_factor
+    from femgear.physics.tehl.inlet import murch_wilson_factor, thermal_loading
+
+    k, oil, T = contact.kin, oil_law(case), case.operating.ambient_temperature
+    Lth = np.asarray(thermal_loading(k.ue, T, oil, case.oil.conductivity), float)
+    out: dict[str, Any] = {}
+    for name, i in (("pitch", contact.pitch_index), ("max", int(np.argmax(Lth)))):
+        g = gupta_thermal_factor(contact.hertz_pressure[i], reduced_modulus_of(case), k.srr[i], k.ue[i],
+                                 float(oil.viscosity(0.0, T)), float(oil.temperature_viscosity(T)),
+                                 case.oil.conductivity)
+        out[name] = {"thermal_loading": float(Lth[i]), "phi_murch_wilson": float(murch_wilson_factor(Lth[i])),
+                     "phi_gupta": float(g), "position": float(k.s[i])}
+    return out
+
+
 def oil_summary(case) -> dict[str, Any]:
     """The oil as the run used it: at the supply temperature (η0, α, β_T, ρ0 there, :func:`femgear.case.oil.oil_at`),
     its library name and the source of each data group; ``unsourced`` lists the groups resting on no published
@@ -166,6 +188,7 @@ def scene_summary(case, contact: ContactPath, figures: ContactFigures, ratings: 
         "rating": rating_summary(figures.pitting),
         "stiffness_iso6336": stiffness_summary(figures),
         "flash_temperature": flash_summary(figures),
+        "inlet_heating": inlet_heating_summary(case, contact),
         "oil": oil_summary(case),
         "roughness": roughness_summary(case),
     }

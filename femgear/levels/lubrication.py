@@ -11,7 +11,7 @@ the film of the same level (:meth:`Lubrication.film`):
 | none       | μ = 0, no heating                                             | isothermal formulas (Moes h_c,        |
 | constant   | μ = ``friction.coefficient``, Blok's flash temperature        | Dowson–Higginson h_min, Hertz p)      |
 | formula    | thermal Eyring traction of the Hertzian film                  |   "                                   |
-| ehl-line   | FE line EHL with Eyring traction, Blok flash temperature      | FE isothermal line EHL                |
+| ehl-line   | line EHL (FD, graded grids) with Eyring traction, Blok flash  | isothermal line EHL, to a tolerance   |
 | tehl       | thermal EHL line solves; ``repeated``: a friction map of them | thermal line EHL, direct solves       |
 | tehl-point | thermal EHL of the crowned flanks' elliptic contacts          | the same solves (reused when they ran |
 |            |                                                               | at these inputs)                      |
@@ -23,6 +23,7 @@ Imports of the physics are lazy: the scene schema imports this registry for the 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -63,6 +64,16 @@ class LevelFilm:
     numerical levels) [Pa]"""
     temperature_rise: np.ndarray | None = None
     """maximum film temperature rise at each path position (thermal levels only, else None) [K]"""
+    error_estimate: np.ndarray | None = None
+    """relative discretisation error of each position's films, the larger of h_c's and h_min's two-level
+    Richardson estimates (the numerical levels; None for the formula films) [-]"""
+    central_isothermal: np.ndarray | None = None
+    """central film of the isothermal solve beside the thermal one (thermal levels only) [m]"""
+    thermal: dict | None = None
+    """per-position thermal figures of the thermal levels (None elsewhere): ``thermal_loading`` L_th =
+    β η0 u_e²/k_f, the inlet factors ``phi_murch_wilson`` and ``phi_gupta``, ``phi_tehl`` = h_c/h_c,iso, and the
+    flash temperatures ``flash_tehl`` (the TEHL surface temperature rise) and ``flash_blok`` (Blok's for the same
+    μ) in K [-]"""
 
 
 FilmOf = Callable[[str, np.ndarray, float, Solver], LevelFilm]
@@ -180,12 +191,14 @@ def _formula_film(case: Case) -> FilmOf:
 def _ehl_line_film(case: Case) -> FilmOf:
     def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
         from femgear.levels.contact import reduced_modulus_of
-        from femgear.physics.ehl.path import ehl_line_films
+        from femgear.physics.ehl.path import line_ehl_path
 
-        grid = case.numerics.ehl_level
-        hc, hmin, pmax = ehl_line_films(w, case.path.R, case.path.ue, T, oil_law(case), reduced_modulus_of(case), grid)
-        return LevelFilm(level=level, method=f"FE isothermal line EHL, grid level {grid}", central=hc, minimum=hmin,
-                         pressure_max=pmax)
+        n = case.numerics
+        f = line_ehl_path(w, case.path.R, case.path.ue, T, oil_law(case), reduced_modulus_of(case), tol=n.ehl_tol,
+                          min_level=n.ehl_level)
+        return LevelFilm(level=level, method=f"isothermal line EHL (FD, graded grid level {f.level}, "
+                         f"tolerance {100 * n.ehl_tol:g} %)", central=f.central, minimum=f.minimum,
+                         pressure_max=f.pressure_max, error_estimate=f.error_estimate)
 
     return film
 
@@ -201,18 +214,30 @@ def _reused(solve: Solver, case: Case, w: np.ndarray, T: float) -> list | None:
     return last[1] if same else None
 
 
-def _thermal_film(case: Case, method: str, solve_one: Callable) -> FilmOf:
-    """The film of a thermal level: ``solve_one(w, R, ue, |srr|, T)`` per position, or the solver's own latest
-    solves at these inputs."""
+def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
+    """The film of a thermal level: ``solve_path(w, T)`` (the results at the path positions), or the solver's own
+    latest solves at these inputs."""
     def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
-        k = case.path
-        rs = _reused(solve, case, w, T) or [solve_one(float(wi), float(R), float(ue), abs(float(s)), T)
-                                            for wi, R, ue, s in zip(w, k.R, k.ue, k.srr)]
+        rs = _reused(solve, case, w, T) or solve_path(w, T)
+        est = [max((e for e in getattr(r, "error_estimate", {}).values() if e is not None), default=None) for r in rs]
         return LevelFilm(level=level, method=method, central=np.array([r.hc for r in rs]),
                          minimum=np.array([r.hmin for r in rs]), pressure_max=np.array([r.pmax for r in rs]),
-                         temperature_rise=np.array([r.dT_max for r in rs]))
+                         temperature_rise=np.array([r.dT_max for r in rs]),
+                         error_estimate=None if None in est else np.array(est, dtype=float),
+                         central_isothermal=np.array([r.hc_isothermal for r in rs]),
+                         thermal=_thermal_figures(case, w, T, rs))
 
     return film
+
+
+def _thermal_figures(case: Case, w: np.ndarray, T: float, results: list) -> dict:
+    """L_th, the two inlet factors, the TEHL and Blok flash temperatures at the path positions."""
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.physics.tehl.inlet import inlet_figures
+
+    k = case.path
+    return inlet_figures(results, w, k.R, k.ue, np.abs(k.srr), T, oil_law(case), reduced_modulus_of(case),
+                         tehl_setup(case).props)
 
 
 # ---------------------------------------------------------------- the levels
@@ -263,7 +288,7 @@ def _ehl_line(case: Case, repeated: bool = False) -> Lubrication:
     from femgear.physics.lubrication.path import solids_of
 
     solve = ehl_line_solver(oil_law(case), reduced_modulus_of(case), solids_of(case.material, case.oil),
-                            case.oil.eyring_stress, case.numerics.ehl_level)
+                            case.oil.eyring_stress, tol=case.numerics.ehl_tol, min_level=case.numerics.ehl_level)
     return _product(case, "ehl-line", solve, _ehl_line_film(case))
 
 
@@ -271,16 +296,19 @@ def _ehl_line(case: Case, repeated: bool = False) -> Lubrication:
 def _tehl(case: Case, repeated: bool = False) -> Lubrication:
     """``repeated``: the solver will be queried many times (the coupling loop): a friction map of the direct
     solves, built on first use."""
-    from femgear.physics.tehl.line import solve_tehl_line
+    from femgear.physics.tehl.path import tehl_path_results
     from femgear.physics.tehl.solver import tehl_line_solver, tehl_map_solver
 
-    setup, grid = tehl_setup(case), case.numerics.ehl_level
-    solve = tehl_map_solver(setup, tehl_axes(case)) if repeated else tehl_line_solver(setup, grid)
+    setup, n = tehl_setup(case), case.numerics
+    opts = {"tol": n.ehl_tol, "min_level": n.ehl_level}
+    solve = tehl_map_solver(setup, tehl_axes(case), **opts) if repeated else tehl_line_solver(setup, **opts)
 
-    def one(w, R, ue, srr, T):
-        return solve_tehl_line(w, R, ue, srr, T, level=grid, **setup.kwargs())
+    def path(w, T):
+        k = case.path
+        return tehl_path_results(w, k.R, k.ue, np.abs(k.srr), T, setup, **opts)
 
-    return _product(case, "tehl", solve, _thermal_film(case, f"thermal line EHL, grid level {grid}", one))
+    method = f"thermal line EHL (FD, graded grids, tolerance {100 * n.ehl_tol:g} %)"
+    return _product(case, "tehl", solve, _thermal_film(case, method, path))
 
 
 @REGISTRY.register("tehl-point", "thermal point-contact EHL (crowned flank, multigrid) along the path")
@@ -292,25 +320,36 @@ def _tehl_point(case: Case, repeated: bool = False) -> Lubrication:
     solve, details = tehl_point_solver(case), []
     point = tehl_point_solver(case, details=details)
 
-    def one(w, R, ue, srr, T):
-        point(w=w, R=R, ue=ue, srr=srr, T=T)
-        return details[-1]
+    def path(w, T):
+        k = case.path
+        details.clear()
+        point(w=w, R=k.R, ue=k.ue, srr=np.abs(k.srr), T=np.full(w.shape, T))
+        return list(details)
 
     method = f"thermal EHL of the crowned elliptic contacts, grid level {POINT_LEVEL}"
-    return _product(case, "tehl-point", solve, _thermal_film(case, method, one))
+    return _product(case, "tehl-point", solve, _thermal_film(case, method, path))
 
 
 def tehl_point_solver(case: Case, level: int | None = None, details: list | None = None, **options) -> Solver:
     """The ``tehl-point`` direct solver of the case (:func:`femgear.physics.tehl.point_level.tehl_point_solver`):
     its crowned contact, TEHL set-up and stationary roughness; ``level`` the point grid (default
     :data:`~femgear.physics.tehl.point_level.POINT_LEVEL`), ``details`` receives each contact's result."""
-    from femgear.physics.contact.crowning import crowned_contact
+    from femgear.physics.contact.crowning import CrownedContact, crowned_contact
     from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
+    from femgear.physics.tehl.slices import SliceGeometry
 
-    rough = case.roughness
-    return point_solver(crowned_contact(case.pair, crowning(case)), tehl_setup(case), case.numerics.ehl_level,
+    pair, rough = case.pair, case.roughness
+    if sum(crowning(case)) > 0:
+        geo = crowned_contact(pair, crowning(case))
+    else:   # uncrowned: a line contact along the whole line, handed over to the face slices
+        geo = CrownedContact(kappa=0.0, beta_b=pair.beta_b,
+                             contact_length=pair.b / math.cos(pair.beta_b) * pair.eps_alpha / pair.eps_gamma)
+    omega1 = 2.0 * math.pi * case.operating.pinion_rpm / 60.0
+    slices = SliceGeometry(omega1=omega1, omega2=omega1 * pair.z1 / pair.z2, beta_b=pair.beta_b,
+                           contact_length=geo.contact_length, kappa=geo.kappa)
+    return point_solver(geo, tehl_setup(case), {"tol": case.numerics.ehl_tol, "min_level": case.numerics.ehl_level},
                         roughness=rough if (rough.peak or rough.synthetic) else None, level=level, details=details,
-                        **options)
+                        slices=slices, **options)
 
 
 # ---------------------------------------------------------------- the case's lubrication
@@ -359,31 +398,16 @@ def static_friction(case: Case, line_load: np.ndarray | None = None) -> float | 
 
 
 # ---------------------------------------------------------------- ranges checked up front
-def _tehl_speed(case: Case) -> None:
-    from femgear.physics.tehl.solver import check_tehl_speed
+def _tehl_envelope(case: Case) -> None:
+    from femgear.physics.tehl.solver import check_envelope
 
-    check_tehl_speed(case.pair, case.operating.pinion_rpm, case.levels.lubrication)
-
-
-def _tehl_map_corner(case: Case) -> None:
-    from femgear.levels.contact import reduced_modulus_of
-    from femgear.physics.tehl.solver import check_map_corner
-
-    check_map_corner(tehl_axes(case), oil_law(case), reduced_modulus_of(case))
-
-
-def _point_range(case: Case) -> None:
-    from femgear.physics.contact.crowning import check_point_range
-    from femgear.physics.geometry import kinematics, path_positions
-
-    pair = case.pair
-    check_point_range(pair, crowning(case), kinematics(pair, path_positions(pair, 41), 1.0).R)
+    check_envelope(float(np.max(case.path.ue)), case.levels.lubrication)
 
 
 #: what each level checks of a case before it runs (SceneError naming ``physics.lubrication``)
 RANGE_CHECKS: dict[str, tuple[Callable[[Case], None], ...]] = {
-    "tehl": (_tehl_speed, _tehl_map_corner),
-    "tehl-point": (_tehl_speed, _point_range),
+    "tehl": (_tehl_envelope,),
+    "tehl-point": (_tehl_envelope,),
 }
 
 

@@ -27,7 +27,7 @@ PRESETS: dict[str, dict[str, dict[str, Any]]] = {
         "physics": {"stiffness": "fe", "lubrication": "ehl-line", "thermal": "fe", "dynamics": "timoshenko"},
         "stiffness": {"n_positions": 400},
         "numerics": {"path_points": 61, "steps_per_mesh_period": 400, "dynamics_cycles": 150.0,
-                     "transient_cycles": 75.0, "ehl_level": 6},
+                     "transient_cycles": 75.0, "ehl_tol": 0.005},
     },
 }
 

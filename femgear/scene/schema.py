@@ -353,7 +353,13 @@ class Numerics(_Frozen):
         41, ge=3, le=10001,
         description="equidistant positions from the start A to the end E of the path of contact; the pitch point is "
                     "added to them [-]")
-    ehl_level: int = Field(5, ge=2, le=9, description="grid level of the FE line EHL (16·2^level cells) [-]")
+    ehl_level: int | None = Field(
+        None, ge=2, le=9, description="the coarsest grid level the line EHL and TEHL results of the path end on "
+                                      "(16·2^level cells of the graded grid, a floor); unset: the solvers pick the "
+                                      "level that meets numerics.ehl_tol [-]")
+    ehl_tol: float = Field(
+        0.01, gt=0.0, lt=0.2, description="relative accuracy of the line EHL and TEHL films (central and minimum), "
+                                          "by the two-level Richardson estimate each result carries [-]")
     dynamics_method: Literal["expo", "rk4", "newmark"] | None = Field(
         None, description="integrator; default expo for lumped, rk4 for timoshenko")
     steps_per_mesh_period: int = Field(200, ge=10, le=100000, description="time steps per mesh period [-]")

@@ -92,16 +92,16 @@ def lubrication(scene, quick: bool, repeats: int) -> list[dict]:
     k = c.kin
     args = dict(w=np.full(k.u.shape, c.load_per_length), R=k.R, ue=k.ue, srr=np.abs(k.srr),
                 T=np.full(k.u.shape, scene.operating.ambient_temperature))
-    levels = [3, 4, 6] if quick else [3, 4, 5, 6, 8]
+    tols = [0.05, 0.01] if quick else [0.05, 0.02, 0.01, 0.005, 0.002]
     from femgear.physics.tehl.solver import tehl_line_solver
 
     E_red, solids = reduced_modulus_of(case), solids_of(case.material, case.oil)
     cases = [("formula", lambda: hertz_level_solver(line_friction(case))(**args)[0]),
              ("tehl (thermal, not a resolution of ehl-line)",
-              lambda: tehl_line_solver(tehl_setup(case), case.numerics.ehl_level)(**args)[0])]
-    cases += [(f"ehl-line level {lv}",
-               lambda lv=lv: ehl_line_solver(oil_law(case), E_red, solids, case.oil.eyring_stress, lv)(**args)[0])
-              for lv in levels]
+              lambda: tehl_line_solver(tehl_setup(case), tol=case.numerics.ehl_tol)(**args)[0])]
+    cases += [(f"ehl-line tol {tol:g}",
+               lambda tol=tol: ehl_line_solver(oil_law(case), E_red, solids, case.oil.eyring_stress, tol=tol)(**args)[0])
+              for tol in tols]
     return _rows("lubrication μ(u)", cases, lambda a, r: np.max(np.abs(a - r)) / np.max(r), repeats)
 
 

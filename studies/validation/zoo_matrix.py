@@ -15,7 +15,8 @@ A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
   member balance the mean mesh force on it (radially and axially, to 1 %; without dynamics the static loads
   the static normal force), the rating's K_v, K_Hβ, K_Hα listed with their sources (K_v from the dynamics
   where the cell has them), films positive, contact temperatures finite and non-negative (zero only for the
-  levels without heating), coupling converged, and
+  levels without heating), coupling converged, the film's own error estimate (the ``ehl-line`` and ``tehl``
+  levels must carry one; ``tehl-point``'s face slices do) at most :data:`MAX_ESTIMATE`, and
   the film and temperature within a factor of :data:`FACTOR` of the formula figures of
   ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
 - ``refused: <line>`` — exit 2 within :data:`REFUSAL_SECONDS` of CPU time with one line naming the key;
@@ -47,6 +48,8 @@ FACTOR = 5.0              #: films and temperatures within this factor of the fo
 REFUSAL_SECONDS = 30.0    #: CPU seconds: a refusal comes before (long) computing: the CLI's start-up (imports) ~2 s;
 #: CPU time, not wall time, so that a loaded machine does not turn a refusal into a late one
 FORCE_TOLERANCE = 0.02    #: the path integral of the time-mean load against F_n
+MAX_ESTIMATE = 0.02       #: the largest film error estimate (``summary.film.error_estimate_max``) a cell may report
+ESTIMATED = ("ehl-line", "tehl")  #: the lubrication levels whose films must carry an error estimate
 BEARING_TOLERANCE = 0.01  #: the mean bearing loads of a member against the mean mesh force on it
 COARSE = ("numerics.dynamics_cycles=20", "numerics.transient_cycles=10", "numerics.path_points=21")
 
@@ -95,7 +98,7 @@ def cells(path: Path) -> dict[str, list[str]]:
 
 def full_fidelity(path: Path) -> list[str]:
     """The scene's full fidelity: LTCA, 3-D thermal, and the finest lubrication level its range allows: the point
-    TEHL, else the line TEHL, else the FE line EHL (the turbo pair, above the TEHL levels' speed range)."""
+    TEHL (which hands slender contacts over to face slices of line TEHL), else the line TEHL, else the line EHL."""
     from femgear.errors import SceneError
 
     base = ['physics.stiffness="ltca"', 'physics.thermal="fe3d"']
@@ -134,8 +137,22 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
         dT = path["temperature_rise"]
         if not all(map(math.isfinite, dT)) or min(dT) < 0:
             bad.append("temperature rise negative or not finite")
-        elif hand["flash"] > 1.0 and not hand["flash"] / FACTOR < max(dT) < hand["flash"] * FACTOR:
-            bad.append(f"max temperature rise {max(dT):.3g} K vs formula {hand['flash']:.3g} K")
+        else:
+            # the thermal levels' contact temperature is the surface rise; the formula level's figure also holds
+            # the sheared film's mean rise, so theirs is held against the film's own peak (and the surface must stay
+            # below that peak)
+            film = path.get("film_temperature_rise")
+            hot = max(film) if film is not None else max(dT)
+            if film is not None and max(dT) > max(film) + 1e-9:
+                bad.append(f"surface temperature rise {max(dT):.3g} K above the film's peak {max(film):.3g} K")
+            if hand["flash"] > 1.0 and not hand["flash"] / FACTOR < hot < hand["flash"] * FACTOR:
+                bad.append(f"max temperature rise {hot:.3g} K vs formula {hand['flash']:.3g} K")
+    level = summary["physics"]["lubrication"]
+    est = (summary.get("film") or {}).get("error_estimate_max")
+    if level in ESTIMATED and est is None:
+        bad.append(f"{level} film without its error estimate")
+    elif est is not None and est > MAX_ESTIMATE:
+        bad.append(f"film error estimate {100 * est:.2g} % above {100 * MAX_ESTIMATE:g} %")
     h = path["film_central"][len(path["s"]) // 2]
     if not hand["film"] / FACTOR < h < hand["film"] * FACTOR:
         bad.append(f"mid-path film {h:.3g} m vs formula {hand['film']:.3g} m")

@@ -66,7 +66,7 @@ ORDER: dict[str, list[list[str]]] = {
     "femgear": [tier for tiers in LAYERS.values() for tier in tiers],
     "femgear.physics": [["geometry", "excitation"], ["mesh", "stiffness"], ["contact", "body"],
                         ["lubrication", "wear", "housing"], ["ehl", "rating"], ["tehl", "ltca"]],
-    "femgear.physics.ehl": [["core"], ["fe", "fd"], ["point"], ["dimensional", "transient"], ["path"], ["*"]],
+    "femgear.physics.ehl": [["core"], ["fe"], ["fd"], ["point", "line"], ["dimensional", "transient"], ["path"], ["*"]],
     "femgear.system": [["dynamics"], ["coupling"]],
     "femgear.edge": [["plot"], ["io"], ["run"], ["sweep"], ["cli"]],
 }
@@ -186,10 +186,12 @@ def test_imports_only_point_down():
 
 
 def test_order_catches_an_upward_import():
-    """The rule itself: physics below the case, ehl's core below its discretisations, FE and FD apart."""
+    """The rule itself: physics below the case, ehl's core below its discretisations, FD above FE
+    (its line solver drives FE's damped Newton), never the reverse."""
     assert direction("femgear.physics.lubrication.oil", "femgear.case").startswith("up in femgear")
     assert direction("femgear.physics.ehl.core.grid", "femgear.physics.ehl.fe.level").startswith("up")
-    assert direction("femgear.physics.ehl.fe.point", "femgear.physics.ehl.fd.point").startswith("sideways")
+    assert direction("femgear.physics.ehl.fe.point", "femgear.physics.ehl.fd.point").startswith("up")
+    assert direction("femgear.physics.ehl.fd.line", "femgear.physics.ehl.fe.newton") == "down"
     assert direction("femgear.physics.ehl.fd.point", "femgear.physics.ehl.core.grid") == "down"
     assert direction("femgear.edge.plot.path", "femgear.physics.contact.path") == "down"
     assert direction("femgear.physics.geometry.gear", "femgear.physics.geometry") == "down"

@@ -68,7 +68,7 @@ def test_mesh_path_warm_equals_cold_with_few_factorisations(monkeypatch):
     oil = EHLOil(eta0=0.02, alpha=2.0e-8, viscosity="roelands", compressible=True)
     w, R, ue = _mesh_path()
     idx = range(30, 38)
-    cold = {i: solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5).result for i in idx}
+    cold = {i: solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, method="fe").result for i in idx}
     count, factor = [0], sla.lu_factor
 
     def lu_factor(*a, **k):
@@ -80,7 +80,7 @@ def test_mesh_path_warm_equals_cold_with_few_factorisations(monkeypatch):
         if i == idx[1]:
             count[0] = 0
             monkeypatch.setattr(nw.sla, "lu_factor", lu_factor)
-        warm = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, start=prev,
+        warm = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, method="fe", start=prev,
                                       reuse=reuse).result
         c = cold[i]
         assert warm.Hc == pytest.approx(c.Hc, rel=1e-6)
@@ -107,12 +107,12 @@ def test_coarse_path_bad_predictions_restart_early():
     w, R, ue = _mesh_path(11)
     prev, reuse, restarted = None, {}, 0
     for i in range(4, 9):
-        r = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, start=prev, reuse=reuse)
+        r = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, method="fe", start=prev, reuse=reuse)
         fine = r.result.history["level"].count(r.result.nodes)
         assert fine <= 25, (i, fine)  # was 67-69 before the early restart
         restarted += fine > WARM_MAX_ITER
         if i >= 6:
-            c = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5).result
+            c = solve_line_dimensional(w[i], R[i], ue[i], 2.26e11, oil, level=5, method="fe").result
             assert r.result.Hc == pytest.approx(c.Hc, rel=1e-6)
             assert r.result.Hmin == pytest.approx(c.Hmin, rel=1e-6)
         prev = r.result

@@ -81,7 +81,7 @@ def info_summaries():
 def test_every_zoo_scenes_info_summary_is_in_the_schema_and_every_info_key_appears(info_summaries):
     seen = set().union(*(conforms(s) for s in info_summaries.values()))
     info_sections = ("scene", "geometry", "contact", "rating", "stiffness_iso6336", "flash_temperature",
-                     "safety_factors", "bending", "scuffing", "micropitting", "power_loss")
+                     "safety_factors", "bending", "scuffing", "micropitting", "power_loss", "inlet_heating")
     expected = {k for name in info_sections for k, (_, optional) in schema.SECTIONS[name].keys.items()
                 if "*" not in k and not optional and not k.startswith("bending.femgear")}   # fillet_fe: off in the zoo
     assert expected <= seen, sorted(expected - seen)
@@ -99,6 +99,21 @@ def test_a_runs_summary_is_in_the_schema(overrides):
     for section in ("physics", "stiffness", "friction", "thermal", "wear", "film"):
         assert any(k.startswith(section + ".") for k in seen), section
     assert ("dynamics" in summary) == (result.coupled is not None)
+
+
+FILM_KEYS = {"ehl-line": {"film.error_estimate_max"},
+             "tehl": {"film.error_estimate_max", "film.central_isothermal_pitch", "film.thermal_loading_max",
+                      "film.phi_tehl_pitch", "film.phi_murch_wilson_pitch", "film.phi_gupta_pitch",
+                      "film.flash_tehl_max", "film.flash_blok_max"}}
+
+
+@pytest.mark.parametrize("level", list(FILM_KEYS))
+def test_the_numerical_films_figures_are_in_the_schema(level):
+    """The ``ehl-line`` film's error estimate and the thermal films' figures (issue 43 item 6)."""
+    scene = load_scene(BASE, [f'physics.lubrication="{level}"', 'physics.dynamics="none"',
+                              'physics.coupling="one-way"', "numerics.path_points=5"])
+    seen = conforms(run_summary(run_case(build_case(scene, warn=False))))
+    assert FILM_KEYS[level] <= seen, sorted(FILM_KEYS[level] - seen)
 
 
 def test_sections_say_when_a_case_has_them():

@@ -76,6 +76,6 @@ def test_the_point_film_reuses_the_runs_last_solves(baseline_path, monkeypatch):
 
     monkeypatch.setattr(pl, "solve_tehl_point", no_solve)
     film = solver.film(w)
-    assert film.level == "tehl-point" and np.allclose(film.temperature_rise, dT, rtol=0, atol=0)
+    assert film.level == "tehl-point" and np.allclose(film.thermal["flash_tehl"], dT, rtol=0, atol=0)
     with pytest.raises(AssertionError, match="solved again"):
         solver.film(1.1 * w)

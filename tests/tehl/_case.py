@@ -11,7 +11,7 @@ from femgear.scene import load_scene
 
 SCENE = load_scene(Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml")
 OIL = OilLaw.from_table(SCENE.oil, SCENE.oil_reference_temperature)
-PROPS = thermal_props(solids_of(SCENE.material, SCENE.oil), SCENE.oil.specific_heat)
+PROPS = thermal_props(solids_of(SCENE.material, SCENE.oil), SCENE.oil.specific_heat, SCENE.material.conductivity)
 E_RED = reduced_modulus(SCENE.material.youngs_modulus, SCENE.material.poisson_ratio)
 W, R, UE, T0 = 84332.0, 0.0123, 1.09, 313.0
 TAU0 = SCENE.oil.eyring_stress

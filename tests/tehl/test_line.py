@@ -30,6 +30,8 @@ def _solve(srr, level=4, **kw):
 
 
 def test_heat_off_recovers_isothermal_exactly():
+    """Isothermal limit (issue 43: to 0.5 %): with the heat sources off the TEHL returns the isothermal FD line
+    solution on the same grid bit for bit (the loop sees zero temperature change and never re-solves)."""
     r = _solve(0.5, level=4, heat=False)
     # the TEHL start keeps its LU factors for the thermal loop (reuse=): the same solve
     iso = solve_line_dimensional(case.W, case.R, case.UE, case.E_RED, ehl_oil_at(case.OIL, case.T0), level=4,
@@ -107,45 +109,63 @@ def test_thermal_film_reduction_against_gupta():
 
 
 @pytest.mark.parametrize("srr", [0.0, 0.3, 1.0])
-def test_nested_thermal_loop_matches_the_fine_grid_loop(srr):
-    """The nested iteration (coarse-grid thermal loop first, level 5) and the loop on the
-    fine grid alone both converge to the answer of a 50 times tighter thermal tolerance
-    (0.002 K) within what the default tolerance (0.1 K) allows: h_c, h_min and μ to 1e-4
-    relative, the peak film and surface rises to 0.1 K, the spike pressure (the most
-    temperature-sensitive figure: the spike sits in the hottest cells) to 2e-3.  Measured:
-    nested h_c ≤ 3e-6, h_min ≤ 4e-5, μ ≤ 5e-5, p_max ≤ 8e-4, ΔT ≤ 0.02 K; the fine-grid loop
-    h_c ≤ 3e-5, p_max ≤ 1.4e-4."""
-    ref = _solve(srr, level=5, coarse=False, tol=0.002)
-    nested = _solve(srr, level=5)
-    plain = _solve(srr, level=5, coarse=False)
-    assert nested.iterations > plain.iterations  # the coarse stage ran
-    for r in (nested, plain):
-        for key, rel in (("hc", 1e-4), ("hmin", 1e-4), ("mu", 1e-4), ("pmax", 2e-3)):
-            assert getattr(r, key) == pytest.approx(getattr(ref, key), rel=rel, abs=1e-12)
-        assert abs(r.dT_max - ref.dT_max) < 0.1 and abs(r.dT_surface - ref.dT_surface) < 0.1
-        assert abs(r.heat["balance_error"]) < 0.01
+def test_thermal_levels_carry_their_richardson_estimate(srr):
+    """The thermal solve on the level below and on the isothermal solve's level give the two-level estimate of
+    h_c and h_min; at the tolerance-driven default it is within the tolerance (1 %), and the films of the two
+    levels agree within three times it."""
+    r = _solve(srr, level=None)
+    assert len(r.levels) >= 2 and all(e is not None and e <= 0.01 for e in r.error_estimate.values())
+    fine, coarse = r.levels[-1], r.levels[-2]
+    assert fine["nodes"] == 2 * coarse["nodes"] - 1
+    assert abs(fine["Hc"] / coarse["Hc"] - 1) <= 0.03 and r.hc == pytest.approx(fine["Hc"])
 
 
-def test_energy_split_jaeger_solve_equals_the_direct_solve(monkeypatch):
-    """The 192-cell energy solve (sparse LU of the film with the Jaeger operators cut to a
-    band, Richardson sweeps with their far field) gives the temperatures and wall fluxes of
-    the direct sparse solve of the whole matrix (to 1e-7 K, 1e-8 relative)."""
+def test_surface_operator_exact_moving_source_and_its_jaeger_limit():
+    """The solids' operator at any Péclet number (the 2-D moving line source, Carslaw & Jaeger 1959 §10.7): its
+    closed-form cell integrals equal quadrature of (1/(π k)) e^(u s) K0(|u s|), and at high Péclet number it
+    tends to Jaeger's 1/√ kernel (within 1 % at u b = 2e3 on the contact's cells); a reversed surface mirrors it."""
+    from scipy.integrate import quad
+    from scipy.special import k0
+
+    from femgear.physics.tehl.energy import surface_matrix
+
+    B, k = case.PROPS.B1, 45.0
+    kappa = (k / B) ** 2
+    xf = np.sort(np.r_[-4.5, 1.5, np.random.default_rng(1).uniform(-4.5, 1.5, 38)]) * 2e-4
+    v = 0.02
+    G = surface_matrix(xf, v, B, k)
+    u = v / (2 * kappa)
+    xc = 0.5 * (xf[:-1] + xf[1:])
+    for i, j in ((3, 3), (10, 4), (4, 10), (30, 2)):
+        g = lambda xi, x=xc[i]: np.exp(u * (x - xi)) * k0(abs(u * (x - xi))) / (np.pi * k)  # noqa: E731
+        ref = quad(g, xf[j], xf[j + 1], points=[xc[i]] if xf[j] < xc[i] < xf[j + 1] else None, limit=500,
+                   epsabs=0.0, epsrel=1e-12)[0]
+        assert G[i, j] == pytest.approx(ref, rel=1e-10)
+    fast = 2e3 * 2 * kappa / 2e-4
+    Gf, Ja = surface_matrix(xf, fast, B, k), surface_matrix(xf, fast, B)
+    q = np.sqrt(np.clip(1 - (xc / 2e-4) ** 2, 0, None))
+    assert np.max(np.abs(Gf @ q - Ja @ q)) < 0.01 * np.max(Ja @ q)
+    assert np.allclose(surface_matrix(xf, -fast, B), surface_matrix(-xf[::-1], fast, B)[::-1, ::-1])
+
+
+@pytest.mark.parametrize("ue, srr", [(40.0, 0.5), (0.05, 2.0)])
+def test_energy_solve_equals_the_direct_solve(monkeypatch, ue, srr):
+    """The energy solve (GMRES on the banded film with the solids' near band, or on the factors kept from an
+    earlier solve of the loop) gives the temperatures and wall fluxes of the direct sparse solve of the whole
+    matrix (to 1e-6 K, 1e-7 relative), at turbo speed and with a surface at rest under a thin film."""
     import femgear.physics.tehl.energy as energy
 
     seen = []
     solve = energy.linear_solve
 
-    def spy(args, rhs, n_theta):
+    def spy(args, rhs, n_theta, cache=None):
         seen.append((args, rhs, n_theta))
-        return solve(args, rhs, n_theta)
+        return solve(args, rhs, n_theta, cache)
 
     monkeypatch.setattr(energy, "linear_solve", spy)
-    _solve(1.0, level=4)
+    _solve(srr, level=4, ue=ue)
     args, rhs, n_theta = seen[-1]
     x = solve(args, rhs, n_theta)
-    A = energy._energy_matrix(*args)
-    near = energy._energy_matrix(*args, band=energy.JAEGER_BAND)
-    assert A.nnz > 4 * near.nnz  # the dense Jaeger far field is not factorised
-    ref = scipy.sparse.linalg.spsolve(A, rhs)
-    assert np.max(np.abs(x[:n_theta] - ref[:n_theta])) < 1e-7 and np.max(np.abs(ref[:n_theta])) > 1.0
-    assert np.max(np.abs(x[n_theta:] - ref[n_theta:])) < 1e-8 * np.max(np.abs(ref[n_theta:]))
+    ref = scipy.sparse.linalg.spsolve(energy._energy_matrix(*args).tocsc(), rhs)
+    assert np.max(np.abs(x[:n_theta] - ref[:n_theta])) < 1e-6 * max(1.0, np.max(np.abs(ref[:n_theta])))
+    assert np.max(np.abs(x[n_theta:] - ref[n_theta:])) < 1e-7 * np.max(np.abs(ref[n_theta:]))

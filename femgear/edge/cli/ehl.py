@@ -22,9 +22,14 @@ def register(sub) -> None:
                     help="solver: full multigrid (FD), Newton (FE), or auto = multigrid inside its "
                          "validated range (output: method, fallback)")
     pt.set_defaults(func=_point)
-    ln = ehl_sub.add_parser("line", help="line contact (1D FE, dense Newton)")
+    ln = ehl_sub.add_parser("line", help="line contact: FD on graded grids converged to --tol (default), or FE")
     _common(ln)
-    ln.add_argument("--level", type=int, default=6, help="grid: 16*2^level intervals (6)")
+    ln.add_argument("--level", type=int, default=None,
+                    help="grid: 16*2^level intervals; fd: the finest level instead of --tol's choice (unset: the "
+                         "solver picks it, up to level 7); fe: the grid (default 6)")
+    ln.add_argument("--method", choices=("fd", "fe"), default="fd",
+                    help="fd: finite differences on graded grids, levels refined until the Richardson estimates of "
+                         "Hc and Hmin meet --tol (default 1 %%); fe: the Galerkin solver on uniform grids")
     ln.set_defaults(func=_line)
 
 
@@ -40,7 +45,7 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--tol", type=float, default=None,
                    help="relative error of Hc and Hmin: stop at the cheapest level up to "
                         "--level whose Richardson estimate meets it (output: error_estimate, "
-                        "flags, warning)")
+                        "flags, warning; line --method fd: 0.01 by default)")
 
 
 def _options(args) -> dict:
@@ -74,10 +79,18 @@ def _point(args) -> int:
 
 
 def _line(args) -> int:
-    _check_arguments(args, lowest_level=2)
-    from femgear.physics.ehl.fe.line import solve_line
+    from femgear.physics.ehl.line import DEFAULT_TOL, solve_line
 
-    return _run(args, lambda: solve_line(args.M, args.L, level=args.level, tol=args.tol,
+    if args.method == "fe" and args.level is None:
+        args.level = 6
+    if args.level is not None:
+        _check_arguments(args, lowest_level=2)
+    else:
+        args.level = 7
+        _check_arguments(args, lowest_level=2)
+        args.level = None
+    tol = args.tol if args.tol is not None or args.method == "fe" else DEFAULT_TOL
+    return _run(args, lambda: solve_line(args.M, args.L, method=args.method, level=args.level, tol=tol,
                                          **_options(args)))
 
 

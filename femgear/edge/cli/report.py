@@ -55,6 +55,20 @@ def key_figures(summary: dict[str, Any], seconds: float | None = None) -> list[t
     if film:
         rows.append((f"central film at the pitch point ({film['level']})", _fmt(film.get("central_pitch"), 1e6), "µm"))
         rows.append((f"minimum film along the path ({film['level']})", _fmt(film.get("minimum"), 1e6), "µm"))
+        if film.get("error_estimate_max") is not None:
+            rows.append(("film error estimate, largest along the path", _fmt(film["error_estimate_max"], 100, ".2g"),
+                         "%"))
+        if film.get("central_isothermal_pitch") is not None:
+            rows.append(("isothermal central film at the pitch point", _fmt(film["central_isothermal_pitch"], 1e6),
+                         "µm"))
+            rows.append(("thermal film ratio h_c/h_c,iso at the pitch point: TEHL / Murch-Wilson / Gupta",
+                         " / ".join(_fmt(film.get(k), 1, ".3f") for k in ("phi_tehl_pitch", "phi_murch_wilson_pitch",
+                                                                           "phi_gupta_pitch")), ""))
+            rows.append(("thermal loading L_th = β η0 u_e²/k_f, largest", _fmt(film.get("thermal_loading_max"), 1, ".3g"),
+                         ""))
+            rows.append(("flash temperature, largest: TEHL / Blok for the same μ",
+                         f"{_fmt(film.get('flash_tehl_max'), 1, '.3g')} / {_fmt(film.get('flash_blok_max'), 1, '.3g')}",
+                         "K"))
     else:
         rows.append(("central film at the pitch point (formula)",
                      _fmt(_get(summary, "contact", "pitch", "film_central"), 1e6), "µm"))

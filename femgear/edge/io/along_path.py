@@ -7,6 +7,12 @@ import numpy as np
 
 from femgear.results import RunResult
 
+#: the thermal levels' per-position figures (:attr:`femgear.levels.lubrication.LevelFilm.thermal`) and their
+#: ``along_path`` names
+THERMAL_FIELDS = {"thermal_loading": "thermal_loading", "phi_murch_wilson": "inlet_factor_murch_wilson",
+                  "phi_gupta": "inlet_factor_gupta", "phi_tehl": "film_ratio_thermal",
+                  "flash_tehl": "flash_temperature_tehl", "flash_blok": "flash_temperature_blok"}
+
 
 def along_path(result: RunResult) -> dict[str, np.ndarray]:
     c, k, t = result.contact, result.case.path, result.tribology
@@ -21,6 +27,13 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
                       film_central=t.film.central, film_minimum=t.film.minimum, film_pressure_max=t.film.pressure_max)
         if t.film.temperature_rise is not None:
             fields["film_temperature_rise"] = t.film.temperature_rise
+        if t.film.error_estimate is not None:
+            fields["film_error_estimate"] = t.film.error_estimate
+        if t.film.central_isothermal is not None:
+            fields["film_central_isothermal"] = t.film.central_isothermal
+        for key, name in THERMAL_FIELDS.items():
+            if t.film.thermal is not None and key in t.film.thermal:
+                fields[name] = t.film.thermal[key]
     if t.friction_coefficient is not None:
         fields.update(friction_coefficient=t.friction_coefficient, temperature_rise=t.temperature_rise)
     if t.thermal_deviation is not None:

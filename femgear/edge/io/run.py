@@ -25,8 +25,11 @@ Layout (the contract; keys are added, never renamed without a README note):
 - ``along_path``: arrays over the ONE path grid of the case (s, radii, speeds, Hertz,
   films, and the tribology fields: load_per_length, friction_coefficient,
   temperature_rise, thermal_deviation_pinion/gear, wear_pinion/gear); ``film_central``,
-  ``film_minimum`` (and ``film_pressure_max``, thermal levels ``film_temperature_rise``) are those of
-  the lubrication level that ran (``summary.film``: level, method, pitch and minimum values), the
+  ``film_minimum`` (and ``film_pressure_max``, the numerical levels ``film_error_estimate``, thermal levels
+  ``film_temperature_rise``, ``film_central_isothermal``, ``thermal_loading``, ``inlet_factor_murch_wilson``,
+  ``inlet_factor_gupta``, ``film_ratio_thermal``, ``flash_temperature_tehl``, ``flash_temperature_blok``) are those
+  of the lubrication level that ran (``summary.film``: level, method, pitch and minimum values,
+  ``error_estimate_max``, the thermal levels' pitch and extreme figures), the
   formula films stay as ``film_*_formula``; ``specific_film`` λ = h_min / R_a (R_a the mean of both
   flanks, ``roughness.ra`` or its default by ``roughness.finishing``: ``summary.roughness``);
   ``summary.oil`` (the oil at the supply temperature and its sources), ``summary.roughness`` and
@@ -138,9 +141,20 @@ def _te_summary(result: RunResult) -> dict[str, Any]:
 def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
     """The film of the lubrication level that ran, labelled with it."""
     i = int(np.argmin(film.minimum))
-    return {"level": film.level, "method": film.method, "central_pitch": float(film.central[pitch]),
-            "minimum": float(film.minimum[i]), "minimum_position": float(s[i]),
-            "pressure_max": float(np.max(film.pressure_max))}
+    out = {"level": film.level, "method": film.method, "central_pitch": float(film.central[pitch]),
+           "minimum": float(film.minimum[i]), "minimum_position": float(s[i]),
+           "pressure_max": float(np.max(film.pressure_max))}
+    if film.error_estimate is not None:
+        out["error_estimate_max"] = float(np.max(film.error_estimate))
+    if film.central_isothermal is not None:
+        out["central_isothermal_pitch"] = float(film.central_isothermal[pitch])
+    if film.thermal is not None:
+        th = film.thermal
+        out.update(thermal_loading_max=float(np.max(th["thermal_loading"])),
+                   phi_tehl_pitch=float(th["phi_tehl"][pitch]), phi_murch_wilson_pitch=float(th["phi_murch_wilson"][pitch]),
+                   phi_gupta_pitch=float(th["phi_gupta"][pitch]), flash_tehl_max=float(np.max(th["flash_tehl"])),
+                   flash_blok_max=float(np.max(th["flash_blok"])))
+    return out
 
 
 def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: bool = True

@@ -126,6 +126,9 @@ SECTIONS: dict[str, Section] = {
     "roughness": Section({
         **_keys("roughness", PAIR, "ra rq"), **_keys("roughness", NUMBER, "sigma"),
         **_keys("roughness", TEXT, "model source"), **_keys("roughness", TEXT, "finishing", optional=True)}),
+    "inlet_heating": Section({
+        **_keys("inlet_heating.pitch", NUMBER, "thermal_loading phi_murch_wilson phi_gupta position"),
+        **_keys("inlet_heating.max", NUMBER, "thermal_loading phi_murch_wilson phi_gupta position")}),
     "power_loss": Section({**_keys("power_loss", NUMBER, "mean_loss input_power efficiency energy_per_mesh_cycle "
                                                          "ohlendorf_HV equivalent_mu max_loss_density "
                                                          "mean_friction_coefficient"),
@@ -146,7 +149,12 @@ SECTIONS: dict[str, Section] = {
                      **_keys("wear", TEXT, "load"), **_keys("wear", LIST, "warnings")},
                     lambda scene: scene.physics.wear != "none", 'with a wear level other than "none"'),
     "film": Section({**_keys("film", NUMBER, "central_pitch minimum minimum_position pressure_max"),
-                     **_keys("film", TEXT, "level method")}, when="in every run"),
+                     **_keys("film", TEXT, "level method"),
+                     # the numerical levels' error estimate; the thermal levels' films beside the isothermal and
+                     # formula ones (femgear.edge.io.run.film_summary): present only where the level computes them
+                     **_keys("film", NUMBER, "error_estimate_max central_isothermal_pitch thermal_loading_max "
+                                             "phi_tehl_pitch phi_murch_wilson_pitch phi_gupta_pitch flash_tehl_max "
+                                             "flash_blok_max")}, when="in every run"),
     "transmission_error": Section({
         **_keys("transmission_error", NUMBER, "torque force lte_peak_to_peak lte_mean lte_transverse_peak_to_peak "
                                               "nlte_peak_to_peak nlte_max stiffness_mean stiffness_ripple "

@@ -80,24 +80,6 @@ def crowned_contact(pair, crowning: tuple[float, float]) -> CrownedContact:
 #: Smallest R_x/R_y at which the ``tehl-point`` level is measured: the paper's pair with a 10 µm lead crowning
 #: (0.0044–0.0050 along the path; studies/benchmarks/tehl_point.py: grid level 1 against 2 within 2.8 % in h_c,
 #: 0.2 % in μ).  Below it the ellipse is a line contact for the point solver's grid (its stretched cells reach
-#: aspect ratios beyond those tested) and the load continuation fails (a 2 x 120 mm marine helix: 4e-4).
+#: aspect ratios beyond those tested) and the load continuation fails (a 2 x 120 mm marine helix: 4e-4); the
+#: level hands such contacts over to line TEHL in face slices (:mod:`femgear.physics.tehl.slices`).
 MIN_POINT_RATIO = 4.0e-3
-
-
-def check_point_range(pair, crowning: tuple[float, float], R: np.ndarray) -> None:
-    """Refuse ``physics.lubrication = "tehl-point"`` up front where the crowned contact is too slender for the
-    point solver (R_x/R_y < :data:`MIN_POINT_RATIO` somewhere on the path, radii ``R``; ``crowning`` as
-    :func:`crowned_contact`): one line naming the key, the ratio, the limit, and the level or the crowning that
-    would run."""
-    geo = crowned_contact(pair, crowning)
-    Rx, Ry = geo.radii(R)
-    ratio = float(np.min(Rx / Ry))
-    if ratio >= MIN_POINT_RATIO:
-        return
-    total = crowning[0] + crowning[1]
-    needed = total * MIN_POINT_RATIO / ratio
-    raise SceneError("physics.lubrication",
-                     f'"tehl-point": the crowned contact\'s R_x/R_y = {ratio:.2g} is below {MIN_POINT_RATIO:g}, the '
-                     f"most slender ellipse the point solver is validated for (b = {pair.b * 1e3:.0f} mm, crowning "
-                     f"{total * 1e6:.3g} µm summed); it is a line contact: use \"tehl\" (or a summed crowning "
-                     f"≥ {needed * 1e6:.0f} µm)")

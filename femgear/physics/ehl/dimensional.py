@@ -23,7 +23,7 @@ import numpy as np
 from femgear.physics.contact.film import moes_line, moes_point
 from femgear.physics.ehl.core.results import EHLResult
 from femgear.physics.ehl.core.rheology import ROELANDS_P0
-from femgear.physics.ehl.fe.line import solve_line
+from femgear.physics.ehl.line import solve_line
 from femgear.physics.ehl.point import solve_point
 
 
@@ -96,8 +96,12 @@ def solve_point_dimensional(load: float, Rx: float, Ry: float | None, um: float,
 
 
 def solve_line_dimensional(load_per_length: float, R: float, um: float, E_red: float,
-                           oil: EHLOil, *, level: int = 6, **kwargs) -> DimensionalEHL:
-    """Line contact: load per unit length w' [N/m], reduced radius R [m], u_m [m/s], E' [Pa]."""
+                           oil: EHLOil, *, level: int | None = None, **kwargs) -> DimensionalEHL:
+    """Line contact: load per unit length w' [N/m], reduced radius R [m], u_m [m/s], E' [Pa].
+
+    :func:`femgear.physics.ehl.line.solve_line` does the solve: by default converged to its
+    tolerance on the grid it picks (``tol=``, ``method=`` and the rest in ``kwargs``);
+    ``level`` fixes the grid instead."""
     _check(load_per_length=load_per_length, R=R, um=um, E_red=E_red, eta0=oil.eta0)
     U = oil.eta0 * um / (E_red * R)
     Wl = load_per_length / (E_red * R)

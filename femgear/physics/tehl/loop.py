@@ -34,6 +34,11 @@ import numpy as np
 from femgear.errors import ConvergenceError
 
 
+class ThermalRunaway(ConvergenceError):
+    """No steady state below the loop's ``max_rise``: a physical limit (the film would heat beyond it), which
+    neither a finer grid nor a continuation removes."""
+
+
 def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> np.ndarray:
     """Walker & Ni's Anderson update θ_{k+1} − θ_k from the residual and the history."""
     step = beta * res
@@ -47,11 +52,14 @@ def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> n
 
 def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol: float, relax: float,
                  max_step: float, max_rise: float, max_iter: int, case: str, depth: int = 5,
-                 solved: bool = True, growth: float = 1.0):
+                 solved: bool = True, growth: float = 1.0, history: list | None = None):
     """Returns (state, θ, thermal iterations, Newton iterations).  ``solved`` = False: the
     EHL state that ``energy`` sees is only a prediction (a prolonged coarse-grid solution),
-    not yet re-solved at θ; the loop then does not stop before one ``resolve``."""
-    history: list[float] = []
+    not yet re-solved at θ; the loop then does not stop before one ``resolve``.  ``history``: a
+    list the temperature changes are appended to (the caller's record across loops); the
+    ConvergenceError of a failed loop carries the changes of this loop."""
+    record = history if history is not None else []
+    history = []
     d_theta: list[np.ndarray] = []
     d_res: list[np.ndarray] = []
     beta, newton_its, previous = relax, 0, None
@@ -60,6 +68,7 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
         res = new - theta
         change = float(np.max(np.abs(res))) if res.size else 0.0
         history.append(change)
+        record.append(change)
         if not np.isfinite(change):
             raise ConvergenceError(case, "non-finite temperatures", {"temperature_change": history})
         if change < tol and solved:
@@ -77,8 +86,8 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
             previous = (theta, res)
         step = np.clip(anderson_step(res, d_theta, d_res, beta), -max_step, max_step)
         if float(np.max(np.abs(theta + step))) > max_rise:
-            raise ConvergenceError(case, f"temperatures run away (max rise > {max_rise} K)",
-                                   {"temperature_change": history})
+            raise ThermalRunaway(case, f"temperatures run away (max rise > {max_rise} K)",
+                                 {"temperature_change": history})
         for attempt in range(4):
             try:
                 newton_its += resolve(theta + step)

@@ -3,7 +3,7 @@
 
 Positions, load per length, radii, entrainment speeds and SRR come from
 :func:`femgear.physics.contact.path.contact_along_path` (or any ``load_per_length`` array, e.g.
-the coupling's dynamic w̄').
+the coupling's dynamic w̄'), solved on one grid level (:func:`femgear.physics.tehl.solver.tehl_path_results`).
 """
 
 from __future__ import annotations
@@ -12,9 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from femgear.errors import ConvergenceError
-from femgear.physics.tehl.line import TEHLResult, solve_tehl_line
-from femgear.physics.tehl.solver import TEHLSetup
+from femgear.physics.tehl.solver import TEHLSetup, tehl_path_results
 
 
 @dataclass(frozen=True)
@@ -31,20 +29,14 @@ class TEHLPath:
     results: list = field(repr=False, default_factory=list)
 
 
-def tehl_along_path(contact, setup: TEHLSetup, T_bulk: float, level: int, load_per_length=None,
+def tehl_along_path(contact, setup: TEHLSetup, T_bulk: float, level: int | None = None, load_per_length=None,
                     **options) -> TEHLPath:
-    """TEHL (grid ``level``, oil bulk temperature ``T_bulk`` [K]) at the positions of a contact pass
-    (:class:`femgear.physics.contact.path.ContactPath`), at its mean load per length or ``load_per_length``."""
+    """TEHL (oil bulk temperature ``T_bulk`` [K]; grid ``level``, or the path's own, :func:`tehl_path_results`) at
+    the positions of a contact pass (:class:`femgear.physics.contact.path.ContactPath`), at its mean load per length
+    or ``load_per_length``."""
     k = contact.kin
     w = np.broadcast_to(contact.load_per_length if load_per_length is None else load_per_length, k.R.shape)
-    kw = {**setup.kwargs(), **options}
-    results: list[TEHLResult] = []
-    for i in range(k.R.size):
-        try:
-            results.append(solve_tehl_line(float(w[i]), float(k.R[i]), float(k.ue[i]), float(k.srr[i]), T_bulk,
-                                           level=level, **kw))
-        except ConvergenceError as exc:
-            raise ConvergenceError(f"tehl path position {i} (s = {k.s[i]:.4g} m)", str(exc), exc.history) from exc
+    results = tehl_path_results(w, k.R, k.ue, k.srr, T_bulk, setup, level=level, **options)
 
     def arr(name):
         return np.array([getattr(r, name) for r in results])

@@ -38,27 +38,34 @@ import logging
 import numpy as np
 
 from femgear.errors import ConvergenceError
-from femgear.physics.contact.crowning import CrownedContact
+from femgear.physics.contact.crowning import MIN_POINT_RATIO, CrownedContact
 from femgear.physics.tehl.point import solve_tehl_point
 from femgear.physics.tehl.reuse import ReuseReport, reusable
+from femgear.physics.tehl.slices import SLICES, SliceGeometry, slice_contact
 from femgear.physics.tehl.solver import TEHLSetup
 
 POINT_LEVEL = 1
 log = logging.getLogger("femgear.physics.tehl")
 
 
-def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, roughness=None, level: int | None = None,
-                      details: list | None = None, **options):
+def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict, roughness=None, level: int | None = None,
+                      details: list | None = None, slices: SliceGeometry | None = None, **options):
     """Direct thermal point-EHL solves (one per query point) in the map signature.
 
-    ``geo``: the crowned contact of the pair (:func:`femgear.physics.contact.crowning.crowned_contact`);
-    ``setup``: oil, solids and traction; ``roughness``: a ``[roughness]`` table with stationary features, or
-    None (smooth); ``line_level``: the grid level of the line-contact fallback (:func:`_line_contact`).
-    ``details``: a list that receives each :class:`femgear.physics.tehl.point.TEHLPointResult`
-    (films, pressure, temperature for studies); a contact queried again (same radii, speeds, temperature)
-    at a load that changed so little that the change of μ and ΔT is estimated below 1e-4 reuses its latest
-    solve (:mod:`femgear.physics.tehl.reuse`; ``solve.reuse`` reports it); ``solve.last`` holds the inputs and results of the
-    latest call (the film of the run's last pass, :meth:`femgear.levels.lubrication.Lubrication.film`)."""
+    ``geo``: the crowned contact of the pair (:func:`femgear.physics.contact.crowning.crowned_contact`; its
+    ``kappa`` 0 for an uncrowned pair); ``setup``: oil, solids and traction; ``roughness``: a ``[roughness]``
+    table with stationary features, or None (smooth); ``line_options``: the tolerance options of the line TEHL
+    solves of the hand-over.  ``slices``: the kinematics of the pair's face slices
+    (:class:`femgear.physics.tehl.slices.SliceGeometry`): a contact more slender than
+    :data:`femgear.physics.contact.crowning.MIN_POINT_RATIO` (every contact of an uncrowned pair), or one the
+    point solver fails on, is handed over to line TEHL in face slices (:func:`femgear.physics.tehl.slices.
+    slice_contact`), said in one log line per call; without ``slices`` such a contact is solved as one line
+    contact of the same load per length on R_x.  ``details``: a list that receives each contact's result
+    (:class:`femgear.physics.tehl.point.TEHLPointResult` or :class:`~femgear.physics.tehl.slices.SliceResult`);
+    a contact queried again (same radii, speeds, temperature) at a load that changed so little that the change
+    of μ and ΔT is estimated below 1e-4 reuses its latest solve (:mod:`femgear.physics.tehl.reuse`;
+    ``solve.reuse`` reports it); ``solve.last`` holds the inputs and results of the latest call (the film of the
+    run's last pass, :meth:`femgear.levels.lubrication.Lubrication.film`)."""
     kw = {**setup.kwargs(), "roughness": roughness, **options}
     level = POINT_LEVEL if level is None else level
 
@@ -67,38 +74,60 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_level: int, ro
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
                                                  for a in (w, R, ue, srr, T)))
-        Rx, Ry = geo.radii(R)
+        with np.errstate(divide="ignore"):
+            Rx, Ry = geo.radii(R)
         F = geo.load(w)
         mu, dT = np.empty(w.shape), np.empty(w.shape)
-        results, reuse = [], ReuseReport()
+        results, reuse, handed = [], ReuseReport(), []
         for i in np.ndindex(w.shape):
             args = (float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]))
             key = args[1:] + (float(Ry[i]),)
             r = reusable(memory.get(key, []), args[0], reuse)
             if r is None:
-                try:
-                    r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **kw)
-                except ConvergenceError as exc:
-                    r = _line_contact(float(w[i]), args, setup, line_level, exc)
+                ratio = float(Rx[i] / Ry[i]) if np.isfinite(Ry[i]) else 0.0
+                if ratio < MIN_POINT_RATIO and slices is not None:
+                    handed.append("slender")
+                    r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options)
+                else:
+                    try:
+                        r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **kw)
+                    except ConvergenceError as exc:
+                        if slices is None:
+                            r = _line_contact(float(w[i]), args, setup, line_options, exc)
+                        else:
+                            handed.append("failed")
+                            r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options)
                 memory[key] = (memory.get(key, []) + [(args[0], r)])[-2:]
-            mu[i], dT[i] = r.mu, r.dT_max
+            mu[i], dT[i] = r.mu, r.dT_surface
             results.append(r)
+        if handed:
+            log.warning("tehl-point: %d of %d contacts handed over to line TEHL in %d face slices each, with each "
+                        "slice's own load, curvature, speeds and SRR (%d more slender than the point solver's "
+                        "R_x/R_y = %g or uncrowned, %d where the point solver failed)", len(handed), w.size, SLICES,
+                        handed.count("slender"), MIN_POINT_RATIO, handed.count("failed"))
         if details is not None:
             details.extend(results)
         solve.last = ((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), results)
         solve.reuse = reuse
+        solve.handed_over = len(handed)
         if reuse.reused:
             log.info("tehl-point: %s", reuse.describe())
         return mu, dT
 
     solve.last = None   #: ((w, R, ue, srr, T), results) of the latest call: its films, without solving again
     solve.reuse = None  #: :class:`ReuseReport` of the latest call
+    solve.handed_over = 0  #: contacts of the latest call handed over to the face slices
 
     return solve
 
 
-def _line_contact(w: float, args: tuple, setup: TEHLSetup, level: int, exc: ConvergenceError):
-    """The line-contact TEHL solve (grid ``level``) of a contact the point solver could not hold (R_x/R_y → 0
+def _slices(w, R, ue, srr, T, Rx, Ry, geo: SliceGeometry, setup: TEHLSetup, options: dict):
+    return slice_contact(float(w), float(R), float(ue), float(srr), float(T), float(Rx), float(Ry), geo, setup,
+                         **options)
+
+
+def _line_contact(w: float, args: tuple, setup: TEHLSetup, options: dict, exc: ConvergenceError):
+    """The line-contact TEHL solve (``options`` of :func:`solve_tehl_line`) of a contact the point solver could not hold (R_x/R_y → 0
     limit: the same load per unit length on the radius R_x across the line), logged as a warning naming the
     contact."""
     from femgear.physics.tehl.line import solve_tehl_line
@@ -107,4 +136,4 @@ def _line_contact(w: float, args: tuple, setup: TEHLSetup, level: int, exc: Conv
     log.warning("tehl-point: the point solver failed at F = %.4g N, R_x = %.4g m (%s); this contact is solved "
                 "as a line contact (physics.lubrication = \"tehl\" there)", F, Rx,
                 str(exc).split(": ", 1)[-1].split(" (last:")[0][:100])
-    return solve_tehl_line(w, Rx, ue, srr, T, level=level, **setup.kwargs())
+    return solve_tehl_line(w, Rx, ue, srr, T, **setup.kwargs(), **options)

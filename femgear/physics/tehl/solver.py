@@ -2,7 +2,11 @@
 
 ``solver(w=, R=, ue=, srr=, T=) -> (mu, temperature_rise)`` as every lubrication level
 (:mod:`femgear.physics.lubrication.map`): μ is the sliding friction |μ_couette| of
-:func:`solve_tehl_line`, the temperature rise is the maximum film temperature rise [K].
+:func:`solve_tehl_line`, the temperature rise is the contact (surface, flash) temperature rise, the larger of the
+two bodies' [K]: what the flanks' thermal models and the scuffing ratings read, as Blok's flash temperature of the
+other levels.  (The film's own peak, inside it on the outlet pressure spike, steps from one path position to the
+next as the spike crosses the cells: up to 8 % of its maximum in second differences along the baseline's path,
+against 1 % for the surface temperature; it stays the film's ``temperature_rise``.)
 The isothermal start is shared between points that differ only in SRR (cached per call).
 """
 
@@ -14,20 +18,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from femgear.errors import ConvergenceError, SceneError
+from femgear.physics.contact.film import moes_line
 from femgear.physics.contact.hertz import reduced_modulus
+from femgear.physics.ehl.fd.line import DEFAULT_TOL, MAX_LEVEL
 from femgear.physics.lubrication.map import FrictionMap
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.path import solids_of
 from femgear.physics.lubrication.traction import Solids
 from femgear.physics.tehl.energy import ThermalProps
-from femgear.physics.tehl.line import solve_tehl_line
+from femgear.physics.tehl.line import TEHLResult, ehl_oil_at, solve_tehl_line
 
-#: the retry of a map point whose thermal loop did not settle to 0.1 K in the default 100 passes (relaxation
-#: 0.8): the marine pair's corner at 2x the load, +40 K and pure rolling toggles by 0.39 K between passes
-#: (a limit cycle of the discrete inlet, not slow convergence: 300 passes at relaxation 0.5 keep it), so the
-#: retry accepts 0.5 K there, with stronger under-relaxation
-DAMPED = {"relax": 0.5, "max_iter": 300, "tol": 0.5}
-LINE_SECONDS = 0.3    #: rough wall time of one TEHL line solve at grid level 4 (announce and progress only) [s]
+LINE_SECONDS = 0.3    #: rough wall time of one TEHL line solve (announce and progress only) [s]
 
 
 def map_progress(stage: str, total: int, seconds_each: float):
@@ -41,9 +42,11 @@ def map_progress(stage: str, total: int, seconds_each: float):
     return Progress(stage, total, est.seconds)
 
 
-def thermal_props(solids: Solids, oil_specific_heat: float) -> ThermalProps:
-    """Oil conductivity and specific heat [J/(kg K)], solid effusivities of :class:`Solids`."""
-    return ThermalProps(k_oil=solids.k_oil, c_oil=oil_specific_heat, B1=solids.B1, B2=solids.B2)
+def thermal_props(solids: Solids, oil_specific_heat: float, conductivity: float | None = None) -> ThermalProps:
+    """Oil conductivity and specific heat [J/(kg K)], solid effusivities of :class:`Solids` and the solids'
+    ``conductivity`` [W/(m K)] (both members; None: the high-Péclet Jaeger operator for the solids)."""
+    return ThermalProps(k_oil=solids.k_oil, c_oil=oil_specific_heat, B1=solids.B1, B2=solids.B2, k1=conductivity,
+                        k2=conductivity)
 
 
 @dataclass(frozen=True)
@@ -66,8 +69,8 @@ class TEHLSetup:
     def from_tables(cls, material, oil, reference_temperature: float) -> TEHLSetup:
         """The set-up of a ``[material]`` (one steel, both members) and an ``[oil]`` table whose viscosity
         holds at ``reference_temperature`` [K]."""
-        return cls(oil=OilLaw.from_table(oil, reference_temperature), props=thermal_props(solids_of(material, oil),
-                                                                                         oil.specific_heat),
+        return cls(oil=OilLaw.from_table(oil, reference_temperature),
+                   props=thermal_props(solids_of(material, oil), oil.specific_heat, material.conductivity),
                    E_red=reduced_modulus(material.youngs_modulus, material.poisson_ratio), tau0=oil.eyring_stress,
                    limiting_shear=oil.limiting_shear_coeff)
 
@@ -77,27 +80,75 @@ class TEHLSetup:
                 "limiting_shear": self.limiting_shear}
 
 
-def tehl_line_solver(setup: TEHLSetup, level: int, **options):
-    """Direct TEHL solves (one per point, grid ``level``) in the map signature; ``options`` go to
-    :func:`solve_tehl_line` (e.g. ``cells``, ``nz``, ``model``)."""
-    kw = {**setup.kwargs(), **options}
+def tehl_line_solver(setup: TEHLSetup, level: int | None = None, **options):
+    """Direct TEHL solves (one per point, :func:`tehl_path_results`: on one grid level for all) in the map
+    signature; ``options`` go to :func:`solve_tehl_line` (e.g. ``tol``, ``min_level``, ``nz``, ``model``);
+    ``solve.last`` holds the inputs and results of the latest call (the level's film reuses them)."""
 
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
                                                  for a in (w, R, ue, srr, T)))
-        mu, dT = np.empty(w.shape), np.empty(w.shape)
-        progress = map_progress(f"TEHL line solves (level {level})", w.size, LINE_SECONDS * 2.0 ** (level - 4))
-        for n, i in enumerate(np.ndindex(w.shape)):
-            progress(n)
-            args = (float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), float(T[i]))
-            try:
-                r = solve_tehl_line(*args, level=level, **kw)
-            except ConvergenceError:     # a slowly settling thermal loop (heavy, hot envelope corners)
-                r = solve_tehl_line(*args, level=level, **{**kw, **DAMPED})
-            mu[i], dT[i] = r.mu, r.dT_max
-        return mu, dT
+        results = []
+        for t in np.unique(T):      # the oil temperatures of the query, one sequence each
+            at = T == t
+            rs = tehl_path_results(w[at], R[at], ue[at], srr[at], float(t), setup, level=level, **options)
+            results += list(zip(np.flatnonzero(at), rs))
+        rs = [r for _, r in sorted(results, key=lambda x: x[0])]
+        solve.last = ((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), rs)
+        return (np.array([r.mu for r in rs]).reshape(w.shape), np.array([r.dT_surface for r in rs]).reshape(w.shape))
 
+    solve.last = None
     return solve
+
+
+def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int | None = None,
+                      **options) -> list[TEHLResult]:
+    """TEHL line solves at the contacts (arrays ``w``, ``R``, ``ue``, ``srr``; oil at ``T`` [K]) on one grid
+    level: ``level``, or the one that the tolerance-driven solve of the contact with the largest Moes M (the
+    thinnest film for its width, which needs the finest grid) picks, kept for the others, so that the fields
+    of a path or map are smooth to the solver's tolerance (a level that changed from point to point would step
+    them by up to that tolerance); when another contact's estimate then exceeds the tolerance, the whole sequence
+    is solved once more one level finer.  ``options`` to :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
+    w, R, ue, srr = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr)))
+    kw = {**setup.kwargs(), **options}
+    out: list = [None] * w.size
+    progress = map_progress("TEHL line solves", w.size, LINE_SECONDS)
+    if level is None:
+        oil = ehl_oil_at(setup.oil, T)
+        E = setup.E_red
+        M = [moes_line(wi / (E * Ri), oil.eta0 * ui / (E * Ri), oil.alpha * E)[0] for wi, Ri, ui in zip(w, R, ue)]
+        first = int(np.argmax(M))
+        progress(0)
+        out[first] = _one(first, w, R, ue, srr, T, kw)
+        level = _level_of_nodes(out[first].nodes)
+        auto = True
+    else:
+        auto = False
+    kw.pop("min_level", None)
+    for i in range(w.size):
+        if out[i] is None:
+            progress(i)
+            out[i] = _one(i, w, R, ue, srr, T, {**kw, "level": level})
+    tol = kw.get("tol", DEFAULT_TOL)
+    if auto and level < MAX_LEVEL and max(_estimate(r) for r in out) > tol:
+        # a position other than the probe needs more: the whole sequence one level finer, once
+        return tehl_path_results(w, R, ue, srr, T, setup, level=level + 1, **options)
+    return out
+
+
+def _estimate(r) -> float:
+    return max((e for e in r.error_estimate.values() if e is not None), default=0.0)
+
+
+def _one(i: int, w, R, ue, srr, T, kw) -> TEHLResult:
+    try:
+        return solve_tehl_line(float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), T, **kw)
+    except ConvergenceError as exc:
+        raise ConvergenceError(f"tehl path position {i}", str(exc), exc.history) from exc
+
+
+def _level_of_nodes(nodes: int) -> int:
+    return int(round(math.log2((nodes - 1) / 16)))
 
 
 def tehl_map_axes(contact, ambient_temperature: float, load_range=(0.5, 2.0),
@@ -114,15 +165,20 @@ def tehl_map_axes(contact, ambient_temperature: float, load_range=(0.5, 2.0),
             "T": np.array([T0, T0 + temperature_span])}
 
 
-def tehl_map(setup: TEHLSetup, axes: dict, level: int = 4, validate: int = 0, seed: int = 0) -> FrictionMap:
-    """A :class:`FrictionMap` of TEHL solves (grid ``level``) over ``axes``; ``validate`` > 0 measures its
-    error against that many fresh TEHL solves at random envelope points."""
-    solver = tehl_line_solver(setup, level=level)
+def tehl_map(setup: TEHLSetup, axes: dict, level: int | None = None, validate: int = 0, seed: int = 0,
+             **options) -> FrictionMap:
+    """A :class:`FrictionMap` of TEHL solves over ``axes`` (grid ``level``; None: the level that the heaviest
+    corner's tolerance-driven solve picks, kept for all points; ``options`` to :func:`solve_tehl_line`);
+    ``validate`` > 0 measures its error against that many fresh TEHL solves at random envelope points."""
+    if level is None:
+        level = _level_of_nodes(solve_tehl_line(*_corner(axes), **setup.kwargs(), **options).nodes)
+    options.pop("min_level", None)
+    solver = tehl_line_solver(setup, level=level, estimate=False, **options)
     fmap = FrictionMap.build(solver, axes)
     return fmap.validate(solver, samples=validate, seed=seed) if validate else fmap
 
 
-def tehl_map_solver(setup: TEHLSetup, axes: dict, level: int = 4):
+def tehl_map_solver(setup: TEHLSetup, axes: dict, level: int | None = None, **options):
     """The ``tehl`` level for the coupling loop: a :func:`tehl_map` over ``axes`` built on first use
     (≈ 170 TEHL solves), queried by interpolation.  Queries outside the envelope are
     clamped to its edges (the dynamic load may leave the 0.5–2 × nominal band briefly
@@ -131,7 +187,7 @@ def tehl_map_solver(setup: TEHLSetup, axes: dict, level: int = 4):
 
     def solve(w, R, ue, srr, T):
         if "map" not in cache:
-            cache["map"] = tehl_map(setup, axes=axes, level=level)
+            cache["map"] = tehl_map(setup, axes=axes, level=level, **options)
         fmap = cache["map"]
         args = [np.clip(np.abs(a) if k == "srr" else np.asarray(a, dtype=float), fmap.axes[k][0], fmap.axes[k][-1])
                 for k, a in zip(("w", "R", "ue", "srr", "T"), (w, R, ue, srr, T))]
@@ -141,43 +197,31 @@ def tehl_map_solver(setup: TEHLSetup, axes: dict, level: int = 4):
     return solve
 
 
-#: The largest Moes M of the ``tehl`` map's envelope that the line EHL solver is validated at (Moes's line film to
-#: 1.2 % at (200, 10), README) and starts from Hertz at: the wind zoo stage's corner (346, 3.5) does not
-#: (neither does 216 at that L); the other zoo pairs' corners stay below 200
-MAX_MAP_M = 200.0
-
-#: Pitch-line speed above which the TEHL levels are refused [m/s]: the turbo zoo pair (131 m/s, entrainment
-#: up to 42 m/s) does not settle its thermal loop (a 12 K temperature change after 300 damped passes), the
-#: other zoo pairs (≤ 13 m/s) and the TEHL validation cases (≤ 20 m/s) do; the film and friction formulas are
-#: fitted below it too (:mod:`femgear.scene.plausibility`)
-MAX_TEHL_SPEED = 100.0
+#: The TEHL envelope's entrainment speed [m/s]: the line TEHL converges and is checked to here
+#: (studies/benchmarks/tehl_envelope.py; issue 43 asked for 60 m/s, the turbo zoo pair reaches 57 m/s and pairs of
+#: 200 m/s pitch-line speed about 85 m/s)
+MAX_ENTRAINMENT = 100.0
 
 
-def check_tehl_speed(pair, pinion_rpm: float, level: str) -> None:
-    """Refuse the TEHL ``level`` up front above :data:`MAX_TEHL_SPEED` (pitch-line speed of ``pair`` at
-    ``pinion_rpm``), naming the levels that run there."""
-    v = 2.0 * math.pi * pair.rw1 * pinion_rpm / 60.0
-    if v > MAX_TEHL_SPEED:
-        raise SceneError("physics.lubrication", f'"{level}": the pitch-line speed {v:.0f} m/s is '
-                         f"above {MAX_TEHL_SPEED:g} m/s, where the TEHL thermal loop does not settle; use "
+def _corner(axes: dict) -> tuple[float, float, float, float, float]:
+    """(w, R, ue, srr, T) of the map envelope's heaviest corner: the largest load, smallest radius and
+    entrainment speed, rolling, the hottest oil (M grows and L falls with each)."""
+    return (float(axes["w"].max()), float(axes["R"].min()), float(axes["ue"].min()), 0.0, float(axes["T"].max()))
+
+
+def check_envelope(ue_max: float, level: str) -> None:
+    """Refuse the TEHL ``level`` up front where the path's largest entrainment speed ``ue_max`` [m/s] is beyond
+    :data:`MAX_ENTRAINMENT`, naming the levels that run there."""
+    if ue_max > MAX_ENTRAINMENT:
+        raise SceneError("physics.lubrication", f'"{level}": the entrainment speed reaches {ue_max:.0f} m/s, above '
+                         f"the {MAX_ENTRAINMENT:g} m/s of the TEHL envelope (converged and validated to there); use "
                          '"ehl-line" or "formula"')
 
 
-def check_map_corner(axes: dict, oil: OilLaw, E_red: float) -> None:
-    """Refuse the ``tehl`` map up front where its heaviest corner (:func:`map_corner_moes`) is above
-    :data:`MAX_MAP_M`."""
-    M, L = map_corner_moes(axes, oil, E_red)
-    if M > MAX_MAP_M:
-        raise SceneError("physics.lubrication", f'"tehl": its friction map reaches Moes M = {M:.0f} (L = {L:.2g}) '
-                         f"at twice the load and +40 K, above M = {MAX_MAP_M:g}, the largest at which the line "
-                         'EHL solver is validated and starts; use "ehl-line" (direct solves at the path\'s loads)')
-
-
 def map_corner_moes(axes: dict, oil: OilLaw, E_red: float) -> tuple[float, float]:
-    """Moes (M, L) of the map envelope's heaviest corner: the largest load, smallest radius and entrainment
-    speed and the hottest oil of the map ``axes`` (:func:`tehl_map_axes`; M grows and L falls with each)."""
+    """Moes (M, L) of the map envelope's heaviest corner (:func:`_corner`)."""
     from femgear.physics.contact.film import moes_line
 
-    w, R, ue, T = axes["w"].max(), axes["R"].min(), axes["ue"].min(), axes["T"].max()
+    w, R, ue, _, T = _corner(axes)
     eta = float(oil.viscosity(0.0, T))
     return tuple(float(x) for x in moes_line(w / (E_red * R), eta * ue / (E_red * R), oil.alpha * E_red))

@@ -156,3 +156,43 @@ def line_kernel(x: np.ndarray, h: float) -> np.ndarray:
 def point_deflection(nx: int, ny: int, h: float, hy: float | None = None) -> PointDeflection:
     """Cached :class:`PointDeflection` (its kernel transform is built once per grid)."""
     return PointDeflection(nx, ny, h, hy)
+
+
+def _log_integrals(t0: np.ndarray, t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """int_t0^t1 ln|u| du and int_t0^t1 u ln|u| du (closed forms, 0 ln 0 = 0)."""
+
+    def F1(t):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(t != 0.0, t * np.log(np.abs(np.where(t != 0.0, t, 1.0))) - t, 0.0)
+
+    def F2(t):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(t != 0.0, t * t * (0.5 * np.log(np.abs(np.where(t != 0.0, t, 1.0))) - 0.25), 0.0)
+
+    return F1(t1) - F1(t0), F2(t1) - F2(t0)
+
+
+def line_hat_kernel(X: np.ndarray, rows: np.ndarray | None = None, cols: np.ndarray | None = None) -> np.ndarray:
+    """K[rows][:, cols] of the line deflection D_i = sum_j K_ij P_j on the (non-uniform,
+    increasing) nodes X for piecewise-linear P (hat functions phi_j):
+    K_ij = -(1/pi) int phi_j(s) ln|X_i - s| ds (Venner & Lubrecht 2000, eq. 2.14, with the
+    linear interpolation of P; second order on any grid), in closed form: on an interval
+    [a, b] the rising half of a hat gives (I1 + (x - a) I0)/(b - a) with I0, I1 the integrals
+    of ln|u| and u ln|u| over [a - x, b - x].  Default: all nodes."""
+    n = X.size
+    rows = np.arange(n) if rows is None else np.asarray(rows)
+    cols = np.arange(n) if cols is None else np.asarray(cols)
+    x = X[rows][:, None]
+    out = np.zeros((rows.size, cols.size))
+    j = cols[None, :]
+    for side in (-1, 1):                      # the interval left (rising) / right (falling) of node j
+        ok = (j + side >= 0) & (j + side <= n - 1)
+        jj = np.where(ok, j + side, j)
+        a = np.where(side < 0, X[jj], X[j])   # [a, b] = [X_(j-1), X_j] or [X_j, X_(j+1)]
+        b = np.where(side < 0, X[j], X[jj])
+        length = np.where(ok, b - a, 1.0)
+        I0, I1 = _log_integrals(a - x, b - x)
+        rise = (I1 + (x - a) * I0) / length
+        part = rise if side < 0 else I0 - rise
+        out += np.where(ok, part, 0.0)
+    return -out / np.pi

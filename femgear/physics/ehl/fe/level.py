@@ -59,6 +59,11 @@ class Level:
         self.n = self.X.size
         self.m = self.reynolds.mass[self.interior]
 
+    @property
+    def alpha_bar(self) -> float:
+        """alpha p_h of the level's rheology (the Newton step cap)."""
+        return self.reynolds.rheology.alpha_bar
+
     # -- state -------------------------------------------------------------------------
     def full(self, PI: np.ndarray) -> np.ndarray:
         P = np.zeros(self.n)

@@ -76,7 +76,7 @@ def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case
 
 def _step_cap(level: Level) -> float:
     """The cap on |dP| of a step: the viscosity changes by at most e^MAX_LOG_ETA anywhere."""
-    return min(MAX_DP, MAX_LOG_ETA / max(level.reynolds.rheology.alpha_bar, 1e-12))
+    return min(MAX_DP, MAX_LOG_ETA / max(level.alpha_bar, 1e-12))
 
 
 STALL_STEP = 0.25  # median damping below which a failed solve is reported as step-limited

@@ -1,0 +1,108 @@
+"""Wide helices: a contact too slender for the point solver, as line TEHL contacts in face slices.
+
+Below the point solver's slender-ellipse limit (R_x/R_y < :data:`femgear.physics.contact.crowning.
+MIN_POINT_RATIO`, or no crowning at all) a tooth pair's contact is a line contact along its contact line:
+practice treats it slice by slice with the local load (the project's envelope note; the thin-slice models of
+LTCA).  The contact line of one tooth pair (mean length L, :class:`femgear.physics.contact.crowning.
+CrownedContact`) lies in the plane of action at the base helix angle β_b to the axis, so a slice at distance s
+from its middle sits at the transverse position u + s sin β_b of the path of contact: its own radii of
+curvature ρ1 + s sin β_b and ρ2 − s sin β_b, hence its own reduced radius R = ρ1 ρ2 / ((ρ1 + ρ2) cos β_b),
+rolling speeds v_i = ω_i ρ_i, entrainment speed and SRR (:func:`femgear.physics.geometry.kinematics`
+conventions).  The load along the line follows the Hertz ellipse of the crowned contact, w(s) ∝ 1 − (s/b_H)²
+(b_H its semi-axis along the line), over the loaded part of the line (the shorter of L and 2 b_H), and uniform
+for an uncrowned pair; it is scaled so that the slices carry the contact's load F = w̄ L.  Each slice is a :func:`femgear.physics.tehl.line.
+solve_tehl_line` contact (all on one grid level, :func:`femgear.physics.tehl.solver.tehl_path_results`).
+
+The contact's figures: μ = |Σ μ_c,j w_j| / Σ w_j (the friction force of the slices over the load, signed by
+each slice's sliding direction: a line that straddles the pitch point has both), the largest temperatures and
+pressure, the smallest film, the middle slice's central film.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from femgear.physics.contact.hertz import hertz_point
+
+SLICES = 7   #: face slices of one contact line (odd: the middle one is the contact's centre)
+
+
+@dataclass(frozen=True)
+class SliceGeometry:
+    """What the slices need beyond the contact's centre values: the pinion and gear speeds [rad/s], the base
+    helix angle [rad], the contact-line length of one tooth pair [m] and the summed crowning curvature [1/m]
+    (0: uncrowned)."""
+
+    omega1: float
+    omega2: float
+    beta_b: float
+    contact_length: float
+    kappa: float
+
+
+@dataclass(frozen=True)
+class SliceResult:
+    """A contact solved in face slices (the fields of a TEHL result that the levels read)."""
+
+    hc: float
+    hmin: float
+    pmax: float
+    hc_isothermal: float
+    dT_max: float
+    dT_surface: float
+    mu: float
+    error_estimate: dict
+    s: np.ndarray = field(repr=False)          #: slice centres along the contact line [m]
+    load: np.ndarray = field(repr=False)       #: load per length of each slice [N/m]
+    results: tuple = field(repr=False, default=())
+
+
+def slice_inputs(w: float, R: float, ue: float, srr: float, Rx: float, Ry: float, geo: SliceGeometry,
+                 E_red: float, count: int = SLICES):
+    """(s, w_j, R_j, ue_j, srr_j) of the ``count`` slices of a contact whose centre has load per length ``w``
+    [N/m], reduced radius ``R`` [m], entrainment ``ue`` [m/s], SRR ``srr`` (its sign or its magnitude: the side of
+    the pitch point is taken from the radius it reproduces) and ellipse radii ``Rx``, ``Ry`` [m]."""
+    cb, sb = math.cos(geo.beta_b), math.sin(geo.beta_b)
+    best = None
+    for sign in (1.0, -1.0):        # the side of the pitch point whose radii give R
+        v1, v2 = ue * (1 + sign * abs(srr) / 2), ue * (1 - sign * abs(srr) / 2)
+        r1, r2 = v1 / geo.omega1, v2 / geo.omega2
+        miss = abs(r1 * r2 / ((r1 + r2) * cb) / R - 1.0) if r1 > 0 and r2 > 0 else math.inf
+        if best is None or miss < best[0]:
+            best = (miss, r1, r2)
+    _, r1, r2 = best
+    L = geo.contact_length
+    crowned = geo.kappa > 0 and np.isfinite(Ry)
+    bH = hertz_point(w * L, Rx, Ry, E_red).b if crowned else math.inf
+    span = min(L, 2.0 * bH)         # the loaded part of the line
+    s = (np.arange(count) + 0.5) * span / count - span / 2
+    d = s * sb
+    lo = 1e-3 * min(r1, r2)
+    rho1, rho2 = np.maximum(r1 + d, lo), np.maximum(r2 - d, lo)
+    Rj = rho1 * rho2 / ((rho1 + rho2) * cb)
+    v1, v2 = geo.omega1 * rho1, geo.omega2 * rho2
+    uej = 0.5 * (v1 + v2)
+    srrj = (v1 - v2) / uej
+    shape = 1.0 - (s / bH) ** 2 if crowned else np.ones(count)
+    wj = shape * (w * L / (shape.sum() * span / count))     # the slices carry F = w L
+    return s, wj, Rj, uej, srrj
+
+
+def slice_contact(w: float, R: float, ue: float, srr: float, T: float, Rx: float, Ry: float, geo: SliceGeometry,
+                  setup, count: int = SLICES, **options) -> SliceResult:
+    """The contact as ``count`` line TEHL slices (module docstring); ``setup`` a
+    :class:`femgear.physics.tehl.solver.TEHLSetup`, ``options`` to :func:`femgear.physics.tehl.line.solve_tehl_line`."""
+    from femgear.physics.tehl.solver import tehl_path_results
+
+    s, wj, Rj, uej, srrj = slice_inputs(w, R, ue, srr, Rx, Ry, geo, setup.E_red, count)
+    rs = tehl_path_results(wj, Rj, uej, srrj, T, setup, **options)
+    force = sum(r.mu_couette * wi for r, wi in zip(rs, wj))     # per slice width: equal widths
+    mid = rs[count // 2]
+    est = [max(v for v in r.error_estimate.values() if v is not None) for r in rs]
+    return SliceResult(hc=mid.hc, hmin=min(r.hmin for r in rs), pmax=max(r.pmax for r in rs),
+                       hc_isothermal=mid.hc_isothermal, dT_max=max(r.dT_max for r in rs),
+                       dT_surface=max(r.dT_surface for r in rs), mu=abs(force) / float(np.sum(wj)),
+                       error_estimate={"hc": max(est), "hmin": max(est)}, s=s, load=wj, results=tuple(rs))
