@@ -2,7 +2,7 @@
 
 The scene's own validation (schema, input ranges, temperatures) is :func:`femgear.scene.load_scene`;
 what follows needs the pair and runs where the pair is bound: the tip speed against the rim's
-burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), the face-resolved wear's
+burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), an undercut member's warning, the face-resolved wear's
 needs, the TEHL levels' ranges, the pitch-line speed warning; the Hertz pressure warning needs the
 run's own contact pass (:func:`contact_warnings`, called by the driver after it).
 """
@@ -35,8 +35,10 @@ def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
     check_operating_limits(scene, pair)
     check_wear_field(scene, pair)
     check_lubrication_range(case)
+    from femgear.case.pair import undercut_warnings
+
     earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
-    return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair), earlier, warn))
+    return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair) + undercut_warnings(pair), earlier, warn))
 
 
 def check_lubrication_range(case: Case) -> None:

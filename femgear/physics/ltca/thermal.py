@@ -40,7 +40,7 @@ from __future__ import annotations
 import json
 import math
 import time
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -118,7 +118,7 @@ def thermal_units_3d(pair: GearPair, member: int, expansion: float, youngs_modul
     spec = body_spec(pair, member, level, bore_radius, groove, stagger)
     from femgear.physics.mesh.segment import mesh_revision
 
-    payload = {"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
+    payload = {"v": CACHE_VERSION, "pair": pair.identity(), "member": member, "spec": spec.key(),
                "E": youngs_modulus, "nu": poisson_ratio, "expansion": expansion, "grid": [n_rho, n_z]}
     if mesh_revision(pair, member, spec) is not None:     # the far-field rule or the graded groove changed the mesh
         payload["mesh"] = mesh_revision(pair, member, spec)
