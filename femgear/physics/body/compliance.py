@@ -46,23 +46,42 @@ def section_size(pair: GearPair, level: int = 1) -> float:
     return pair.m_n / (3 + level)
 
 
+def section_dofs(mesh, order: int) -> int:
+    """Unknowns of a plane vector P``order`` model on the section ``mesh``."""
+    return 2 * (mesh.p.shape[1] + (mesh.facets.shape[1] if order == 2 else 0))
+
+
 def section_estimate(mesh, order: int, member: int, n_positions: int) -> Estimate:
     """Expected DOF, memory and time of one member's ``fe`` compliance: SuperLU (COLAMD) on the 2-D section,
-    fitted on this 2-core machine (docs/cost.md): 0.3 GB + 3 kB per DOF, 20 µs per DOF plus 3 µs per DOF
-    and path position."""
-    n_nodes = mesh.p.shape[1] + (mesh.facets.shape[1] if order == 2 else 0)
-    dofs = 2 * n_nodes
+    fitted on this 2-core machine (``python studies/benchmarks/estimates.py``, five zoo pairs, docs/cost.md):
+    the process's 0.13 GB + 3.7 kB per DOF; 40 µs per DOF plus 3 µs per DOF and path position (measured
+    CPU / estimate 0.8–1.2, peak memory / estimate 0.97–1.03 at 10–18 k DOF)."""
+    dofs = section_dofs(mesh, order)
     return Estimate(f"fe stiffness, {'pinion' if member == 1 else 'gear'} section (P{order})", dofs,
-                    0.3e9 + 3.0e3 * dofs, 2e-5 * dofs + 3e-6 * dofs * n_positions)
+                    0.13e9 + 3.7e3 * dofs, 4e-5 * dofs + 3e-6 * dofs * n_positions)
+
+
+def coarser_fits(estimate: Estimate, level: int, budget: float) -> str:
+    """The finest coarser ``fe`` level whose section fits ``budget`` [B] (the DOF scale as (3 + level)², h being
+    m_n/(3 + level)), or the mesh-size key when none does."""
+    for k in range(level - 1, -1, -1):
+        dofs = estimate.dofs * ((3 + k) / (3 + level)) ** 2
+        if 0.13e9 + 3.7e3 * dofs <= budget:
+            return f"numerics.body_level = {k} fits (about {dofs / 1e3:.0f} k DOF)"
+    return "no body level fits: give a larger stiffness.fe_mesh_size"
 
 
 class ToothFE:
-    """One member's FE model, reused for all load positions."""
+    """One member's FE model, reused for all load positions.
+
+    ``support``: ``"clamped"`` (the bore held: a body on a rigid shaft, the default) or ``"distributed"`` (the
+    bore's mean rigid motion held, :meth:`ElasticProblem.tie`: a rim that deforms on a flexible web or hub;
+    ``studies/body/thin_rim.py``)."""
 
     def __init__(self, pair: GearPair, member: int, youngs_modulus: float, poisson_ratio: float,
                  h: float | None = None, n_teeth: int | None = None, bore_radius: float = 0.0,
                  plane: str = "strain", order: int = 2, refine_ratio: float = 0.5, solver: str = "lu",
-                 level: int = 1, grade: float | None = GRADE, n_positions: int = 9):
+                 level: int = 1, grade: float | None = GRADE, n_positions: int = 9, support: str = "clamped"):
         from femgear.physics.mesh.section import gear_section
 
         t0 = time.perf_counter()
@@ -77,10 +96,14 @@ class ToothFE:
                                  refine_ratio=refine_ratio, refine_radius=1.2 * (ra - rf), grade=far)
         self.mesh_seconds = time.perf_counter() - t0
         self.estimate = section_estimate(self.mesh, order, member, n_positions)
-        announce(self.estimate, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level or "
-                                                                      "a larger stiffness.fe_mesh_size")
+        announce(self.estimate, "numerics.body_level", lambda budget: coarser_fits(self.estimate, level, budget))
         self.problem = ElasticProblem(self.mesh, youngs_modulus, poisson_ratio, plane, order=order, solver=solver)
-        self.problem.fix(self.problem.boundary_dofs("bore"), 0.0)
+        if support == "clamped":
+            self.problem.fix(self.problem.boundary_dofs("bore"), 0.0)
+        elif support == "distributed":          # the bore's mean rigid motion held (a rim on a flexible web)
+            self.problem.tie("bore")
+        else:
+            raise ValueError(f"support must be 'clamped' or 'distributed', got {support!r}")
         self.solve_seconds = 0.0
         # flank facets of the middle tooth, +x side
         f = self.mesh.boundaries["flank"]

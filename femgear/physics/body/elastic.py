@@ -72,6 +72,7 @@ class ElasticProblem:
         self._D = np.zeros(0, dtype=np.int64)
         self._uD = np.zeros(0)
         self._ml = None
+        self._C = None
 
     # ---- constraints ----
     def fix(self, dofs: np.ndarray, values: np.ndarray | float = 0.0) -> None:
@@ -81,6 +82,32 @@ class ElasticProblem:
         keep = ~np.isin(self._D, dofs)
         self._D = np.concatenate([self._D[keep], dofs])
         self._uD = np.concatenate([self._uD[keep], vals])
+        self._ml = None
+
+    def tie(self, name: str) -> None:
+        """Hold the mean rigid motion of boundary ``name`` at zero: ∫ u_x ds = ∫ u_y ds = ∫ (x u_y − y u_x) ds = 0
+        (Lagrange multipliers; ``solver='lu'``).  The distributing coupling of FE codes (an RBE3 element): the
+        boundary carries the body's reactions as a uniform force and a uniform shear flow and deforms freely
+        otherwise — a rim on a flexible web or hub, where clamping (:meth:`fix`) is a rim on a rigid shaft."""
+        from skfem import FacetBasis, LinearForm
+
+        if self.solver != "lu":
+            raise ValueError("tie needs solver='lu' (a bordered, indefinite system)")
+        fb = FacetBasis(self.mesh, self.basis.elem, facets=self.mesh.boundaries[name])
+
+        @LinearForm
+        def tx(v, w):
+            return v[0]
+
+        @LinearForm
+        def ty(v, w):
+            return v[1]
+
+        @LinearForm
+        def rot(v, w):
+            return w.x[0] * v[1] - w.x[1] * v[0]
+
+        self._C = np.vstack([form.assemble(fb) for form in (tx, ty, rot)])
         self._ml = None
 
     def boundary_dofs(self, name: str, component: str | None = None) -> np.ndarray:
@@ -104,7 +131,13 @@ class ElasticProblem:
         Kff = self.K[free][:, free].tocsr()
         self._Kff = Kff
         self._KfD = self.K[free][:, self._D].tocsr()
-        if self.solver == "lu":
+        if self.solver == "lu" and self._C is not None:
+            from scipy.sparse import bmat, csr_matrix
+            from scipy.sparse.linalg import splu
+
+            Cf = csr_matrix(self._C[:, free])
+            self._ml = splu(bmat([[Kff, Cf.T], [Cf, None]]).tocsc())
+        elif self.solver == "lu":
             from scipy.sparse.linalg import splu
 
             self._ml = splu(Kff.tocsc())
@@ -120,7 +153,13 @@ class ElasticProblem:
         t0 = time.perf_counter()
         rhs = f[self._free] - self._KfD @ self._uD
         hist: list[float] = []
-        if self.solver == "lu":
+        if self.solver == "lu" and self._C is not None:
+            n_c = self._C.shape[0]
+            xl = self._ml.solve(np.concatenate([rhs, -self._C[:, self._D] @ self._uD]))
+            x, lagrange = xl[:-n_c], xl[-n_c:]
+            r0 = np.linalg.norm(rhs)
+            hist = [r0, np.linalg.norm(self._Kff @ x + self._C[:, self._free].T @ lagrange - rhs)]
+        elif self.solver == "lu":
             x = self._ml.solve(rhs)
             r0 = np.linalg.norm(rhs)
             hist = [r0, np.linalg.norm(self._Kff @ x - rhs)]
