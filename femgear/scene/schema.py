@@ -108,9 +108,12 @@ class Member(_Frozen):
                                      "without the shaft, as mass) [kg m^2]")
     bore_radius: NonNeg = Field(
         0.0, description="inner radius of the gear body, where it sits on the shaft (usually shaft_diameter/2) [m]: "
-                         "the thermal models hold the bore at shaft_temperature_rise there, the LTCA member body is "
-                         "clamped there. 0 = not given: the analytic and FE thermal levels take half the root radius, "
-                         "the LTCA body half the shaft_diameter")
+                         "the thermal models hold the bore at shaft_temperature_rise there, the FE bodies are "
+                         "clamped there; the rim below the root circle must be at least 0.5 h_t (ISO 6336-3's limit, "
+                         "h_t the tooth depth). 0 = no bore, the member is cut on its shaft (a pinion shaft, a solid "
+                         "pinion): the analytic and FE thermal levels take half the root radius, the LTCA body is "
+                         "clamped at half the shaft_diameter but at least 1.2 h_t below the root, the rating takes "
+                         "no rim factor")
     support_stiffness: Pos = Field(
         description="bearing stiffness of the WHOLE member (the sum of its two bearings) in each direction x, y "
                     "and, without axial_stiffness, z [N/m]; each of the two bearings at ±bearing_span/2 gets half")

@@ -69,6 +69,9 @@ def test_the_scene_refuses_a_thin_rim_up_front_in_one_line(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2 and len(err) == 1 and err[0].startswith("femgear: error: gear.bore_radius: ")
     assert "0.5 h_t" in err[0] and not out.exists()
+    thinnest = float(err[0].split("the thinnest rim that runs has bore_radius ≤ ")[1].split(" mm")[0]) * 1e-3
+    scene.write_text(text.replace("[gear]", f"[gear]\nbore_radius = {thinnest!r}", 1))
+    assert main(["info", str(scene)]) == 0                    # the figure the message names runs
 
 
 def test_a_pinion_cut_on_its_shaft_is_clamped_at_least_a_thick_rim_deep():

@@ -221,7 +221,7 @@ def check_rim(pair: GearPair, member: int, r_bore: float) -> None:
             f"bore_radius={r_bore * 1e3:.4g} mm leaves a rim s_R = {(rf - r_bore) * 1e3:.4g} mm = "
             f"{(rf - r_bore) / (ra - rf):.3g} h_t below the root circle, under ISO 6336-3's lower limit "
             f"{MIN_RIM:g} h_t (h_t = {(ra - rf) * 1e3:.4g} mm); the thinnest rim that runs has bore_radius ≤ "
-            f"{limit * 1e3:.4g} mm")
+            f"{math.floor(limit * 1e6) / 1e3:g} mm")       # rounded down to the µm: the figure itself runs
 
 
 def shaft_clamp_radius(pair: GearPair, member: int, shaft_radius: float) -> float:

@@ -91,7 +91,7 @@ def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, 
     h_tooth = m_n / (2 + level), at most half the tip width but never below :data:`TIP_FLOOR` of m_n / (2 + level)
     (module units: a narrower tip, a pointed one of a high addendum modification, gets its own size near the
     tip circles, :func:`femgear.physics.mesh.section.tip_size`, instead of refining the whole body; the FZG A
-    pinion's 0.13 m_n tip would give 30 to 60 times the DOF); the other teeth are capped alike; layers ≈
+    pinion's 0.13 m_n tip would give 26 to 29 times the nodes); the other teeth are capped alike; layers ≈
     b / (1.6 h_tooth) per helix.
     """
     if level < 0:
