@@ -71,19 +71,42 @@ def coarser_fits(estimate: Estimate, level: int, budget: float) -> str:
     return "no body level fits: give a larger stiffness.fe_mesh_size"
 
 
+def _web_layout(pair: GearPair, member: int, bore: float, web: tuple[float, float, float], h: float,
+                refine_ratio: float, far: tuple | None):
+    """(split radius, grade) of a section with a web ``web`` = (b_s/b, r_hub, r_rim) above the bore [m]: the rim
+    above r_rim is checked against ISO 6336-3's 0.5 h_t, embedded as a circle and gets its thin-rim size
+    (:func:`femgear.physics.mesh.section.rim_size`) all round, the web too."""
+    from femgear.physics.mesh.section import check_rim, rim_size
+
+    thickness, hub, rim = web
+    if not (0 < thickness <= 1 and bore <= hub < rim):
+        raise ValueError(f"web = (b_s/b, r_hub, r_rim) = {web!r} needs 0 < b_s/b ≤ 1 and bore ≤ r_hub < r_rim "
+                         f"(bore {bore * 1e3:.4g} mm)")
+    check_rim(pair, member, rim)
+    thin = rim_size(pair, member, rim)
+    if thin is not None and far is not None:
+        far = (far[0], min(far[1], max(thin, h * refine_ratio))) + tuple(far[2:])
+    return rim, far
+
+
 class ToothFE:
     """One member's FE model, reused for all load positions.
 
     ``support``: ``"clamped"`` (the bore held: a body on a rigid shaft, the default) or ``"distributed"`` (the
-    bore's mean rigid motion held, :meth:`ElasticProblem.tie`: a rim that deforms on a flexible web or hub;
-    ``studies/body/thin_rim.py``)."""
+    bore's mean rigid motion held, :meth:`ElasticProblem.tie`: a free ring, the softest support).  ``web`` =
+    (b_s/b, r_hub, r_rim): a webbed gear, the annulus r_hub < r < r_rim a central web b_s/b of the face width
+    thick (plane stress), the rim above r_rim checked against ISO 6336-3's 0.5 h_t and meshed as a thin rim
+    (``studies/body/thin_rim.py``)."""
 
     def __init__(self, pair: GearPair, member: int, youngs_modulus: float, poisson_ratio: float,
                  h: float | None = None, n_teeth: int | None = None, bore_radius: float = 0.0,
                  plane: str = "strain", order: int = 2, refine_ratio: float = 0.5, solver: str = "lu",
-                 level: int = 1, grade: float | None = GRADE, n_positions: int = 9, support: str = "clamped"):
+                 level: int = 1, grade: float | None = GRADE, n_positions: int = 9, support: str = "clamped",
+                 web: tuple[float, float, float] | None = None):
         from femgear.physics.mesh.section import gear_section
 
+        if support not in ("clamped", "distributed"):
+            raise ValueError(f"support must be 'clamped' or 'distributed', got {support!r}")
         t0 = time.perf_counter()
         self.pair, self.member = pair, member
         rf = pair.rf1 if member == 1 else pair.rf2
@@ -92,18 +115,25 @@ class ToothFE:
         ra = pair.ra1 if member == 1 else pair.ra2
         centre = (0.0, 0.5 * (rf + ra))
         far = None if grade is None else (grade, max(4.0 * self.h, FAR_FRACTION * (rf - rbore)), 3)
+        split = None
+        if web is not None:
+            split, far = _web_layout(pair, member, rbore, web, self.h, refine_ratio, far)
         self.mesh = gear_section(pair, member, self.h, n_teeth=n_teeth, bore_radius=rbore, refine_at=centre,
-                                 refine_ratio=refine_ratio, refine_radius=1.2 * (ra - rf), grade=far)
+                                 refine_ratio=refine_ratio, refine_radius=1.2 * (ra - rf), grade=far,
+                                 split_radius=split)
         self.mesh_seconds = time.perf_counter() - t0
         self.estimate = section_estimate(self.mesh, order, member, n_positions)
         announce(self.estimate, "numerics.body_level", lambda budget: coarser_fits(self.estimate, level, budget))
-        self.problem = ElasticProblem(self.mesh, youngs_modulus, poisson_ratio, plane, order=order, solver=solver)
-        if support == "clamped":
-            self.problem.fix(self.problem.boundary_dofs("bore"), 0.0)
-        elif support == "distributed":          # the bore's mean rigid motion held (a rim on a flexible web)
+        thin = None
+        if web is not None:                     # the web: the elements between the hub and the rim
+            r = np.hypot(*self.mesh.p[:, self.mesh.t].mean(axis=1))
+            thin = ((r > web[1]) & (r < web[2]), web[0])
+        self.problem = ElasticProblem(self.mesh, youngs_modulus, poisson_ratio, plane, order=order, solver=solver,
+                                      thin=thin)
+        if support == "distributed":            # the bore's mean rigid motion held (a free ring)
             self.problem.tie("bore")
-        else:
-            raise ValueError(f"support must be 'clamped' or 'distributed', got {support!r}")
+        else:                                   # the bore (the hub of a web) held
+            self.problem.fix(self.problem.boundary_dofs("bore"), 0.0)
         self.solve_seconds = 0.0
         # flank facets of the middle tooth, +x side
         f = self.mesh.boundaries["flank"]

@@ -30,6 +30,19 @@ def rigid_body_modes(basis) -> np.ndarray:
     return B
 
 
+def _thin_part(basis, lam: float, mu: float, stress: tuple[float, float], mask: np.ndarray, thickness: float):
+    """Per-element Lamé constants (n_elements, n_quadrature points): (λ, μ) outside ``mask``, ``thickness`` times
+    the plane-stress ``stress`` = (λ*, μ) inside it."""
+    mask = np.asarray(mask, bool)
+    if mask.shape != (basis.mesh.t.shape[1],):
+        raise ValueError(f"thin: the mask needs one entry per element ({basis.mesh.t.shape[1]}), got {mask.shape}")
+    if not 0 < thickness <= 1:
+        raise ValueError(f"thin: the relative thickness must lie in (0, 1], got {thickness!r}")
+    ones = np.ones((1, basis.X.shape[1]))
+    return (np.where(mask, thickness * stress[0], lam)[:, None] * ones,
+            np.where(mask, thickness * stress[1], mu)[:, None] * ones)
+
+
 @dataclass
 class SolveInfo:
     iterations: int
@@ -43,12 +56,16 @@ class ElasticProblem:
 
     ``fixed`` maps DOF indices to prescribed values (dict or (idx, values));
     ``rollers`` names boundaries with zero normal displacement (penalty κ = 1e4 E/h).
+    ``thin`` = (element mask, relative thickness t): those elements are a thinner part of the section, a web
+    between a rim and its hub, in plane stress with t times the stiffness (a 2-D model of a disc of varying
+    thickness: the in-plane stiffness per unit area is the thickness times the plane-stress one).
     The hierarchy (``solver='amg'``) or the sparse LU factors (``solver='lu'``, for 2-D
     problems with many load cases) are built lazily on the first solve and reused.
     """
 
     def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, plane: str,
-                 order: int = 2, rollers: tuple[str, ...] = (), penalty: float = 1e4, solver: str = "amg"):
+                 order: int = 2, rollers: tuple[str, ...] = (), penalty: float = 1e4, solver: str = "amg",
+                 thin: tuple[np.ndarray, float] | None = None):
         from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, FacetBasis
 
         if solver not in ("amg", "lu"):
@@ -61,6 +78,8 @@ class ElasticProblem:
         self.order = order
         self.basis = Basis(mesh, ElementVector(elem))
         lam, mu = lame(youngs_modulus, poisson_ratio, plane)
+        if thin is not None:
+            lam, mu = _thin_part(self.basis, lam, mu, lame(youngs_modulus, poisson_ratio, "stress"), *thin)
         K = elasticity(lam, mu).assemble(self.basis)
         if rollers:
             facets = np.concatenate([mesh.boundaries[name] for name in rollers])
