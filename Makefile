@@ -8,7 +8,7 @@ OUT     ?= out
 export OPENBLAS_NUM_THREADS ?= 1
 export OMP_NUM_THREADS ?= 1
 
-.PHONY: demo test test-slow bench docs validation clean sysdeps cholmod
+.PHONY: demo test test-slow bench docs gallery validation clean sysdeps cholmod
 
 $(STAMP): pyproject.toml
 	@$(MAKE) --no-print-directory sysdeps
@@ -19,12 +19,15 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 # System libraries, installed when missing (root + apt only): gmsh's shared library needs a few X/GL
-# libraries; SuiteSparse (CHOLMOD, METIS) and OpenBLAS for scikit-sparse (target cholmod).
-SYSPKG := libglu1-mesa libxcursor1 libxft2 libxinerama1 libgl1 libsuitesparse-dev libopenblas0-pthread
+# libraries; SuiteSparse (CHOLMOD, METIS) and OpenBLAS for scikit-sparse (target cholmod); EGL with Mesa's
+# software renderer for the gallery's off-screen pyvista pictures (docs/gen/render.py; no display needed).
+SYSPKG := libglu1-mesa libxcursor1 libxft2 libxinerama1 libgl1 libsuitesparse-dev libopenblas0-pthread \
+          libegl1 libegl-mesa0 libgl1-mesa-dri
 sysdeps:
 	@if command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ] && \
-		{ ! ldconfig -p | grep -q libGLU.so.1 || [ ! -f /usr/include/suitesparse/cholmod.h ]; }; then \
-		echo "installing system libraries (gmsh, SuiteSparse, OpenBLAS)"; \
+		{ ! ldconfig -p | grep -q libGLU.so.1 || [ ! -f /usr/include/suitesparse/cholmod.h ] || \
+		  ! ldconfig -p | grep -q libEGL_mesa.so.0; }; then \
+		echo "installing system libraries (gmsh, SuiteSparse, OpenBLAS, EGL)"; \
 		apt-get update -qq && apt-get install -y -qq $(SYSPKG) >/dev/null; \
 	fi
 
@@ -55,10 +58,16 @@ test: $(STAMP)
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -m slow
 
-# the docs site (mkdocs.yml): warnings are errors; open $(OUT)/site/index.html
+# the docs site (mkdocs.yml): warnings are errors; open $(OUT)/site/index.html.  First the gallery's stale
+# figures are remade (docs/gen/gallery.py: none when its inputs did not change, a few seconds to check;
+# each stale command 10-90 s, all of them 4-6 minutes on 2 shared cores); `make gallery` remakes every figure.
 docs: $(STAMP)
+	@$(BIN)/python docs/gen/gallery.py || echo "docs: some gallery figures could not be remade (above): the site shows the committed ones"
 	$(BIN)/mkdocs build --strict --site-dir $(OUT)/site
 	@echo "docs: $(OUT)/site/index.html"
+
+gallery: $(STAMP)
+	$(BIN)/python docs/gen/gallery.py --all
 
 # every table of the docs' validation pages, regenerated from the studies (long: well over half an hour on 2 cores;
 # outputs and figures in $(OUT)/<study>/; docs/validation/speed-accuracy.md is rewritten, the zoo table written to $(OUT)/zoo_matrix/table.md)

@@ -10,7 +10,8 @@ the DOF, memory and time is logged (INFO, i.e. ``-v``; at :data:`NOTICE`, shown 
 it exceeds :data:`LONG_STAGE_SECONDS`), and a memory estimate over :func:`memory_budget` raises
 :class:`femgear.errors.ResourceError` naming the scene key and the level that fits — the
 mechanism ``femgear ehl --level`` uses (:mod:`femgear.edge.cli.limits`).  :class:`Progress` logs
-"done/total" lines for stages over :data:`PROGRESS_SECONDS`.  :func:`interruptible` runs a stage in a
+"done/total" lines for stages over :data:`PROGRESS_SECONDS`, shown by default once a stage has run
+:data:`LONG_STAGE_SECONDS` (the LTCA contact cycle, the coupling passes, the wear integration).  :func:`interruptible` runs a stage in a
 forked child, so that Ctrl-C is taken at once even inside a long compiled call that holds the
 interpreter lock (CHOLMOD's factorisation).
 """
@@ -101,21 +102,32 @@ def announce(estimate: Estimate, argument: str, fits: Callable[[float], str] | N
 
 
 class Progress:
-    """``progress(done)``: a "stage: done/total" line once the stage has run :data:`PROGRESS_SECONDS`, then at
-    most one per that interval and one at the end (NOTICE when ``expected_seconds`` is long, else INFO)."""
+    """``progress(done, detail="")``: a "stage: done/total" line (with ``total`` None: "stage: detail") once the stage
+    has run :data:`PROGRESS_SECONDS`, then at most one per that interval and one at the end.
 
-    def __init__(self, stage: str, total: int, expected_seconds: float = 0.0):
+    The lines are NOTICE (shown without ``-v``) when ``expected_seconds`` is long, and also once the stage has in
+    fact run :data:`LONG_STAGE_SECONDS`, whatever was expected (a stage whose bodies came from the cache, a
+    coupling loop that takes more passes), then at most one per that interval; INFO otherwise."""
+
+    def __init__(self, stage: str, total: int | None, expected_seconds: float = 0.0):
         self.stage, self.total = stage, total
-        self.level = NOTICE if expected_seconds > LONG_STAGE_SECONDS else logging.INFO
+        self.long = expected_seconds > LONG_STAGE_SECONDS
         self.start = self.last = time.perf_counter()
 
-    def __call__(self, done: int) -> None:
+    def __call__(self, done: int, detail: str = "") -> None:
         now = time.perf_counter()
-        if now - self.start < PROGRESS_SECONDS:
+        ran = now - self.start
+        if ran < PROGRESS_SECONDS:
             return
-        if now - self.last >= PROGRESS_SECONDS or done >= self.total:
-            self.last = now
-            log.log(self.level, f"{self.stage}: {done}/{self.total} ({now - self.start:.0f} s)")
+        notice = self.long or ran >= LONG_STAGE_SECONDS
+        interval = PROGRESS_SECONDS if self.long or not notice else LONG_STAGE_SECONDS
+        finished = self.total is not None and done >= self.total
+        if now - self.last < interval and not finished:
+            return
+        self.last = now
+        count = f"{done}/{self.total}" if self.total is not None else ""
+        text = ", ".join(part for part in (count, detail) if part)
+        log.log(NOTICE if notice else logging.INFO, f"{self.stage}: {text} ({ran:.0f} s)")
 
 
 @dataclass(frozen=True)

@@ -30,10 +30,11 @@ from femgear.case import Case
 from femgear.case.checks import contact_warnings
 from femgear.levels import coupling as coupling_levels
 from femgear.levels import dynamics as dynamics_levels
+from femgear.levels import housing as housing_levels
 from femgear.levels import stiffness as stiffness_levels
 from femgear.levels import wear as wear_levels
 from femgear.levels.contact import contact_pass
-from femgear.levels.lubrication import Lubrication, friction_along_path, lubrication_solver
+from femgear.levels.lubrication import Lubrication, bulk_temperature, friction_along_path, lubrication_solver
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.results import RunResult, Tribology
@@ -53,6 +54,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
              wear_checkpoint: Path | None = None) -> RunResult:
     """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
     t0 = time.perf_counter()
+    housing_levels.of(case)        # the housing first (built once, cached): its bad input fails before any work
     stiffness = stiffness_levels.of(case)
     contact = contact_pass(case, stiffness=stiffness)
     contact_warnings(case, float(contact.hertz_pressure.max()))     # the scene's plausibility, on the run's pass
@@ -60,13 +62,15 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
     if not dynamics_levels.spec(case.levels.dynamics).is_dynamic:
         lubrication = lubrication_solver(case)
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint, lubrication)
-        tribology = replace(tribology, film=lubrication.film(tribology.load_per_length))
+        tribology = replace(tribology, film=lubrication.film(tribology.load_per_length,
+                                                             bulk_temperature(case, tribology.flank_temperature_rise)))
         return derived_fields(RunResult(case, contact, stiffness, tribology, seconds=time.perf_counter() - t0,
-                                        transmission_error=te, rating=case_rating(case, contact, tribology)))
+                                        transmission_error=te, rating=case_rating(case, contact, tribology,
+                                                                                  stiffness)))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
     coupled = run_coupled(setup, one_way=not coupling_levels.spec(case.levels.coupling).iterates, progress=progress)
     st = coupled.state
-    worn, lubricated = wear_levels.has_wear(case), setup.lubrication.friction
+    worn, lubricated = setup.wear is not None, setup.lubrication.friction
     tribology = Tribology(
         load_per_length=st.load_per_length,
         friction_coefficient=st.mu if lubricated else None,
@@ -74,11 +78,13 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         flank_temperature_rise=st.flank_temperature_rise,
         thermal_deviation=st.thermal_deviation if setup.thermal is not None else None,
         wear=st.wear if worn else None, wear_cycles=case.wear.cycles,
+        **wear_regime(setup.wear if worn else None, st.load_per_length),
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if worn else None, st.thermal_face),
-        film=setup.lubrication.film(st.load_per_length))
+        film=setup.lubrication.film(st.load_per_length, bulk_temperature(case, st.flank_temperature_rise)))
     return derived_fields(RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
-                                    transmission_error=te, rating=case_rating(case, contact, tribology)))
+                                    transmission_error=te,
+                                    rating=case_rating(case, contact, tribology, stiffness, st.amplitudes or None)))
 
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
@@ -92,15 +98,18 @@ def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 
     return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, op.torque, n_harmonics)
 
 
-def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
+def case_rating(case: Case, contact: ContactPath, tribology: Tribology, stiffness: MeshStiffness | None = None,
+                amplitudes=None):
     """The four ISO ratings with femgear's contact temperature and film of the run's lubrication level beside them
-    (defaults and range flags in results.json, logged at INFO); None (logged) when a rating input is
-    outside what the standards can compute (e.g. a rim too thin)."""
+    (defaults and range flags in results.json, logged at INFO), their K_v from the dynamics' ``amplitudes`` and
+    K_Hβ, K_Hα from the ``stiffness`` level's LTCA cycle where the run computed them (:func:`femgear.rate.rating_factors`);
+    None (logged) when a rating input is outside what the standards can compute (e.g. a rim too thin)."""
     from femgear.rate import rate_case
 
+    physics = {"amplitudes": amplitudes, "cycle": None if stiffness is None else stiffness.ltca}
     try:
         return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
-                         tribology.film, case=case)
+                         tribology.film, case=case, physics=physics)
     except ValueError as exc:
         logging.getLogger("femgear.physics.rating").warning("rating: not computed: %s", exc)
         return None
@@ -109,14 +118,16 @@ def case_rating(case: Case, contact: ContactPath, tribology: Tribology):
 def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness | None = None,
                      wear_checkpoint: Path | None = None, lubrication: Lubrication | None = None) -> Tribology:
     """Friction, thermal deviation and wear once, at the static load: friction at the contact
-    pass's shared line load w(u) (:mod:`femgear.physics.contact.sharing`), wear with the load shared
+    pass's shared line load w(u) (:mod:`femgear.physics.contact.sharing`) and the flanks' bulk temperature
+    (the supply temperature plus ``thermal.flank_temperature_rise``), wear with the load shared
     along the contact lines by the local pair stiffness (:func:`line_stiffness`), with ``ltca`` as the
     LTCA cycle shares it (:func:`ltca_reference`); ``lubrication``: the case's level (default: built here)."""
     w = np.asarray(contact.line_load, dtype=float)      # load sharing between the pairs in contact
     mu = dT = zeta = wear = None
     lubrication = lubrication or lubrication_solver(case)
     if lubrication.friction:
-        mu, dT = friction_along_path(case, w, lubrication)
+        T = np.full(case.path.u.shape, bulk_temperature(case, case.thermal.flank_temperature_rise))
+        mu, dT = friction_along_path(case, w, lubrication, T)
     units = thermal_units(case)
     if units is not None:
         zeta = units.deviation(case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)
@@ -147,8 +158,21 @@ def static_tribology(case: Case, contact: ContactPath, stiffness: MeshStiffness 
         cycles, steps = state.cycles, state.steps
     return Tribology(load_per_length=w, friction_coefficient=mu, temperature_rise=dT,
                      flank_temperature_rise=case.thermal.flank_temperature_rise, thermal_deviation=zeta, wear=wear,
-                     wear_cycles=cycles, wear_steps=steps,
+                     wear_cycles=cycles, wear_steps=steps, **wear_regime(wear_model, w),
                      **face_fields(case, units, case.thermal.flank_temperature_rise, **faces))
+
+
+def wear_regime(wear_model, load_per_length: np.ndarray) -> dict:
+    """The :class:`Tribology` wear-regime fields of ``wear_model`` (an ``ArchardWear`` or None) at the run's load
+    ``load_per_length``; its warnings are logged."""
+    if wear_model is None:
+        return {}
+    r = wear_model.regime(load_per_length)
+    warnings = wear_model.warnings(load_per_length)
+    for text in warnings:
+        logging.getLogger("femgear.physics.wear").warning(text)
+    return {"wear_load": wear_model.load, "wear_film_parameter": None if r is None else r.film_parameter_min,
+            "wear_asperity_share": None if r is None else r.share_max, "wear_warnings": warnings}
 
 
 def face_fields(case: Case, units: ThermalUnits | None, rise: float, grid: np.ndarray | None = None,

@@ -24,6 +24,7 @@ from femgear.physics.rating.suite import PairRating
 from femgear.physics.stiffness.iso6336 import IsoStiffness
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.system.coupling.loop import CoupledResult
+from femgear.system.dynamics.housing_result import HousingResult
 
 
 @document_fields
@@ -50,6 +51,17 @@ class Tribology:
     """pinion revolutions of accumulated wear [rev]"""
     wear_steps: int = 0
     """update steps the wear integration took [-]"""
+    wear_load: str | None = None
+    """the load that wore, ``wear.load``: "asperity" (the asperity-borne part) or "total" (the whole load; None: wear
+    off) [-]"""
+    wear_film_parameter: float | None = None
+    """smallest film parameter λ = h/σ along the path at ``load_per_length``, of the JGP split the asperity-borne
+    wear takes (None: wear off) [-]"""
+    wear_asperity_share: float | None = None
+    """largest share of the load the asperities carry along the path at ``load_per_length`` (None: wear off) [-]"""
+    wear_warnings: tuple[str, ...] = ()
+    """what the wear result does not support, one ``key: message`` each (the constant-coefficient form on a pair
+    whose film carries the load) [-]"""
     face_grid: np.ndarray | None = None
     """(m,) face coordinate ζ of the face-resolved fields, 0 … b of each helix (``wear.field = "face"`` or ``thermal =
     "fe3d"``; else None) [m]"""
@@ -86,6 +98,9 @@ class ContactFigures:
     power_loss: MeshPowerLoss
     """mesh power loss of μ(u) of ``friction_level`` at the contact pass's line load (its fields carry
     their units) [-]"""
+    power_loss_iso: MeshPowerLoss | None = None
+    """the same mesh power loss with ISO/TS 6336-20's constant μ_mC instead of femgear's μ(u), beside it (None: no
+    rating) [-]"""
 
 
 @document_fields
@@ -122,6 +137,14 @@ class RunResult:
     """``stiffness = "ltca"``: the LTCA's pressure and load maps on the loaded flanks of both members in
     mesh (:func:`femgear.physics.ltca.maps.load_maps`, the stiffness level's cycle; ``w_worst`` at the phase
     of the largest pressure) [-]"""
+    static_bearing_loads: np.ndarray | None = None
+    """without a dynamics level: (4, 3) loads of the bearing stations (pinion_L, pinion_R, gear_L, gear_R; x, y
+    radial, z axial) at the static load, on the scene's mounting with rigid shafts and no friction
+    (:func:`femgear.stages.static_bearings`); with dynamics the dynamic run's own loads are in ``coupled`` [N]"""
+    housing: HousingResult | None = None
+    """with ``[housing]``: sensor accelerations, bearing and mesh forces and (FE) radiated power per mesh order over
+    speed and at the operating point, and the FE housing's deflection shape
+    (:func:`femgear.stages.housing_fields`; docs/models/housing.md) [-]"""
 
 
 #: types reachable from :class:`RunResult` whose fields are inputs documented elsewhere (the Case and its gear pair:

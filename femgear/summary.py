@@ -133,6 +133,26 @@ def power_loss_summary(loss: MeshPowerLoss, level: str) -> dict[str, Any]:
     }
 
 
+def oil_summary(case) -> dict[str, Any]:
+    """The oil as the run used it: at the supply temperature (η0, α, β_T, ρ0 there, :func:`femgear.case.oil.oil_at`),
+    its library name and the source of each data group; ``unsourced`` lists the groups resting on no published
+    source (:func:`femgear.scene.oils.oil_provenance`)."""
+    from femgear.scene.oils import oil_provenance
+
+    oil = case.oil
+    return {**oil_provenance(case.scene.oil), "supply_temperature": oil.reference_temperature,
+            "viscosity": oil.viscosity, "pressure_viscosity": oil.pressure_viscosity,
+            "temperature_viscosity": oil.temperature_viscosity, "density": oil.density,
+            "eyring_stress": oil.eyring_stress, "limiting_shear_coeff": oil.limiting_shear_coeff}
+
+
+def roughness_summary(case) -> dict[str, Any]:
+    """The flanks' roughness both the ratings and the tribology read (:func:`femgear.scene.roughness.flank_roughness`)."""
+    f = case.flanks
+    return {"ra": list(f.ra), "rq": list(f.rq), "sigma": f.sigma, "model": f.model, "source": f.source,
+            "finishing": f.finishing}
+
+
 def scene_summary(case, contact: ContactPath, figures: ContactFigures, ratings: PairRating | None = None
                   ) -> dict[str, Any]:
     """Geometry, contact, ISO 6336-2 rating, ISO 6336-1 stiffness, flash temperature and mesh power loss of a case
@@ -146,8 +166,32 @@ def scene_summary(case, contact: ContactPath, figures: ContactFigures, ratings: 
         "rating": rating_summary(figures.pitting),
         "stiffness_iso6336": stiffness_summary(figures),
         "flash_temperature": flash_summary(figures),
+        "oil": oil_summary(case),
+        "roughness": roughness_summary(case),
     }
     if ratings is not None:
         out.update(pair_rating_summary(ratings))
     out["power_loss"] = power_loss_summary(figures.power_loss, figures.friction_level)
+    if ratings is not None and figures.power_loss_iso is not None:
+        out["beside_iso"] = beside_iso_summary(figures, ratings)
     return out
+
+
+def beside_iso_summary(figures: ContactFigures, ratings: PairRating) -> dict[str, Any]:
+    """femgear's own friction, contact temperature and mesh power loss beside ISO/TS 6336-20/21's (docs/rating.md,
+    "Beside ISO"): μ̄ (the constant μ with femgear's mesh loss, Ohlendorf's H_V) beside μ_mC; the maximum contact
+    temperature beside ISO's flash-method θ_B,max, its bulk θ_M and the integral temperature θ_int; the loss with
+    femgear's μ(u) beside the loss with μ_mC on the same load and sliding."""
+    loss, iso, s, own = figures.power_loss, figures.power_loss_iso, ratings.scuffing, ratings.own
+    mu = loss.equivalent_mu
+    return {
+        "friction_level": figures.friction_level,
+        "mu_mean": mu, "mu_path_mean": float(np.mean(loss.friction_coefficient)), "iso_mu_mC": s.path.mu_m,
+        "mu_ratio": mu / s.path.mu_m,
+        "max_contact_temperature": None if own is None else own.max_temperature,
+        "temperature_level": None if own is None else own.temperature_level,
+        "iso_max_contact_temperature": s.max_contact_temperature, "iso_bulk_temperature": s.theta_M,
+        "iso_integral_temperature": s.theta_int, "oil_temperature": s.theta_oil,
+        "power_loss": loss.mean_loss, "iso_power_loss": iso.mean_loss,
+        "efficiency": loss.efficiency, "iso_efficiency": iso.efficiency,
+    }

@@ -83,15 +83,16 @@ def test_ehl_line_level_gives_a_u_shaped_friction(baseline_path):
     assert _at_pitch(r, mu) < 1e-3 < 0.01 < mu.max() < 0.1
 
 
+@pytest.mark.parametrize("level", ["lumped", "timoshenko"])
 @pytest.mark.parametrize("scene_file", ["fzg_c14.toml", "single_helical.toml"])
-def test_one_mesh_pairs_run_coupled_dynamics(scene_file):
-    """Spur and single-helical pairs through the coupled pipeline (lumped level, one mesh in the
-    mid-plane): the mean dynamic mesh force carries F_bn (within the friction-loss share, 1 %),
+def test_one_mesh_pairs_run_coupled_dynamics(scene_file, level):
+    """Spur and single-helical pairs through the coupled pipeline (one mesh station per shaft, in the
+    mid-plane of the face): the mean dynamic mesh force carries F_bn (within the friction-loss share, 1 %),
     the absent right mesh carries nothing, and a spur pair has no axial response."""
     from pathlib import Path
 
     base = Path(__file__).resolve().parents[1] / "studies" / scene_file
-    scene = load_scene(base, ['physics.dynamics="lumped"', 'physics.coupling="one-way"',
+    scene = load_scene(base, [f'physics.dynamics="{level}"', 'physics.coupling="one-way"',
                               "numerics.dynamics_cycles=40.0", "numerics.transient_cycles=20.0"])
     r = _run(scene)
     a = r.coupled.state.amplitudes

@@ -1,12 +1,14 @@
 """MkDocs hook: add the pages generated from the code (docs/gen/pages.py) to the site at build time.
 
-Also: ``README.md``, ``ARCHITECTURE.md`` and ``CHANGELOG.md`` from the repository root as the site's
+Also: ``<!-- figure: NAME -->`` lines show the gallery's figures (``docs/gen/gallery.py``);
+``README.md``, ``ARCHITECTURE.md`` and ``CHANGELOG.md`` from the repository root as the site's
 ``index.md``, ``architecture.md`` and ``changelog.md`` (one copy of each, kept at the root where a clone
 shows it; their links rewritten for the site).
 """
 
 from __future__ import annotations
 
+import functools
 import importlib.util
 import re
 from pathlib import Path
@@ -19,11 +21,16 @@ ROOT_PAGES = {"index.md": "README.md", "architecture.md": "ARCHITECTURE.md", "ch
 ROOT_LINKS = {"](docs/": "](", "](ARCHITECTURE.md)": "](architecture.md)", "](CHANGELOG.md)": "](changelog.md)"}
 
 
-def _pages():
+@functools.cache
+def _pages_module():
     spec = importlib.util.spec_from_file_location("femgear_doc_pages", Path(__file__).with_name("pages.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    return module.PAGES
+    return module
+
+
+def _pages():
+    return _pages_module().PAGES
 
 
 #: the section that takes any other page of docs/ that the navigation does not name
@@ -51,6 +58,7 @@ def _add_unlisted(files, config) -> None:
 
 
 def on_files(files, config):
+    _pages_module.cache_clear()             # once per build: `mkdocs serve` reads edits of docs/gen/*.py
     for rel, make in _pages().items():
         files.append(File.generated(config, rel, content=make()))
     for rel, name in ROOT_PAGES.items():      # their links into docs/ are relative to the root
@@ -66,6 +74,14 @@ def on_files(files, config):
 
 #: Sphinx roles in docstrings (``:class:`X```) before the code span mkdocstrings made of the backticks
 _ROLE = re.compile(r":(?:class|func|mod|meth|attr|data|exc|obj):(?=<code)")
+
+
+def on_page_markdown(markdown, page, config, files):
+    """A line ``<!-- figure: NAME -->`` shows the gallery's figure NAME: its picture, command and two lines
+    (``docs/gen/gallery.py``); an unknown NAME stops the build."""
+    if "<!-- figure:" not in markdown:
+        return markdown
+    return _pages_module().gallery().expand(markdown, prefix="../" * page.file.src_uri.count("/"))
 
 
 def on_page_content(html, page, config, files):

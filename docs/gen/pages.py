@@ -6,7 +6,9 @@
   it holds, with meaning and unit, from the attribute docstrings under each field (:mod:`femgear.docfields`
   where it is present; the same docstrings read with :mod:`ast` otherwise);
 - ``reference/levels.md``: the levels of every sub-model with their one-line summaries, from the
-  registries of :mod:`femgear.levels`.
+  registries of :mod:`femgear.levels`;
+- ``gallery.md``: every figure femgear draws, with its command and what to read in it, from the table of
+  ``docs/gen/gallery.py`` (the pictures are committed in ``docs/gallery/``).
 
 ``docs/gen/hooks.py`` adds them to the site (MkDocs hook); ``python docs/gen/pages.py OUTDIR`` writes them
 as files, for a look without MkDocs; ``python docs/gen/pages.py --readme`` rewrites the README's levels
@@ -17,6 +19,8 @@ from __future__ import annotations
 
 import ast
 import dataclasses
+import functools
+import importlib.util
 import inspect
 import re
 import sys
@@ -239,8 +243,23 @@ def _results_json_layout() -> list[str]:
             "the layout contract, reads:", "", doc, ""]
 
 
+@functools.cache
+def gallery():
+    """``docs/gen/gallery.py`` (the gallery's table and page), loaded by path: ``docs/gen`` is no package."""
+    spec = importlib.util.spec_from_file_location("femgear_doc_gallery", Path(__file__).with_name("gallery.py"))
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module              # dataclasses look their module up while the class is made
+    spec.loader.exec_module(module)
+    return module
+
+
+def gallery_page() -> str:
+    """Markdown: every figure femgear draws, from the gallery's table (``docs/gen/gallery.py``)."""
+    return gallery().page()
+
+
 PAGES = {"reference/scene-keys.md": scene_keys_page, "reference/result-fields.md": result_fields_page,
-         "reference/levels.md": levels_page}
+         "reference/levels.md": levels_page, "gallery.md": gallery_page}
 
 
 if __name__ == "__main__":

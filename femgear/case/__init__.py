@@ -21,11 +21,15 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from femgear.case.checks import check_bound_case
+from femgear.case.oil import oil_at
 from femgear.case.pair import pair_from_scene
 from femgear.physics.geometry import GearPair, PathKinematics, kinematics, mesh_frequency, path_positions
+from femgear.physics.housing.frf import FRFSet
+from femgear.scene.roughness import FlankRoughness, flank_roughness
 from femgear.scene.schema import (
     Errors,
     Friction,
+    Housing,
     Material,
     Member,
     Modifications,
@@ -67,8 +71,14 @@ class Case:
     pair: GearPair
     operating: OperatingPoint
     path: PathKinematics          #: the one path grid (``numerics.path_points`` + the pitch point)
+    #: the ``[oil]`` table at the supply temperature ``operating.ambient_temperature`` (its reference_temperature)
+    oil: Oil
+    #: the flanks' roughness (the one ``[roughness]`` description, :func:`femgear.scene.roughness.flank_roughness`)
+    flanks: FlankRoughness
     #: the plausibility warnings logged so far for this case (``key: message``), one per key
     warnings: tuple[str, ...] = ()
+    #: the FRFs of ``housing.frf_file`` (:func:`femgear.scene.frf_file.read_frf`), read once; None without one
+    frf: FRFSet | None = None
 
     # ---------- the scene's typed tables ----------
     @property
@@ -88,16 +98,13 @@ class Case:
         return self.scene.material
 
     @property
-    def oil(self) -> Oil:
-        return self.scene.oil
-
-    @property
     def oil_reference_temperature(self) -> float:
-        """Temperature at which ``oil.viscosity`` holds [K]."""
-        return self.scene.oil_reference_temperature
+        """Temperature at which ``case.oil`` holds: the supply temperature [K]."""
+        return self.oil.reference_temperature
 
     @property
     def roughness(self) -> SurfaceRoughness:
+        """The scene's ``[roughness]`` table (its deterministic sub-tables; the resolved R_a, R_q, σ: ``flanks``)."""
         return self.scene.roughness
 
     @property
@@ -148,6 +155,11 @@ class Case:
         return sense * w1, -sense * w1 * self.pair.z1 / self.pair.z2
 
     @property
+    def housing(self) -> Housing | None:
+        """The ``[housing]`` table (None: the bearings stand on rigid ground)."""
+        return self.scene.housing
+
+    @property
     def bore_radii(self) -> tuple[float, float]:
         return self.scene.pinion.bore_radius, self.scene.gear.bore_radius
 
@@ -188,5 +200,17 @@ def build_case(scene: Scene, pair: GearPair | None = None, warn: bool = True) ->
     checks = pair is None
     pair = pair_from_scene(scene) if checks else pair
     op = operating_point(scene, pair)
-    case = Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed))
+    case = Case(scene=scene, pair=pair, operating=op, path=path_grid(pair, scene.numerics.path_points, op.pinion_speed),
+                frf=_frf(scene), oil=oil_at(scene.oil, scene.oil_reference_temperature, op.ambient_temperature),
+                flanks=flank_roughness(scene))
     return replace(case, warnings=check_bound_case(case, warn)) if checks else case
+
+
+def _frf(scene: Scene) -> FRFSet | None:
+    """The FRF set of ``housing.frf_file`` (None without one)."""
+    h = scene.housing
+    if h is None or h.frf_file is None:
+        return None
+    from femgear.scene.frf_file import read_frf
+
+    return read_frf(h.frf_file, h.frf_kind, h.seat_nodes)

@@ -2,14 +2,16 @@
 
 The scene's own validation (schema, input ranges, temperatures) is :func:`femgear.scene.load_scene`;
 what follows needs the pair and runs where the pair is bound: the tip speed against the rim's
-burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), a rim below 0.5 h_t, an undercut
-member's warning, the face-resolved wear's
-needs, the TEHL levels' ranges, the pitch-line speed warning; the Hertz pressure warning needs the
+burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), a rim below 0.5 h_t, the bearings
+outside the teeth (:func:`check_supports`), the face-resolved wear's needs, the flank modifications' lengths
+against the flanks, the TEHL levels' ranges, the FE bodies' memory, an undercut member's warning, the
+pitch-line speed warning; the Hertz pressure warning needs the
 run's own contact pass (:func:`contact_warnings`, called by the driver after it).
 """
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 from femgear.case.pair import undercut_warnings
@@ -37,7 +39,9 @@ def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
     scene, pair = case.scene, case.pair
     check_operating_limits(scene, pair)
     check_rims(scene, pair)
+    check_supports(scene)
     check_wear_field(scene, pair)
+    check_modifications(case)
     check_lubrication_range(case)
     check_fe_resources(case)
     earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
@@ -65,11 +69,58 @@ def check_fe_resources(case: Case) -> None:
     thermal_levels.check_resources(case)
 
 
+def toothed_width(scene: Scene, member: str) -> float:
+    """Axial length of ``member``'s teeth [m]: its face width (``<member>.face_width``, else ``pair.face_width``),
+    twice it plus the groove for a double-helical pair."""
+    p = scene.pair
+    b = getattr(scene, member).face_width or p.face_width
+    return 2 * b + p.groove_width if p.kind == "double-helical" else b
+
+
+def bearing_stations(member: str, span: float, offset: float, width: float) -> tuple[float, float]:
+    """(z_L, z_R) of ``member``'s two radial bearings in its frame, the toothed face centred at 0 [m]:
+    −offset ∓ span/2 (``<member>.bearing_span``, ``<member>.face_offset``; ``width`` the toothed width).
+
+    :class:`SceneError` naming ``<member>.bearing_span`` for a shaft between the bearings not longer than the
+    teeth, ``<member>.face_offset`` for a bearing under the toothed face (|z| < width/2): the face sits between
+    the bearings (straddle, |offset| ≤ (span − width)/2) or beyond one of them (overhung,
+    |offset| ≥ (span + width)/2)."""
+    if not (math.isfinite(span) and span > width):
+        raise SceneError(f"{member}.bearing_span", f"the shaft between the bearings ({span:.4g} m) must be longer than "
+                                                   f"the toothed face ({width:.4g} m)")
+    if not math.isfinite(offset):
+        raise SceneError(f"{member}.face_offset", f"must be finite (got {offset!r})")
+    z = (-offset - span / 2, -offset + span / 2)
+    for side, zj in zip(("left", "right"), z):
+        if abs(zj) < width / 2 * (1 - 1e-12):
+            raise SceneError(f"{member}.face_offset",
+                             f"{offset:.4g} m puts the {side} bearing under the teeth (z = {zj:.4g} m from the face "
+                             f"centre; the teeth span ±{width / 2:.4g} m): a straddle mounting needs |face_offset| ≤ "
+                             f"{(span - width) / 2:.4g} m, an overhung one ≥ {(span + width) / 2:.4g} m")
+    return z
+
+
+def check_supports(scene: Scene) -> None:
+    """Refuse a mounting whose bearings sit under the teeth (:func:`bearing_stations`), whatever the levels."""
+    for member in ("pinion", "gear"):
+        m = getattr(scene, member)
+        bearing_stations(member, m.bearing_span, m.face_offset, toothed_width(scene, member))
+
+
 def check_lubrication_range(case: Case) -> None:
     """Refuse the lubrication level up front outside its validated range (the checks its registry lists)."""
     from femgear.levels.lubrication import check_range
 
     check_range(case)
+
+
+def check_modifications(case: Case) -> None:
+    """Raise :class:`SceneError` for a relief longer than the active profile or half the helix's face (the
+    ``ltca`` level reads the flank modifications only once its member bodies are built, minutes later)."""
+    from femgear.physics.ltca.separation import check_modification
+
+    for member in (1, 2):
+        check_modification(case.pair, member, case.modifications.member(member))
 
 
 def check_wear_field(scene: Scene, pair: GearPair) -> None:
@@ -80,6 +131,9 @@ def check_wear_field(scene: Scene, pair: GearPair) -> None:
     if not stiffness_levels.has_contact_lines(scene.physics.stiffness):
         raise SceneError("wear.field", f'"face" needs physics.stiffness = "ltca" (the face-resolved wear reads the '
                                        f"LTCA's contact-line loads; got {scene.physics.stiffness!r})")
+    if pair.beta_b == 0:
+        raise SceneError("wear.field", '"face" needs a helical pair: a spur contact line lies at one path position '
+                                       "(its load map is the Winkler sharing of the path model)")
     if pair.eps_beta > 1:
         raise SceneError("wear.field", f'"face" needs an overlap ratio ε_β ≤ 1 (one contact line per helix at each '
                                        f"path position); this pair has ε_β = {pair.eps_beta:.3f}")

@@ -9,6 +9,8 @@ CLI prints one line:
 - ``pair.kind = "single-helical"`` needs ``pinion/gear.axial_stiffness`` (its axial mesh
   force F_a = F_t tan β_w is carried by the thrust bearings; a double-helical pair
   balances it between its two helices, a spur pair has none);
+- a single-helical or spur pair has one helix: ``pair.stagger`` and
+  ``modifications.helix_slope_deviation_right`` must be 0 (the left helix's key is its slope deviation);
 - ``pair.basic_rack`` (ISO 53 A–D) sets h_aP, h_fP, ρ_fP; a coefficient given beside it
   must agree with it;
 - ``pinion/gear.tip_diameter`` is the tip as made (the tip circle of every level); it derives the
@@ -29,7 +31,6 @@ import math
 from dataclasses import replace
 
 from femgear.errors import SceneError
-from femgear.levels import dynamics as dynamics_levels
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.geometry.involute import inv
 
@@ -57,10 +58,21 @@ def _check_kind(scene) -> None:
                 raise SceneError(f"{name}.axial_stiffness",
                                  "a single-helical pair needs the axial (thrust) bearing stiffness of each member: "
                                  "its axial mesh force is not balanced by a second helix")
-    if p.kind != "double-helical" and dynamics_levels.spec(scene.physics.dynamics).shaft_elements:
-        raise SceneError("physics.dynamics",
-                         f"the timoshenko level joins two helix halves by shaft elements; a {p.kind} pair has one "
-                         "mesh in the mid-plane: use physics.dynamics = 'lumped'")
+    if p.kind != "double-helical":
+        _check_one_helix(scene)
+
+
+def _check_one_helix(scene) -> None:
+    """A single-helical or spur pair has one helix: no stagger of a second one, no second helix's slope deviation
+    (the left helix's keys describe the one helix)."""
+    kind = scene.pair.kind
+    if scene.pair.stagger != 0:
+        raise SceneError("pair.stagger", f"a {kind} pair has one helix: no second helix to stagger (got "
+                                         f"{scene.pair.stagger:g}; set 0)")
+    if scene.modifications.helix_slope_deviation_right != 0:
+        raise SceneError("modifications.helix_slope_deviation_right",
+                         f"a {kind} pair has one helix: give its helix slope deviation as "
+                         "modifications.helix_slope_deviation_left")
 
 
 def rack_coefficients(pair_table) -> tuple[float, float, float]:

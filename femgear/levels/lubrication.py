@@ -9,7 +9,7 @@ the film of the same level (:meth:`Lubrication.film`):
 | level      | solver                                                        | film                                  |
 |------------|---------------------------------------------------------------|---------------------------------------|
 | none       | μ = 0, no heating                                             | isothermal formulas (Moes h_c,        |
-| constant   | μ = ``friction.coefficient``, no heating                      | Dowson–Higginson h_min, Hertz p)      |
+| constant   | μ = ``friction.coefficient``, Blok's flash temperature        | Dowson–Higginson h_min, Hertz p)      |
 | formula    | thermal Eyring traction of the Hertzian film                  |   "                                   |
 | ehl-line   | FE line EHL with Eyring traction, Blok flash temperature      | FE isothermal line EHL                |
 | tehl       | thermal EHL line solves; ``repeated``: a friction map of them | thermal line EHL, direct solves       |
@@ -86,11 +86,8 @@ class Lubrication:
     """False for the ``none`` level: μ = 0 and no contact heating to report"""
     uniform: float | None = None
     """μ of every contact where the level has one number (none, constant); None where μ varies [-]"""
-
-    @property
-    def heats(self) -> bool:
-        """Whether the level computes a contact temperature rise (the one-number levels give ΔT = 0)."""
-        return self.uniform is None
+    heats: bool = True
+    """whether the level computes a contact temperature rise (False for ``none``: no friction, no heat)"""
 
     def __call__(self, w, R, ue, srr, T) -> tuple[np.ndarray, np.ndarray]:
         return self.solve(w=w, R=R, ue=ue, srr=srr, T=T)
@@ -116,7 +113,7 @@ def _product(case: Case, level: str, solve: Solver, film_of: FilmOf, **flags) ->
 
 # ---------------------------------------------------------------- typed parts from the case's tables
 def oil_law(case: Case) -> OilLaw:
-    """The oil's viscosity and density laws (Roelands)."""
+    """The oil's viscosity and density laws (Roelands), referred to the supply temperature (``case.oil``)."""
     from femgear.physics.lubrication.oil import OilLaw
 
     return OilLaw.from_table(case.oil, case.oil_reference_temperature)
@@ -128,11 +125,12 @@ def line_friction(case: Case) -> LineFriction:
     from femgear.physics.lubrication.mixed import Roughness
     from femgear.physics.lubrication.path import LineFriction, solids_of
 
-    rough = case.roughness
+    rough, flanks = case.roughness, case.flanks
+    mixed = flanks.model == "greenwood-tripp" and flanks.sigma > 0
     return LineFriction(oil=oil_law(case), E_red=reduced_modulus_of(case), solids=solids_of(case.material, case.oil),
                         tau0=case.oil.eyring_stress, limiting_shear=case.oil.limiting_shear_coeff,
-                        roughness=Roughness(rough.rq, rough.eta_beta_sigma, rough.sigma_over_beta)
-                        if rough.rq > 0 else None, boundary_coefficient=case.friction.boundary_coefficient)
+                        roughness=Roughness(flanks.sigma, rough.eta_beta_sigma, rough.sigma_over_beta)
+                        if mixed else None, boundary_coefficient=case.friction.boundary_coefficient)
 
 
 def tehl_setup(case: Case) -> TEHLSetup:
@@ -170,8 +168,8 @@ def _formula_film(case: Case) -> FilmOf:
         from femgear.physics.contact.film import line_film
         from femgear.physics.contact.hertz import hertz_line
 
-        k, oil, E_red = case.path, case.oil, reduced_modulus_of(case)
-        films = line_film(w, k.R, k.ue, E_red, oil.viscosity, oil.pressure_viscosity)
+        k, oil, E_red = case.path, oil_law(case), reduced_modulus_of(case)
+        films = line_film(w, k.R, k.ue, E_red, float(oil.viscosity(0.0, T)), float(oil.pressure_viscosity(T)))
         p = np.array([hertz_line(wi, R, E_red).max_pressure for wi, R in zip(w, k.R)])
         return LevelFilm(level=level, method="isothermal formulas (Moes h_c, Dowson-Higginson h_min)",
                          central=films.central_moes, minimum=films.minimum_dh, pressure_max=p)
@@ -218,23 +216,36 @@ def _thermal_film(case: Case, method: str, solve_one: Callable) -> FilmOf:
 
 
 # ---------------------------------------------------------------- the levels
-def _uniform(mu0: float) -> Solver:
+def _uniform(case: Case, mu0: float) -> Solver:
+    """μ = ``mu0`` everywhere and, for μ > 0, Blok's flash temperature of the Hertzian band with it (the heat a
+    constant friction coefficient generates; 0 for μ = 0)."""
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.physics.lubrication.flash import line_flash_temperature
+    from femgear.physics.lubrication.path import solids_of
+
+    E_red, solids = reduced_modulus_of(case), solids_of(case.material, case.oil)
+
     def constant(w, R, ue, srr, T):
         shape = np.broadcast(w, R, ue, srr, T).shape
-        return np.full(shape, mu0), np.zeros(shape)
+        if mu0 == 0:
+            return np.zeros(shape), np.zeros(shape)
+        dT = line_flash_temperature(mu0, w, R, ue, np.abs(srr), E_red, solids.B1, solids.B2)
+        return np.full(shape, mu0), np.broadcast_to(np.asarray(dT, dtype=float), shape).copy()
 
     return constant
 
 
 @REGISTRY.register("none", "no friction (μ = 0) and no contact heating; the film of the formulas")
 def _none(case: Case, repeated: bool = False) -> Lubrication:
-    return _product(case, "none", _uniform(0.0), _formula_film(case), friction=False, uniform=0.0)
+    return _product(case, "none", _uniform(case, 0.0), _formula_film(case), friction=False, uniform=0.0, heats=False)
 
 
 @REGISTRY.register("constant", "a constant friction coefficient (friction.coefficient) and Blok's flash temperature")
 def _constant(case: Case, repeated: bool = False) -> Lubrication:
+    """μ = ``friction.coefficient`` everywhere; the contact temperature rise is Blok's flash temperature with it,
+    so the bulk flank temperature and the thermal growth follow the constant μ as they follow the other levels'."""
     mu0 = case.friction.coefficient
-    return _product(case, "constant", _uniform(mu0), _formula_film(case), uniform=mu0)
+    return _product(case, "constant", _uniform(case, mu0), _formula_film(case), uniform=mu0)
 
 
 @REGISTRY.register("formula", "thermal Eyring traction of the Hertzian film (Dowson-Higginson), with the "
@@ -312,6 +323,14 @@ def lubrication_solver(case: Case, level: str | None = None, *, repeated: bool =
     return REGISTRY.build(level or case.levels.lubrication, case, repeated=repeated)
 
 
+def bulk_temperature(case: Case, flank_rise: float = 0.0) -> float:
+    """The bulk temperature the contacts' inlet and surfaces see [K]: the oil supply temperature
+    (``operating.ambient_temperature``) plus the flanks' bulk rise ``flank_rise`` [K] where the run defines one
+    (``thermal.flank_temperature_rise``, or the coupling loop's estimate of it); the oil laws carry η0, α and ρ
+    there from the supply temperature."""
+    return case.operating.ambient_temperature + float(flank_rise)
+
+
 def friction_along_path(case: Case, w: np.ndarray, solver: Solver | None = None,
                         T: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """μ and the contact temperature rise at the case's path positions for loads ``w`` [N/m]."""
@@ -322,19 +341,20 @@ def friction_along_path(case: Case, w: np.ndarray, solver: Solver | None = None,
     return np.asarray(mu, dtype=float), np.asarray(dT, dtype=float)
 
 
-def static_friction(case: Case) -> float | Callable[[np.ndarray], np.ndarray]:
+def static_friction(case: Case, line_load: np.ndarray | None = None) -> float | Callable[[np.ndarray], np.ndarray]:
     """μ for the dynamics without coupling: the level's one number where it has one (0 for ``none``,
     ``friction.coefficient`` for ``constant``), else μ(u) of the lubrication level at the static line load
     of the contact pass (load shared between the tooth pairs in contact,
     :func:`femgear.levels.contact.contact_pass`; U-shaped, zero at the pitch point), interpolated along the
-    path."""
+    path.  ``line_load``: that pass's line load [N/m] when already known (it does not depend on the speed:
+    a speed sweep computes it once)."""
     from femgear.levels.contact import contact_pass
 
     lubrication = lubrication_solver(case)
     if lubrication.uniform is not None:
         return lubrication.uniform
     u = case.path.u
-    mu = friction_along_path(case, contact_pass(case).line_load, lubrication)[0]
+    mu = friction_along_path(case, contact_pass(case).line_load if line_load is None else line_load, lubrication)[0]
     return lambda x: np.interp(x, u, mu)
 
 

@@ -30,8 +30,9 @@ class Level:
 class Registry(Mapping[str, Level]):
     """The levels of one sub-model, cheapest first (the order of registration)."""
 
-    def __init__(self, submodel: str, planned: tuple[str, ...] = ()) -> None:
+    def __init__(self, submodel: str, planned: tuple[str, ...] = (), key: str | None = None) -> None:
         self.submodel = submodel
+        self.key = key or f"physics.{submodel}"    #: the scene key that names the level (in error messages)
         self.planned = planned                     #: names of the design not built yet (refused as such)
         self._levels: dict[str, Level] = {}
 
@@ -49,10 +50,11 @@ class Registry(Mapping[str, Level]):
         try:
             return self._levels[name]
         except KeyError:
-            raise SceneError(f"physics.{self.submodel}", self.problem(name)) from None
+            raise SceneError(self.key, self.problem(name)) from None
 
     def problem(self, name: str) -> str | None:
-        """Why ``physics.<submodel> = name`` cannot run, or None when it is a registered level."""
+        """Why ``<key> = name`` (``physics.<submodel>`` unless the registry names another key) cannot run, or None
+        when it is a registered level."""
         if name in self._levels:
             return None
         have = ", ".join(self._levels)

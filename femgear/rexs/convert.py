@@ -64,6 +64,17 @@ class Conversion:
         self.put(key, value)
         self.defaults[key] = why
 
+    def drop(self, key: str) -> None:
+        """Forget ``key`` (its value, sources and default), if it was recorded."""
+        table, _, leaf = key.rpartition(".")
+        node: Any = self.data
+        for part in table.split("."):
+            node = node.get(part) if isinstance(node, dict) else None
+        if isinstance(node, dict):
+            node.pop(leaf, None)
+        self.sources.pop(key, None)
+        self.defaults.pop(key, None)
+
     def get(self, key: str) -> Any:
         node: Any = self.data
         for part in key.split("."):

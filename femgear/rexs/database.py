@@ -137,6 +137,26 @@ CUSTOM: dict[tuple[str, str], tuple[str, str]] = {
     ("lubricant", "custom_femgear_limiting_shear_coefficient"): ("none", "floating_point"),
     ("lubricant", "custom_femgear_viscosity_reference_temperature"): ("C", "floating_point"),
     ("lubricant", "custom_femgear_viscosity_at_reference_temperature"): ("mPa s", "floating_point"),
+    ("lubricant", "custom_femgear_pressure_viscosity_at_reference_temperature"): ("mm^2 / N", "floating_point"),
+    # the [rating] table (femgear.rexs.ratings) on each cylindrical_stage, its per-member lists on the gears
+    **{("cylindrical_stage", f"custom_femgear_{key}"): spec_ for key, spec_ in {
+        "application_factor": ("none", "floating_point"), "dynamic_factor": ("none", "floating_point"),
+        "face_load_factor": ("none", "floating_point"), "transverse_load_factor": ("none", "floating_point"),
+        "contact_stress_limit": ("N / mm^2", "floating_point"), "min_safety_factor": ("none", "floating_point"),
+        "life_hours": ("h", "floating_point"), "rating_oil_viscosity_40": ("mm^2 / s", "floating_point"),
+        "work_hardening_factor": ("none", "floating_point"), "size_factor": ("none", "floating_point"),
+        "bending_stress_limit": ("N / mm^2", "floating_point"),
+        "bending_min_safety_factor": ("none", "floating_point"), "finishing": ("none", "string"),
+        "oil_type": ("none", "string"), "scuffing_load_stage": ("none", "floating_point"),
+        "micropitting_load_stage": ("none", "floating_point"), "lubrication_method": ("none", "string"),
+        "structural_factor": ("none", "floating_point"), "fillet_fe": ("none", "boolean"),
+        "load_factors": ("none", "string"), "accuracy_grade": ("none", "integer"),
+        # the [physics] levels
+        **{f"physics_{level}": ("none", "string")
+           for level in ("stiffness", "lubrication", "thermal", "wear", "dynamics", "coupling")},
+    }.items()},
+    ("cylindrical_gear", "custom_femgear_root_roughness_rz"): ("mum", "floating_point"),
+    ("cylindrical_gear", "custom_femgear_roughness_ra"): ("mum", "floating_point"),
 }
 
 

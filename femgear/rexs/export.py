@@ -2,8 +2,10 @@
 
 What REXS has an attribute for is written there, in the database unit (mm, deg, N/mm², kg/dm³,
 mm²/s, ...); what it has none for (inertia, support stiffness and damping, the oil's β_T, heat
-capacity, ...) is written as femgear's custom attributes (``custom_femgear_*``,
-:data:`femgear.rexs.database.CUSTOM`), so that the file re-imports to the same scene.  femgear's
+capacity, the ``[rating]`` table and the ``[physics]`` levels: :mod:`femgear.rexs.ratings`) is written as femgear's
+custom attributes (``custom_femgear_*``, :data:`femgear.rexs.database.CUSTOM`), so that the file re-imports to the
+same scene and the same ratings.  Oil data go out at the temperatures their attributes name, carried there by the
+oil's own laws: the density at 15 °C (ρ0 (1 − ε (T − T0))), ν at 40 and 100 °C, α at 38 °C (Roelands).  femgear's
 computed figures go into the REXS attributes that hold them (reference, tip, root diameters,
 centre distance, gear ratio, contact ratios, operating viscosity, oil viscosities at 40 and 100 °C
 from the scene's oil law).
@@ -20,8 +22,10 @@ import math
 
 from femgear.rexs.database import spec
 from femgear.rexs.model import Attribute, Component, Model, Ref, Relation
+from femgear.rexs.ratings import member_values, nu40_attribute, stage_values
 from femgear.rexs.tables import HV_TO_PA, MEMBER_CUSTOM, OIL_CUSTOM
 from femgear.rexs.units import from_scene_unit
+from femgear.rexs.viscosity import T38
 
 MEMBERS = ("pinion", "gear")
 
@@ -60,6 +64,9 @@ def export_scene(scene, pair, source: str = "femgear") -> tuple[Model, list[str]
     halves = 2 if pair.kind == "double-helical" else 1
     stages = [b.add("cylindrical_stage", scene.meta.name if halves == 1 else f"{scene.meta.name} {('left', 'right')[h]}",
                     _stage(scene, pair, law)) for h in range(halves)]
+    nu40 = nu40_attribute(scene)
+    for stage in stages if nu40 is not None else ():
+        stage.attributes[nu40.id] = nu40
     mat = b.add("material", f"{scene.meta.name} steel", _material(scene))
     lub = b.add("lubricant", f"{scene.meta.name} oil", _lubricant(scene, law))
     b.relate("reference", (unit, "origin"), (lub, "referenced"))
@@ -92,7 +99,7 @@ def _lubricant(scene, law) -> dict:
     if scene.rating.oil_viscosity_40 is not None:
         nu[313.15] = scene.rating.oil_viscosity_40 * 1e-6
     out = {"density_at_15_degree_celsius": oil.density * (1 - oil.thermal_expansion * (288.15 - t0)),
-           "pressure_viscosity_coefficient_at_38_degrees_celsius": oil.pressure_viscosity,
+           "pressure_viscosity_coefficient_at_38_degrees_celsius": float(law.pressure_viscosity(T38)),
            "custom_femgear_temperature_viscosity_coefficient": oil.temperature_viscosity}
     if nu[313.15] > nu[373.15] > 0:
         out["viscosity_at_40_degree_celsius"] = nu[313.15]
@@ -102,6 +109,7 @@ def _lubricant(scene, law) -> dict:
     if oil.reference_temperature is not None:
         out["custom_femgear_viscosity_reference_temperature"] = oil.reference_temperature
         out["custom_femgear_viscosity_at_reference_temperature"] = oil.viscosity
+    out["custom_femgear_pressure_viscosity_at_reference_temperature"] = oil.pressure_viscosity   # exact, back
     return out
 
 
@@ -124,6 +132,7 @@ def _gear(b: _Builder, scene, pair, i: int, h: int, halves: int, mat, shaft) -> 
         values["averaged_peak_to_valley_height_flank"] = scene.rating.roughness_rz[i]
     if h == 0:
         values.update({attr: getattr(member, key) for key, attr in MEMBER_CUSTOM.items()})
+        values.update(member_values(scene, i))
     name = f"{MEMBERS[i]}" + (f" {('left', 'right')[h]} half" if halves == 2 else "")
     gear = b.add("cylindrical_gear", name, values)
     b.relate("assembly", (shaft, "assembly"), (gear, "part"))
@@ -152,7 +161,7 @@ def _stage(scene, pair, law) -> dict:
             "custom_femgear_stagger": scene.pair.stagger or None,
             "custom_femgear_groove_width": scene.pair.groove_width if pair.n_helices == 1 and scene.pair.groove_width
             else None,  # one helix: no halves to place, the scene's groove kept as it is
-            "custom_femgear_loop_stiffness": scene.operating.loop_stiffness or None}
+            "custom_femgear_loop_stiffness": scene.operating.loop_stiffness or None, **stage_values(scene)}
 
 
 def _gear_data(scene, pair, i: int, halves: int) -> dict:

@@ -18,6 +18,7 @@ from femgear.errors import SceneError
 from femgear.rexs.convert import Conversion, pair_geometry
 from femgear.rexs.model import Model, RexsError
 from femgear.rexs.modifications import modifications
+from femgear.rexs.ratings import ratings
 from femgear.rexs.read import read_model
 from femgear.rexs.stages import select_stage
 from femgear.rexs.tables import material, members, oil, operating
@@ -46,6 +47,7 @@ def convert(model: Model, stage_id: int | None = None) -> Conversion:
     operating(conv)
     modifications(conv)
     _roughness(conv)
+    ratings(conv)
     return conv
 
 

@@ -95,15 +95,13 @@ def _signature(model: Model, gear: Component) -> tuple[int, float, float]:
             model.value(gear, "helix_angle_reference_diameter", required=True))
 
 
-def twin_half(model: Model, gear: Component) -> Component | None:
-    """The opposite-hand half of a double-helical member on ``gear``'s shaft, or None."""
+def _shaft_mates(model: Model, gear: Component):
+    """(other gear, {attribute: whether it agrees with ``gear`` as its opposite-hand half}) for every other gear on
+    ``gear``'s shaft that has a tooth count, module and helix angle (none without a shaft)."""
     shaft = shaft_of(model, gear)
     if shaft is None:
-        return None
+        return
     z, m, beta = _signature(model, gear)
-    if beta == 0:
-        return None
-    twins = []
     for gid in model.related("assembly", "assembly", shaft.id, "part"):
         other = model.components.get(gid)
         if other is None or other.id == gear.id or other.type not in GEAR_TYPES:
@@ -112,12 +110,37 @@ def twin_half(model: Model, gear: Component) -> Component | None:
                                                           "helix_angle_reference_diameter"))
         if None in (z2, m2, beta2):  # a gear that cannot be a half of this one
             continue
-        if z2 == z and abs(m2 - m) <= 1e-9 * m and abs(beta2 + beta) <= 1e-9 * abs(beta):
-            twins.append(other)
+        yield other, {"number_of_teeth": z2 == z, "normal_module": abs(m2 - m) <= 1e-9 * m,
+                      "helix_angle_reference_diameter": abs(beta2 + beta) <= 1e-9 * abs(beta)}
+
+
+def twin_half(model: Model, gear: Component) -> Component | None:
+    """The opposite-hand half of a double-helical member on ``gear``'s shaft, or None."""
+    if _signature(model, gear)[2] == 0:
+        return None
+    twins = [other for other, same in _shaft_mates(model, gear) if all(same.values())]
     if len(twins) > 1:
+        shaft = shaft_of(model, gear)
         raise model.error(gear, None, f"shaft {shaft.id} holds several opposite-hand twins of this gear "
                                       f"({', '.join(str(t.id) for t in twins)}): which is its other half is ambiguous")
     return twins[0] if twins else None
+
+
+def _near_twin(model: Model, gear: Component, mate: Component) -> None:
+    """Raise naming the attribute where a gear on ``gear``'s shaft differs from it while its ``mate`` is a
+    double-helical member: the other half of ``gear`` with a typo (its module, tooth count or helix angle), which
+    would otherwise read as a pair of mixed helix kinds."""
+    for other, same in _shaft_mates(model, gear):
+        if sum(same.values()) != 2:             # one attribute off: a half with a typo, not another gear
+            continue
+        attr = next(a for a, ok in same.items() if not ok)
+        mine, theirs = model.value(gear, attr), model.value(other, attr)
+        value, own = {"number_of_teeth": (theirs, mine), "normal_module": (f"{theirs * 1e3:g} mm", f"{mine * 1e3:g} mm"),
+                      "helix_angle_reference_diameter": (f"{theirs:+g}°", f"{-mine:+g}°")}[attr]
+        raise model.error(other, attr, f"{value} differs from {own} of its other half {gear.label()} on the same "
+                                       f"shaft {shaft_of(model, gear).id}: the halves of a double-helical member agree "
+                                       f"in tooth count and module and have opposite hands (its mate {mate.label()} "
+                                       "is double-helical)")
 
 
 def pair_parts(model: Model, stage: Component) -> PairParts:
@@ -128,6 +151,7 @@ def pair_parts(model: Model, stage: Component) -> PairParts:
     if (t1 is None) != (t2 is None):
         lone, other = (g1, g2) if t1 is not None else (g2, g1)
         half = t1 if t1 is not None else t2
+        _near_twin(model, other, lone)
         raise model.error(lone, "helix_angle_reference_diameter",
                           f"has an opposite-hand half (gear {half.id}) on its shaft, a double-helical member, but its "
                           f"mate {other.label()} has none: the pair is neither single- nor double-helical")

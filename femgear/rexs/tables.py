@@ -11,8 +11,8 @@ Readings (each default is listed at the top of the written scene):
 - oil: the stage's ``temperature_lubricant`` is the ambient/oil temperature and the reference of
   the viscosity; η0 = ν ρ0 from the stage's ``operating_viscosity``, else from ν40 and ν100
   (ASTM D341, :mod:`femgear.rexs.viscosity`), which also give β_T; ρ0 from the density at 15 °C
-  with femgear's law ρ(T) = ρ0 (1 − ε (T − T0)); α from the pressure–viscosity coefficient
-  (given at 38 °C, used as femgear's single α);
+  with femgear's law ρ(T) = ρ0 (1 − ε (T − T0)); α from the pressure–viscosity coefficient at 38 °C,
+  carried to the reference temperature by the oil's Roelands law (α ∝ ((T − 138)/(T0 − 138))^(−S0));
 - operating point: the driver is the gear whose ``is_driving_gear`` is true (default the pinion),
   its speed from the gear or its shaft (else the mate's speed times the ratio), its torque the sum
   over the pair's stages of its ``torque`` (else the mate's times the ratio, else power / ω).
@@ -24,7 +24,8 @@ import math
 
 from femgear.rexs.convert import MEMBERS, Conversion
 from femgear.rexs.lookup import bearings_of, gear_data, lubricant_of, material_of
-from femgear.rexs.viscosity import kinematic_viscosity, temperature_coefficient
+from femgear.rexs.viscosity import T38, kinematic_viscosity, pressure_viscosity_from, temperature_coefficient
+from femgear.scene.schema import Member
 
 STEEL = {"youngs_modulus": 210e9, "poisson_ratio": 0.3, "density": 7850.0, "specific_heat": 460.0,
          "conductivity": 45.0, "thermal_expansion": 11.5e-6}
@@ -114,6 +115,14 @@ def _supports(conv: Conversion, name: str, shaft) -> None:
     if conv.get(f"{name}.bearing_span") is None and len(bearings) == 2 and None not in u:
         conv.put(f"{name}.bearing_span", abs(u[0] - u[1]),
                  [(b, "u_coordinate_on_shaft_inner_side") for b in bearings])
+    if conv.get(f"{name}.bearing_span") is None:
+        b = conv.get(f"{name}.face_width") or conv.get("pair.face_width")
+        width = 2 * b + (conv.get("pair.groove_width") or 0.0) if conv.parts.kind == "double-helical" else b
+        d = conv.get(f"{name}.shaft_diameter") or Member.model_fields["shaft_diameter"].default
+        default = Member.model_fields["bearing_span"].default
+        if width + 2 * d > default:       # the scene's default span would put the bearings under the teeth
+            conv.default(f"{name}.bearing_span", width + 2 * d, "no two bearings with u coordinates on the shaft: "
+                                                                "the toothed width and a shaft diameter each side")
 
 
 def oil(conv: Conversion) -> None:
@@ -149,11 +158,16 @@ def oil(conv: Conversion) -> None:
         conv.put("oil.density", rho15 / (1 - eps * (288.15 - t0)), src)
     _viscosity(conv, lubs, t0, t_ref is not None, eps)
     alpha, src = conv.agree(lubs, "pressure_viscosity_coefficient_at_38_degrees_celsius", "the oil's α")
-    if alpha is None:
+    own, src_own = conv.agree(lubs, "custom_femgear_pressure_viscosity_at_reference_temperature", "the oil's α")
+    if own is not None:     # femgear's own α at the reference temperature (written beside the 38 °C value)
+        conv.put("oil.pressure_viscosity", own, src_own)
+    elif alpha is None:
         conv.default("oil.pressure_viscosity", 2.0e-8, "no pressure_viscosity_coefficient_at_38_degrees_celsius: "
                                                        "a mineral oil's 20 GPa⁻¹")
-    else:
-        conv.put("oil.pressure_viscosity", alpha, src)
+    else:       # α at 38 °C carried to the reference temperature by the oil's own (Roelands) law
+        conv.put("oil.pressure_viscosity", pressure_viscosity_from(alpha, T38, conv.get("oil.viscosity"),
+                                                                   conv.get("oil.temperature_viscosity"), t0),
+                 src + conv.sources["oil.viscosity"] + conv.sources.get("oil.temperature_viscosity", []))
 
 
 def _viscosity(conv: Conversion, lubs: list, t0: float, custom_reference: bool, eps: float) -> None:

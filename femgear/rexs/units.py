@@ -1,6 +1,7 @@
 """Units of REXS attributes: each declared unit converted to the scene's unit, never assumed.
 
-The scene is SI except angles (degrees, ``*_deg`` keys) and speeds (rev/min, ``speed_rpm``);
+The scene is SI except angles (degrees, ``*_deg`` keys), speeds (rev/min, ``speed_rpm``) and the rating's life
+(hours, ``rating.life_hours``);
 :func:`to_scene_unit` converts a REXS value to that unit from the unit the file declares, after
 checking that the declared unit measures the same quantity as the unit the REXS 1.4 database gives
 the attribute (:mod:`femgear.rexs.database`).  An unknown unit, or one of another quantity
@@ -39,6 +40,7 @@ UNITS: dict[str, tuple[str, float, float]] = {
     "N mm / rad": ("torsional stiffness", 1e-3, 0.0),
     "kg m": ("unbalance", 1.0, 0.0), "g mm": ("unbalance", 1e-6, 0.0),
     "HV": ("vickers", 1.0, 0.0),
+    "h": ("time", 1.0, 0.0), "s": ("time", 1.0 / 3600.0, 0.0),   # the scene's one time (rating.life_hours) is in h
 }
 
 
@@ -68,10 +70,21 @@ def to_scene_unit(value: float, declared: str | None, expected: str) -> float:
     got, factor, offset = UNITS[unit]
     if got != quantity:
         raise UnitMismatch(f"unit {declared!r} is not a {quantity} unit (expected {expected!r})")
-    return factor * value + offset
+    inverse = _integer_inverse(factor)
+    return (value / inverse if inverse else factor * value) + offset
 
 
 def from_scene_unit(value: float, unit: str) -> float:
     """A scene value (SI, degrees, rev/min) written in ``unit`` (inverse of :func:`to_scene_unit`)."""
     _, factor, offset = UNITS[unit]
-    return (value - offset) / factor
+    inverse = _integer_inverse(factor)
+    return (value - offset) * inverse if inverse else (value - offset) / factor
+
+
+def _integer_inverse(factor: float) -> float | None:
+    """10ᵏ where ``factor`` is 10⁻ᵏ (mm, µm, mm²/s, ...): dividing by the exact integer rounds once, so 4.5 mm is
+    0.0045 m to the last bit (4.5 × 1e-3 is 0.0045000000000000005), and the scene's numbers survive a round trip."""
+    if factor >= 1:
+        return None
+    inverse = round(1.0 / factor)
+    return float(inverse) if abs(inverse * factor - 1.0) < 1e-12 else None

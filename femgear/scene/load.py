@@ -17,6 +17,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from femgear.errors import SceneError
+from femgear.scene.oils import fill_named_oil
 from femgear.scene.plausibility import check_temperatures, log_warnings, scene_warnings
 from femgear.scene.presets import expand_preset
 from femgear.scene.ranges import check_input_ranges
@@ -63,17 +64,39 @@ REMOVED_KEYS = {
 }
 
 
-def _first_error(exc: ValidationError) -> SceneError:
-    err = exc.errors()[0]
+def _problem(err: dict) -> tuple[str, str]:
+    """(key, message) of one pydantic error: an unknown key with the closest key of its table."""
+    own = err.get("ctx", {}).get("error")
+    if isinstance(own, SceneError):          # a validator's check that names its own key (a cross-key check)
+        return own.key, own.message
     key = ".".join(str(p) for p in err["loc"]) or "scene"
-    message = err["msg"].removeprefix("Value error, ")
-    if err["type"] not in ("missing", "extra_forbidden") and "input" in err:
-        message += f" (got {err['input']!r})"
     if err["type"] == "extra_forbidden":
-        message = REMOVED_KEYS.get(key, "unknown key")
-    more = len(exc.errors()) - 1
-    if more:
-        message += f"; and {more} more error{'s' if more > 1 else ''}"
+        return key, REMOVED_KEYS.get(key) or "unknown key" + _closest(err["loc"])
+    message = err["msg"].removeprefix("Value error, ")
+    if err["type"] != "missing" and "input" in err:
+        message += f" (got {err['input']!r})"
+    return key, message
+
+
+def _closest(loc: tuple) -> str:
+    """'; did you mean pinion.teeth?' for an unknown key ``loc`` close to a key of its table (else '')."""
+    import difflib
+
+    from femgear.scene.keys import scene_keys, scene_tables
+
+    table = ".".join(str(p) for p in loc[:-1])
+    names = [k.name for k in scene_keys() if k.table == table]
+    names += [t.table.rpartition(".")[2] for t in scene_tables() if t.table.rpartition(".")[0] == table]
+    close = difflib.get_close_matches(str(loc[-1]), names, n=1, cutoff=0.6)
+    return f" (did you mean {table + '.' if table else ''}{close[0]}?)" if close else ""
+
+
+def _first_error(exc: ValidationError) -> SceneError:
+    """One :class:`SceneError` naming the first problem's key, its message listing every problem."""
+    problems = [_problem(err) for err in exc.errors()]
+    key, message = problems[0]
+    if len(problems) > 1:
+        message += f"; and {len(problems) - 1} more: " + "; ".join(f"{k}: {m}" for k, m in problems[1:])
     return SceneError(key, message)
 
 
@@ -86,7 +109,7 @@ def scene_from_dict(data: Mapping[str, Any], overrides: Iterable[str] = (), *, w
     key the user typed.  The gear's feasibility and the checks of the operating point that need the
     pair run when the case is bound (:func:`femgear.case.build_case`).
     """
-    raw = expand_preset(apply_overrides(data, overrides))
+    raw = fill_named_oil(expand_preset(apply_overrides(data, overrides)))
     try:
         scene = Scene.model_validate(raw)
     except ValidationError as exc:
@@ -125,6 +148,16 @@ def read_toml(path: str | Path, what: str = "scene") -> dict[str, Any]:
         raise SceneError(str(path), f"not valid TOML: {exc}") from None
 
 
+#: scene keys that name a file: a relative path is read from the scene file's folder
+PATH_KEYS = (("housing", "frf_file"),)
+
+
 def load_scene(path: str | Path, overrides: Iterable[str] = ()) -> Scene:
-    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it (no geometry is built)."""
-    return scene_from_dict(read_toml(path), overrides)
+    """Read a TOML scene file, apply ``KEY=VALUE`` overrides and validate it (no geometry is built); the file
+    keys of :data:`PATH_KEYS` given relative are taken from the scene file's folder."""
+    data = apply_overrides(read_toml(path), overrides)
+    for table, key in PATH_KEYS:
+        node = data.get(table)
+        if isinstance(node, dict) and isinstance(node.get(key), str) and not Path(node[key]).is_absolute():
+            node[key] = str(Path(path).parent / node[key])
+    return scene_from_dict(data)

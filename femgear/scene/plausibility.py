@@ -81,7 +81,16 @@ def check_operating_limits(scene: Scene, pair) -> None:
 def scene_warnings(scene: Scene, earlier: Sequence[str] = ()) -> list[str]:
     """``earlier`` (the input ranges' warnings, :mod:`femgear.scene.ranges`) and the oil temperature's
     warnings (each ``key: message``), not logged."""
+    from femgear.scene.oils import unsourced_warning
+    from femgear.scene.roughness import roughness_warnings
+
     out: list[str] = list(earlier)
+    unsourced = unsourced_warning(scene.oil)
+    if unsourced and scene.oil.name:            # a scene's own oil: logged at INFO (the default τ0 is its choice)
+        out.append(unsourced)
+    elif unsourced:
+        log.info(unsourced)
+    out += roughness_warnings(scene)
     t_amb, t_ref = scene.operating.ambient_temperature, scene.oil_reference_temperature
     if t_amb > MAX_OIL_TEMPERATURE:
         out.append(f"operating.ambient_temperature: {t_amb:g} K is above {MAX_OIL_TEMPERATURE:g} K, "

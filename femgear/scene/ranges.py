@@ -23,7 +23,8 @@ pinion/gear.tip_diameter        0.8–1.25 × m_n (z/cos β + 2)           0.5�
 pair.centre_distance            0.8–1.25 × reference a                 0.5–2 × (z1 + z2) m_n / (2 cos β)
 pinion/gear.bore_radius         —                                      < reference radius
 pinion/gear.shaft_diameter      ≤ d_a                                  ≤ 10 d_a
-pinion/gear.bearing_span        ≥ the member's total face width        ≤ 200 d_a
+pinion/gear.bearing_span        ≤ 50 d_a                               ≥ the member's total face width,
+                                                                       ≤ 200 d_a
 oil.viscosity                   1e-3–1 Pa s                            1e-4–5 Pa s
 oil.pressure_viscosity          5e-9–6e-8 1/Pa                         1e-9–1e-7 1/Pa
 oil.temperature_viscosity       ≤ 0.1 1/K                              ≤ 0.5 1/K
@@ -35,6 +36,8 @@ operating.speed_rpm             pitch-line speed ≥ 0.1 m/s             ≥ 1 m
 operating.torque                (Hertz pressure: plausibility)         nominal σ_H0 ≤ 8 GPa
 pinion/gear.eccentricity        ≤ backlash and ≤ ISO 1328 class-11     < m_n
                                 runout F_r/2
+pinion/gear.cumulative_pitch_   ≤ ISO 1328 class-11 F_p/2              < m_n
+  error
 errors.profile_error, .random   ≤ ISO 1328 class-12 f_fα               < m_n / 4
 pair.backlash                   ≤ 0.2 m_n                              < m_n
 pinion/gear.unbalance           —                                      unbalance/mass < tip radius
@@ -43,7 +46,7 @@ material.density                —                                      500–2
 material.hardness               —                                      0.1–20 GPa
 material.thermal_expansion      —                                      1e-7–1e-4 1/K
 material.conductivity, .spec.h. —                                      1–500 W/(m K), 100–5000 J/(kg K)
-roughness.rq                    ≤ 10 µm                                ≤ min(100 µm, 0.1 m_n)
+roughness.ra, .rq (per member)  R_a 0.02–12.5 µm (ISO 1302 N1–N10)     R_a ≤ min(50 µm, 0.05 m_n) (R_q × 1.25)
 ==============================  =====================================  ===================================
 
 Sources of the bounds: ISO 54 / DIN 780 module series (0.05–100 mm), ISO 6336-1 (b/d1 of
@@ -64,6 +67,11 @@ from femgear.errors import SceneError
 SIGMA_H0_IMPOSSIBLE = 8.0e9   #: Pa, nominal ISO contact stress no steel flank carries (≈ 2 × ISO 76's 4.2 GPa)
 MIN_PITCH_SPEED = 1.0e-3      #: m/s, below: refused (no film; mesh period beyond the dynamic models)
 LOW_PITCH_SPEED = 0.1         #: m/s, below: warned (boundary lubrication)
+#: where unit hints start for values whose plausible range starts at 0 (:attr:`Range.hint_band`): a half backlash of
+#: 0.005 m_n (a tenth of ISO/TR 10064-2's j_bn,min/2 at small centre distances), a tooth error or runout of 0.1 µm
+#: (below ISO 1328 class 1), a composite roughness of 0.01 µm (below superfinished flanks)
+BACKLASH_MIN = 0.005
+FINEST_ERROR = 1e-7
 
 
 @dataclass(frozen=True)
@@ -77,6 +85,13 @@ class Range:
     unit: str                     #: the SI unit of the key
     what: str                     #: what the range is (printed)
     hints: tuple[tuple[float, float, str], ...] = ()  #: (factor, offset, unit typed): value·factor + offset in SI
+    #: where a value converted by a hint must land for the hint to be offered (None: the plausible range); a
+    #: range whose plausible values start at 0 (no backlash, a solid disc) gives here where real ones start, so
+    #: that 0.15 is not offered as 0.15 µm of backlash, nor a bore as 0.012 mm
+    hint_band: tuple[float, float] | None = None
+    #: (key, message) refused instead when the value is impossible because of another key (the tooth count
+    #: that makes the gear smaller than its bore, rather than the bore); None: the key itself
+    blame: tuple[str, str] | None = None
 
 
 def _fmt(x: float) -> str:
@@ -84,10 +99,11 @@ def _fmt(x: float) -> str:
 
 
 def _hint(r: Range) -> str:
-    """'; did you mean 6 mm = 0.006 m?' for the first unit whose conversion lands in the plausible range."""
+    """'; did you mean 6 mm = 0.006 m?' for the first unit in which the value is plausible (:attr:`Range.hint_band`)."""
+    lo, hi = r.plausible if r.hint_band is None else r.hint_band
     for factor, offset, unit in r.hints:
         converted = r.value * factor + offset
-        if r.plausible[0] <= converted <= r.plausible[1]:
+        if lo <= converted <= hi:
             return f"; did you mean {_fmt(r.value)} {unit} = {_fmt(converted)} {r.unit}?"
     return ""
 
@@ -100,6 +116,8 @@ def _judge(r: Range) -> str | None:
     """Raise for an impossible value; the warning text for an unusual one (no unit hint: the value
     is possible as typed); None when plausible."""
     if not r.possible[0] <= r.value <= r.possible[1]:
+        if r.blame is not None:
+            raise SceneError(*r.blame)
         plausible = "" if r.plausible == r.possible else f", plausible {_band(*r.plausible, r.unit)}"
         raise SceneError(r.key, f"{_fmt(r.value)} {r.unit} is impossible for {r.what}: possible "
                                 f"{_band(*r.possible, r.unit)}{plausible}{_hint(r)}")
@@ -130,7 +148,8 @@ def _size_ranges(scene) -> list[Range]:
                          f"a face width at m_n = {_fmt(m * 1e3)} mm, d1 = {_fmt(d1 * 1e3)} mm "
                          f"(plausible 2–80 m_n and ≤ 2.5 d1)", MM))
     out.append(Range("pair.groove_width", p.groove_width, (0.0, 20 * p.face_width), (0.0, 3 * p.face_width), "m",
-                     f"the groove between helices of b = {_fmt(p.face_width * 1e3)} mm", MM))
+                     f"the groove between helices of b = {_fmt(p.face_width * 1e3)} mm", MM,
+                     hint_band=(0.5 * m, 3 * p.face_width)))
     beta = math.radians(p.helix_angle_deg)
     if p.centre_distance is not None:
         a = (scene.pinion.teeth + scene.gear.teeth) * m / (2 * math.cos(beta))
@@ -143,15 +162,28 @@ def _size_ranges(scene) -> list[Range]:
             out.append(Range(f"{n}.tip_diameter", member.tip_diameter, (0.5 * d_a, 2 * d_a), (0.8 * d_a, 1.25 * d_a),
                              "m", f"this {n} (d + 2 m_n = {_fmt(d_a * 1e3)} mm)", MM))
         out.append(Range(f"{n}.bore_radius", member.bore_radius, (0.0, 0.5 * d), (0.0, 0.5 * d), "m",
-                         f"the bore of this {n} (reference radius {_fmt(d / 2 * 1e3)} mm)", MM))
+                         f"the bore of this {n} (reference radius {_fmt(d / 2 * 1e3)} mm)", MM,
+                         hint_band=(0.05 * d, 0.5 * d), blame=_teeth_blame(scene, n, d)))
         out.append(Range(f"{n}.shaft_diameter", member.shaft_diameter, (1e-3 * d_a, 10 * d_a), (0.02 * d_a, d_a),
                          "m", f"the shaft of this {n} (tip diameter ≈ {_fmt(d_a * 1e3)} mm)", MM))
         width = (member.face_width or p.face_width) * (2 if p.kind == "double-helical" else 1)
         width += p.groove_width if p.kind == "double-helical" else 0.0
-        out.append(Range(f"{n}.bearing_span", member.bearing_span, (0.0, 200 * d_a), (width, 50 * d_a), "m",
-                         f"the bearing span of this {n} (its toothed width is {_fmt(width * 1e3)} mm: "
-                         "the bearings sit outside it)", MM))
+        out.append(Range(f"{n}.bearing_span", member.bearing_span, (width, 200 * d_a), (width, 50 * d_a), "m",
+                         f"the bearing span of this {n} (its toothed width is {_fmt(width * 1e3)} mm: the shaft "
+                         "between the bearings is longer, the bearings sit outside the teeth)", MM))
     return out
+
+
+def _teeth_blame(scene, n: str, d: float) -> tuple[str, str] | None:
+    """A bore that fits the member's own shaft but not its reference circle: the tooth count (or the module) makes
+    the gear too small, so ``<member>.teeth`` is refused, naming the bore, the shaft and the module."""
+    member = getattr(scene, n)
+    if 2 * member.bore_radius > member.shaft_diameter * (1 + 1e-9):
+        return None
+    return (f"{n}.teeth", f"{member.teeth} teeth at m_n = {_fmt(scene.pair.normal_module * 1e3)} mm make a reference "
+                          f"radius of {_fmt(d / 2 * 1e3)} mm, inside this {n}'s bore ({n}.bore_radius "
+                          f"{_fmt(member.bore_radius * 1e3)} mm, which fits its {_fmt(member.shaft_diameter * 1e3)} mm "
+                          f"shaft): too few teeth for this shaft, or a module too small")
 
 
 def _oil_ranges(scene) -> list[Range]:
@@ -196,13 +228,13 @@ def _error_ranges(scene) -> list[Range]:
     """Eccentricity, errors, backlash and unbalance against the gear's size and quality."""
     p, m = scene.pair, scene.pair.normal_module
     out = [Range("pair.backlash", p.backlash, (0.0, m), (0.0, 0.2 * m), "m",
-                 f"a normal backlash at m_n = {_fmt(m * 1e3)} mm", UM_MM)]
+                 f"a normal backlash at m_n = {_fmt(m * 1e3)} mm", UM_MM, hint_band=(BACKLASH_MIN * m, 0.2 * m))]
     d_max = _reference_diameter(scene, "gear")
     f_f12, _ = _iso1328(m, d_max, 12)
     for key in ("profile_error", "random"):
         out.append(Range(f"errors.{key}", getattr(scene.errors, key), (0.0, 0.25 * m), (0.0, f_f12), "m",
                          f"a tooth error at m_n = {_fmt(m * 1e3)} mm (ISO 1328 class 12 f_fα = "
-                         f"{_fmt(f_f12 * 1e6)} µm)", UM_MM))
+                         f"{_fmt(f_f12 * 1e6)} µm)", UM_MM, hint_band=(FINEST_ERROR, f_f12)))
     for n in ("pinion", "gear"):
         member, d = getattr(scene, n), _reference_diameter(scene, n)
         _, F_r11 = _iso1328(m, d, 11)
@@ -210,7 +242,11 @@ def _error_ranges(scene) -> list[Range]:
         out.append(Range(f"{n}.eccentricity", member.eccentricity, (0.0, m), (0.0, limit), "m",
                          f"the eccentricity of this {n} (backlash {_fmt(p.backlash * 1e6)} µm: the teeth lose "
                          f"contact or jam once per revolution above it; ISO 1328 class 11 runout F_r/2 = "
-                         f"{_fmt(F_r11 / 2 * 1e6)} µm)", UM_MM))
+                         f"{_fmt(F_r11 / 2 * 1e6)} µm)", UM_MM, hint_band=(FINEST_ERROR, limit)))
+        F_p11 = F_r11 / 0.8
+        out.append(Range(f"{n}.cumulative_pitch_error", member.cumulative_pitch_error, (0.0, m), (0.0, F_p11 / 2),
+                         "m", f"the cumulative pitch deviation of this {n} (ISO 1328 class 11 F_p/2 = "
+                              f"{_fmt(F_p11 / 2 * 1e6)} µm)", UM_MM, hint_band=(FINEST_ERROR, F_p11 / 2)))
         r_a = d / 2 + m
         out.append(Range(f"{n}.unbalance", member.unbalance, (0.0, member.mass * r_a), (0.0, member.mass * r_a),
                          "kg m", f"this {n}'s unbalance (mass × tip radius = {_fmt(member.mass * r_a)} kg m)",
@@ -228,9 +264,6 @@ def _error_ranges(scene) -> list[Range]:
                   "a gear material's conductivity"),
             Range("material.specific_heat", mat.specific_heat, (100.0, 5000.0), (100.0, 5000.0), "J/(kg K)",
                   "a gear material's specific heat", ((1e3, 0.0, "kJ/(kg K)"),))]
-    rq = scene.roughness.rq
-    out.append(Range("roughness.rq", rq, (0.0, min(1e-4, 0.1 * m)), (0.0, 1e-5), "m",
-                     "a composite RMS flank roughness (ground 0.1–0.5 µm, hobbed 1–3 µm)", UM_MM))
     return out
 
 
@@ -252,15 +285,29 @@ def _operating_checks(scene) -> list[str]:
     T1 = op.torque if op.driver == "pinion" else op.torque * z1 / z2
     sigma = _nominal_contact_stress(scene, T1, d1)
     if sigma > SIGMA_H0_IMPOSSIBLE:
-        hint = ""
-        if _nominal_contact_stress(scene, T1 * 1e-3, d1) < 3e9:
-            hint = f"; did you mean {_fmt(op.torque)} N mm = {_fmt(op.torque * 1e-3)} N m?"
+        hint = _torque_hint(scene, T1, d1)
         b = p.face_width * (2 if p.kind == "double-helical" else 1)
         raise SceneError("operating.torque", f"{_fmt(op.torque)} N m on this pair (d1 = {_fmt(d1 * 1e3)} mm, "
                                              f"b = {_fmt(b * 1e3)} mm) is a nominal contact stress σ_H0 ≈ "
                                              f"{_fmt(sigma / 1e9)} GPa, far above what any steel flank carries "
                                              f"({SIGMA_H0_IMPOSSIBLE / 1e9:g} GPa){hint}")
     return out
+
+
+def _torque_hint(scene, T1: float, d1: float) -> str:
+    """'; did you mean …?' for the readings of an impossible ``operating.torque`` under which the pair would run
+    at a nominal contact stress σ_H0 no higher than its own ``rating.contact_stress_limit`` (a torque in N mm, a
+    power in W at the driver's speed); '' when neither is plausible."""
+    op = scene.operating
+    n_driver = op.speed_rpm
+    readings = [(op.torque * 1e-3, f"{_fmt(op.torque)} N mm = {_fmt(op.torque * 1e-3)} N m")]
+    if n_driver > 0:
+        T_power = op.torque / (n_driver * math.pi / 30)
+        readings.append((T_power, f"a power of {_fmt(op.torque)} W = {T_power:.6g} N m at {n_driver:.6g} rpm"))
+    ratio = T1 / op.torque
+    fits = [text for torque, text in readings
+            if _nominal_contact_stress(scene, torque * ratio, d1) <= scene.rating.contact_stress_limit]
+    return f"; did you mean {' or '.join(fits)}?" if fits else ""
 
 
 def _nominal_contact_stress(scene, T1: float, d1: float) -> float:
@@ -287,6 +334,9 @@ def check_input_ranges(scene) -> list[str]:
         message = _judge(r)
         if message:
             warnings.append(message)
+    from femgear.scene.roughness import check_roughness
+
+    warnings += check_roughness(scene)
     warnings += _operating_checks(scene)
     return warnings
 

@@ -15,6 +15,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from femgear.errors import SceneError
 from femgear.levels import coupling as coupling_levels
 from femgear.levels import dynamics as dynamics_levels
 from femgear.scene.levels import check_level
@@ -116,7 +117,7 @@ class Member(_Frozen):
                          "no rim factor")
     support_stiffness: Pos = Field(
         description="bearing stiffness of the WHOLE member (the sum of its two bearings) in each direction x, y "
-                    "and, without axial_stiffness, z [N/m]; each of the two bearings at ±bearing_span/2 gets half")
+                    "and, without axial_stiffness, z [N/m]; each of the two bearings gets half")
     support_damping: NonNeg = Field(
         0.0, description="bearing damping of the WHOLE member (the sum of its two bearings) per direction, split "
                          "like support_stiffness [N s/m]")
@@ -124,7 +125,25 @@ class Member(_Frozen):
                     "rotation [m]")
     eccentricity_phase_deg: float = Field(0.0, description="phase θ of the eccentricity at t = 0 [deg]")
     unbalance: NonNeg = Field(0.0, description="mass unbalance U = m·e (rotating force U Ω²) [kg m]")
-    bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings, symmetric about the mid-plane [m]")
+    cumulative_pitch_error: NonNeg = Field(
+        0.0, description="amplitude A of a once-per-revolution cumulative pitch deviation along the line of action: "
+                         "tooth n sits A sin(2π n/z + φ) ahead (a sinusoidal pattern of ISO 1328's F_p = 2 A), seen "
+                         "tooth by tooth in the mesh [m]")
+    cumulative_pitch_phase_deg: float = Field(0.0, description="phase φ of the cumulative pitch deviation, at the tooth "
+                                                               "in mesh at t = 0 [deg]")
+    bearing_span: Pos = Field(0.10, description="axial distance between the member's two radial bearings (the shaft "
+                                                "between them must be longer than the toothed face) [m]")
+    face_offset: float = Field(
+        0.0, description="axial position of the toothed face's centre (the mesh station; a double-helical pair's "
+                         "groove centre) from the midpoint of the two bearings, towards the right bearing (+z) [m]: "
+                         "0 = symmetric straddle; |face_offset| < (bearing_span − face)/2 straddle, "
+                         "> (bearing_span + face)/2 overhung (both bearings on one side); a bearing under the "
+                         "toothed face is refused")
+    thrust_bearing: Literal["both", "left", "right"] = Field(
+        "both", description="which radial bearing also carries the axial load (axial_stiffness, axial_damping): "
+                            "'both' split equally (as a pair of angular-contact or tapered bearings), 'left' "
+                            "(the bearing at −z, station <member>_L) or 'right' (+z) alone, the other floating "
+                            "axially [-]")
     shaft_diameter: Pos = Field(0.040, description="diameter of the member's solid shaft [m]: the Timoshenko shaft elements between the bearings "
                     "(timoshenko dynamics level) and the LTCA body's bore when bore_radius = 0")
 
@@ -142,8 +161,14 @@ class Material(_Frozen):
 
 
 class Oil(_Frozen):
-    """``[oil]``: the lubricant.  Viscosity data refer to ``reference_temperature``."""
+    """``[oil]``: the lubricant.  Viscosity data refer to ``reference_temperature``.  ``name`` picks an oil of
+    femgear's library (``femgear oils``), which fills every key the table does not give."""
 
+    name: str | None = Field(
+        None, description="a named oil of femgear's library (femgear oils lists them with their sources: "
+                          "mineral-vg32 … mineral-vg460, min100-fzg, pao-vg100, pag-eo-po); it fills every oil key "
+                          "not given here, at reference_temperature (default: operating.ambient_temperature); "
+                          "None: the table's own values")
     viscosity: Pos = Field(description="dynamic viscosity η0 at ambient pressure and the reference temperature [Pa s] (kinematic "
                     "viscosity [mm²/s] × density [kg/m³] × 1e-6)")
     density: Pos = Field(description="density ρ0 at ambient pressure and the reference temperature [kg/m^3]")
@@ -198,7 +223,7 @@ class Friction(_Frozen):
     regularisation_speed: Pos = Field(0.01, description="v_reg of the sliding sign tanh(v_s/v_reg) [m/s]")
     boundary_coefficient: float = Field(
         0.1, ge=0, le=0.5, description="boundary friction coefficient μ_b of asperity contacts (mixed lubrication, "
-                                       "used when roughness.rq > 0) [-]")
+                                       "roughness.model = \"greenwood-tripp\") [-]")
 
 
 class RoughnessPeak(_Frozen):
@@ -223,7 +248,7 @@ class RoughnessPeak(_Frozen):
 class SyntheticSurface(_Frozen):
     """``[roughness.synthetic]``: a seeded Gaussian random surface on one flank (FFT filtering,
     :func:`femgear.physics.ehl.core.surface.random_surface`) for deterministic rough EHL.  Independent of
-    ``roughness.rq``, which feeds the statistical (Greenwood–Tripp) mixed-lubrication model.
+    ``roughness.ra``/``rq``, which feed the statistical (Greenwood–Tripp) mixed-lubrication model.
     """
 
     rq: Pos = Field(description="RMS height Rq of the synthetic surface [m]")
@@ -235,15 +260,39 @@ class SyntheticSurface(_Frozen):
     moving: bool = Field(True, description="the surface moves with its flank through the contact")
 
 
-class SurfaceRoughness(_Frozen):
-    """``[roughness]``: flank roughness for mixed lubrication (Greenwood–Tripp asperities, JGP split).
+#: R_a of a flank by its finishing process [m] (typical values, docs/roughness.md)
+FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
+Finishing = Literal["ground", "honed", "shaved", "hobbed"]
+MemberPair = Annotated[list[Pos], Field(min_length=2, max_length=2)]
 
-    0 = smooth flanks (full-film EHL everywhere).  Used by the ``formula`` lubrication level.
-    The sub-tables ``[roughness.peak]`` (the paper's single peak) and ``[roughness.synthetic]``
-    (a seeded random surface) describe deterministic roughness for the EHL solvers; absent = none.
+
+class SurfaceRoughness(_Frozen):
+    """``[roughness]``: the one description of the flanks' roughness, read by the ratings (λ_GF, μ_mC) and the
+    tribology (the Greenwood–Tripp asperity share of the mixed lubrication, λ).
+
+    Per member R_a (``ra``) or R_q (``rq``), or both (then R_q/R_a must lie in 1…1.6; Gaussian heights:
+    √(π/2) = 1.25); neither: R_a from ``finishing`` (default ground, R_a 0.4 µm).  The missing one of R_a, R_q
+    follows the Gaussian ratio; the tribology takes the composite σ = √(R_q1² + R_q2²).  ``model = "smooth"``
+    keeps the tribology's flanks smooth (full film; the seed paper's model) while the ratings still read the
+    roughness.  The sub-tables ``[roughness.peak]`` (the paper's single peak) and ``[roughness.synthetic]`` (a
+    seeded random surface) describe deterministic roughness for the EHL solvers; absent = none.  Until the next
+    release the old keys keep working, each with a log line naming its new key: ``rating.roughness_ra`` (now
+    ``roughness.ra``), ``rating.finishing`` (``roughness.finishing``) and one number ``roughness.rq`` (the
+    composite σ; 0: smooth, now ``roughness.model = "smooth"``).
     """
 
-    rq: NonNeg = Field(0.0, description="composite RMS roughness σ = √(Rq1² + Rq2²) of the two flanks [m]")
+    ra: MemberPair | None = Field(
+        None, description="arithmetic mean roughness R_a of the pinion and gear flanks, [R_a1, R_a2] [m]")
+    rq: MemberPair | NonNeg | None = Field(
+        None, description="RMS roughness R_q of the pinion and gear flanks, [R_q1, R_q2] [m]; one number is the old "
+                          "composite σ = √(R_q1² + R_q2²) (deprecated: give the pair; 0 = smooth flanks)")
+    finishing: Finishing | None = Field(
+        None, description="flank finishing, which sets R_a of both flanks when neither ra nor rq is given (ground 0.4, "
+                          "honed 0.3, shaved 0.8, hobbed 1.6 µm); default ground")
+    model: Literal["greenwood-tripp", "smooth"] = Field(
+        "greenwood-tripp", description="the tribology's flanks: greenwood-tripp (the asperities carry a share of the "
+                                       "load at low λ, μ rising towards friction.boundary_coefficient) or smooth "
+                                       "(full film everywhere; the ratings still read the roughness)")
     eta_beta_sigma: Pos = Field(0.04, le=1.0, description="Greenwood–Tripp ηβσ (asperity density × radius × σ) [-]")
     sigma_over_beta: Pos = Field(
         3e-3, le=1.0, description="σ/β, roughness over the asperity tip radius (typical 1e-3…1e-2) [-]")
@@ -268,7 +317,8 @@ class Wear(_Frozen):
     """``[wear]``: Archard wear (``physics.wear = "archard"``)."""
 
     coefficient: NonNeg = Field(
-        1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H), the paper's 'wear rate' [-]"
+        1.0e-6, description="dimensionless Archard coefficient K (dh = K p ds / H) [-]: with wear.load = \"total\" the "
+                            "paper's 'wear rate' on the whole load, with \"asperity\" that of the asperity contacts"
     )
     cycles: NonNeg = Field(0.0, description="pinion revolutions of accumulated wear (load cycles of one pinion tooth) [-]")
     field: Literal["path", "face"] = Field(
@@ -276,6 +326,13 @@ class Wear(_Frozen):
                             "on both helices) or \"face\" (h(ρ, ζ) per member and helix from the LTCA's contact-line "
                             "loads, femgear.physics.wear.face; needs the ltca stiffness and an overlap ratio ε_β ≤ 1)")
     face_points: int = Field(21, ge=3, le=201, description="face positions ζ of the face-resolved wear grid [-]")
+    load: Literal["asperity", "total"] = Field(
+        "asperity", description="the load that wears in Archard's law: \"asperity\" the part the asperities carry "
+                                "through the film (the Greenwood–Tripp/JGP split of the formula level's film at each "
+                                "path position, roughness.rq or else the flanks' rating.roughness_ra / finishing; "
+                                "Akbarzadeh & Khonsari 2009), negligible in full film; \"total\" the paper's "
+                                "constant-coefficient form, K on the whole load whatever the film (its studies use "
+                                "it; a pair whose film carries the load is warned)")
 
 
 class Thermal(_Frozen):
@@ -322,6 +379,16 @@ class Numerics(_Frozen):
                                   "root), linear elsewhere (< 2 % mesh error at level 0); p1 linear tetrahedra "
                                   "everywhere, stiff in bending (≈ 5 % on the mean stiffness at level 1, docs/cost.md) [-]")
 
+    @model_validator(mode="after")
+    def _records_a_period(self):
+        if not self.dynamics_cycles >= self.transient_cycles + 1:
+            raise SceneError("numerics.transient_cycles",
+                             f"{self.transient_cycles:g} mesh periods dropped as transient leave fewer than one "
+                             f"recorded period of numerics.dynamics_cycles = {self.dynamics_cycles:g} (the periods "
+                             "simulated in all, the transient included): raise numerics.dynamics_cycles to at least "
+                             f"{self.transient_cycles + 1:g} or lower numerics.transient_cycles")
+        return self
+
     def level_of(self, body: str) -> int:
         """Resolution level of ``body`` (``"ltca"``, ``"fe3d"`` or ``"fe"``): ``body_level`` when the scene gives
         it, else that body's default (:data:`DEFAULT_BODY_LEVELS`; the ``ltca`` bodies with p1 elements: 1)."""
@@ -342,16 +409,31 @@ class Rating(_Frozen):
     """``[rating]``: ISO 6336-2 pitting, ISO 6336-3 bending, ISO/TS 6336-20/21 scuffing and ISO/TS 6336-22
     micropitting ratings (``femgear info``, ``femgear run``; docs/rating.md).
 
-    Defaults: K factors 1 (uniform load, no dynamic overload: give the K factors of the
-    application), σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
+    Defaults: K_A 1 (give the application's); K_v, K_Hβ, K_Hα from femgear's own dynamics and LTCA where
+    the scene's physics computes them, else by ISO 6336-1's methods (``load_factors``; a value given wins),
+    accuracy grade 6; σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
     life, lubricant and roughness factors are 1 (reference conditions) unless their
     inputs are given; Z_W = Z_X = 1.
     """
 
     application_factor: float = Field(1.0, ge=1, description="application factor K_A (ISO 6336-1) [-]")
-    dynamic_factor: float = Field(1.0, ge=1, description="dynamic factor K_v (ISO 6336-1) [-]")
-    face_load_factor: float = Field(1.0, ge=1, description="face load factor K_Hβ (contact, ISO 6336-1) [-]")
-    transverse_load_factor: float = Field(1.0, ge=1, description="transverse load factor K_Hα (contact, ISO 6336-1) [-]")
+    dynamic_factor: float | None = Field(
+        None, ge=1, description="dynamic factor K_v (ISO 6336-1) [-]; unset: from the run's dynamics (the largest "
+                                "dynamic over static mesh force of a helix) where a dynamics level runs, else "
+                                "ISO 6336-1 method B (rating.load_factors)")
+    face_load_factor: float | None = Field(
+        None, ge=1, description="face load factor K_Hβ (contact, ISO 6336-1) [-]; unset: from the LTCA's face load "
+                                "distribution with stiffness = 'ltca', else ISO 6336-1 method C (rating.load_factors)")
+    transverse_load_factor: float | None = Field(
+        None, ge=1, description="transverse load factor K_Hα (contact, ISO 6336-1) [-]; unset: from the LTCA's "
+                                "sharing between the tooth pairs with stiffness = 'ltca', else ISO 6336-1 method B")
+    load_factors: Literal["femgear", "iso"] = Field(
+        "femgear", description="source of K_v, K_Hβ, K_Hα not given above: femgear (the run's dynamics and LTCA where "
+                               "the physics levels compute them, ISO's methods otherwise) or iso (ISO 6336-1 "
+                               "methods B / C / B throughout); results.json lists each with its source and ISO's value")
+    accuracy_grade: int | None = Field(
+        None, ge=1, le=12, description="ISO 1328-1 accuracy grade Q of both members (f_pb, f_fα of ISO's K_v and K_Hα; "
+                                       "f_Hβ of its K_Hβ without a given helix slope deviation) [-]; default 6")
     contact_stress_limit: Pos = Field(1.5e9, description="σ_Hlim, allowable stress number (contact) [Pa]")
     min_safety_factor: Pos = Field(1.0, description="minimum required safety factor for pitting S_Hmin [-]")
     life_hours: Pos | None = Field(None, description="required life L_h [h]; sets N_L and Z_NT (None: Z_NT = 1)")
@@ -368,12 +450,10 @@ class Rating(_Frozen):
     bending_min_safety_factor: Pos = Field(1.0, description="minimum required safety factor for bending S_Fmin [-]")
     root_roughness_rz: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
         None, description="root fillet roughness R_z of pinion and gear [m] (Y_RrelT); default 1e-5 each")
-    finishing: Literal["ground", "honed", "shaved", "hobbed"] | None = Field(
-        None, description="flank finishing; sets roughness_ra when that is not given (ground 0.4, honed 0.3, "
-                          "shaved 0.8, hobbed 1.6 µm); default ground")
-    roughness_ra: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
-        None, description="arithmetic mean flank roughness R_a of pinion and gear [m] (scuffing μ, micropitting λ); "
-                          "default from finishing")
+    finishing: Finishing | None = Field(
+        None, description="deprecated (read for one release): use roughness.finishing [-]")
+    roughness_ra: MemberPair | None = Field(
+        None, description="deprecated (read for one release): use roughness.ra; R_a of pinion and gear [m]")
     oil_type: Literal["mineral", "pao", "pag", "pag-water", "traction", "phosphate-ester"] | None = Field(
         None, description="base oil, sets the lubricant factor X_L of ISO/TS 6336-20/21; default mineral")
     scuffing_load_stage: float | None = Field(
@@ -456,6 +536,118 @@ class Modifications(FlankModification):
         return FlankModification(**{k: getattr(self, k) for k in FlankModification.model_fields})
 
 
+Point = Annotated[list[float], Field(min_length=3, max_length=3)]
+PerMember = Annotated[list[Pos], Field(min_length=2, max_length=2)]
+
+
+def _housing_doc() -> str:
+    from femgear.levels.housing import REGISTRY
+
+    return "the housing model: " + "; ".join(f"{k} ({v.summary})" for k, v in REGISTRY.items())
+
+
+class Housing(_Frozen):
+    """``[housing]``: the path from the bearings to a sensor and to the surroundings (docs/models/housing.md).
+
+    Absent: the bearings stand on rigid ground, as before.  ``model = "fe"``: a parametric gearbox housing
+    (gmsh, quadratic tetrahedra) around the pair, Craig–Bampton-reduced at the four bearing seats and coupled
+    into the dynamics (the bearings join the shafts to the seats; the ``lumped`` dynamics level).
+    ``model = "frf"``: receptances, mobilities or accelerances from the bearing-seat DOFs to sensors (and to the
+    seats), read from ``frf_file`` (UFF dataset 58 or CSV); a receiver (sensor = H · bearing forces of the model on
+    a rigid housing) or, with the whole seat-to-seat block, coupled by LM-FBS in the frequency domain.  Outputs per
+    mesh order over ``speed_range`` (the linear response of the coupled model) and at the operating speed.
+    """
+
+    model: str = Field(description=_housing_doc())
+    # ---- the FE housing: geometry in the dynamics' frame (shafts along z, pinion axis at (0, 0), gear at (a_w, 0))
+    wall_thickness: Pos = Field(0.010, description="side wall thickness of the FE housing [m]")
+    end_wall_thickness: Pos = Field(0.012, description="thickness of the two end walls that carry the bearings [m]")
+    end_position: Pos | None = Field(
+        None, description="z of the end walls' mid-planes, ± this [m]; default the outer bearing stations "
+                          "(± the larger bearing_span/2)")
+    clearance: Pos = Field(0.020, description="cavity beyond each gear's tip circle, radially [m]")
+    bore_diameter: PerMember | None = Field(
+        None, description="diameter of the bearing seats (the bearings' outer diameter) of the pinion and the gear "
+                          "shaft [m]; default 2 × shaft_diameter")
+    bearing_width: PerMember | None = Field(
+        None, description="axial width of the bearing seats of the pinion and the gear shaft [m]; default "
+                          "shaft_diameter/2")
+    boss_thickness: Pos = Field(0.010, description="radial thickness of the bosses around the bores [m]")
+    boss_length: Pos | None = Field(
+        None, description="axial length of the bosses, centred on the end walls [m]; default: with the default "
+                          "end_position the shortest (at least the end wall's thickness) that holds every bearing "
+                          "seat, with a given end_position the end wall's thickness")
+    foot_size: Pos = Field(0.040, description="edge length of the four square feet, clamped on their soles [m]")
+    foot_height: Pos = Field(0.020, description="height of the feet below the floor [m]")
+    mesh_size: Pos = Field(0.015, description="target element size of the housing mesh [m]")
+    elements: Literal["p2", "p1"] = Field(
+        "p2", description="quadratic (p2, bends a wall right with one element through its thickness) or linear "
+                          "tetrahedra (p1, stiff in bending: for quick looks only)")
+    youngs_modulus: Pos = Field(1.1e11, description="Young's modulus of the housing [Pa] (grey cast iron EN-GJL-250, "
+                                                    "EN 1561: 103-118 GPa)")
+    poisson_ratio: float = Field(0.26, gt=0, lt=0.5, description="Poisson's ratio of the housing [-]")
+    density: Pos = Field(7200.0, description="density of the housing [kg/m^3]")
+    damping_ratio: float = Field(0.02, ge=0, lt=1, description="modal damping ratio of every housing mode [-]")
+    modes: int = Field(60, ge=0, description="fixed-interface modes kept by the Craig–Bampton reduction [-]")
+    check_reduction: bool = Field(
+        False, description="also solve the unreduced FE housing's modes and report the Craig–Bampton error in the "
+                           "retained band (0.4 × the highest retained fixed-interface frequency); costs "
+                           "one more factorisation and eigen-solve")
+    sensors: list[Point] | None = Field(
+        None, description="FE housing: sensor points [m] (x, y, z), each read at the nearest vertex of the outer "
+                          "surface; default one on the top wall above each bearing station")
+    sensor_directions: list[Point] | None = Field(
+        None, description="FE housing: the sensors' directions (x, y, z), one per sensor; default the outward "
+                          "surface normal [-]")
+    # ---- measured or supplied FRFs
+    frf_file: str | None = Field(
+        None, description="FRF file (model = 'frf'): UFF/UNV dataset 58 (.uff, .unv) or CSV (.csv, columns "
+                          "frequency, output, input, real, imag); a relative path is read from the scene's folder")
+    frf_kind: Literal["receptance", "mobility", "accelerance"] | None = Field(
+        None, description="what the FRF file holds (m/N, m/s per N, m/s^2 per N); required for CSV, read from "
+                          "the UFF's ordinate type (and checked against this when given)")
+    seat_nodes: Annotated[list[int], Field(min_length=4, max_length=4)] | None = Field(
+        None, description="UFF: the node numbers of the bearing seats pinion_L, pinion_R, gear_L, gear_R [-] (their "
+                          "directions 1/2/3 = x/y/z of the dynamics' frame; every other response node is a sensor)")
+    coupling: Literal["auto", "receiver", "lm-fbs"] = Field(
+        "auto", description="FRF housing: receiver (sensor = H · bearing forces on a rigid housing), lm-fbs "
+                            "(coupled by substructuring: needs the 12 × 12 seat-to-seat block) or auto (lm-fbs "
+                            "when the file has that block)")
+    # ---- outputs
+    speed_range: Annotated[list[Pos], Field(min_length=2, max_length=2)] | None = Field(
+        None, description="driving-member speeds of the order sweep, [from, to] [rev/min]; default 10 % to 150 % "
+                          "of operating.speed_rpm")
+    speed_points: int = Field(41, ge=2, le=2000, description="speeds of the order sweep [-]")
+    orders: int = Field(6, ge=1, le=50, description="mesh orders 1 … orders of the sweep and of the operating "
+                                                    "point [-]")
+    ods_speed_rpm: Pos | None = Field(None, description="driving-member speed of the operating deflection shape "
+                                                        "[rev/min]; default operating.speed_rpm")
+    ods_order: int = Field(1, ge=1, le=50, description="mesh order of the operating deflection shape [-]")
+    air_impedance: Pos = Field(411.0, description="characteristic impedance ρc of the air the housing radiates into "
+                                                  "[N s/m^3] (ISO/TS 7849: 411)")
+
+    @field_validator("model")
+    @classmethod
+    def _model_exists(cls, name: str) -> str:
+        from femgear.levels.housing import REGISTRY
+
+        problem = REGISTRY.problem(name)
+        if problem:
+            raise ValueError(problem)
+        return name
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        if self.sensor_directions is not None and (self.sensors is None or
+                                                   len(self.sensor_directions) != len(self.sensors)):
+            raise ValueError("sensor_directions needs one direction per point of sensors")
+        if self.speed_range is not None and not self.speed_range[1] > self.speed_range[0]:
+            raise ValueError("speed_range must be [from, to] with to > from")
+        if self.ods_order > self.orders:
+            raise ValueError(f"ods_order {self.ods_order} is above orders = {self.orders}")
+        return self
+
+
 def _levels_doc(submodel: str, what: str) -> str:
     """The description of a ``[physics]`` key, listing its levels from the registry (cheapest first)."""
     from femgear.scene.levels import LEVELS
@@ -519,6 +711,7 @@ class Scene(_Frozen):
     modifications: Modifications = Modifications()
     physics: Physics = Physics()
     rating: Rating = Rating()
+    housing: Housing | None = None
 
     @property
     def pinion_rpm(self) -> float:

@@ -2,8 +2,8 @@
 
     python studies/paper/mixed_friction.py [--coarse] [--workers=2] [--rq=METRES]
 
-The coupled baseline with rough flanks (``roughness.rq``, default 0.45 µm: ground flanks of
-Rq ≈ 0.32 µm each) and the mixed-lubrication split of :mod:`femgear.physics.lubrication.mixed`
+The coupled baseline with rough flanks (composite σ, default 0.45 µm: ``roughness.rq`` = 0.32 µm on
+each flank) and the mixed-lubrication split of :mod:`femgear.physics.lubrication.mixed`
 (Greenwood–Tripp asperities, boundary μ_b = 0.1), after 0, 1e6 and 3e6 wear cycles, beside
 the smooth flanks.  Prints μ at the pitch point, its maximum and mean along the path, the
 film parameter λ = h/σ at the pitch point and the largest asperity load share; writes
@@ -38,7 +38,11 @@ CYCLES = (0.0, 1e6, 3e6)
 
 
 def setup(rq: float, cycles: float) -> list[str]:
-    return [f"roughness.rq={rq!r}", f"wear.cycles={cycles!r}"]
+    """Overrides of composite σ = ``rq`` [m] (R_q = σ/√2 on each flank; 0: smooth flanks) after ``cycles``."""
+    if rq == 0:
+        return ['roughness.model="smooth"', f"wear.cycles={cycles!r}", C.PAPER_WEAR]
+    member = float(rq) / 2 ** 0.5
+    return [f"roughness.rq=[{member!r}, {member!r}]", f"wear.cycles={cycles!r}", C.PAPER_WEAR]
 
 
 def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
@@ -55,7 +59,7 @@ def run(coarse: bool = False, workers: int = 2, rq: float = 0.45e-6) -> dict:
     labels = ["smooth"] + [f"{c:.0e} cycles" for c in CYCLES]
     jobs = [setup(0.0, 0.0)] + [setup(rq, c) for c in CYCLES]
     cases = C.run_cases(jobs, coarse=coarse, workers=workers)
-    scene = load_scene(C.BASELINE, [f"roughness.rq={rq!r}"])
+    scene = load_scene(C.BASELINE, setup(rq, 0.0))
     case = build_case(scene)
     oil, solids = oil_law(case), solids_of(case.material, case.oil)
     E = reduced_modulus(scene.material.youngs_modulus, scene.material.poisson_ratio)

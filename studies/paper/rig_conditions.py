@@ -80,7 +80,7 @@ def setup(speed: float, torque: float, loop: float = 0.0, wear: float = 0.0, pro
           rig_sampling: bool = True) -> list[str]:
     """Overrides of one condition; ``rig_sampling``: steps per mesh period for ≥ 25.6 kHz (off for CI)."""
     return [f"operating.speed_rpm={speed!r}", f"operating.torque={torque!r}", f"operating.loop_stiffness={loop!r}",
-            f"wear.cycles={wear!r}", f"errors.profile_error={profile_error!r}"] \
+            f"wear.cycles={wear!r}", C.PAPER_WEAR, f"errors.profile_error={profile_error!r}"] \
         + ([f"numerics.steps_per_mesh_period={steps_per_mesh_period(speed)}"] if rig_sampling else [])
 
 

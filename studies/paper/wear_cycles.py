@@ -46,11 +46,12 @@ except ImportError:                                   # run as a script from stu
     from studies import _common as C
 
 CYCLES = (0.0, 1e6, 2e6, 3e6)
+PAPER_WEAR = C.PAPER_WEAR
 
 
 def setup(cycles: float = 0.0) -> list[str]:
     """Overrides of the baseline for ``cycles`` mesh cycles of wear."""
-    return [f"wear.cycles={cycles!r}"]
+    return [f"wear.cycles={cycles!r}", PAPER_WEAR]
 
 
 def run(coarse: bool = False, workers: int = 2, cycles: tuple[float, ...] = CYCLES) -> dict:

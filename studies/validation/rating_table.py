@@ -28,26 +28,37 @@ def setup() -> list[Path]:
     return extra + zoo
 
 
-def rate(path: Path, fillet: bool):
+#: the load factors of the ratings before issue 42 (K_v = K_Hβ = K_Hα = 1 unless the scene gave them)
+UNIT_FACTORS = ["rating.dynamic_factor=1.0", "rating.face_load_factor=1.0", "rating.transverse_load_factor=1.0"]
+
+
+def rate(path: Path, fillet: bool, overrides=()):
     from femgear.case import build_case
     from femgear.levels.contact import contact_pass
     from femgear.physics.contact.path import zone_grid
     from femgear.rate import rate_case
     from femgear.scene import load_scene
 
-    scene = load_scene(path, ["rating.fillet_fe=true"] if fillet else [])
+    scene = load_scene(path, (["rating.fillet_fe=true"] if fillet else []) + list(overrides))
     case = build_case(scene)
     pair = case.pair
     contact = contact_pass(case, u=zone_grid(pair, scene.numerics.path_points))
     return scene, pair, rate_case(scene, pair, contact)
 
 
-def table(scene, pair, r) -> tuple[str, dict]:
+def table(scene, pair, r, unit=None) -> tuple[str, dict]:
+    """The pair's Markdown table; ``unit``: the same rating with K_v = K_Hβ = K_Hα = 1 (its S_H, S_F beside)."""
     c = 273.15
     b, s, m, own = r.bending, r.scuffing, r.micropitting, r.own
+    f = r.factors
     rows = [
-        ("S_H (pinion / gear), ISO 6336-2", f"{r.pitting.S_H[0]:.2f} / {r.pitting.S_H[1]:.2f}", ""),
-        ("S_F (pinion / gear), ISO 6336-3 B", f"{b.S_F[0]:.2f} / {b.S_F[1]:.2f}", ""),
+        ("K_v, K_Hβ, K_Hα (ISO 6336-1 B, C, B; grade " f"{f.tolerances.grade})",
+         f"{f.K_v.value:.3f}, {f.K_Hbeta.value:.3f}, {f.K_Halpha.value:.3f}",
+         "femgear's with its dynamics and LTCA: `femgear run`, results.json `load_factors`"),
+        ("S_H (pinion / gear), ISO 6336-2", f"{r.pitting.S_H[0]:.2f} / {r.pitting.S_H[1]:.2f}",
+         "" if unit is None else f"K_v = K_Hβ = K_Hα = 1: {unit.pitting.S_H[0]:.2f} / {unit.pitting.S_H[1]:.2f}"),
+        ("S_F (pinion / gear), ISO 6336-3 B", f"{b.S_F[0]:.2f} / {b.S_F[1]:.2f}",
+         "" if unit is None else f"K_v = K_Hβ = K_Hα = 1: {unit.bending.S_F[0]:.2f} / {unit.bending.S_F[1]:.2f}"),
         ("σ_F0 [MPa] (pinion / gear)", f"{b.sigma_F0[0] / 1e6:.0f} / {b.sigma_F0[1] / 1e6:.0f}",
          "" if own.fillet is None else "FE fillet σ_1: " + " / ".join(
              f"{f.max_principal / 1e6:.0f} ({f.max_principal / s0:.2f} σ_F0, {math.degrees(f.tangent_angle):.0f}°)"
@@ -72,7 +83,8 @@ def table(scene, pair, r) -> tuple[str, dict]:
         md += "\nFlagged: " + "; ".join(r.flags) + "\n"
     if r.defaults:
         md += "\nDefaults: " + ", ".join(r.defaults) + "\n"
-    data = {"scene": scene.meta.name, **r.safety_factors, "S_F_members": list(b.S_F), "S_H_members": list(r.pitting.S_H),
+    data = {"scene": scene.meta.name, **r.safety_factors, "K_v": f.K_v.value, "K_Hbeta": f.K_Hbeta.value,
+            "K_Halpha": f.K_Halpha.value, "S_F_members": list(b.S_F), "S_H_members": list(r.pitting.S_H),
             "iso_max_contact_temperature": s.max_contact_temperature, "femgear_max_contact_temperature": own.max_temperature,
             "iso_lambda_min": m.lambda_GFmin, "femgear_lambda_min": own.lambda_min, "flags": list(r.flags)}
     return md, data
@@ -81,7 +93,7 @@ def table(scene, pair, r) -> tuple[str, dict]:
 def run(fillet: bool = False) -> tuple[str, list[dict]]:
     parts, rows = [], []
     for path in setup():
-        md, data = table(*rate(path, fillet))
+        md, data = table(*rate(path, fillet), unit=rate(path, False, UNIT_FACTORS)[2])
         parts.append(md)
         rows.append(data)
     return "\n".join(parts), rows

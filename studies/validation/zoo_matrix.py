@@ -11,8 +11,11 @@ A cell is one ``femgear run ... --json`` in a subprocess.  Its verdict:
 - ``ok`` — exit 0 and the invariants hold: the time-mean load along the path carries the
   normal force (helical: b/(p_bt cos β_b) ∫ w̄ du = F_n per helix, to 2 %; spur, whose load jumps
   at B and D: w̄ b = F_n inside the single-contact zone; ``ltca``, whose w̄ is the mean over the
-  phases that load u: the LTCA's own force balance per phase, to 1e-6), films positive, contact temperatures
-  finite and non-negative (zero only for the levels without heating), coupling converged, and
+  phases that load u: the LTCA's own force balance per phase, to 1e-6), the mean bearing loads of each
+  member balance the mean mesh force on it (radially and axially, to 1 %; without dynamics the static loads
+  the static normal force), the rating's K_v, K_Hβ, K_Hα listed with their sources (K_v from the dynamics
+  where the cell has them), films positive, contact temperatures finite and non-negative (zero only for the
+  levels without heating), coupling converged, and
   the film and temperature within a factor of :data:`FACTOR` of the formula figures of
   ``femgear info`` (a coarse net for unit or scaling faults, not a validation);
 - ``refused: <line>`` — exit 2 within :data:`REFUSAL_SECONDS` of CPU time with one line naming the key;
@@ -44,6 +47,7 @@ FACTOR = 5.0              #: films and temperatures within this factor of the fo
 REFUSAL_SECONDS = 30.0    #: CPU seconds: a refusal comes before (long) computing: the CLI's start-up (imports) ~2 s;
 #: CPU time, not wall time, so that a loaded machine does not turn a refusal into a late one
 FORCE_TOLERANCE = 0.02    #: the path integral of the time-mean load against F_n
+BEARING_TOLERANCE = 0.01  #: the mean bearing loads of a member against the mean mesh force on it
 COARSE = ("numerics.dynamics_cycles=20", "numerics.transient_cycles=10", "numerics.path_points=21")
 
 
@@ -115,6 +119,13 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     co = summary.get("coupling")
     if co and not co.get("converged"):
         bad.append("coupling not converged")
+    if "dynamics" in summary:
+        amp = summary["dynamics"]["amplitudes"]
+        bad += _bearing_balance(summary["dynamics"].get("bearing_forces"),
+                                [amp["mesh_force.L.mean"], amp["mesh_force.R.mean"]], hand["beta_b"])
+    else:                   # the static loads against the static normal force of each loaded helix
+        bad += _bearing_balance(summary.get("bearing_forces_static"),
+                                [hand["force"], hand["force"] if hand["helices"] == 2 else 0.0], hand["beta_b"])
     path = results["along_path"]
     for key in ("film_central", "film_minimum"):
         if min(path[key]) <= 0 or not all(map(math.isfinite, path[key])):
@@ -128,22 +139,64 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
     h = path["film_central"][len(path["s"]) // 2]
     if not hand["film"] / FACTOR < h < hand["film"] * FACTOR:
         bad.append(f"mid-path film {h:.3g} m vs formula {hand['film']:.3g} m")
+    from femgear.physics.rating.load_factors import SOURCES
+
+    lf = summary.get("load_factors")
+    if lf is None or any(k not in lf or lf[k]["source"] not in SOURCES or not lf[k]["value"] >= 1
+                         for k in ("K_v", "K_Hbeta", "K_Halpha")):
+        bad.append("the rating's load factors K_v, K_Hbeta, K_Halpha with their sources missing")
+    elif summary.get("dynamics") and lf["K_v"]["source"] not in ("femgear dynamics", "scene"):
+        bad.append(f"K_v from {lf['K_v']['source']!r} although the run has dynamics")
     w, s = path["load_per_length"], path["s"]
     te = summary.get("transmission_error")
     if te is not None:      # ltca: w̄ is the mean over the phases that load u (crowning, reliefs and line-end
         # edge loads leave parts of the lines open), so its path integral is not F_n; the LTCA's own balance is
-        if abs(te["load_balance_error"]) > 1e-6 or abs(te["load_share_left"] + te["load_share_right"] - 1) > 1e-6:
+        shares = te.get("load_share_left", 1.0) + te.get("load_share_right", 0.0)    # one helix: no share
+        if abs(te["load_balance_error"]) > 1e-6 or abs(shares - 1) > 1e-6:
             bad.append(f"LTCA load balance error {te['load_balance_error']:.2g}")
         return bad
     if hand["single"] is None:
         carried = hand["force_scale"] * float(np.trapezoid(w, s))
-    else:       # spur: one pair carries F_n inside the single-contact zone (B, D), away from its bounds
+    else:       # spur: one pair carries the mesh force inside the single-contact zone (B, D), away from its bounds
         lo, hi = hand["single"]
         margin = 0.1 * (hi - lo)
         inside = [wi for wi, si in zip(w, s) if lo + margin < si < hi - margin]
         carried = hand["face_width"] * sum(inside) / len(inside)
-    if abs(carried / hand["force"] - 1) > FORCE_TOLERANCE:
-        bad.append(f"path load carries {carried:.4g} N, F_n per helix {hand['force']:.4g} N")
+    force = hand["force"]
+    if hand["single"] is not None and "mesh_force_per_phase" in results:
+        force = _single_contact_force(results["mesh_force_per_phase"]["left"], hand, [si for si in s if
+                                      hand["single"][0] + margin < si < hand["single"][1] - margin])
+    if abs(carried / force - 1) > FORCE_TOLERANCE:
+        bad.append(f"path load carries {carried:.4g} N, the mesh force per helix {force:.4g} N")
+    return bad
+
+
+def _single_contact_force(force: list[float], hand: dict, positions: list[float]) -> float:
+    """The dynamic mesh force (over one mesh period) where the single pair in contact passes the path
+    ``positions`` s (from the pitch point) [N], averaged: in single contact that pair carries the whole mesh
+    force, and it reaches s = lo + (φ − φ_B) p_bt at the mesh phase φ (φ_B: where single contact begins), so
+    the zone's sampled path load equals the mesh force at those phases, whatever the dynamics."""
+    f = np.asarray(force, float)
+    start, _ = hand["single_phases"]
+    x = np.mod(start + (np.asarray(positions) - hand["single"][0]) / hand["p_bt"], 1.0)
+    return float(np.mean(np.interp(x, np.arange(f.size) / f.size, f, period=1.0)))
+
+
+def _bearing_balance(bf: dict | None, N: list[float], beta_b: float) -> list[str]:
+    """The mean bearing loads ``bf`` of each member balance the mean normal mesh forces ``N`` (left, right helix) on
+    it, to :data:`BEARING_TOLERANCE` of the mesh force: radially |Σ F̄_xy| = Σ_s N̄_s cos β_b (friction acts across
+    the line of action in the transverse plane and adds only (μ²/2)), axially |Σ F̄_z| = |N̄_L − N̄_R| sin β_b."""
+    if bf is None:
+        return ["no bearing forces in the summary"]
+    transverse, axial = sum(N) * math.cos(beta_b), abs(N[0] - N[1]) * math.sin(beta_b)
+    bad = []
+    for member in ("pinion", "gear"):
+        F = np.sum([bf[f"{member}_{side}"]["mean"] for side in "LR"], axis=0)
+        radial = math.hypot(F[0], F[1])
+        if abs(radial - transverse) > BEARING_TOLERANCE * transverse:
+            bad.append(f"{member} bearings carry {radial:.5g} N radially, the mesh {transverse:.5g} N")
+        if abs(abs(F[2]) - axial) > BEARING_TOLERANCE * sum(N):
+            bad.append(f"{member} bearings carry {F[2]:.5g} N axially, the mesh {axial:.5g} N")
     return bad
 
 
@@ -162,10 +215,22 @@ def hand_figures(path: Path) -> dict:
     contact = contact_pass(case)
     _, dT = friction_along_path(case, contact.line_load)
     u_B, u_D = single_contact_bounds(pair)
-    return {"force": case.operating.normal_force / pair.n_helices,
+    return {"single_phases": _single_phases(pair), "p_bt": pair.p_bt,"force": case.operating.normal_force / pair.n_helices, "beta_b": pair.beta_b, "helices": pair.n_helices,
             "force_scale": pair.b / (pair.p_bt * math.cos(pair.beta_b)), "face_width": pair.b,
             "single": (min(u_B, u_D) - pair.u_pitch, max(u_B, u_D) - pair.u_pitch) if pair.beta_b == 0 else None,
             "film": float(contact.film_central[contact.pitch_index]), "flash": float(max(dT))}
+
+
+def _single_phases(pair) -> tuple[float, float]:
+    """(start, length) of the mesh phases [periods] with one pair in contact (spur; None-like (0, 0) else)."""
+    from femgear.physics.geometry import contact_lines
+
+    phase = np.arange(2000) / 2000
+    one = np.array([contact_lines(pair, p).count == 1 for p in phase])
+    if pair.beta_b != 0 or not one.any() or one.all():
+        return 0.0, 0.0
+    first = int(np.flatnonzero(one & ~np.roll(one, 1))[0])          # where single contact begins
+    return float(phase[first]), float(one.mean())
 
 
 def run_timed(cmd: list[str], timeout: float, **kwargs) -> tuple[subprocess.CompletedProcess, float]:

@@ -24,8 +24,9 @@ geometry (the gear) and excitation (errors, backlash) use no other leaf; mesh (g
 and bodies of the gear) and stiffness (ISO 6336 and potential-energy tooth stiffness, the
 MeshStiffness table) read the geometry; contact (path kinematics, Hertz, load sharing by the
 stiffness) and body (FE elasticity, conduction, compliance on those meshes) come next;
-lubrication (oil laws, traction, flash temperature along the contact path) and wear (Archard
-on the path); ehl (isothermal EHL of one contact, with its oil laws) and rating (ISO 6336
+lubrication (oil laws, traction, flash temperature along the contact path), wear (Archard
+on the path) and housing (the gearbox housing's FE model on its gmsh mesh, Craig–Bampton, FRFs, substructuring and
+radiated sound); ehl (isothermal EHL of one contact, with its oil laws) and rating (ISO 6336
 with the body's fillet, the stiffness factors and the flash temperature); tehl (thermal EHL
 on the EHL solvers) and ltca (loaded tooth contact on the FE bodies, with the rating's
 contact stress) on top.  Inside ``ehl`` the shared core (groups, rheology, grids, the
@@ -64,7 +65,7 @@ LAYERS = {
 ORDER: dict[str, list[list[str]]] = {
     "femgear": [tier for tiers in LAYERS.values() for tier in tiers],
     "femgear.physics": [["geometry", "excitation"], ["mesh", "stiffness"], ["contact", "body"],
-                        ["lubrication", "wear"], ["ehl", "rating"], ["tehl", "ltca"]],
+                        ["lubrication", "wear", "housing"], ["ehl", "rating"], ["tehl", "ltca"]],
     "femgear.physics.ehl": [["core"], ["fe", "fd"], ["point"], ["dimensional", "transient"], ["path"], ["*"]],
     "femgear.system": [["dynamics"], ["coupling"]],
     "femgear.edge": [["plot"], ["io"], ["run"], ["sweep"], ["cli"]],

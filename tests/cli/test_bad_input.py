@@ -52,6 +52,12 @@ def _binary(tmp_path: Path) -> str:
 
 
 INPUT_ERRORS = [
+    # issue 38: the oil library and the one roughness description
+    (["info", BASE, "--set", 'oil.name="vg100"'], "oil.name"),
+    (["info", BASE, "--set", "roughness.ra=[0.0, 0.4e-6]"], "roughness.ra"),
+    (["info", BASE, "--set", "roughness.ra=[0.4, 0.4]"], "roughness.ra"),
+    (["info", BASE, "--set", "roughness.ra=[0.4e-6, 0.4e-6]", "--set", "roughness.rq=[0.2e-6, 0.2e-6]"],
+     "roughness.rq"),
     # the cases of issue 17
     (["info", BASE, "--set", "operating.torque=inf"], "operating.torque"),
     (["info", BASE, "--set", "pair.normal_module=inf"], "pair.normal_module"),
@@ -90,6 +96,17 @@ INPUT_ERRORS = [
     (["dynamics", BASE, "--transient", "200"], "--transient"),
     (["dynamics", BASE, "--sweep", "100:x:3"], "--sweep"),
     (["dynamics", BASE, "--sweep", "500:100:3"], "--sweep"),
+    (["dynamics", BASE, "--sweep", "0:1000:5"], "--sweep"),                  # a sweep over 0 rpm
+    (["dynamics", BASE, "--sweep", "500:600:2", "--harmonics", "1"], "--harmonics"),
+    (["dynamics", BASE, "--runup", "1000:500:2"], "--runup"),                # end speed below the start speed
+    (["dynamics", BASE, "--runup", "500:500:2"], "--runup"),
+    (["dynamics", BASE, "--runup", "500:1000:0"], "--runup"),                # zero duration
+    (["dynamics", BASE, "--runup", "0:1000:2"], "--runup"),
+    (["dynamics", BASE, "--runup", "500:1000"], "--runup"),
+    (["dynamics", BASE, "--runup", "500:1e6:2"], "--runup"),                 # above the pair's burst speed
+    (["dynamics", BASE, "--runup", "500:600:1", "--revolutions", "0"], "--revolutions"),
+    (["dynamics", BASE, "--runup", "500:600:0.01"], "--runup"),             # shorter than one tracking block
+    (["dynamics", BASE, "--sweep", "500:600:2", "--runup", "500:600:1"], "--runup"),
     (["dynamics", BASE, "--level", "rigid"], "--level"),
     (["run", BASE, "--out", "{file}/sub"], "--out"),
     (["nonsense"], "nonsense"),

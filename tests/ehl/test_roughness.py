@@ -156,7 +156,7 @@ def _scene(*overrides):
 
 def test_scene_roughness_tables():
     s = _scene()
-    assert (s.roughness.rq, s.roughness.peak, s.roughness.synthetic) == (0.0, None, None)
+    assert (s.roughness.rq, s.roughness.peak, s.roughness.synthetic) == (None, None, None)   # rq: per member, unset
     s = _scene("roughness.peak.amplitude=0.2e-6", "roughness.peak.wavelength=20e-6", "roughness.peak.x0=-1e-4",
                "roughness.synthetic.rq=0.1e-6", "roughness.synthetic.correlation_length=15e-6",
                "roughness.synthetic.seed=7")

@@ -101,10 +101,3 @@ def test_cli_prints_one_line():
 def test_double_helical_default_kind_unchanged(baseline_pair):
     assert baseline_pair.kind == "double-helical" and baseline_pair.n_helices == 2
     assert math.degrees(baseline_pair.beta) == pytest.approx(30.0)
-
-
-def test_timoshenko_refused_for_one_mesh_pairs():
-    """One-mesh pairs run the lumped dynamics (one mesh in the mid-plane); the timoshenko level,
-    which joins two helix halves by shaft elements, is one clear line."""
-    err = _error(FZG, "physics.dynamics=timoshenko")
-    assert err.key == "physics.dynamics" and "spur" in str(err)

@@ -72,7 +72,8 @@ def test_flanks_pvd_has_both_members_with_finite_fields(main_job):
 def test_dynamics_pvd_is_one_mesh_cycle_of_finite_displacements(main_job):
     import meshio
 
-    entries = _datasets(main_job / "dynamics.pvd")
+    every = _datasets(main_job / "dynamics.pvd")
+    entries = [e for e in every if e["part"] == "0"]
     times = np.array([float(e["timestep"]) for e in entries])
     assert 10 <= len(entries) <= 50 and times[0] == 0 and np.all(np.diff(times) > 0)
     f_m = 31 * 500 / 60
@@ -82,6 +83,13 @@ def test_dynamics_pvd_is_one_mesh_cycle_of_finite_displacements(main_job):
     assert u.shape == w.shape == (4 * 72, 3) and np.all(np.isfinite(u)) and np.all(np.isfinite(w))
     assert 1e-10 < np.abs(w).max() < 1e-6                       # sub-micrometre vibration, not zero
     assert np.all(mesh.point_data["mesh_force"] > 0)
+    # part 1: the four bearing stations with their loads, at the same times
+    stations = [e for e in every if e["part"] == "1"]
+    assert [float(e["timestep"]) for e in stations] == list(times)
+    bearings = meshio.read(main_job / stations[len(stations) // 2]["file"])
+    F = bearings.point_data["bearing_force"]
+    assert F.shape == (4, 3) and np.all(np.isfinite(F)) and np.all(np.hypot(F[:, 0], F[:, 1]) > 100)
+    assert np.allclose(F[:2].sum(axis=0), -F[2:].sum(axis=0), rtol=0.05)     # pinion and gear carry ± the mesh force
 
 
 def test_screenshot_of_the_pvd_set_has_content(main_job, tmp_path, monkeypatch):

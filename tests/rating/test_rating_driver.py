@@ -19,7 +19,10 @@ from femgear.scene import load_scene
 ROOT = Path(__file__).resolve().parents[2]
 FZG = ROOT / "studies" / "fzg_c14.toml"
 ALL_KEYS = ["rating.bending_stress_limit=5.0e8", "rating.root_roughness_rz=[1e-5, 1e-5]", "rating.finishing=\"ground\"",
-            "rating.oil_type=\"mineral\"", "rating.scuffing_load_stage=12.0", "rating.micropitting_load_stage=8.0"]
+            "rating.oil_type=\"mineral\"", "rating.scuffing_load_stage=12.0", "rating.micropitting_load_stage=8.0",
+            "rating.accuracy_grade=6"]
+#: the load factors given (else ISO's K_v and K_Hβ move with K_A)
+FIXED_K = ["rating.dynamic_factor=1.0", "rating.face_load_factor=1.0", "rating.transverse_load_factor=1.0"]
 
 
 def _rate(overrides=()):
@@ -42,13 +45,13 @@ def test_defaults_are_said_in_one_line(caplog):
 
 
 def test_inputs_reach_the_factors():
-    base = _rate(ALL_KEYS)
-    strong = _rate(ALL_KEYS + ["rating.bending_stress_limit=6.0e8", "rating.scuffing_load_stage=14.0",
+    base = _rate(ALL_KEYS + FIXED_K)
+    strong = _rate(ALL_KEYS + FIXED_K + ["rating.bending_stress_limit=6.0e8", "rating.scuffing_load_stage=14.0",
                                "rating.micropitting_load_stage=10.0", "rating.application_factor=1.25"])
     assert strong.bending.S_F[0] == pytest.approx(base.bending.S_F[0] * 6 / 5 / 1.25, rel=1e-12)
     assert strong.scuffing.theta_S > base.scuffing.theta_S
     assert strong.micropitting.lambda_GFP < base.micropitting.lambda_GFP
-    spray = _rate(ALL_KEYS + ["rating.lubrication_method=\"spray\""])
+    spray = _rate(ALL_KEYS + FIXED_K + ["rating.lubrication_method=\"spray\""])
     assert spray.scuffing.theta_M > base.scuffing.theta_M
 
 

@@ -18,9 +18,10 @@ FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 
 
 def test_rating_inputs_reach_the_factors():
-    scene = load_scene(FZG, ["rating.application_factor=1.25", "rating.life_hours=100"])
+    fixed = ["rating.dynamic_factor=1.0", "rating.face_load_factor=1.0", "rating.transverse_load_factor=1.0"]
+    scene = load_scene(FZG, ["rating.application_factor=1.25", "rating.life_hours=100", *fixed])
     pair = pair_from_scene(scene)
-    base = scene_rating(load_scene(FZG), pair)
+    base = scene_rating(load_scene(FZG, fixed), pair)
     r = scene_rating(scene, pair)
     assert r.stress.sigma_H[0] == pytest.approx(base.stress.sigma_H[0] * 1.25**0.5, rel=1e-12)
     assert r.N_L[0] == pytest.approx(60 * 2175 * 100) and r.Z_NT[0] > 1

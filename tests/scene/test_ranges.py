@@ -69,7 +69,6 @@ def test_unit_slips_are_refused_on_the_key_typed(scene, override, key, words, mo
     ("pinion.eccentricity=2e-4", "pinion.eccentricity"),          # above the backlash
     ("pair.backlash=1e-3", "pair.backlash"),
     ("thermal.flank_temperature_rise=180.0", "thermal.flank_temperature_rise"),
-    ("pinion.bearing_span=0.02", "pinion.bearing_span"),          # bearings inside the toothed width
 ])
 def test_unusual_values_warn_once_naming_the_key(override, key, caplog):
     with caplog.at_level(logging.WARNING, logger="femgear.scene"):

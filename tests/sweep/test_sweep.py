@@ -115,8 +115,8 @@ def test_cli_refuses_a_grid_typo_with_one_line_and_exit_2(tmp_path):
     run = subprocess.run([sys.executable, "-m", "femgear", "sweep", str(path), "--out", str(tmp_path / "o")],
                          capture_output=True, text=True)
     assert run.returncode == 2
-    assert run.stderr.strip().splitlines() == ["femgear: error: grid.operating.sped_rpm: unknown key "
-                                               "(checked before any case ran)"]
+    assert run.stderr.strip().splitlines() == ["femgear: error: grid.operating.sped_rpm: unknown key (did you "
+                                               "mean operating.speed_rpm?) (checked before any case ran)"]
     assert not (tmp_path / "o").exists()
 
 

@@ -247,6 +247,7 @@ def block(path: str | Path) -> str:
     """The comment block of a scene (``# hand: key = value ± tol  source``)."""
     lines = ["# --- hand-checked figures: tests/zoo/hand_figures.py (independent of femgear), checked against",
              "# `femgear info --json --set physics.stiffness='\"iso6336\"' --set physics.lubrication='\"constant\"'`",
+             "# with rating.dynamic_factor = face_load_factor = transverse_load_factor = 1 (K_v, K_Hβ, K_Hα of 1),",
              "# by tests/zoo/test_hand_figures.py; SI units; ± relative tolerance; source."]
     for key, value, tol, source in figures(path):
         lines.append(f"# hand: {key} = {value:.7g} ± {tol:g}  ({source})")

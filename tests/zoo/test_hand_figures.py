@@ -4,7 +4,8 @@ Each ``studies/zoo/*.toml`` ends in a comment block of ``# hand: KEY = VALUE ± 
 written by ``tests/zoo/hand_figures.py`` from the standards and papers without femgear.  Here
 
 - femgear's ``info --json`` (with ISO's uniform load along the lines, ``physics.stiffness = "iso6336"``,
-  and μ = ``friction.coefficient``, ``physics.lubrication = "constant"``) matches every figure within
+  μ = ``friction.coefficient``, ``physics.lubrication = "constant"``, and the load factors K_v, K_Hβ, K_Hα
+  set to 1: the ratings' own factors have their tests in ``tests/rating/test_load_factors.py``) matches every figure within
   the relative tolerance stated beside it;
 - the block is the independent script's current output (so it cannot go stale);
 - the zoo spans what issue 25 asks (module 2–12 mm, ε_β 0–4, 100–15 000 rpm, 1 kW–20 MW, the kinds
@@ -30,7 +31,10 @@ hand_figures = importlib.util.module_from_spec(_SPEC)
 _SPEC.loader.exec_module(hand_figures)
 ZOO = sorted((ROOT / "studies" / "zoo").glob("*.toml"))
 HAND = re.compile(r"^# hand: (\S+) = (\S+) ± (\S+)\s+\((.*)\)\s*$")
-CONDITIONS = ["--set", 'physics.stiffness="iso6336"', "--set", 'physics.lubrication="constant"']
+CONDITIONS = ["--set", 'physics.stiffness="iso6336"', "--set", 'physics.lubrication="constant"',
+              # the load factors the hand figures take (K_v = K_Hβ = K_Hα = 1, unless the scene gives them)
+              *(x for key in ("dynamic_factor", "face_load_factor", "transverse_load_factor")
+                for x in ("--set", f"rating.{key}=1.0"))]
 
 
 def stated(path: Path) -> list[tuple[str, float, float, str]]:

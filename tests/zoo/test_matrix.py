@@ -45,6 +45,15 @@ def test_a_wide_lightly_crowned_helix_gets_the_line_tehl_in_its_full_fidelity():
     assert 'physics.lubrication="tehl"' in full
 
 
+def test_the_single_helical_industrial_stage_has_a_valid_ltca_cell():
+    """Issue 37: a single-helical stiffness=ltca cell is in the matrix (the wind stage's is refused on its bore)."""
+    path = SCENES["industrial"]
+    cells = zm.cells(path)
+    assert zm._load(path).pair.kind == "single-helical"
+    for column in ("stiffness=ltca", "full"):
+        assert zm.dry_run("industrial", path, column, cells[column])["verdict"] == "valid"
+
+
 def test_a_coarse_run_passes_the_invariants(tmp_path, monkeypatch):
     """The default cell of the baseline without dynamics, through the matrix's own run and checks."""
     monkeypatch.setattr(zm, "OUT", tmp_path)

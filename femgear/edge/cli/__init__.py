@@ -29,7 +29,7 @@ from typing import NoReturn
 
 from femgear.errors import FemgearError
 
-_COMMAND_MODULES = ("new", "info", "run", "sweep", "dynamics", "ehl", "ltca", "rexs")
+_COMMAND_MODULES = ("new", "info", "run", "sweep", "dynamics", "ehl", "ltca", "rexs", "oils")
 EXIT_INPUT, EXIT_SOLVER, EXIT_INTERRUPTED = 2, 1, 130
 
 

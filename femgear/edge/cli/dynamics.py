@@ -5,7 +5,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from femgear.edge.cli.campbell import add_campbell_arguments, campbell_speeds, check_campbell_arguments, run_campbell
 from femgear.edge.cli.common import add_scene_arguments, emit_json, load_case_arg
+from femgear.edge.cli.dynamics_nvh import add_nvh_arguments, print_modes, sweep_speeds
 from femgear.edge.cli.levels import level_choices
 
 #: a mesh stiffness of the dynamics only (not a scene level): c_γ times the contact-line length
@@ -33,13 +35,19 @@ def register(sub) -> None:
     p.add_argument("--json", action="store_true", help="print one JSON summary as the last line")
     p.add_argument("--modes", action="store_true", help="print the natural frequencies and modal energies")
     p.add_argument("--sweep", metavar="RPM0:RPM1:N", default=None,
-                   help="instead of one run: time-domain speed sweep of the driver speed; plots the RMS of the "
-                        "dynamic transmission error (DTE) against mesh frequency with the natural frequencies "
-                        "(≥ 5 %% mesh strain energy) marked where the mesh frequency or its 2nd-4th harmonic "
-                        "meets them (writes dynamics_sweep.png)")
+                   help="instead of one run: speed sweep of the driver speed (harmonic balance where it applies, see "
+                        "--sweep-method); plots the RMS of the dynamic transmission error (DTE) against mesh "
+                        "frequency with the natural frequencies (≥ 5 %% mesh strain energy) marked where the mesh "
+                        "frequency or its 2nd-4th harmonic meets them, the mesh-order amplitudes of the mesh and "
+                        "bearing forces against speed, and the dynamic factor K_v per helix beside ISO 6336-1 "
+                        "method B with the resonance ratio N (writes dynamics_sweep.png, dynamics_orders.png, "
+                        "dynamics_K_v.png, dynamics_sweep.json, dynamics_sweep.npz)")
     p.add_argument("--kahraman-singh", action="store_true",
                    help="instead of one run: up/down frequency sweeps of the Kahraman-Singh backlash oscillator "
-                        "(writes kahraman_singh.png)")
+                        "and its harmonic-balance continuation through the folds (writes kahraman_singh.png, "
+                        "kahraman_singh_hb.png)")
+    add_nvh_arguments(p)
+    add_campbell_arguments(p)
     p.set_defaults(func=_run)
 
 
@@ -54,17 +62,32 @@ def _run(args: argparse.Namespace) -> int:
     finite("--transient", args.transient, nonnegative=True)
     if args.transient >= args.cycles:
         raise ArgumentError("--transient", f"must be less than --cycles ({args.transient:g} ≥ {args.cycles:g})")
+    from femgear.edge.cli import dynamics_nvh as nvh
+
+    nvh.check_nvh_arguments(args)
+    if args.campbell:
+        check_campbell_arguments(args)
     case = load_case_arg(args)
     if args.sweep:
         _check_sweep_speeds(case, sweep_speeds(args.sweep))
+    if args.runup:
+        ramp = nvh.runup_ramp(args.runup)
+        _check_sweep_speeds(case, (ramp.rpm0, ramp.rpm1), "--runup")
+        nvh.check_runup_blocks(case, ramp, args.revolutions)
+    if args.campbell:
+        _check_sweep_speeds(case, [s for s in campbell_speeds(args.campbell)[[0, -1]] if s > 0], "--campbell")
     if args.out is None:
         out = prepare_output_dir(child_path("out", case.name, "meta.name") / "dynamics", "meta.name")
     else:
         out = prepare_output_dir(args.out, "--out")
+    if args.campbell:
+        return run_campbell(case, args, out)
     if args.sweep:
-        return _sweep(case, args, out)
+        return nvh.run_sweep(case, args, out)
+    if args.runup:
+        return nvh.run_runup(case, args, out)
     if args.kahraman_singh:
-        return _kahraman_singh(args, out)
+        return nvh.run_kahraman_singh(args, out)
     from femgear.edge.io.dynamics import dynamics_summary, write_dynamics
     from femgear.system.dynamics import build_model, run_dynamics
 
@@ -86,113 +109,22 @@ def _run(args: argparse.Namespace) -> int:
         for name, path in files.items():
             print(f"{name}: {path}")
     if args.modes and not args.json:
-        _print_modes(run.modal)
+        print_modes(run.modal)
     return 0
 
 
-def _print_modes(modal) -> None:
-    print(f"{'mode':>4s} {'f [Hz]':>9s} {'mesh energy':>11s}  dominant kinetic-energy group")
-    for i, f in enumerate(modal.frequencies):
-        print(f"{i:4d} {f:9.1f} {modal.energy['mesh'][i]:11.2f}  {modal.dominant_group(i)}")
-
-
-def sweep_speeds(text: str):
-    """``RPM0:RPM1:N`` as N speeds [rpm]; :class:`ArgumentError` naming ``--sweep`` otherwise."""
-    import numpy as np
-
-    from femgear.errors import ArgumentError
-
-    try:
-        a, b, n = text.split(":")
-        lo, hi, count = float(a), float(b), int(n)
-    except ValueError:
-        raise ArgumentError("--sweep", f"expected RPM0:RPM1:N, got {text!r}") from None
-    if not (np.isfinite(lo) and np.isfinite(hi) and 0 < lo <= hi and count >= 1):
-        raise ArgumentError("--sweep", f"need finite 0 < RPM0 ≤ RPM1 and N ≥ 1, got {text!r}")
-    return np.linspace(lo, hi, count)
-
-
-def _check_sweep_speeds(case, speeds) -> None:
+def _check_sweep_speeds(case, speeds, argument: str = "--sweep") -> None:
     """The sweep's end speeds pass the scene's speed checks (:mod:`femgear.scene.ranges`, the burst
-    speed of the case's pair), before any computing; a refusal names ``--sweep``."""
+    speed of the case's pair), before any computing; a refusal names ``argument``."""
     from femgear.errors import ArgumentError, SceneError
     from femgear.scene.load import scene_from_dict
     from femgear.scene.plausibility import check_operating_limits
 
     data = case.scene.model_dump(exclude_none=True)
-    for rpm in (float(speeds[0]), float(speeds[-1])):
+    for rpm in {float(speeds[0]), float(speeds[-1])} if len(speeds) else ():
         try:
             check_operating_limits(scene_from_dict(data, [f"operating.speed_rpm={rpm!r}"], warn=False), case.pair)
         except SceneError as exc:
             if exc.key != "operating.speed_rpm":
                 raise
-            raise ArgumentError("--sweep", exc.message) from None
-
-
-def _sweep(case, args, out: Path) -> int:
-    from femgear.system.dynamics import build_model
-    from femgear.system.dynamics.modal import modal_analysis, resonance_marks
-    from femgear.system.dynamics.sweep import speed_sweep
-
-    rpm = sweep_speeds(args.sweep)
-    kw = {"level": args.level, "stiffness": args.stiffness}
-    sw = speed_sweep(case, rpm, method=args.method, **kw)
-    model = build_model(case, **kw)
-    modal = modal_analysis(model)
-    marks = resonance_marks(modal.frequencies, modal.energy["mesh"], float(sw.mesh_frequency.min()),
-                            float(sw.mesh_frequency.max()))
-    files = {}
-    if not args.no_plots:
-        from femgear.edge.io.figures import save_figure
-        from femgear.edge.plot.dynamics import plot_sweep
-
-        files["sweep"] = save_figure(plot_sweep(sw, modal, name=f"{case.name} ({model.level}, {model.stiffness.label} stiffness)"),
-                                     out / "dynamics_sweep.png")
-    if args.json:
-        from femgear.edge.cli.common import emit_json
-
-        emit_json({"speed_rpm": sw.speed_rpm, "mesh_frequency": sw.mesh_frequency, "dte_rms": sw.dte_rms,
-                   "natural_frequencies_hz": modal.frequencies, "mesh_energy": modal.energy["mesh"],
-                   "resonances": [{"mesh_frequency": x, "harmonic": k, "natural_frequency": f}
-                                  for x, k, f in marks],
-                   "files": {k: str(v) for k, v in files.items()}})
-        return 0
-    print(f"{'rpm':>8s} {'f_m [Hz]':>9s} {'DTE RMS [µm]':>12s}  (DTE: dynamic transmission error)")
-    for r, f, d in zip(sw.speed_rpm, sw.mesh_frequency, sw.dte_rms):
-        print(f"{r:8.1f} {f:9.1f} {d * 1e6:12.5f}")
-    _print_modes(modal)
-    for x, k, f in marks:
-        print(f"resonance in range: f_m = {x:.1f} Hz, mesh harmonic {k} meets the natural frequency {f:.1f} Hz")
-    for name, path in files.items():
-        print(f"{name}: {path}")
-    return 0
-
-
-def _kahraman_singh(args, out: Path) -> int:
-    import numpy as np
-
-    from femgear.system.dynamics.sdof import kahraman_singh_sweep
-
-    w = np.linspace(0.6, 1.3, 36)
-    up, down = kahraman_singh_sweep(w, direction="up"), kahraman_singh_sweep(w, direction="down")
-    files = {}
-    if not args.no_plots:
-        from femgear.edge.io.figures import save_figure
-        from femgear.edge.plot.dynamics import plot_branches
-
-        files["branches"] = save_figure(plot_branches(up, down), out / "kahraman_singh.png")
-    a_down, loss_down = down.amplitude[::-1], down.contact_loss[::-1]
-    if args.json:
-        from femgear.edge.cli.common import emit_json
-
-        emit_json({"frequency": up.frequency, "amplitude_up": up.amplitude, "amplitude_down": a_down,
-                   "contact_loss_up": up.contact_loss, "contact_loss_down": loss_down,
-                   "files": {k: str(v) for k, v in files.items()}})
-        return 0
-    print("Kahraman-Singh oscillator, ζ = 0.05, F_m = 0.1, F_a = 0.02 (lengths over the backlash b)")
-    print(f"{'Ω':>6s} {'amp up':>8s} {'amp down':>9s} {'loss up':>8s} {'loss down':>9s}")
-    for i, om in enumerate(up.frequency):
-        print(f"{om:6.3f} {up.amplitude[i]:8.4f} {a_down[i]:9.4f} {up.contact_loss[i]:8.2f} {loss_down[i]:9.2f}")
-    for name, path in files.items():
-        print(f"{name}: {path}")
-    return 0
+            raise ArgumentError(argument, exc.message) from None

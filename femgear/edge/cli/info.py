@@ -48,6 +48,10 @@ UNITS = {
     "scuffing_temperature": "K", "bulk_temperature_integral": "K", "integral_temperature": "K",
     "permissible_integral_temperature": "K", "max_contact_temperature_position": "m", "min_film": "m",
     "lambda_GFmin_position": "m", "lambda_min_position": "m",
+    "iso_max_contact_temperature": "K", "iso_bulk_temperature": "K", "iso_integral_temperature": "K",
+    "power_loss": "W", "iso_power_loss": "W", "supply_temperature": "K", "viscosity": "Pa s",
+    "pressure_viscosity": "1/Pa", "temperature_viscosity": "1/K", "density": "kg/m^3", "eyring_stress": "Pa",
+    "ra": "m", "rq": "m", "sigma": "m",
 }
 
 

@@ -157,7 +157,8 @@ def _print_table(result, name: str, seconds: float) -> None:
         rows.append((f"{tag}: TE harmonics 1…{a.harmonics.size}", " ".join(f"{x * 1e6:.4f}" for x in a.harmonics), "µm"))
         rows.append((f"{tag}: mesh stiffness mean (ripple)",
                      f"{a.stiffness_mean * 1e-9:.4g} ({a.stiffness_ripple * 100:.2f} %)", "kN/µm"))
-        rows.append((f"{tag}: load share left / right", f"{a.share_left:.4f} / {a.share_right:.4f}", ""))
+        if a.n_helices == 2:
+            rows.append((f"{tag}: load share left / right", f"{a.share_left:.4f} / {a.share_right:.4f}", ""))
         rows.append((f"{tag}: max pressure (away from edges)",
                      f"{p.pressure / 1e9:.3f} ({p.interior_pressure / 1e9:.3f}) at {p.where}"
                      + (", EDGE CONTACT" if p.edge else ""), "GPa"))

@@ -35,7 +35,7 @@ def _sweep(args: argparse.Namespace) -> int:
     """Exit 0 when every case finished, 1 when some failed (says how many), 130 when interrupted."""
     from femgear.edge.io.paths import prepare_output_dir
     from femgear.edge.sweep import SweepInterrupted, parse_sweep, run_sweep
-    from femgear.edge.sweep.check import check_cases
+    from femgear.edge.sweep.check import check_cases, check_outputs
     from femgear.errors import ArgumentError
 
     if args.workers < 1:
@@ -45,6 +45,7 @@ def _sweep(args: argparse.Namespace) -> int:
     outputs = tuple(o.strip() for o in args.outputs.split(",") if o.strip()) if args.outputs else ()
     spec = parse_sweep(args.sweep)
     check_cases(spec)              # every case's scene, before any case runs (exit 2 naming the key)
+    check_outputs(spec, outputs or spec.outputs, "--outputs" if outputs else "outputs")   # and what to draw
     prepare_output_dir(args.out / spec.name, "--out")
     start = time.perf_counter()
     try:

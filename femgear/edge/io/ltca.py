@@ -7,7 +7,8 @@
   ``per_torque``: a list of :func:`te_summary` objects, one per torque, ``design`` the same at the
   design torque;
 - ``curves``: per torque the arrays over one mesh period: ``phase`` [base pitches], ``lte``,
-  ``lte_left``, ``lte_right``, ``nlte`` [m], ``force_left``, ``force_right`` [N], ``k_total`` [N/m];
+  ``lte_left``, ``lte_right``, ``nlte`` [m], ``force_left``, ``force_right`` [N], ``k_total`` [N/m]
+  (a single-helical or spur pair: no per-helix curves, no load share; ``helices`` says how many);
 - ``harris`` (with ``--harris``): ``torque``, ``force``, ``peak_to_peak``,
   ``peak_to_peak_unmodified``, ``first_harmonic``, ``first_harmonic_unmodified``;
 - ``units``, ``scene`` (the validated scene), ``outputs`` (files).
@@ -37,7 +38,7 @@ UNITS = {
     "nlte_peak_to_peak": "m", "nlte_max": "m", "stiffness_mean": "N/m", "stiffness_ripple": "1 (peak-to-peak / mean)",
     "load_share_left": "1", "load_share_right": "1", "load_balance_error": "1", "interior_load_share_min": "1 (left, right)", "max_pressure": "Pa",
     "max_pressure_interior": "Pa", "max_pressure_phase": "base pitches", "max_pressure_u": "m",
-    "max_pressure_zeta": "m", "lte_left_peak_to_peak": "m", "lte_right_peak_to_peak": "m",
+    "max_pressure_zeta": "m", "helices": "1", "lte_left_peak_to_peak": "m", "lte_right_peak_to_peak": "m",
     "phase": "base pitches", "lte": "m", "lte_left": "m", "lte_right": "m", "nlte": "m", "force_left": "N",
     "force_right": "N", "k_total": "N/m", "peak_to_peak": "m", "peak_to_peak_unmodified": "m",
     "first_harmonic": "m", "first_harmonic_unmodified": "m", "seconds": "s", "model_seconds": "s",
@@ -62,20 +63,29 @@ def te_summary(a: TEAnalysis, cos_beta_b: float) -> dict[str, Any]:
         "lte_right_peak_to_peak": None if a.lte_right is None else float(np.ptp(a.lte_right)),
         "nlte_peak_to_peak": a.nlte_peak_to_peak, "nlte_max": float(np.max(a.nlte)),
         "stiffness_mean": a.stiffness_mean, "stiffness_ripple": a.stiffness_ripple,
-        "load_share_left": a.share_left, "load_share_right": a.share_right, "load_balance_error": a.balance_error,
+        "load_balance_error": a.balance_error,
         "interior_load_share_min": None if a.interior_force is None else
-        (np.min(a.interior_force, axis=1) / a.force).tolist(),
+        (np.min(a.interior_force[:a.n_helices], axis=1) / a.force).tolist(),
         "max_pressure": p.pressure, "max_pressure_interior": p.interior_pressure, "max_pressure_phase": p.phase,
         "max_pressure_helix": p.helix, "max_pressure_u": p.u, "max_pressure_zeta": p.zeta,
-        "max_pressure_where": p.where, "edge_contact": p.edge,
+        "max_pressure_where": p.where, "edge_contact": p.edge, "helices": a.n_helices,
     }
+    if a.n_helices == 2:       # a load share and helix fields only where there are two helices
+        out.update({"load_share_left": a.share_left, "load_share_right": a.share_right})
+    else:
+        for key in ("lte_left_peak_to_peak", "lte_right_peak_to_peak", "max_pressure_helix"):
+            out.pop(key)
     return out
 
 
 def te_curves(a: TEAnalysis) -> dict[str, Any]:
-    return {"torque": a.torque, "phase": a.phase, "lte": a.lte, "lte_left": _opt(a.lte_left),
-            "lte_right": _opt(a.lte_right), "nlte": a.nlte, "force_left": a.force_left, "force_right": a.force_right,
-            "k_total": a.k_total}
+    """The curves over one mesh period; the per-helix ones (``lte_left``/``_right``, ``force_left``/``_right``)
+    only for a two-helix pair."""
+    out = {"torque": a.torque, "phase": a.phase, "lte": a.lte, "nlte": a.nlte, "k_total": a.k_total}
+    if a.n_helices == 2:
+        out.update({"lte_left": _opt(a.lte_left), "lte_right": _opt(a.lte_right), "force_left": a.force_left,
+                    "force_right": a.force_right})
+    return out
 
 
 def harris_payload(h: HarrisMap) -> dict[str, Any]:
@@ -158,9 +168,10 @@ def write_flank_pressure(path: str | Path, result, pair, youngs_modulus: float, 
     fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio)
     pts, quads = helix_flank_quads(pair, 1, fmap.rho, fmap.zeta, result.groove, result.stagger)
     R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
-    data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), 2),
-            "zeta": np.tile(Z.ravel(), 2), "helix": np.repeat([0, 1], R.size).astype(np.int32),
-            "edge": np.tile(fmap.edge.ravel(), 2).astype(np.int32)}
+    n_h = fmap.p_max.shape[0]
+    data = {"p_max": fmap.p_max.reshape(-1), "w_mean": fmap.w_mean.reshape(-1), "rho": np.tile(R.ravel(), n_h),
+            "zeta": np.tile(Z.ravel(), n_h), "helix": np.repeat(np.arange(n_h), R.size).astype(np.int32),
+            "edge": np.tile(fmap.edge.ravel(), n_h).astype(np.int32)}
     return write_vtu(path, meshio.Mesh(pts, [("quad", quads)], point_data=data))
 
 

@@ -6,8 +6,8 @@ file renamed into place), the ``.pvd`` last, so that a collection that exists is
 
 :func:`write_run_paraview` writes the main job (:class:`femgear.results.RunResult`):
 
-- ``flanks.pvd``: the active flank of one tooth of each member, both helices, as a
-  surface over (profile, face width), with the fields along the path of contact
+- ``flanks.pvd``: the active flank of one tooth of each member, both helices (the one helix of a
+  single-helical or spur pair, in the mid-plane), as a surface over (profile, face width), with the fields along the path of contact
   mapped onto it by radius: ``hertz_pressure`` [Pa], ``film_central``,
   ``film_minimum`` [m], ``load_per_length`` [N/m], ``sliding_speed`` [m/s] and, where
   the scene computes them, ``friction_coefficient`` [-], ``temperature_rise`` [K],
@@ -29,7 +29,9 @@ file renamed into place), the ``.pvd`` last, so that a collection that exists is
   series: the working pitch circles of the four helix halves, with the vector
   ``displacement`` = d + θ × r of each body's six DOFs [m] (it includes the static
   torsional wind-up), ``vibration`` = the same about its mean over the cycle [m] (use
-  *Warp By Vector* with a large scale factor to see it) and the helix's ``mesh_force`` [N].
+  *Warp By Vector* with a large scale factor to see it) and the helix's ``mesh_force`` [N]; part 1 the four
+  bearing stations as points on the shaft axes with ``bearing_force`` (the load of the shaft on the bearing:
+  x, y radial, z axial) and ``bearing_force_dynamic`` (about its mean over the record) [N].
 
 Geometry (SI, the frame of :mod:`femgear.system.dynamics.layout`): shafts along z, pinion at
 the origin, gear at (a_w, 0); the flanks touch at the pitch point (r_w1, 0) on the

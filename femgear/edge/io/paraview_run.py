@@ -19,7 +19,8 @@ def _inv(alpha: float) -> float:
 
 
 def flank_frames(result: RunResult) -> list[Frame]:
-    """One surface per member (both helices) with the fields along the path."""
+    """One surface per member (both helices; the one helix, centred on z = 0, of a single-helical or spur pair)
+    with the fields along the path."""
     import meshio
 
     from femgear.edge.io.along_path import along_path
@@ -38,7 +39,8 @@ def flank_frames(result: RunResult) -> list[Frame]:
             if f"{key}_{name}" in fields:
                 data[label] = fields[f"{key}_{name}"]
         points, quads, point_data = [], [], {k: [] for k in data}
-        for sigma, zc in ((+1.0, -s / 2), (-1.0, +s / 2)):      # left, right helix
+        helices = ((+1.0, -s / 2), (-1.0, +s / 2)) if pair.n_helices == 2 else ((+1.0, 0.0),)
+        for sigma, zc in helices:      # left, right helix (one helix: the left's hand, in the mid-plane)
             z = np.linspace(zc - b / 2, zc + b / 2, N_FACE)
             twist = hand * sigma * np.tan(pair.beta_b) / rb
             pts, q = flank_surface(rb, r, centre, angle0, +1.0, z, zc, twist)
@@ -64,7 +66,7 @@ def dynamics_frames(result: RunResult) -> list[Frame]:
     period = 1.0 / res.mesh_frequency
     idx = np.flatnonzero(t >= t[-1] - period)
     idx = idx[np.linspace(0, len(idx) - 1, min(len(idx), MAX_FRAMES)).round().astype(int)]
-    half = 0.5 * (pair.b + result.case.scene.pair.groove_width)
+    half = result.coupled.state.dynamics.model.half_spacing
     angle = np.linspace(0.0, 2.0 * np.pi, N_RING, endpoint=False)
     rings = []
     for body in BODIES:
@@ -84,7 +86,21 @@ def dynamics_frames(result: RunResult) -> list[Frame]:
         mesh = meshio.Mesh(points, [("line", lines)],
                            point_data={"displacement": u, "vibration": w, "mesh_force": force})
         frames.append(Frame(time=float(t[i] - t[idx[0]]), part=0, name="response", mesh=mesh))
+        if res.bearings is not None:
+            frames.append(Frame(time=float(t[i] - t[idx[0]]), part=1, name="bearings",
+                                mesh=bearing_mesh(result, res.bearings, i)))
     return frames
+
+
+def bearing_mesh(result: RunResult, loads, i: int):
+    """The four bearing stations at time index ``i`` as vertices on the shaft axes, with ``bearing_force`` (the load
+    of the shaft on the bearing) and ``bearing_force_dynamic`` (about its mean over the record) [N]."""
+    import meshio
+
+    model = result.coupled.state.dynamics.model
+    points = model.bearings.centre
+    return meshio.Mesh(points, [("vertex", np.arange(len(points))[:, None])],
+                       point_data={"bearing_force": loads.force[i], "bearing_force_dynamic": loads.force[i] - loads.mean})
 
 
 def body_frames(result: RunResult) -> list[Frame]:
@@ -102,8 +118,8 @@ def body_frames(result: RunResult) -> list[Frame]:
 
 def face_mesh(result: RunResult):
     """The face-resolved fields (``wear.field = "face"``: ``wear_depth``; ``thermal = "fe3d"``:
-    ``thermal_deviation``, both [m]) on the 3-D loaded flanks of tooth 0 of both members, both helices,
-    as a meshio quad mesh (None without face fields).
+    ``thermal_deviation``, both [m]) on the 3-D loaded flanks of tooth 0 of both members, both helices (the one
+    of a single-helical pair), as a meshio quad mesh (None without face fields).
 
     Each member's body frame (:func:`femgear.physics.ltca.flank_map.helix_flank_quads`: the LTCA's member bodies) turned
     into its meshing position, the gear's axis at (a_w, 0) (:func:`femgear.physics.ltca.maps.to_mesh`); a flank point at path position u_k has
@@ -124,18 +140,19 @@ def face_mesh(result: RunResult):
     fields = {k: v for k, v in (("wear_depth", t.wear_face), ("thermal_deviation", t.thermal_face)) if v is not None}
     points, quads, data = [], [], {k: [] for k in (*fields, "member", "helix", "u", "rho", "zeta")}
     U, Z = np.meshgrid(u, grid, indexing="ij")
+    n_h = pair.n_helices
     for j in (0, 1):
         pts, q = helix_flank_quads(pair, j + 1, rho[j], grid, case.groove_width, case.stagger)
         pts = to_mesh(pair, j + 1, pts)
         quads.append(q + sum(len(p) for p in points))
         points.append(pts)
         for k, v in fields.items():
-            data[k].append(np.asarray(v[j], float).reshape(-1))
+            data[k].append(np.asarray(v[j], float)[:n_h].reshape(-1))
         data["member"].append(np.full(len(pts), j + 1, np.int32))
-        data["helix"].append(np.repeat(np.array([0, 1], np.int32), U.size))
-        data["u"].append(np.tile(U.ravel(), 2))
-        data["rho"].append(np.tile(np.repeat(rho[j], grid.size), 2))
-        data["zeta"].append(np.tile(Z.ravel(), 2))
+        data["helix"].append(np.repeat(np.arange(n_h, dtype=np.int32), U.size))
+        data["u"].append(np.tile(U.ravel(), n_h))
+        data["rho"].append(np.tile(np.repeat(rho[j], grid.size), n_h))
+        data["zeta"].append(np.tile(Z.ravel(), n_h))
     return meshio.Mesh(np.concatenate(points), [("quad", np.concatenate(quads))],
                        point_data={k: np.concatenate(v) for k, v in data.items()})
 

@@ -8,12 +8,16 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total, with ``fe``/``ltca`` body_level [and body_elements],
   and statically mean_per_helix, seconds), ``friction`` (level, mu_pitch/min/max/mean,
   max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
-  gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps),
+  gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps; load: the load that
+  wore, "asperity" or "total"; film_parameter_min, asperity_share_max: the film's share along the path; warnings),
   with ``stiffness = "ltca"`` ``transmission_error`` (:func:`femgear.edge.io.ltca.te_summary`: loaded TE
   p-p, harmonics, stiffness mean/ripple, load share, peak pressure and its edge flag, unloaded TE;
   ``units``; ``resolved_orders`` of the level; with dynamics ``lte_peak_to_peak_deviated``, the loaded
   TE p-p of the last coupling pass's worn and expanded flanks),
-  with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`) and
+  without dynamics ``bearing_forces_static`` (the static loads of the bearing stations, ``RunResult.static_bearing_loads``),
+  with ``[housing]`` ``housing`` (:func:`femgear.edge.io.housing.housing_summary`),
+  with dynamics ``dynamics`` (:func:`femgear.edge.io.dynamics.dynamics_summary`, its ``bearing_forces`` and
+  ``sidebands`` included) and
   ``coupling`` (mode, converged, alternation: None or the two states' difference where the loop settled into a
   two-pass cycle, iterations, seconds, history), ``outputs`` (every file in the folder, a
   ``.pvd`` collection's ``.vtu`` files under their relative path; docs/guide/outputs.md);
@@ -24,7 +28,10 @@ Layout (the contract; keys are added, never renamed without a README note):
   ``film_minimum`` (and ``film_pressure_max``, thermal levels ``film_temperature_rise``) are those of
   the lubrication level that ran (``summary.film``: level, method, pitch and minimum values), the
   formula films stay as ``film_*_formula``; ``specific_film`` λ = h_min / R_a (R_a the mean of both
-  flanks, ``rating.roughness_ra`` or its default by ``rating.finishing``);
+  flanks, ``roughness.ra`` or its default by ``roughness.finishing``: ``summary.roughness``);
+  ``summary.oil`` (the oil at the supply temperature and its sources), ``summary.roughness`` and
+  ``summary.beside_iso`` (femgear's μ̄, contact temperature and loss beside ISO/TS 6336-20/21's) come from
+  :func:`femgear.summary.scene_summary`;
 - ``units``: ``{field path: unit}`` of every field of the typed result (``"contact.hertz_pressure": "Pa"``,
   ``"stiffness.k_left": "N/m"``; "-" dimensionless), generated from the field docs (:func:`result_units`);
   the keys above take the unit of the field they are written from;
@@ -67,7 +74,9 @@ def tribology_summary(t: Tribology, s: np.ndarray, static: bool, level: str) -> 
         out["thermal"] = _thermal_summary(t.flank_temperature_rise, t.thermal_deviation, s)
     if t.wear is not None:
         out["wear"] = {"cycles": t.wear_cycles, "max_depth_pinion": float(t.wear[0].max()),
-                       "max_depth_gear": float(t.wear[1].max()), **({"steps": t.wear_steps} if static else {})}
+                       "max_depth_gear": float(t.wear[1].max()), **({"steps": t.wear_steps} if static else {}),
+                       "load": t.wear_load, "film_parameter_min": t.wear_film_parameter,
+                       "asperity_share_max": t.wear_asperity_share, "warnings": list(t.wear_warnings)}
     return out
 
 
@@ -84,6 +93,13 @@ def run_summary(result: RunResult) -> dict[str, Any]:
     static = result.coupled is None
     if static:
         summary["stiffness"].update(mean_per_helix=[ms.mean_left, ms.mean_right], seconds=ms.seconds)
+        if result.static_bearing_loads is not None:
+            from femgear.system.dynamics.structure import STATIONS
+
+            loads = result.static_bearing_loads
+            summary["bearing_forces_static"] = {"axes": ["x", "y", "z"], "units": "N", **{
+                name: {"mean": loads[j].tolist(), "radial_mean": float(np.hypot(*loads[j, :2]))}
+                for j, name in enumerate(STATIONS)}}
     else:
         from femgear.edge.io.dynamics import dynamics_summary
 
@@ -101,6 +117,10 @@ def run_summary(result: RunResult) -> dict[str, Any]:
         summary["transmission_error"] = _te_summary(result)
     if result.tribology.film is not None:
         summary["film"] = film_summary(result.tribology.film, case.path.s, result.contact.pitch_index)
+    if result.housing is not None:
+        from femgear.edge.io.housing import housing_summary
+
+        summary["housing"] = housing_summary(result.housing)
     return summary
 
 
@@ -138,6 +158,10 @@ def write_run(result: RunResult, out_dir: str | Path, plots: bool = True, vtk: b
         files.update({f"dynamics_{k}": v for k, v in dyn.items()})
     if plots:
         files.update(_figures(result, out_dir))
+    if result.housing is not None:
+        from femgear.edge.io.housing import write_housing
+
+        files.update(write_housing(result.housing, out_dir, plots, vtk, name=result.case.name))
     if vtk:
         from femgear.edge.io.paraview_run import write_run_paraview
 

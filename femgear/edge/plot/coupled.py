@@ -55,6 +55,8 @@ def _members(ax, s_mm, values, label) -> None:
 def plot_convergence(iteration, mesh_force_change, mu_change, tol: float = 1e-6, title: str = ""):
     """Change of the dynamic mesh force (relative) and of μ (absolute) per coupling pass, log scale."""
     plt = pyplot()
+    from matplotlib.ticker import MaxNLocator
+
     fig, ax = plt.subplots(figsize=(6, 4))
     for values, style, label in ((mesh_force_change, "o-", "dynamic mesh force (relative change)"),
                                  (mu_change, "s--", "friction coefficient μ (absolute change)")):
@@ -63,6 +65,7 @@ def plot_convergence(iteration, mesh_force_change, mu_change, tol: float = 1e-6,
             ax.semilogy(*zip(*pts), style, label=label)
     ax.axhline(tol, color="0.5", ls=":", label=f"tolerance {tol:g}")
     ax.set_xlabel("coupling pass")
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))       # passes are whole numbers (was 1.25, 1.5, ...)
     ax.set_ylabel("change from the previous pass")
     ax.legend()
     ax.grid(alpha=0.3, which="both")

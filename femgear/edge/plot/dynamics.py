@@ -56,11 +56,21 @@ def plot_time_histories(res: Response, cycles: float = 5.0, name: str = ""):
 
 
 def plot_mesh_force(res: Response, cycles: float = 5.0, name: str = ""):
-    """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference."""
+    """Mesh force per helix (right dashed over left, so equal curves stay visible) and their difference; a pair with
+    one mesh (single-helical, spur: the right helix carries nothing) shows its one force."""
     plt = pyplot()
     sel = _last_cycles(res, cycles)
     t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
     left, right = res.mesh_force[sel, 0], res.mesh_force[sel, 1]
+    if not np.any(res.mesh_force[:, 1]):
+        fig, ax = plt.subplots(figsize=(8, 4))
+        ax.plot(t_ms, left, color="C0", lw=1.5, label="the mesh (one helix)")
+        ax.set_ylabel("dynamic mesh force N [N]")
+        ax.set_xlabel(TIME_LABEL)
+        ax.grid(alpha=0.3)
+        ax.legend()
+        fig.suptitle(_title(name, f"dynamic mesh force (normal to the flank), last {cycles:g} mesh periods"))
+        return fig
     fig, (ax, ax_d) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
     ax.plot(t_ms, left, color="C0", lw=2.5, alpha=0.6, label="left helix")
     ax.plot(t_ms, right, color="C3", lw=1.2, ls="--", label="right helix")
@@ -103,6 +113,7 @@ def plot_phase_planes(res: Response, cycles: float = 10.0, name: str = ""):
             ax.plot(x * 1e6, xd * 1e3, lw=0.8, color=f"C{row}")
             ax.set_title(f"{member}, {ax_name}: phase plane ({cycles:g} mesh periods)", fontsize=10)
             ax.set_xlabel(f"displacement {ax_name} − mean [µm]")
+            ax.locator_params(axis="x", nbins=6)                 # the default crowded its labels into each other
             ax.set_ylabel(f"velocity {ax_name} − mean [mm/s]")
             ax.grid(alpha=0.3)
     fig.suptitle(_title(name, "phase planes (velocity against displacement) of the pinion and gear centres"))
@@ -127,6 +138,45 @@ def plot_spectra(res: Response, max_order: float = 32.0, name: str = ""):
             ax.axvline(k, color="0.8", lw=0.6, zorder=0)
     axes[-1].set_xlabel(f"mesh order f/f_m  (mesh frequency f_m = {res.mesh_frequency:.1f} Hz)")
     fig.suptitle(_title(name, "spectra (Hanning window, peak amplitudes, not RMS)"))
+    return fig
+
+
+def plot_bearing_forces(res: Response, cycles: float = 5.0, max_order: float = 16.0, name: str = ""):
+    """Loads of the four bearing stations: the dynamic part (about the mean) of x, y and z over the last
+    ``cycles`` mesh periods (top row per member) and their Hanning spectra against the mesh order (bottom), the
+    means and peak-to-peak values in the legends."""
+    plt = pyplot()
+    loads = res.bearings
+    sel = _last_cycles(res, cycles)
+    t_ms = (res.t[sel] - res.t[sel][0]) * 1e3
+    dt = float(np.median(np.diff(res.t)))
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
+    for col, member in enumerate(("pinion", "gear")):
+        for j in (2 * col, 2 * col + 1):
+            station = loads.stations[j]
+            for d, axis in enumerate("xyz"):
+                if d == 2 and np.max(np.abs(loads.force[:, j, 2])) <= 1e-9 * np.max(np.abs(loads.force[:, j])):
+                    continue            # no axial load (double-helical, lumped): round-off only
+                f = loads.force[sel, j, d]
+                style = dict(color=f"C{d}", ls="-" if j % 2 == 0 else "--", lw=1.0)
+                axes[0, col].plot(t_ms, f - loads.mean[j, d], **style,
+                                  label=f"{station} {axis}: mean {loads.mean[j, d]:.4g} N, "
+                                        f"p-p {loads.peak_to_peak[j, d]:.3g} N")
+                sp = spectrum(loads.force[:, j, d], dt, res.mesh_frequency)
+                keep = sp.order <= max_order
+                axes[1, col].plot(sp.order[keep], sp.amplitude[keep], **style, label=f"{station} {axis}")
+        axes[0, col].set_title(f"{member} bearings: load − mean", fontsize=10)
+        axes[0, col].set_xlabel(TIME_LABEL)
+        axes[0, col].set_ylabel("bearing load − mean [N]")
+        axes[0, col].legend(fontsize=6.5)
+        axes[1, col].set_xlabel(f"mesh order f/f_m  (f_m = {res.mesh_frequency:.1f} Hz)")
+        axes[1, col].set_ylabel("peak amplitude [N]")
+        axes[1, col].legend(fontsize=6.5, ncol=2)
+        for ax in axes[:, col]:
+            ax.grid(alpha=0.3)
+    fig.suptitle(_title(name, f"bearing loads (force of the shaft on each bearing; x, y radial, z axial), "
+                              f"last {cycles:g} mesh periods and spectra (Hanning, peak amplitudes)"), fontsize=10)
+    fig.tight_layout()
     return fig
 
 

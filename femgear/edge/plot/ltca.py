@@ -20,7 +20,8 @@ def plot_te_curves(analyses: Sequence[TEAnalysis], title: str = ""):
         c = f"C{k % 10}"
         ph = np.append(a.phase, 1.0)
         loop = lambda y: np.append(y, y[0]) * 1e6  # noqa: E731
-        ax.plot(ph, loop(a.lte), "-", color=c, lw=1.8, label=f"{a.torque:g} N m: both helices "
+        mesh = "both helices" if a.n_helices == 2 else "the helix"
+        ax.plot(ph, loop(a.lte), "-", color=c, lw=1.8, label=f"{a.torque:g} N m: {mesh} "
                 f"(peak-to-peak {a.peak_to_peak * 1e6:.3f} µm)")
         if a.lte_left is not None:
             ax.plot(ph, loop(a.lte_left), "--", color=c, lw=1.0, label="  left helix alone")
@@ -78,21 +79,23 @@ def plot_load_distribution(maps: LoadMaps, title: str = "", name: str = ""):
     (roll distance ρ₁ against face coordinate ζ) [N/mm]; loaded edge nodes marked (edge contact)."""
     plt = pyplot()
     m = maps.members[0].fields
-    shape = (2, maps.rho.size, maps.zeta.size)
+    n_h = m["w_worst"].size // (maps.rho.size * maps.zeta.size)       # 1: single-helical or spur
+    shape = (n_h, maps.rho.size, maps.zeta.size)
     w = m["w_worst"].reshape(shape) / 1e3
     edge = m["edge_contact"].reshape(shape).astype(bool) & (w > 0)
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
+    fig, axes = plt.subplots(1, n_h, figsize=(5 + 5 * (n_h - 1), 4), sharey=True, squeeze=False)
+    axes = axes[0]
     vmax = max(float(w.max()), 1e-12)
     for h, ax in enumerate(axes):
         pc = ax.pcolormesh(maps.zeta * 1e3, maps.rho * 1e3, w[h], shading="nearest", cmap="viridis", vmin=0, vmax=vmax)
         i, k = np.nonzero(edge[h])
         ax.plot(maps.zeta[k] * 1e3, maps.rho[i] * 1e3, "rx", ms=4, label="edge contact" if i.size else None)
-        ax.set_xlabel("face coordinate ζ [mm] (groove / apex end at right)")
-        ax.set_title(("left", "right")[h] + " helix")
+        ax.set_xlabel("face coordinate ζ [mm] (groove / apex end at right)" if n_h == 2 else "face coordinate ζ [mm]")
+        ax.set_title(("left", "right")[h] + " helix" if n_h == 2 else "the helix")
         if i.size:
             ax.legend(fontsize=7, loc="upper left")
     axes[0].set_ylabel("pinion roll distance ρ₁ [mm] (tip at top)")
-    fig.colorbar(pc, ax=axes[1], label="load per length [N/mm]")
+    fig.colorbar(pc, ax=axes[-1], label="load per length [N/mm]")
     default = (f"load over the pinion flank at phase {maps.worst_phase:.3f} (largest pressure), "
                f"{maps.torque:g} N m")
     fig.suptitle(title or (f"{name}: {default}" if name else default))

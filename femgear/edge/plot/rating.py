@@ -1,4 +1,5 @@
-"""The rating figure along the path of contact: ISO's contact temperature and λ beside femgear's own."""
+"""The rating figures: along the path of contact, ISO's contact temperature and λ beside femgear's own; K_v against
+speed, femgear's dynamics beside ISO 6336-1 method B."""
 
 from __future__ import annotations
 
@@ -6,6 +7,7 @@ import numpy as np
 
 from femgear.edge.plot import pyplot
 from femgear.edge.plot.path import _finish
+from femgear.physics.rating.load_factors import DynamicFactorCurve
 from femgear.physics.rating.suite import PairRating
 
 
@@ -37,3 +39,32 @@ def plot_rating_path(rating: PairRating, u_pitch: float, title: str = ""):
     ax.set_xlabel("position on the path from the pitch point [mm]")
     ax.legend(fontsize=7)
     return _finish(fig, axes, title)
+
+
+def plot_dynamic_factor(curve: DynamicFactorCurve, title: str = ""):
+    """K_v against the pinion speed: femgear's per helix (the largest dynamic over the static mesh force of the
+    time-domain sweep) and ISO 6336-1 method B, on one axis; the resonance ratio N = n₁/n_E1 on the top axis with
+    ISO's ranges marked (main resonance N_S … 1.15, the transition to 1.5)."""
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    for h, k in enumerate(curve.femgear):
+        label = "femgear dynamics" + ("" if curve.femgear.shape[0] == 1 else f", {('left', 'right')[h]} helix")
+        ax.plot(curve.speed_rpm, k, "o-" if h == 0 else "s--", ms=3, label=label)
+    ax.plot(curve.speed_rpm, curve.iso, "k-", lw=1.5, label=f"ISO 6336-1 method B (n_E1 = {curve.n_E1:.0f} rpm)")
+    lo, hi = float(curve.speed_rpm.min()), float(curve.speed_rpm.max())
+    for N, style, text in ((curve.N_S, ":", "N_S"), (1.0, "-", "N = 1"), (1.15, ":", "1.15"), (1.5, ":", "1.5")):
+        n = N * curve.n_E1
+        if lo <= n <= hi:
+            ax.axvline(n, color="0.5", ls=style, lw=0.8)
+            ax.text(n, ax.get_ylim()[1], text, ha="center", va="bottom", fontsize=7, color="0.4")
+    if lo <= curve.N_S * curve.n_E1 and 1.15 * curve.n_E1 <= hi:
+        ax.axvspan(curve.N_S * curve.n_E1, 1.15 * curve.n_E1, color="0.9", zorder=0, label="ISO main resonance range")
+    top = ax.secondary_xaxis("top", functions=(lambda n: n / curve.n_E1, lambda N: N * curve.n_E1))
+    top.set_xlabel("resonance ratio N = n₁ / n_E1 [-]")
+    ax.set_xlabel("pinion speed n₁ [rpm]")
+    ax.set_ylabel("dynamic factor K_v [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.suptitle(title or "dynamic factor K_v: femgear's dynamics beside ISO 6336-1 method B", fontsize=10)
+    fig.tight_layout()
+    return fig

@@ -65,7 +65,11 @@ def run_sweep_case(base: str, overrides: tuple[str, ...], case_dir: str, plots: 
 
 
 def flatten(d: dict[str, Any], prefix: str = "") -> dict[str, Any]:
-    """Scalar leaves of a nested dict as ``a.b.c`` columns (lists are left out)."""
+    """Scalar leaves of a nested dict as ``a.b.c`` columns; a pair of the result schema (pinion and gear, left and
+    right helix: :mod:`femgear.edge.io.summary_schema`) as its two columns ``a.b.0`` and ``a.b.1``; other lists
+    are left out."""
+    from femgear.edge.io.summary_schema import PAIR, kind_of
+
     out: dict[str, Any] = {}
     for key, value in d.items():
         name = f"{prefix}{key}"
@@ -73,6 +77,8 @@ def flatten(d: dict[str, Any], prefix: str = "") -> dict[str, Any]:
             out.update(flatten(value, name + "."))
         elif isinstance(value, (str, int, float, bool)) or value is None:
             out[name] = value
+        elif isinstance(value, (list, tuple)) and len(value) == 2 and (kind_of(name) or ("", ""))[1] == PAIR:
+            out[f"{name}.0"], out[f"{name}.1"] = value
     return out
 
 
@@ -178,12 +184,13 @@ def run_sweep(spec: SweepSpec, out_root: str | Path, workers: int = 2, scheduler
     """
     if workers < 1:
         raise ValueError(f"workers must be ≥ 1 (got {workers})")
-    if check:
-        from femgear.edge.sweep.check import check_cases
-
-        check_cases(spec)
     requested = tuple(outputs) or spec.outputs
     argument = outputs_argument if outputs else "outputs"
+    if check:
+        from femgear.edge.sweep.check import check_cases, check_outputs
+
+        check_cases(spec)
+        check_outputs(spec, requested, argument)
     out = Path(out_root) / spec.name
     if scheduler and not relative_paths:
         out = out.absolute()

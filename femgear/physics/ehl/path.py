@@ -1,7 +1,7 @@
 """The ``ehl-line`` lubrication level: FE line-contact EHL at positions of the path.
 
 At each contact the isothermal FE line solution (:func:`solve_line_dimensional`,
-Roelands viscosity and Dowson–Higginson density at the inlet viscosity η(0, T_bulk))
+Roelands viscosity and Dowson–Higginson density at the inlet viscosity η(0, T_bulk) and α(T_bulk))
 gives the pressure and film fields; the sliding traction is the Ree–Eyring shear
 τ0 asinh(η(p, T) γ̇/τ0), γ̇ = |v1 − v2|/h, integrated over them, and the contact
 temperature rise is Blok's flash temperature for that μ.  μ = ∫τ dx / w'.  (The thermal
@@ -31,7 +31,8 @@ def ehl_line_solver(oil: OilLaw, E_red: float, solids: Solids, tau0: float, leve
         mu, dT = np.empty(w.shape), np.empty(w.shape)
         prev, reuse = None, {}  # warm start from the previous position / map point
         for i in np.ndindex(w.shape):
-            ehl = EHLOil(eta0=float(oil.viscosity(0.0, T[i])), alpha=oil.alpha, viscosity="roelands", compressible=True)
+            ehl = EHLOil(eta0=float(oil.viscosity(0.0, T[i])), alpha=float(oil.pressure_viscosity(T[i])),
+                         viscosity="roelands", compressible=True)
             try:
                 r = solve_line_dimensional(w[i], R[i], ue[i], E_red, ehl, level=level, start=prev, reuse=reuse)
             except SceneError as exc:       # the solver's own range (a light, slow contact's long inlet)
@@ -53,7 +54,8 @@ def ehl_line_films(w, R, ue, T: float, oil: OilLaw, E_red: float, level: int) ->
     """Central film, minimum film [m] and pressure peak [Pa] of the isothermal FE line EHL at each contact
     (arrays ``w``, ``R``, ``ue`` over the contacts; inlet viscosity η(0, ``T``)), each warm-started from the
     previous one."""
-    ehl = EHLOil(eta0=float(oil.viscosity(0.0, T)), alpha=oil.alpha, viscosity="roelands", compressible=True)
+    ehl = EHLOil(eta0=float(oil.viscosity(0.0, T)), alpha=float(oil.pressure_viscosity(T)), viscosity="roelands",
+                 compressible=True)
     out, prev = [], None
     for wi, Ri, ui in zip(w, R, ue):
         r = solve_line_dimensional(float(wi), float(Ri), float(ui), E_red, ehl, level=level, start=prev)

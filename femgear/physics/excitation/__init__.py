@@ -7,8 +7,8 @@
 """
 
 from femgear.physics.excitation.backlash import contact_indicator, gap_function
-from femgear.physics.excitation.errors import Eccentricity, ProfileError, RandomError, Unbalance
+from femgear.physics.excitation.errors import CumulativePitchError, Eccentricity, ProfileError, RandomError, Unbalance
 
 __all__ = [
-    "Eccentricity", "ProfileError", "RandomError", "Unbalance", "contact_indicator", "gap_function",
+    "CumulativePitchError", "Eccentricity", "ProfileError", "RandomError", "Unbalance", "contact_indicator", "gap_function",
 ]

@@ -17,6 +17,10 @@ c δ̇ sees the error velocity too.  Sources (paper eq. 1, e_m = e_r sin(2π f_c
   deviations of the two teeth in contact, linearly interpolated in mesh phase (a
   continuous, piecewise-linear signal repeating with the hunting period).  The paper
   gives no form for e_0; this one is bounded by a and physically a pitch-error pattern.
+- :class:`CumulativePitchError`  a once-per-revolution cumulative pitch deviation of one member,
+  tooth n of z displaced by A sin(2π n/z + φ) along the line of action, seen tooth by tooth like
+  :class:`RandomError` (linear in mesh phase between the teeth): a shaft-order transmission error
+  whose tooth-by-tooth sampling puts lines at k f_m ± f_s (amplitude A sinc²(π(k ± 1/z)), sinc x = sin x/x).
 - :class:`Unbalance`  rotating force U Ω² (cos θ, sin θ) of a mass unbalance U [kg m].
 """
 
@@ -79,8 +83,28 @@ class ProfileError:
         return self.amplitude * out
 
 
+class _ToothByTooth:
+    """A per-tooth error seen by the mesh: the value of the tooth pair of mesh cycle n (``_nodes``: the pair's
+    value, the next pair's, the fraction of the cycle), linear in mesh phase between cycles."""
+
+    amplitude: float
+    mesh_frequency: float
+
+    def value(self, t: np.ndarray) -> np.ndarray:
+        if self.amplitude == 0.0:
+            return np.zeros(np.shape(t))
+        a, b, frac = self._nodes(t)
+        return self.amplitude * (a + (b - a) * frac)
+
+    def rate(self, t: np.ndarray) -> np.ndarray:
+        if self.amplitude == 0.0:
+            return np.zeros(np.shape(t))
+        a, b, _ = self._nodes(t)
+        return self.amplitude * (b - a) * self.mesh_frequency
+
+
 @dataclass(frozen=True)
-class RandomError:
+class RandomError(_ToothByTooth):
     """Seeded random single-pitch deviations of both members, seen by one mesh.
 
     Each tooth of each member carries a deviation uniform in [−a, a]; the tooth pair in
@@ -112,17 +136,43 @@ class RandomError:
             return self._dev1[k % self.z1] + self._dev2[k % self.z2]
         return tooth(n), tooth(n + 1), frac
 
-    def value(self, t: np.ndarray) -> np.ndarray:
-        if self.amplitude == 0.0:
-            return np.zeros(np.shape(t))
-        a, b, frac = self._nodes(t)
-        return self.amplitude * (a + (b - a) * frac)
 
-    def rate(self, t: np.ndarray) -> np.ndarray:
-        if self.amplitude == 0.0:
-            return np.zeros(np.shape(t))
-        a, b, _ = self._nodes(t)
-        return self.amplitude * (b - a) * self.mesh_frequency
+
+@dataclass(frozen=True)
+class CumulativePitchError(_ToothByTooth):
+    """Once-per-revolution cumulative pitch deviation of one member, along the line of action.
+
+    Tooth n (counted from the one in mesh at t = 0) of the member's z teeth sits A sin(2π n/z + φ) ahead;
+    the tooth pair of mesh cycle n carries it, and between cycles the mesh sees the linear interpolation
+    (the form of :class:`RandomError`).  ``lines`` gives the exact Fourier lines of that signal.
+    """
+
+    amplitude: float          #: A [m]
+    mesh_frequency: float     #: f_m [Hz]
+    teeth: int                #: z of the member [-]
+    phase: float = 0.0        #: φ [rad]
+    mesh_offset: float = 0.0  #: mesh-phase offset of this helix [mesh cycles]
+
+    def _nodes(self, t: np.ndarray):
+        u = self.mesh_frequency * np.asarray(t, dtype=float) + self.mesh_offset
+        n = np.floor(u)
+        theta = 2 * math.pi / self.teeth
+        return np.sin(theta * n + self.phase), np.sin(theta * (n + 1) + self.phase), u - n
+
+
+    def line(self, k: int) -> tuple[float, complex]:
+        """(frequency [Hz], complex amplitude X: value ∋ Re X e^{2πi f t}) of the Fourier line at f = (k + 1/z) f_m
+        (k = 0: the shaft order; k ≥ 1 the upper, k ≤ −1 the lower sideband of mesh order |k|, read at |f|).
+
+        The linear interpolation of the samples e^{i(θn + φ)} is Σ_k sinc²(θ/2 + πk) e^{i(θ + 2πk)u},
+        u = f_m t + offset (the triangle's Fourier transform), so the real signal's line has the amplitude
+        A sinc²(π(k + 1/z))."""
+        nu = k + 1.0 / self.teeth
+        x = math.pi * nu
+        w = (math.sin(x) / x) ** 2
+        X = self.amplitude * w * np.exp(1j * (self.phase - math.pi / 2 + 2 * math.pi * nu * self.mesh_offset))
+        f = nu * self.mesh_frequency
+        return abs(f), (X if f > 0 else np.conj(X))
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,9 @@
 :func:`build_model` computes (or reads from the disk cache) the bulk flank kernels of
 both members once; :func:`mesh_cycle` solves the contact problem at ``n_phases`` phases
 of one mesh period for a transmitted normal force, both helices together (pinion
-axially fixed: both helices share the rigid normal approach δ).
+axially fixed: both helices share the rigid normal approach δ).  A single-helical or spur
+pair (``pair.n_helices`` = 1) is one helix of its real face width on one-helix member bodies:
+its "left" fields carry the mesh, the "right" ones are zero (``LTCAResult.n_helices``).
 
 Outputs per phase (all along the normal line of action, SI):
 - ``lte``: loaded transmission error δ [m] (transverse, on the base tangent: δ / cos β_b);
@@ -28,6 +30,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from femgear.docfields import document_fields
+from femgear.perf import Progress
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.geometry.lines import hat_integrals
 from femgear.physics.ltca.compliance import MemberCompliance, member_compliance
@@ -130,10 +133,18 @@ class LTCAResult:
     """offset of the right helix against the left one the cycle was solved with [base pitches]"""
     groove: float = 0.0
     """width of the member bodies' groove between the helices [m]"""
+    n_helices: int = 2
+    """helices of the pair: 2 double-helical; 1 single-helical or spur (the mesh is the "left" helix, the "right"
+    fields are zero) [-]"""
+
+    @property
+    def helices(self) -> tuple[str, ...]:
+        """The names of the helices the cycle has: ("left", "right") or ("left",)."""
+        return ("left", "right")[:self.n_helices]
 
     @property
     def nlte(self) -> np.ndarray:
-        return np.minimum(self.nlte_left, self.nlte_right)
+        return self.nlte_left if self.n_helices == 1 else np.minimum(self.nlte_left, self.nlte_right)
 
     def lte_peak_to_peak(self) -> float:
         return float(np.ptp(self.lte))
@@ -157,7 +168,7 @@ class LTCAResult:
             raise ValueError("no line loads kept: run mesh_cycle(..., keep_lines=True)")
         arr = self.line_load[i]
         out: dict[tuple[str, int], float] = {}
-        for h, name in enumerate(("left", "right")):
+        for h, name in enumerate(self.helices):
             s = arr[:, 0] == h
             for j in np.unique(arr[s, 1]).astype(int):
                 m = s & (arr[:, 1] == j)
@@ -170,11 +181,14 @@ class LTCAResult:
         on it, the line's load F = Σ w_j Δℓ_j [N] and its extent in u (half a segment beyond the end points)."""
         if not self.line_load:
             raise ValueError("no line loads kept: run mesh_cycle(..., keep_lines=True)")
+        if pair.beta_b == 0:
+            raise ValueError("a spur contact line lies at one path position: its loads make no (phase, u) map "
+                             "(the spur pair shares the load by the Winkler layer of the level's pair stiffness)")
         tb = math.tan(pair.beta_b)
         half = 0.5 * math.cos(pair.beta_b) * tb   # Δu of half a segment per unit Δℓ
         for i, arr in enumerate(self.line_load):
             dl = self.line_length[i]
-            for h in range(2):
+            for h in range(self.n_helices):
                 for j in np.unique(arr[arr[:, 0] == h, 1]):
                     m = (arr[:, 0] == h) & (arr[:, 1] == j)
                     order = np.argsort(arr[m, 2])
@@ -251,7 +265,8 @@ class LTCAResult:
         return np.where(hits > 0, out / np.maximum(hits, 1), np.nan)
 
     def excitation(self) -> dict[str, np.ndarray]:
-        """Per helix: secant/tangent stiffness, loaded and unloaded TE, e_s = LTE − F_s/k_s (SI)."""
+        """Per helix: secant/tangent stiffness, loaded and unloaded TE, e_s = LTE − F_s/k_s (SI); the absent right
+        helix of a one-helix pair has zero stiffness and force (its e_s is the LTE: it never carries)."""
         out = {"phase": self.phase}
         for h in ("left", "right"):
             k = getattr(self, f"k_secant_{h}")
@@ -270,21 +285,22 @@ def unloaded_te(lte: np.ndarray, force: np.ndarray, k_secant: np.ndarray) -> np.
 
 
 def normal_force(pair: GearPair, torque: float, driver: str = "pinion") -> float:
-    """Total normal force of both helices for ``torque`` on the driver [N]: T / r_b / cos β_b."""
+    """Total normal force of the mesh (both helices, or the one) for ``torque`` on the driver [N]: T / r_b / cos β_b."""
     rb = pair.rb1 if driver == "pinion" else pair.rb2
     return torque / rb / math.cos(pair.beta_b)
 
 
 def _nlte(pair, modifications, stagger, phase, extra, n_line):
+    """(left, right) unloaded TE: min ε over each helix's dense contact points (right 0 for a one-helix pair)."""
     dense = phase_points(pair, phase, stagger, 8 * n_line)
     eps = _eps(pair, modifications, dense, extra)
     left = dense.helix == 0
-    return float(eps[left].min()), float(eps[~left].min())
+    return float(eps[left].min()), float(eps[~left].min()) if pair.n_helices == 2 else 0.0
 
 
 def _eps(pair, modifications, pts, extra):
     eps = np.empty(pts.size)
-    for h, name in enumerate(("left", "right")):
+    for h, name in enumerate(("left", "right")[:pair.n_helices]):
         s = pts.helix == h
         eps[s] = separation(pair, modifications, name, pts.u[s], pts.zeta[s], extra)
     return eps
@@ -324,6 +340,7 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
     lines, lengths = [], []
     Ep = reduced_modulus(E, nu)
     cb = math.cos(pair.beta_b)
+    progress = Progress(f"LTCA contact cycle ({n_line} points per contact line)", n_phases)
     for i, ph in enumerate(phases):
         pts = phase_points(pair, ph, stagger, n_line)
         eps = _eps(pair, modifications, pts, extra)
@@ -350,7 +367,8 @@ def mesh_cycle(model: LTCAModel, force: float, modifications=None, n_phases: int
         if keep_lines:
             lines.append(np.column_stack([pts.helix, pts.line, pts.u, pts.zeta, w]))
             lengths.append(pts.length)
+        progress(i + 1)
     return LTCAResult(phases, force, cols["lte"], cols["nl"], cols["nr"], cols["fl"], cols["fr"], cols["ksl"],
                       cols["ksr"], cols["ktl"], cols["ktr"], cols["pl"], cols["pr"], cols["err"], tuple(lines),
                       tuple(lengths), time.perf_counter() - t0, n_line=n_line, stagger=stagger,
-                      groove=float(model.kernels[1].groove))
+                      groove=float(model.kernels[1].groove), n_helices=pair.n_helices)

@@ -30,6 +30,8 @@ subtracting the half-space part it already holds):
   X[k] = X[−k]ᵀ for the cross kernel (the mean of the two is kept, so symmetric helices share
   the load exactly).  A staggered body is not symmetric: the right helix is loaded too (twice
   the solves) and gets its own kernels (``bulk_right``).
+- One helix.  A single-helical (or spur) member is a body of that one helix of the real face width
+  (``SegmentSpec.helices`` = 1): the unit loads are read on it alone, and there is no cross kernel.
 
 Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, unmodified;
 ``python studies/ltca/ltca_study.py``; member bodies down to the 20 mm shaft): P1 levels 1/2/3/4
@@ -204,9 +206,10 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
         info = json.loads(str(data["info"]))
         info["cached"] = True
         right = data["bulk_right"] if data["bulk_right"].size else None
+        cross = data["cross"] if data["cross"].size else None          # a one-helix body has no cross kernel
         return MemberCompliance(member, data["rho"], data["z"], data["offsets"], data["bulk"], data["fe_self"],
-                                data["depth"], int(data["ndofs"]), info, data["cross"], right, float(data["groove"]),
-                                data["fe_cross"])
+                                data["depth"], int(data["ndofs"]), info, cross, right, float(data["groove"]),
+                                data["fe_cross"] if data["fe_cross"].size else None)
     if order not in ORDERS:
         raise ValueError(f"order must be one of {ORDERS}, got {order!r}")
     estimate = build_estimate(pair, member, spec, order, n_rho * n_z * (1 if spec.stagger == 0 else 2))
@@ -214,10 +217,12 @@ def member_compliance(pair: GearPair, member: int, spec: SegmentSpec, youngs_mod
     result = interruptible(_compute, pair, member, spec, youngs_modulus, poisson_ratio, order, n_rho, n_z, d0,
                            estimate)
     if cache:
-        right = np.zeros(0) if result.bulk_right is None else result.bulk_right
+        def stored(a):
+            return np.zeros(0) if a is None else a
+
         save_cache(path, rho=result.rho, z=result.z, offsets=result.offsets, bulk=result.bulk, fe_self=result.fe_self,
-                   depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info), cross=result.cross,
-                   bulk_right=right, groove=result.groove, fe_cross=result.fe_cross)
+                   depth=result.depth, ndofs=result.ndofs, info=json.dumps(result.info), cross=stored(result.cross),
+                   bulk_right=stored(result.bulk_right), groove=result.groove, fe_cross=stored(result.fe_cross))
     return result
 
 
@@ -292,19 +297,20 @@ def _readings(model, probes, u):
     return np.array(out)
 
 
-def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices, E, nu, progress_seconds=0.0):
+def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices, E, nu, progress_seconds=0.0,
+               read_helices=(0, 1)):
     """Kernels of the loaded helices: {(read helix, loaded helix): G (n_off, n_grid, n_grid)}, and the
     half-space parts [HS_self, HS_cross] of the readings on tooth 0 of the left and the right helix for
-    loads on the left tooth 0, one column per grid node."""
+    loads on the left tooth 0, one column per grid node (``read_helices`` (0,): a one-helix body, [HS_self])."""
     grid_rho, grid_z, rho_g, z_g = grid
     probes = {h: [(model.probe_matrices(x), n) for x, n in
                   (reading_points(pair, member, rho_g, z_g, depth, int(k), frame, h) for k in offsets)]
-              for h in (0, 1)}
+              for h in read_helices}
     G = {}
     HS = None
     for hl in loaded_helices:
         loads, xq, weights = flank_unit_loads(pair, member, model, grid_rho, grid_z, hl, frame)
-        for h in (0, 1):
+        for h in read_helices:
             G[(h, hl)] = np.zeros((offsets.size, rho_g.size, rho_g.size))
         progress = Progress(f"LTCA unit loads, {'pinion' if member == 1 else 'gear'} body, helix {hl}", len(loads),
                             expected_seconds=progress_seconds)
@@ -313,11 +319,11 @@ def _influence(pair, member, model, frame, grid, depth, offsets, loaded_helices,
                                  case=f"flank compliance member {member}, helix {hl}",
                                  progress=lambda done, lo=lo: progress(lo + done))
             for j in range(U.shape[1]):
-                for h in (0, 1):
+                for h in read_helices:
                     G[(h, hl)][:, :, lo + j] = _readings(model, probes[h], U[:, j])
         if hl == 0:
             HS = [np.column_stack([halfspace_reading(x0, n0, xq, weights[g], E, nu) for g in range(rho_g.size)])
-                  for x0, n0 in (reading_points(pair, member, rho_g, z_g, depth, 0, frame, h) for h in (0, 1))]
+                  for x0, n0 in (reading_points(pair, member, rho_g, z_g, depth, 0, frame, h) for h in read_helices)]
     return G, HS
 
 
@@ -353,8 +359,9 @@ def _zone_share(pair: GearPair, member: int, spec: SegmentSpec) -> float:
     weight = np.where(far_triangles(pair, member, sec, spec), 1.0 / step, 1.0) if step > 1 else np.ones(sec.t.shape[1])
     c = sec.p[:, sec.t].mean(axis=1)
     tooth, below = section_zone(pair, member, c[0], c[1], depth=ZONE_DEPTH, rim=RIM_DEPTH)
-    helices = 1 if spec.stagger == 0 else 2
-    share = np.sum(weight * below) + np.sum(weight * tooth) * helices / (2 + spec.groove / pair.b)
+    loaded = 1 if spec.stagger == 0 else 2
+    width = 2 + spec.groove / pair.b if spec.helices == 2 else 1.0     # the body's width in face widths
+    share = np.sum(weight * below) + np.sum(weight * tooth) * loaded / width
     return float(share / np.sum(weight))
 
 
@@ -370,7 +377,7 @@ def bending_elements(mesh, pair: GearPair, member: int, spec: SegmentSpec) -> np
     """
     from femgear.physics.mesh.segment import bending_zone
 
-    helices = (0,) if spec.stagger == 0 else (0, 1)
+    helices = (0,) if spec.stagger == 0 or spec.helices == 1 else (0, 1)
     return bending_zone(mesh, pair, member, spec, teeth=1, depth=ZONE_DEPTH, helices=helices, rim=RIM_DEPTH)
 
 
@@ -404,16 +411,19 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimat
     half = (spec.n_teeth - 1) // 2
     offsets = np.arange(-half, half + 1)
     symmetric = spec.stagger == 0          # mirror-symmetric body: the right helix's kernels are the left ones
+    read = (0, 1) if spec.helices == 2 else (0,)
     G, HS = _influence(pair, member, model, frame, (grid_rho, grid_z, rho_g, z_g), depth, offsets,
-                       (0,) if symmetric else (0, 1), E, nu, estimate.seconds)
+                       (0,) if symmetric else (0, 1), E, nu, estimate.seconds, read)
     mid = int(np.nonzero(offsets == 0)[0][0])
-    bulk, cross = G[(0, 0)].copy(), G[(1, 0)].copy()
+    bulk = G[(0, 0)].copy()
     bulk[mid] -= HS[0]
-    cross[mid] -= HS[1]                    # across the apex / groove: H₀ adds the surface part back (contact.py)
-    right = None
-    if symmetric:   # mirror + reciprocity: X[k] = X[−k]ᵀ exactly; the mean of the two keeps the helices' swap symmetry
+    cross = right = fe_cross = None
+    if spec.helices == 2:
+        cross, fe_cross = G[(1, 0)].copy(), G[(1, 0)][mid]
+        cross[mid] -= HS[1]                # across the apex / groove: H₀ adds the surface part back (contact.py)
+    if spec.helices == 2 and symmetric:    # mirror + reciprocity: X[k] = X[−k]ᵀ exactly; the mean keeps the swap symmetry
         cross = 0.5 * (cross + np.transpose(cross[::-1], (0, 2, 1)))
-    else:
+    elif spec.helices == 2:
         right = G[(1, 1)].copy()
         right[mid] -= HS[0]                # the mirrored flank and reading: the same half-space part
     st = model.stats()
@@ -422,10 +432,11 @@ def _compute(pair, member, spec, E, nu, order, n_rho, n_z, d0, estimate: Estimat
             "solve_seconds": st.solve_seconds, "solves": st.solves, "cg_iterations": st.iterations,
             "seconds": time.perf_counter() - t0, "n_tets": int(mesh.t.shape[1]), "order": order,
             "h_tooth": spec.h_tooth, "cached": False,
-            "cross_ratio": float(np.abs(cross).max() / np.abs(bulk).max()),
-            "asymmetry": float(np.linalg.norm(same - same.T) / np.linalg.norm(same))}   # load ≠ reading functional
+            "cross_ratio": 0.0 if cross is None else float(np.abs(cross).max() / np.abs(bulk).max()),
+            "asymmetry": float(np.linalg.norm(same - same.T) / np.linalg.norm(same)),   # load ≠ reading functional
+            "helices": spec.helices}
     return MemberCompliance(member, grid_rho, grid_z, offsets, bulk, same, depth, st.ndofs, info, cross, right,
-                            spec.groove, G[(1, 0)][mid])
+                            spec.groove, fe_cross)
 
 
 def _transverse(n: np.ndarray) -> np.ndarray:

@@ -65,19 +65,28 @@ class ContactPoints:
 
 
 def phase_points(pair: GearPair, phase: float, stagger: float, n_line: int) -> ContactPoints:
-    """Points on the contact lines of both helices at ``phase`` [base pitches]."""
+    """Points on the contact lines of every helix of ``pair`` at ``phase`` [base pitches]: both helices of a
+    double-helical pair, the one helix (``helix`` 0) of a single-helical or spur pair (``pair.n_helices``).
+
+    A spur line (β_b = 0) lies at one path position u₀ across the whole face ζ ∈ [0, b], inside the path
+    for u_A ≤ u₀ < u_E (one end open, so that a line leaving at u_E is the next one entering at u_A)."""
     tb = math.tan(pair.beta_b)
     cb = math.cos(pair.beta_b)
     span = pair.b * tb
     k_max = int(math.ceil((pair.g_alpha + span) / pair.p_bt)) + 1
     cols = {k: [] for k in ("helix", "line", "u", "zeta", "length", "tooth")}
-    for h, offset in enumerate((0.0, stagger)):
+    for h, offset in enumerate((0.0, stagger)[:pair.n_helices]):
         shift = ((phase + offset) % 1.0) * pair.p_bt
         wrap = math.floor(phase + offset)             # line j of a wrapped shift sits on the tooth of line j − 1
         for j in range(-1, k_max + 1):
             u0 = pair.u_start - span + shift + j * pair.p_bt
-            z_lo = max(0.0, (pair.u_start - u0) / tb)
-            z_hi = min(pair.b, (pair.u_end - u0) / tb)
+            if tb > 0:
+                z_lo = max(0.0, (pair.u_start - u0) / tb)
+                z_hi = min(pair.b, (pair.u_end - u0) / tb)
+            elif pair.u_start <= u0 < pair.u_end:
+                z_lo, z_hi = 0.0, pair.b
+            else:
+                continue
             if z_hi <= z_lo + 1e-9 * pair.b:
                 continue
             n = max(1, int(round(n_line * (z_hi - z_lo) / pair.b)))
@@ -96,7 +105,7 @@ def phase_points(pair: GearPair, phase: float, stagger: float, n_line: int) -> C
 
 
 def bulk_matrix(pair: GearPair, kernels, pts: ContactPoints) -> np.ndarray:
-    """Σ over members of the interpolated bulk kernels between all points, both helices [m/N].
+    """Σ over members of the interpolated bulk kernels between all points, every helix [m/N].
 
     Same helix: the member's self kernels (``kernel(offset, helix)``); across the helices (through the
     groove and the rim): the cross kernel X (reading on the right helix, load on the left one) for
@@ -112,7 +121,7 @@ def bulk_matrix(pair: GearPair, kernels, pts: ContactPoints) -> np.ndarray:
         kern = kernels[member]
         rho = pts.u if member == 1 else pair.line_of_action - pts.u
         R = kern.weights(rho, pts.zeta)
-        for h in (0, 1):
+        for h in np.unique(pts.helix):
             same = (pts.helix[:, None] == h) & (pts.helix[None, :] == h)
             for d in np.unique(dj[same]):
                 mask = same & (dj == d)

@@ -1,5 +1,7 @@
 """The pressure map of an LTCA cycle on the 3-D pinion flanks of both helices, and their tessellation (written by :mod:`femgear.edge.io.ltca`).
 
+A single-helical or spur pair has one helix (``LTCAResult.n_helices``): its maps and quads hold that helix alone.
+
 The loaded flank of the pinion's tooth 0 of each helix is tessellated on a (ρ, ζ) grid (ρ the
 roll distance over the active flank, ζ the helix's own face coordinate, the groove at ζ = b).
 The grid's 3-D points are those of the member body the LTCA solves
@@ -35,7 +37,7 @@ import numpy as np
 
 @dataclass(frozen=True)
 class FlankMap:
-    """Pressure and load maps on the pinion's loaded flanks, index [helix (0 left, 1 right), i_ρ, i_ζ]."""
+    """Pressure and load maps on the pinion's loaded flanks, index [helix (0 left, 1 right; one-helix pairs: 0), i_ρ, i_ζ]."""
 
     rho: np.ndarray      #: roll distance grid [m]
     zeta: np.ndarray     #: face coordinate grid of a helix [m]
@@ -68,7 +70,8 @@ def _line_samples(pair, u: np.ndarray, zeta: np.ndarray, w: np.ndarray, dl: np.n
 
 def flank_pressure_map(result, pair, youngs_modulus: float, poisson_ratio: float, n_rho: int = 40,
                        n_z: int = 60) -> FlankMap:
-    """The :class:`FlankMap` of both helices of the pinion from ``result.line_load`` (keep_lines=True)."""
+    """The :class:`FlankMap` of the pinion's helices (both, or the one of ``result.n_helices`` = 1) from
+    ``result.line_load`` (keep_lines=True)."""
     from femgear.physics.ltca.flank import roll_range
     from femgear.physics.ltca.halfspace import hertz_pressure, reduced_modulus
 
@@ -77,12 +80,13 @@ def flank_pressure_map(result, pair, youngs_modulus: float, poisson_ratio: float
     r0, r1 = roll_range(pair, 1)
     rho = np.linspace(r0, r1, n_rho)
     zeta = np.linspace(0.0, pair.b, n_z)
-    pmax = np.zeros((2, n_rho, n_z))
-    wsum = np.zeros((2, n_rho, n_z))
+    n_h = getattr(result, "n_helices", 2)
+    pmax = np.zeros((n_h, n_rho, n_z))
+    wsum = np.zeros((n_h, n_rho, n_z))
     cb = math.cos(pair.beta_b)
     Ep = reduced_modulus(youngs_modulus, poisson_ratio)
     for arr, dl in zip(result.line_load, result.line_length):
-        for h in (0, 1):
+        for h in range(n_h):
             for j in np.unique(arr[arr[:, 0] == h, 1]):
                 m = (arr[:, 0] == h) & (arr[:, 1] == j)
                 u, z, w = _line_samples(pair, arr[m, 2], arr[m, 3], arr[m, 4], dl[m], zeta)
@@ -96,19 +100,21 @@ def flank_pressure_map(result, pair, youngs_modulus: float, poisson_ratio: float
 
 def helix_flank_quads(pair, member: int, rho: np.ndarray, zeta: np.ndarray, groove: float = 0.0,
                       stagger: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
-    """Points (2 n m, 3) and quads of the loaded flank of ``member``'s tooth 0, both helices, on the grid
-    ``rho`` (n,) × ``zeta`` (m,) (index order [helix, i_ρ, i_ζ]): the left helix on the helicoid of
-    :func:`femgear.physics.ltca.flank.flank_points`, the right one the same (ρ, ζ) through
+    """Points (n_h n m, 3) and quads of the loaded flank of ``member``'s tooth 0, every helix of ``pair``
+    (n_h = ``pair.n_helices``), on the grid ``rho`` (n,) × ``zeta`` (m,) (index order [helix, i_ρ, i_ζ]): the left
+    helix on the helicoid of :func:`femgear.physics.ltca.flank.flank_points`, the right one the same (ρ, ζ) through
     :meth:`femgear.physics.mesh.segment.HelixFrame.to_right` (body frame of the LTCA's member body)."""
     from femgear.physics.ltca.flank import flank_points
     from femgear.physics.mesh.segment import frame_of
 
-    frame = frame_of(pair, member, groove, stagger)
     R, Z = np.meshgrid(np.asarray(rho, float), np.asarray(zeta, float), indexing="ij")
     left = flank_points(pair, member, R.ravel(), Z.ravel())
-    pts = np.hstack([left, frame.to_right(left)]).T
     nr, nz = R.shape
     idx = np.arange(nr * nz).reshape(nr, nz)
     quads = np.column_stack([idx[:-1, :-1].ravel(), idx[1:, :-1].ravel(), idx[1:, 1:].ravel(), idx[:-1, 1:].ravel()])
+    if pair.n_helices == 1:
+        return left.T, quads
+    frame = frame_of(pair, member, groove, stagger)
+    pts = np.hstack([left, frame.to_right(left)]).T
     return pts, np.vstack([quads, quads + nr * nz])
 

@@ -1,6 +1,6 @@
 """Pressure and load maps of an LTCA cycle on the loaded flanks of both members, placed in mesh.
 
-Each member's flank (tooth 0, both helices) is the surface of its LTCA member body
+Each member's flank (tooth 0, both helices; the one helix of a single-helical or spur pair) is the surface of its LTCA member body
 (:func:`femgear.physics.ltca.flank_map.helix_flank_quads`), turned about the member's own axis into its
 meshing position (:func:`mesh_rotation`): the mesh frame has the pinion axis at the origin and
 the gear axis at (a_w, 0), both along z (the body frames' z: left helix 0 … b, the right helix
@@ -88,8 +88,9 @@ class LoadMaps:
     """pinion and gear maps [-]"""
 
     def helix_force(self, member: int) -> np.ndarray:
-        """(left, right) cycle-mean normal load from ``member``'s map, Σ w_mean Δζ / cos β_b [N]."""
-        w = self.members[member - 1].fields["w_mean"].reshape(2, self.rho.size, self.zeta.size)
+        """(left, right) cycle-mean normal load from ``member``'s map, Σ w_mean Δζ / cos β_b [N] ((left,) for a
+        one-helix pair)."""
+        w = self.members[member - 1].fields["w_mean"].reshape(-1, self.rho.size, self.zeta.size)
         return np.trapezoid(w, self.zeta, axis=2).sum(axis=1) / math.cos(self.beta_b)
 
 
@@ -102,16 +103,17 @@ def load_maps(result, pair: GearPair, youngs_modulus: float, poisson_ratio: floa
     fmap = flank_pressure_map(result, pair, youngs_modulus, poisson_ratio, n_rho, n_z)
     snap = flank_pressure_map(one_phase(result, worst), pair, youngs_modulus, poisson_ratio, n_rho, n_z)
     R, Z = np.meshgrid(fmap.rho, fmap.zeta, indexing="ij")
-    edge = np.tile(fmap.edge.ravel(), 2)
+    n_h = fmap.p_max.shape[0]
+    edge = np.tile(fmap.edge.ravel(), n_h)
     p_max = fmap.p_max.reshape(-1)
     members = []
     for member in (1, 2):
         rho = fmap.rho if member == 1 else pair.line_of_action - fmap.rho
         pts, quads = helix_flank_quads(pair, member, rho, fmap.zeta, groove, stagger)
         fields = {"p_max": p_max, "w_mean": fmap.w_mean.reshape(-1), "w_worst": snap.w_mean.reshape(-1),
-                  "rho": np.tile((R if member == 1 else pair.line_of_action - R).ravel(), 2),
-                  "u": np.tile(R.ravel(), 2), "zeta": np.tile(Z.ravel(), 2),
-                  "helix": np.repeat([0, 1], R.size).astype(np.int32), "edge": edge.astype(np.int32),
+                  "rho": np.tile((R if member == 1 else pair.line_of_action - R).ravel(), n_h),
+                  "u": np.tile(R.ravel(), n_h), "zeta": np.tile(Z.ravel(), n_h),
+                  "helix": np.repeat(np.arange(n_h), R.size).astype(np.int32), "edge": edge.astype(np.int32),
                   "edge_contact": (edge & (p_max > 0)).astype(np.int32)}
         members.append(MemberMap(member, to_mesh(pair, member, pts), quads, fields))
     return LoadMaps(float(torque), float(result.phase[worst]), fmap.rho, fmap.zeta, pair.beta_b, tuple(members))

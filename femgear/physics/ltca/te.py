@@ -52,7 +52,7 @@ class PressurePeak:
     phase: float
     """mesh phase of that point [base pitches]"""
     helix: str
-    """the helix of that point, "left" or "right" [-]"""
+    """the helix of that point, "left" or "right" (a single-helical or spur pair: "left", its one helix) [-]"""
     u: float
     """path position of that point, measured from T1 (= the pinion roll distance ρ₁; the pitch point is at T1C) [m]"""
     zeta: float
@@ -61,7 +61,8 @@ class PressurePeak:
     """whether the point is a contact line's end on an edge of the active flank (tip or face end: the Hertz line contact
     does not hold there) [-]"""
     where: str
-    """where the point sits: "interior", "pinion tip", "gear tip", "outer face end" or "groove face end" [-]"""
+    """where the point sits: "interior", "pinion tip", "gear tip", "outer face end" or "groove face end" (one
+    helix: "face end") [-]"""
     interior_pressure: float
     """largest pressure away from the flank edges (not on a contact line's end point) [Pa]"""
 
@@ -101,10 +102,10 @@ class TEAnalysis:
     """cycle mean of the total secant mesh stiffness, along the normal line of action [N/m]"""
     stiffness_ripple: float
     """peak-to-peak of the total secant mesh stiffness over its mean [-]"""
-    share_left: float
-    """cycle mean of F_left / F [-]"""
-    share_right: float
-    """cycle mean of F_right / F [-]"""
+    share_left: float | None
+    """cycle mean of F_left / F (None for a one-helix pair: no load share) [-]"""
+    share_right: float | None
+    """cycle mean of F_right / F (None for a one-helix pair) [-]"""
     balance_error: float
     """largest relative force balance error over the phases, |F_left + F_right − F| / F [-]"""
     pressure: PressurePeak
@@ -117,6 +118,8 @@ class TEAnalysis:
     """loaded TE amplitudes with twice the points per contact line (None: no refinement run) [m]"""
     peak_to_peak_refined: float | None = None
     """loaded TE peak-to-peak with twice the points per contact line (None: no refinement run) [m]"""
+    n_helices: int = 2
+    """helices of the pair: 2, or 1 (single-helical, spur: the mesh is the left helix; no share, no right fields) [-]"""
 
     @property
     def harmonics_change(self) -> np.ndarray | None:
@@ -153,6 +156,8 @@ def _where(pair: GearPair, u: float, zeta: float, half_du: float, half_dz: float
         return "pinion tip"
     if u - half_du <= pair.u_start + 1e-9 * pair.m_n:
         return "gear tip"
+    if pair.n_helices == 1:
+        return "face end"
     return "groove face end" if zeta + half_dz >= 0.5 * pair.b else "outer face end"
 
 
@@ -199,18 +204,19 @@ def analyse_cycle(result, pair: GearPair, youngs_modulus: float, poisson_ratio: 
     F = result.force
     k = result.k_secant
     peak, worst = pressure_peak(result, pair, youngs_modulus, poisson_ratio)
-    left, right = (None, None) if helix_te is None else helix_te
+    left, right = (None, None) if helix_te is None or pair.n_helices == 1 else helix_te
+    two = pair.n_helices == 2
     return TEAnalysis(
         torque=float(torque), force=float(F), phase=result.phase, lte=result.lte, lte_left=left, lte_right=right,
         nlte=result.nlte, force_left=result.force_left, force_right=result.force_right, k_total=k,
         peak_to_peak=result.lte_peak_to_peak(), harmonics=result.harmonics(n_harmonics),
         nlte_peak_to_peak=float(np.ptp(result.nlte)), stiffness_mean=result.mean_stiffness(),
-        stiffness_ripple=float(np.ptp(k) / np.mean(k)), share_left=float(np.mean(result.force_left) / F),
-        share_right=float(np.mean(result.force_right) / F),
+        stiffness_ripple=float(np.ptp(k) / np.mean(k)), share_left=float(np.mean(result.force_left) / F) if two else None,
+        share_right=float(np.mean(result.force_right) / F) if two else None,
         balance_error=float(np.max(np.abs(result.force_left + result.force_right - F)) / F),
         pressure=peak, worst_phase=worst, interior_force=interior_force(result),
         harmonics_refined=None if refined is None else refined.harmonics(n_harmonics),
-        peak_to_peak_refined=None if refined is None else refined.lte_peak_to_peak())
+        peak_to_peak_refined=None if refined is None else refined.lte_peak_to_peak(), n_helices=pair.n_helices)
 
 
 def helix_alone_te(model, result, modifications=None, extra=None) -> tuple[np.ndarray, np.ndarray]:
@@ -218,11 +224,14 @@ def helix_alone_te(model, result, modifications=None, extra=None) -> tuple[np.nd
 
     The same contact points, separations and compliance as ``result`` (``result.n_line``, ``result.stagger``),
     restricted to one helix (:func:`femgear.physics.ltca.contact.solve_phase` on its points; the other helix unloaded,
-    so the cross-helix compliance does not act).  NaN for a helix with no mean load."""
+    so the cross-helix compliance does not act).  NaN for a helix with no mean load.  A one-helix pair has no such
+    split: ValueError (its cycle's TE is the helix's own)."""
     from femgear.physics.ltca.contact import ContactPoints, phase_points, solve_phase
     from femgear.physics.ltca.separation import separation
 
     pair, E, nu = model.pair, model.youngs_modulus, model.poisson_ratio
+    if pair.n_helices == 1:
+        raise ValueError(f"a {pair.kind} pair has one helix: its cycle's loaded TE is the helix's own")
     n_line, stagger = int(result.n_line), float(result.stagger)
     share = (float(np.mean(result.force_left)), float(np.mean(result.force_right)))
     out = np.full((2, result.phase.size), np.nan)
@@ -292,11 +301,12 @@ def check_contact(analysis: TEAnalysis, modifications, tolerance: float = 1e-6) 
     inner = analysis.interior_force
     if inner is None:
         inner = np.array([analysis.force_left, analysis.force_right])
-    for h, name in enumerate(("left", "right")):
+    names = ("the left helix", "the right helix") if analysis.n_helices == 2 else ("the helix",)
+    for h, name in enumerate(names):
         lost = np.nonzero(inner[h] <= tolerance * analysis.force)[0]
         if lost.size:
             keys = modified_keys(modifications) or ["modifications"]
-            raise SceneError(", ".join(keys), f"the {name} helix loses contact at {lost.size} of {inner[h].size} "
+            raise SceneError(", ".join(keys), f"{name} loses contact at {lost.size} of {inner[h].size} "
                              f"phases (first at phase {analysis.phase[lost[0]]:.3f}; load only at the flank edges, if "
                              f"any) at the design load {analysis.torque:g} N m: the modification opens its flanks "
                              "more than they deflect")

@@ -1,6 +1,7 @@
 """Thermo-elastic flank deviation ζ_T on the 3-D member body (``physics.thermal = "fe3d"``).
 
-The body is the LTCA's :func:`femgear.physics.mesh.segment.member_body` (both helices, the groove,
+The body is the LTCA's :func:`femgear.physics.mesh.segment.member_body` (both helices, the groove — one helix
+of the real face width for a single-helical or spur pair —,
 a whole ring with ``n_teeth`` teeth, the rim down to the bore; P1 tetrahedra), with the bore
 of the thermal levels (the scene's, else half the root radius, as ``analytic`` and ``fe``).
 
@@ -53,7 +54,8 @@ READ_DEPTH = 0.05      #: first reading depth below the flank [m_n] (the second 
 
 @dataclass(frozen=True)
 class Thermal3DUnits:
-    """ζ_n per kelvin on the loaded flanks of one member: ``flank``/``shaft`` (2 helices, n_ρ, n_ζ) [m/K]."""
+    """ζ_n per kelvin on the loaded flanks of one member: ``flank``/``shaft`` (2 helices, n_ρ, n_ζ) [m/K]; a
+    single-helical member's one helix fills both rows (the right one is never loaded)."""
 
     member: int
     rho: np.ndarray      #: roll distances [m]
@@ -250,7 +252,8 @@ def _compute(pair, member, spec, expansion, E, nu, n_rho, n_z) -> Thermal3DUnits
     r0, r1 = roll_range(pair, member)
     rho = np.linspace(r0, r1, n_rho)
     zeta = np.linspace(0.0, pair.b, n_z)
-    vals = np.array([[_flank_reading(pair, member, model, frame, rho, zeta, h, U[:, j]) for h in (0, 1)]
+    read = (0, 1) if spec.helices == 2 else (0, 0)     # one helix (single-helical): its row twice, same shape
+    vals = np.array([[_flank_reading(pair, member, model, frame, rho, zeta, h, U[:, j]) for h in read]
                      for j in range(2)])
     st = model.stats()
     info = {"seconds": time.perf_counter() - t0, "mesh_seconds": t_mesh, "conduction_seconds": t_cond,

@@ -29,7 +29,7 @@ class LTCAOptions:
     n_line: int = 16            #: points per contact line
     n_harmonics: int = 5        #: mesh orders reported
     refine_check: bool = True   #: also solve with 2 n_line points (harmonics' discretisation change)
-    helix_alone: bool = True    #: the per-helix TE (each helix alone at its mean share)
+    helix_alone: bool = True    #: the per-helix TE (each helix alone at its mean share; two-helix pairs only)
     level: int = 1              #: member body mesh level (:func:`femgear.physics.mesh.segment.default_spec`)
     order: int | str = 1        #: member body elements: 1 (P1) or "p2-bending" (:func:`femgear.physics.ltca.compliance.member_compliance`)
 
@@ -58,7 +58,7 @@ def _cycle(model, pair, E, nu, torque, driver, modifications, stagger, opts: LTC
     res = mesh_cycle(model, F, modifications, n_phases=opts.n_phases, stagger=stagger, n_line=opts.n_line)
     fine = (mesh_cycle(model, F, modifications, n_phases=opts.n_phases, stagger=stagger, n_line=2 * opts.n_line,
                        keep_lines=False) if opts.refine_check else None)
-    alone = helix_alone_te(model, res, modifications) if opts.helix_alone else None
+    alone = helix_alone_te(model, res, modifications) if opts.helix_alone and pair.n_helices == 2 else None
     a = analyse_cycle(res, pair, E, nu, torque, opts.n_harmonics, alone, fine)
     return a, res
 

@@ -58,3 +58,13 @@ def band_flash_temperature(q: np.ndarray, b, v1, v2, B1: float, B2: float, A: np
     A = abel_matrix(q.shape[-1]) if A is None else A
     b, v1, v2 = (np.asarray(v, dtype=float)[..., None] for v in (b, v1, v2))
     return (q @ A.T) * np.sqrt(b) / (math.sqrt(math.pi) * (B1 * np.sqrt(np.abs(v1)) + B2 * np.sqrt(np.abs(v2))))
+
+
+def line_flash_temperature(mu, w, R, ue, srr, E_red: float, B1: float, B2: float):
+    """Blok's maximum flash temperature [K] of Hertzian line contacts with friction coefficient ``mu`` from
+    operating data: load per length ``w`` [N/m], reduced radius ``R`` [m], entrainment speed ``ue`` [m/s],
+    slide-to-roll ratio ``srr`` = (v1 − v2)/ue [-] (surface speeds v1,2 = ue (1 ± srr/2)), reduced modulus
+    ``E_red`` [Pa] (Hertz half-width b = √(8 w R/(π E'))); arrays broadcast."""
+    w, R, ue, srr = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (w, R, ue, srr)))
+    b = np.sqrt(8 * w * R / (math.pi * E_red))
+    return blok_flash_temperature(mu, w, srr * ue, b, ue * (1 + srr / 2), ue * (1 - srr / 2), B1, B2)

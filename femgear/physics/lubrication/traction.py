@@ -147,7 +147,7 @@ def line_contact_friction(w, R, ue, srr, T_bulk, oil: OilLaw, E_red: float, soli
 
 
 def thermal_central_film(w, R, ue, srr, T_bulk, oil: OilLaw, E_red, solids: Solids):
-    """(h_c, b, p_h): the Moes (1992) central film at the inlet viscosity η(0, T_bulk) times
+    """(h_c, b, p_h): the Moes (1992) central film at the inlet viscosity η(0, T_bulk) and α(T_bulk) times
     Gupta's thermal factor, and the Hertz half-width and pressure (arrays broadcast; E_red
     may be an array, as in the JGP split of :mod:`femgear.physics.lubrication.mixed`)."""
     from femgear.physics.contact.film import line_film
@@ -155,5 +155,5 @@ def thermal_central_film(w, R, ue, srr, T_bulk, oil: OilLaw, E_red, solids: Soli
     b = np.sqrt(8 * w * R / (np.pi * E_red))
     p_h = 2 * w / (np.pi * b)
     eta_in = oil.viscosity(0.0, T_bulk)
-    h = line_film(w, R, ue, E_red, eta_in, oil.alpha).central_moes
-    return h * gupta_thermal_factor(p_h, E_red, srr, ue, eta_in, oil.beta_t, solids.k_oil), b, p_h
+    h = line_film(w, R, ue, E_red, eta_in, oil.pressure_viscosity(T_bulk)).central_moes
+    return h * gupta_thermal_factor(p_h, E_red, srr, ue, eta_in, oil.temperature_viscosity(T_bulk), solids.k_oil), b, p_h

@@ -1,4 +1,5 @@
-"""3-D tetrahedral body of a double-helical gear member: both helices, the groove, the rim down to the bore.
+"""3-D tetrahedral body of a gear member: both helices and the groove (one helix for a single-helical pair), the rim
+down to the bore.
 
 The transverse section of :func:`femgear.physics.mesh.section.gear_section` (rack-generated
 involute + trochoid fillet, ``n_teeth`` teeth on a whole ring — the root circle goes on round
@@ -20,6 +21,9 @@ the global vertex order, which makes neighbouring prisms conform):
 - the right helix, z ∈ [b + g, 2b + g], the opposite hand: θ(z) = Δ + hand · (2b + g − z) tan β / r_ref,
   i.e. its face coordinate is ζ = 2b + g − z (the groove at ζ = b for both helices, as in
   :mod:`femgear.physics.ltca.contact`).
+
+A single-helical member (``SegmentSpec.helices`` = 1) is the left helix alone, z ∈ [0, b], of the real
+face width: no groove, no right helix (its face end at z = b is a free end face, ``end1``).
 
 Stagger.  The scene's ``stagger`` s puts the right helix's contact lines s·p_bt further along
 the path at the same phase (:func:`femgear.physics.geometry.kinematics.double_helical_contact`).  A
@@ -76,17 +80,20 @@ class SegmentSpec:
     h_far: float = 0.0   #: largest element size in the rim; 0: :func:`far_size` (max(12 h_tooth, ¼ rim depth))
     fine_teeth: int = 3  #: middle teeth kept at ≤ h (the outer ones only carry kernel readings: coarser)
     far_dz: float = FAR_DZ  #: layer spacing of the far field [m_n] (beyond the teeth, below the rim's top); 0: none
+    helices: int = 2     #: helices of the body: 2 (double-helical) or 1 (single-helical: the left helix alone)
 
     def key(self) -> tuple:
         base = (round(self.h_tooth, 12), round(self.h, 12), self.layers, self.n_teeth, round(self.r_bore, 12),
                 round(self.groove, 12), round(self.stagger, 12), round(self.grade, 12), round(self.h_far, 12),
                 self.fine_teeth, "body-v2")
-        return base if self.far_dz == FAR_DZ else base + (round(self.far_dz, 9),)
+        base = base if self.far_dz == FAR_DZ else base + (round(self.far_dz, 9),)
+        return base if self.helices == 2 else base + ("one-helix",)
 
 
 def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, r_bore: float = 0.0,
                  groove: float = 0.0, stagger: float = 0.0) -> SegmentSpec:
-    """Body resolution ``level`` (0 coarse, 1 default, 2 fine, 3 finer).
+    """Body resolution ``level`` (0 coarse, 1 default, 2 fine, 3 finer) of ``pair``'s member: both helices of a
+    double-helical pair, the one helix of a single-helical or spur pair (``pair.n_helices``; no groove, no stagger).
 
     h_tooth = m_n / (2 + level), at most half the tip width but never below :data:`TIP_FLOOR` of m_n / (2 + level)
     (module units: a narrower tip, a pointed one of a high addendum modification, gets its own size near the
@@ -100,6 +107,8 @@ def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, 
     h_tooth = min(pair.m_n / (2 + level), max(0.49 * tip, TIP_FLOOR * pair.m_n / (2 + level)))
     h = max(min(0.49 * tip, 2.0 * h_tooth), h_tooth)
     layers = max(4, int(math.ceil(pair.b / (1.6 * h_tooth))))
+    if pair.n_helices == 1:
+        return SegmentSpec(h_tooth=h_tooth, h=h, layers=layers, n_teeth=n_teeth, r_bore=r_bore, helices=1)
     return SegmentSpec(h_tooth=h_tooth, h=h, layers=layers, n_teeth=n_teeth, r_bore=r_bore, groove=groove,
                        stagger=stagger)
 
@@ -122,10 +131,12 @@ class HelixFrame:
     groove: float
     twist: float          #: tan β / r_ref · hand [rad/m]
     stagger_angle: float  #: Δ [rad]
+    helices: int = 2      #: 1: the left helix alone (single-helical), z ∈ [0, b]
 
     @property
     def width(self) -> float:
-        return 2 * self.b + self.groove
+        """Axial width of the body: 2b + g, or b for one helix [m]."""
+        return 2 * self.b + self.groove if self.helices == 2 else self.b
 
     def theta(self, z: np.ndarray) -> np.ndarray:
         """Turn of the section at axial position z [rad]."""
@@ -150,16 +161,17 @@ class HelixFrame:
         return out
 
 
-def frame_of(pair: GearPair, member: int, groove: float = 0.0, stagger: float = 0.0) -> HelixFrame:
-    """The :class:`HelixFrame` of ``member`` with groove width ``groove`` [m] and ``stagger`` [base pitches]."""
+def frame_of(pair: GearPair, member: int, groove: float = 0.0, stagger: float = 0.0, helices: int = 2) -> HelixFrame:
+    """The :class:`HelixFrame` of ``member`` with groove width ``groove`` [m] and ``stagger`` [base pitches]
+    (``helices`` 1: the one helix of a single-helical body)."""
     z = pair.z1 if member == 1 else pair.z2
     r_ref = z * pair.m_t / 2
     delta = (-1 if member == 1 else 1) * stagger * 2 * math.pi / z
-    return HelixFrame(pair.b, groove, HAND[member] * math.tan(pair.beta) / r_ref, delta)
+    return HelixFrame(pair.b, groove, HAND[member] * math.tan(pair.beta) / r_ref, delta, helices)
 
 
 def helix_frame(pair: GearPair, member: int, spec: SegmentSpec) -> HelixFrame:
-    return frame_of(pair, member, spec.groove, spec.stagger)
+    return frame_of(pair, member, spec.groove, spec.stagger, spec.helices)
 
 
 def far_size(pair: GearPair, member: int, spec: SegmentSpec) -> float:
@@ -207,8 +219,10 @@ def groove_layers(b: float, groove: float, dz: float, rate: float, cap: float) -
 
 
 def _layers(pair: GearPair, spec: SegmentSpec, h_far: float | None = None) -> tuple[np.ndarray, int, int]:
-    """(z of every layer, index of the layer at z = b, at z = b + g)."""
+    """(z of every layer, index of the layer at z = b, at z = b + g); one helix: the layers of [0, b] alone."""
     left = np.linspace(0.0, pair.b, spec.layers + 1)
+    if spec.helices == 1:
+        return left, spec.layers, spec.layers
     if spec.groove > 0:
         dz = pair.b / spec.layers
         mid = pair.b + groove_layers(pair.b, spec.groove, dz, spec.grade, h_far or 12.0 * spec.h_tooth)
@@ -220,9 +234,13 @@ def _layers(pair: GearPair, spec: SegmentSpec, h_far: float | None = None) -> tu
 
 
 def member_body(pair: GearPair, member: int, spec: SegmentSpec):
-    """The tetrahedral body (skfem ``MeshTet``) of ``member``, both helices, named regions attached."""
+    """The tetrahedral body (skfem ``MeshTet``) of ``member``, both helices (one: ``spec.helices`` = 1), named
+    regions attached."""
     import skfem
 
+    if spec.helices not in (1, 2) or (spec.helices == 1 and (spec.groove > 0 or spec.stagger != 0)):
+        raise ValueError(f"helices must be 1 or 2 (one helix has no groove and no stagger), got helices="
+                         f"{spec.helices}, groove={spec.groove}, stagger={spec.stagger}")
     if spec.n_teeth < 1 or spec.n_teeth % 2 == 0:
         raise ValueError(f"n_teeth must be odd and ≥ 1 (the middle tooth is loaded), got {spec.n_teeth}")
     if not 0 < spec.h_tooth <= spec.h:
@@ -239,7 +257,8 @@ def member_body(pair: GearPair, member: int, spec: SegmentSpec):
                                     coarse_step(pair, spec))
     boundaries = _name_facets(mesh, sec, layer_of, node2d, (0, k_b, k_g, zs.size - 1))
     boundaries["loaded_flank"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 0)
-    boundaries["loaded_flank_right"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 1)
+    if spec.helices == 2:
+        boundaries["loaded_flank_right"] = _loaded_flank(mesh, boundaries["flank"], pair, member, frame, 1)
     return skfem.MeshTet(mesh.p, mesh.t, _boundaries=boundaries)
 
 

@@ -12,9 +12,10 @@ At each path position Y (the grid of :func:`femgear.physics.rating.scuffing.flas
               GF-C/8.3/90 test (FVA 54/I-IV: 8.3 m/s, 90 °C oil, dip lubrication, R_a 0.5 µm), computed by
               this same method on femgear's FZG C pair (the TS's own definition of λ_GFT).
 
-Oil: the viscosity law is the caller's ``viscosity(T)`` (femgear's oil model, η0 exp(−β_T (T − T0)));
-α is the oil's constant pressure-viscosity coefficient, so S_GF,Y is the viscosity ratio.  W_W = 1
-(case-carburised).  SI inside.
+Oil: the viscosity and pressure–viscosity laws are the caller's ``viscosity(T)`` and
+``pressure_viscosity`` (a number: a constant α; a callable: α(T), femgear's oil law,
+:meth:`femgear.physics.lubrication.oil.OilLaw.pressure_viscosity`), so G_M takes α at θ_M and S_GF,Y
+the product α η at θ_B,Y against 38 °C.  W_W = 1 (case-carburised).  SI inside.
 """
 
 from __future__ import annotations
@@ -62,9 +63,17 @@ class MicropittingRating:
     """the oil's GF-C/8.3/90 failure load stage [-]"""
 
 
+def _alpha_of(pressure_viscosity: float | Callable[[float], float]) -> Callable[[float], float]:
+    if callable(pressure_viscosity):
+        return lambda T: float(pressure_viscosity(T))
+    return lambda T: float(pressure_viscosity)
+
+
 def local_film(pair: GearPair, pinion_torque: float, pinion_rpm: float, inputs: ScuffingInputs,
-               viscosity: Callable[[float], float], pressure_viscosity: float, n: int = 81):
-    """(u, h_Y, λ_GF,Y, θ_M) along the path of ``pair``."""
+               viscosity: Callable[[float], float], pressure_viscosity: float | Callable[[float], float],
+               n: int = 81):
+    """(u, h_Y, λ_GF,Y, θ_M) along the path of ``pair`` (``pressure_viscosity``: α [1/Pa] or α(T))."""
+    alpha = _alpha_of(pressure_viscosity)
     path = flash_path(pair, pinion_torque, pinion_rpm, inputs, n)
     theta_M = inputs.oil_temperature + 0.47 * inputs.X_S * inputs.X_mp * path.mean_flash
     u = path.u
@@ -75,17 +84,18 @@ def local_film(pair: GearPair, pinion_torque: float, pinion_rpm: float, inputs: 
     w1 = pinion_rpm * 2 * math.pi / 60
     v_sum = w1 * u + w1 / pair.u * (pair.line_of_action - u)
     eta_M = viscosity(theta_M)
-    G = pressure_viscosity * E_r
+    G = alpha(theta_M) * E_r
     U = eta_M * v_sum / (2 * E_r * rho)
     W = path.line_load / (E_r * rho)
-    S = np.array([viscosity(theta_M + t) for t in path.flash]) / viscosity(T38)
+    S = np.array([alpha(theta_M + t) * viscosity(theta_M + t) for t in path.flash]) / (alpha(T38) * viscosity(T38))
     h = 1.6 * rho * G**0.6 * U**0.7 * W**-0.13 * S**0.22
     Ra = 0.5 * (inputs.Ra[0] + inputs.Ra[1])
     return u, h, h / Ra, theta_M
 
 
 def micropitting_rating(pair: GearPair, pinion_torque: float, pinion_rpm: float, inputs: ScuffingInputs,
-                        viscosity: Callable[[float], float], pressure_viscosity: float, stage: float,
+                        viscosity: Callable[[float], float], pressure_viscosity: float | Callable[[float], float],
+                        stage: float,
                         W_W: float = 1.0, n: int = 81) -> MicropittingRating:
     """ISO/TS 6336-22 method B for an oil with GF-C/8.3/90 failure load stage ``stage``."""
     u, h, lam, theta_M = local_film(pair, pinion_torque, pinion_rpm, inputs, viscosity, pressure_viscosity, n)
@@ -98,7 +108,7 @@ def micropitting_rating(pair: GearPair, pinion_torque: float, pinion_rpm: float,
 
 
 def reference_film_thickness(stage: float, inputs: ScuffingInputs, viscosity: Callable[[float], float],
-                        pressure_viscosity: float) -> float:
+                        pressure_viscosity: float | Callable[[float], float]) -> float:
     """λ_GFT: λ_GF,min of the FZG C gear in the GF-C/8.3/90 test at load stage ``stage``."""
     pair = GearPair(**FZG_C)
     rpm = 8.3 / (math.pi * 2 * pair.rw1) * 60

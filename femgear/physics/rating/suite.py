@@ -19,6 +19,7 @@ from femgear.docfields import document_fields
 from femgear.physics.body.fillet import FilletStress
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.rating.bending import BendingInputs, BendingRating, bending_rating
+from femgear.physics.rating.load_factors import RatingFactors
 from femgear.physics.rating.micropitting import MicropittingRating, micropitting_rating
 from femgear.physics.rating.permissible import PittingRating
 from femgear.physics.rating.scuffing import ScuffingInputs, ScuffingRating, scuffing_rating
@@ -73,6 +74,8 @@ class PairRating:
     """the ``[rating]`` keys that took their documented default [-]"""
     own: OwnFigures | None = None
     """femgear's own film, specific film, contact temperature and FE fillet stress beside the ISO figures [-]"""
+    factors: RatingFactors | None = None
+    """K_v, K_Hβ, K_Hα the ratings used, each with its source and ISO 6336-1's value beside (None: not bound) [-]"""
 
     @property
     def safety_factors(self) -> dict[str, float]:
@@ -115,7 +118,7 @@ def validity_flags(pair: GearPair, bending: BendingRating, pitch_line_velocity: 
 
 def rate_pair(pair: GearPair, pitting: PittingRating, pinion_torque: float, pinion_rpm: float,
               bending: BendingInputs, scuffing: ScuffingInputs, scuffing_stage: float, micropitting_stage: float,
-              viscosity: Callable[[float], float], pressure_viscosity: float,
+              viscosity: Callable[[float], float], pressure_viscosity: float | Callable[[float], float],
               own: OwnFigures | None = None, defaults: tuple[str, ...] = ()) -> PairRating:
     """The four ratings of ``pair`` (``pitting`` computed by :func:`femgear.physics.rating.pitting_rating`)."""
     b = bending_rating(pair, pinion_torque, pinion_rpm, bending)

@@ -2,7 +2,9 @@
 
 Keys: ``safety_factors`` (S_H, S_F per member, S_B, S_intS, S_lambda, the flagged factors, the
 flags and the defaulted ``[rating]`` keys), ``bending``, ``scuffing``, ``micropitting``; each of
-the last three holds a ``femgear`` sub-dict with femgear's own figure beside the ISO one.
+the last three holds a ``femgear`` sub-dict with femgear's own figure beside the ISO one;
+``load_factors``: K_v, K_Hβ, K_Hα with their sources and ISO 6336-1's values
+(:func:`load_factors_summary`).
 Temperatures in K.
 """
 
@@ -72,6 +74,26 @@ def _micropitting(r: PairRating) -> dict[str, Any]:
     return out
 
 
+def load_factors_summary(r: PairRating) -> dict[str, Any] | None:
+    """K_v, K_Hβ, K_Hα: each ``value`` (used), ``source``, ``iso`` (ISO 6336-1's value beside), ``iso_method``,
+    ``femgear`` (femgear's own value where its physics computed it, else None) and ``note``; with ISO's inputs."""
+    f = r.factors
+    if f is None:
+        return None
+    out: dict[str, Any] = {name: {"value": k.value, "source": k.source, "iso": k.iso, "iso_method": k.iso_method,
+                                  "femgear": k.femgear, "note": k.note}
+                           for name, k in (("K_v", f.K_v), ("K_Hbeta", f.K_Hbeta), ("K_Halpha", f.K_Halpha))}
+    b, c, t = f.dynamic_b, f.face_c, f.tolerances
+    out["K_v"].update({"helices": list(f.K_v_helices), "resonance_ratio": b.N, "resonance_speed_rpm": b.n_E1,
+                       "N_S": b.N_S, "regime": b.regime, "B_p": b.B_p, "B_f": b.B_f, "B_k": b.B_k,
+                       "tip_relief": b.tip_relief})
+    out["K_Hbeta"].update({"F_beta_x": c.F_beta_x, "F_beta_y": c.F_beta_y, "y_beta": c.y_beta,
+                           "crowning": c.crowning, "c_gamma_beta": c.c_gamma_beta})
+    out["accuracy_grade"] = {"grade": t.grade, "f_pt": list(t.f_pt), "f_falpha": list(t.f_falpha),
+                             "f_Hbeta": list(t.f_Hbeta), "f_pb": t.f_pb}
+    return out
+
+
 def pair_rating_summary(r: PairRating) -> dict[str, Any]:
     sf = r.safety_factors
     factors = {"S_H": list(r.pitting.S_H), "S_F": list(r.bending.S_F), "S_B": sf["S_B"], "S_intS": sf["S_intS"],
@@ -79,5 +101,9 @@ def pair_rating_summary(r: PairRating) -> dict[str, Any]:
     factors["flagged"] = [k for k in factors if r.flagged(k)]
     factors["flags"] = list(r.flags)
     factors["defaults"] = list(r.defaults)
-    return {"safety_factors": factors, "bending": _bending(r), "scuffing": _scuffing(r),
-            "micropitting": _micropitting(r)}
+    out = {"safety_factors": factors, "bending": _bending(r), "scuffing": _scuffing(r),
+           "micropitting": _micropitting(r)}
+    lf = load_factors_summary(r)
+    if lf is not None:
+        out["load_factors"] = lf
+    return out

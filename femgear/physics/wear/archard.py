@@ -17,6 +17,11 @@ point gives zero wear there.
 ``cycles`` count revolutions of the pinion (load cycles of one pinion tooth); a gear
 tooth is loaded z1/z2 times per pinion revolution.
 
+With the film known (:mod:`.regime`), the load that wears is the asperity-borne part
+f_a(w̄') w̄' of the passage load (``WearSetup.share``; Akbarzadeh & Khonsari, ASME J. Tribol. 131
+(2009) 024503): Δh_j = (K/H) f_a w̄' |v1 − v2| / v_j, negligible in full film.  Without it (the
+paper's constant-coefficient form) the whole load wears.
+
 Stability rule: a step of ΔN cycles may change the load distribution by at most
 ``max_relative_change``, i.e. the largest depth increment is capped at that fraction
 of the mean elastic approach w̄'/c_l.  Larger steps give the oscillating wear profiles
@@ -33,8 +38,11 @@ from pathlib import Path
 
 import numpy as np
 
+from femgear.errors import ConvergenceError
+from femgear.perf import Progress
 from femgear.physics.geometry import GearPair, PathKinematics
 from femgear.physics.wear.load_sharing import ReferenceLoad, load_map, reference_load_map
+from femgear.physics.wear.regime import AsperityShare
 
 
 @dataclass(frozen=True)
@@ -50,6 +58,9 @@ class WearSetup:
     n_phase: int = 64
     #: share the load like this contact analysis (the ``ltca`` level) instead of the Winkler layer c_l alone
     reference: ReferenceLoad | None = None
+    #: the asperity-borne share f_a(w', u) of the load (:mod:`.regime`); None: the whole load wears (the paper's
+    #: constant-coefficient form)
+    share: AsperityShare | None = None
 
 
 @dataclass(frozen=True)
@@ -80,8 +91,11 @@ def wear_rates(setup: WearSetup, state: WearState) -> tuple[np.ndarray, np.ndarr
 def archard_rates(setup: WearSetup, load: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Depth per pinion revolution of pinion and gear [m] for the passage load intensity ``load`` [N/m]
     at the positions ``setup.kin.u`` (last axis; any leading axes, e.g. helix and face position):
-    Δh_j = (K/H) w' |v1 − v2| / v_j, the gear's × z1/z2 (module docstring)."""
+    Δh_j = (K/H) w' |v1 − v2| / v_j, the gear's × z1/z2, w' the asperity-borne part f_a w' with ``setup.share``
+    (module docstring)."""
     k = setup.kin
+    if setup.share is not None:
+        load = load * setup.share(load)
     factor = setup.coefficient / setup.hardness * load * np.abs(k.vs)
     return factor / k.v1, factor / k.v2 * (setup.pair.z1 / setup.pair.z2)
 
@@ -91,25 +105,36 @@ def stable_cycles(setup: WearSetup, rate: float, load: np.ndarray, remaining: fl
     """The cycles of one update step: ``remaining``, capped so that the largest depth increment (``rate``
     [m per revolution], of h1 + h2) stays below ``max_relative_change`` × the mean elastic approach
     w̄'/c_l of the loaded points of ``load`` (the stability rule of the module docstring)."""
-    if rate <= 0:
+    loaded = load[load > 0]
+    if not (rate > 0 and loaded.size):       # nothing wears (full film, or no load in this pass)
         return remaining
-    approach = float(np.mean(load[load > 0])) / float(np.mean(setup.c_l))
+    approach = float(np.mean(loaded)) / float(np.mean(setup.c_l))
     return min(remaining, max_relative_change * approach / rate)
 
 
 def stepped(setup: WearSetup, rates, state, cycles: float, max_relative_change: float = 0.05) -> Iterator:
     """Explicit Archard stepping of any wear ``state`` (``cycles``, ``h1``, ``h2``, ``steps`` fields) to
     ``cycles`` pinion revolutions: ``rates(state)`` → (pinion rate, gear rate, load) per revolution, each
-    step as long as :func:`stable_cycles` allows.  Yields the state after each step."""
+    step as long as :func:`stable_cycles` allows.  Yields the state after each step; a non-finite rate, load
+    or depth raises :class:`femgear.errors.ConvergenceError` with the steps' history (no NaN leaves)."""
     if not 0 < max_relative_change <= 1:
         raise ValueError(f"max_relative_change must be in (0, 1] (got {max_relative_change!r})")
+    history: dict[str, list] = {"cycles": [], "max_depth": []}
+    progress = Progress(f"Archard wear to {cycles:.4g} cycles", None)
     while state.cycles < cycles * (1 - 1e-12):
         r1, r2, w = rates(state)
+        if not all(np.all(np.isfinite(a)) for a in (r1, r2, w)):
+            raise ConvergenceError("wear", f"non-finite wear rate or load at {state.cycles:.4g} cycles (step "
+                                           f"{state.steps + 1})", history)
         dN = stable_cycles(setup, float(np.max(r1 + r2)), w, cycles - state.cycles, max_relative_change)
         state = replace(state, cycles=state.cycles + dN, h1=state.h1 + r1 * dN, h2=state.h2 + r2 * dN,
                         steps=state.steps + 1)
         if not (np.all(np.isfinite(state.h1)) and np.all(np.isfinite(state.h2))):
-            raise FloatingPointError("wear depth became non-finite")
+            raise ConvergenceError("wear", f"the wear depth became non-finite at {state.cycles:.4g} cycles", history)
+        history["cycles"].append(float(state.cycles))
+        history["max_depth"].append(float(max(np.max(state.h1), np.max(state.h2))))
+        progress(state.steps, f"step {state.steps}, {state.cycles:.4g} cycles, largest depth "
+                              f"{history['max_depth'][-1] * 1e6:.3g} µm")
         yield state
 
 

@@ -199,7 +199,8 @@ def base_speed(setup: WearSetup) -> float:
 
 
 def flank_volume(setup: WearSetup, depth: np.ndarray, grid: np.ndarray | None, member: int) -> float:
-    """Worn volume of one tooth flank of ``member`` per pass [m³]: ∫∫ h dA over both helices.
+    """Worn volume of one tooth flank of ``member`` per pass [m³]: ∫∫ h dA over both helices (the one of a
+    single-helical pair: its :class:`FaceWearState` rows repeat it).
 
     ``depth``: (helix, u, ζ) on ``grid``, or (u,) face-uniform (``grid`` None: × the face width, both
     helices).  The contact line sweeps the plane of action (u, ζ) at ω₁ r_b1 along u while it crosses
@@ -211,7 +212,7 @@ def flank_volume(setup: WearSetup, depth: np.ndarray, grid: np.ndarray | None, m
     scale = v / (base_speed(setup) * math.cos(pair.beta_b))
     if grid is None:
         return float(np.trapezoid(depth * scale, k.u)) * pair.b * pair.n_helices
-    per_u = np.trapezoid(depth, grid, axis=-1).sum(axis=0)
+    per_u = np.trapezoid(depth[:pair.n_helices], grid, axis=-1).sum(axis=0)     # a single helix's state repeats it
     return float(np.trapezoid(per_u * scale, k.u))
 
 

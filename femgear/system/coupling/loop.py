@@ -16,7 +16,8 @@ One iteration:
    layer c_l(u) on the flank deviations, or with ``ltca`` the load distribution of the
    pass's (deviated) LTCA cycle scaled to the dynamic force (:func:`ltca_reference`);
 4. lubrication at every path position (load, radius, entrainment, slide-to-roll,
-   bulk temperature) → μ(u) and the contact temperature rise ΔT(u);
+   bulk temperature: the supply temperature plus the previous pass's bulk flank rise of step 5,
+   :func:`femgear.levels.lubrication.bulk_temperature`) → μ(u) and the contact temperature rise ΔT(u);
 5. thermal expansion of both flanks for the bulk (body) temperature rise
    (:func:`femgear.system.coupling.thermal.bulk_temperature_rise`: the scene's ``thermal.flank_temperature_rise``, or,
    when that is 0, ``thermal.bulk_fraction`` × the mean contact temperature rise along
@@ -47,9 +48,10 @@ import numpy as np
 
 from femgear.case import Case
 from femgear.docfields import document_fields
-from femgear.errors import ConvergenceError
+from femgear.errors import ConvergenceError, SceneError
 from femgear.levels import wear as wear_levels
-from femgear.levels.lubrication import Lubrication, lubrication_solver
+from femgear.levels.lubrication import Lubrication, bulk_temperature, lubrication_solver
+from femgear.perf import Progress
 from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.physics.wear.face import FaceReference
@@ -111,6 +113,8 @@ class CouplingSetup:
     #: is then integrated face-resolved per member and helix (:mod:`femgear.physics.wear.face`) and the deviated
     #: cycle of each pass runs on that (ρ, ζ) field; None: the face-uniform path wear
     face: FaceReference | None = None
+    #: the case's wear model (``physics.wear``; its asperity share is solved once, on first use); None: no wear
+    wear: wear_levels.ArchardWear | None = None
     #: ``ltca``: the latest deviated cycle, kept for the next pass (:func:`_deviated_model`): the unworn cycle it
     #: ran from, its deviation inputs and (worn, unworn)
     deviated: dict = field(default_factory=dict, compare=False, repr=False)
@@ -145,7 +149,8 @@ class CouplingSetup:
         return cls(case=case, model=model, modal=modal_analysis(model),
                    lubrication=lubrication or lubrication_solver(case, repeated=True), thermal=thermal_units(case),
                    c_l=c_l, static_force=case.operating.normal_force / case.pair.n_helices, n_phase=n_phase, method=method,
-                   ltca=ltca, wear_anchor=wear_anchor, face=_face_reference(case, ltca, n_phase))
+                   ltca=ltca, wear_anchor=wear_anchor, face=_face_reference(case, ltca, n_phase),
+                   wear=wear_levels.of(case))
 
 
 def _face_reference(case: Case, ltca: LTCACycle | None, n_phase: int) -> FaceReference | None:
@@ -153,8 +158,6 @@ def _face_reference(case: Case, ltca: LTCACycle | None, n_phase: int) -> FaceRef
     if case.wear.field != "face":
         return None
     if ltca is None:
-        from femgear.errors import SceneError
-
         raise SceneError("wear.field", '"face" needs physics.stiffness = "ltca" (the LTCA\'s contact-line loads)')
     return ltca_face_reference(case.pair, case.path.u, ltca, np.zeros(case.path.u.size), n_phase=n_phase,
                                n_zeta=case.wear.face_points)
@@ -288,8 +291,9 @@ def _references(setup: CouplingSetup, cycle: LTCACycle | None, wear: np.ndarray,
 
 
 def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarray,
-                      reference: ReferenceLoad | None = None):
-    """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication."""
+                      reference: ReferenceLoad | None = None, flank_rise: float = 0.0):
+    """w̄'(u) for per-helix forces over the mesh phases, then μ, ΔT from the lubrication at the flanks' bulk
+    temperature (the supply temperature plus ``flank_rise`` [K], the previous pass's bulk rise)."""
     pair, kin = setup.pair, setup.kin
     if reference is None:
         maps = [load_map(pair, kin.u, force[s], removed, setup.c_l, offset=off)
@@ -298,7 +302,7 @@ def _contact_response(setup: CouplingSetup, force: np.ndarray, removed: np.ndarr
     else:
         w = reference_load_map(pair, kin.u, force, removed, setup.c_l, reference).mean_load
     w = np.maximum(w, 1e-3 * setup.static_force / pair.mean_contact_length)   # never-loaded ends
-    T0 = setup.case.operating.ambient_temperature
+    T0 = bulk_temperature(setup.case, flank_rise)
     mu, dT = setup.lubrication(w=w, R=kin.R, ue=kin.ue, srr=np.abs(kin.srr), T=np.full(w.shape, T0))
     return w, np.asarray(mu, dtype=float), np.asarray(dT, dtype=float)
 
@@ -321,7 +325,7 @@ def _wear(setup: CouplingSetup, force: np.ndarray,
     case = setup.case
     n = setup.kin.u.size
     face = None if setup.face is None else np.zeros((2, 2, n, setup.face.grid.size))
-    wear = wear_levels.of(case)
+    wear = setup.wear if setup.wear is not None else wear_levels.of(case)
     if wear is None or wear.cycles == 0:
         return np.zeros((2, n)), face
     from femgear.physics.wear import run_wear
@@ -390,7 +394,6 @@ def _worn_orders(unworn: LTCACycle, worn: LTCACycle, extra) -> tuple[LTCACycle, 
     order 1 is kept, with a warning, and ``worn.orders_check`` holds the solver's message."""
     import logging
 
-    from femgear.errors import ConvergenceError
     from femgear.physics.ltca.level import resolved_orders
 
     check = None
@@ -405,12 +408,43 @@ def _worn_orders(unworn: LTCACycle, worn: LTCACycle, extra) -> tuple[LTCACycle, 
             worn.with_orders(orders, change, check))
 
 
-def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, LTCACycle | None]:
-    """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the pass's LTCA cycle)."""
+def pass_model(setup: CouplingSetup, state: CouplingState) -> tuple[GearRotorModel, LTCACycle | None]:
+    """The dynamic model of the pass after ``state``: its friction μ(u) and flank deviations (wear opens the drive
+    flanks' dead zone, thermal growth closes both; :class:`femgear.system.dynamics.model.MeshDeviation`), and the
+    pass's LTCA cycle (None without ``ltca``).  A dead zone closed below zero is refused naming what closes it."""
     u_tab, mu_tab = setup.kin.u, state.mu
     mu = (lambda u: np.interp(u, u_tab, mu_tab)) if np.any(mu_tab > 0) else 0.0
     base, deviation, cycle = _deviated_model(setup, state)
-    model = with_deviation(with_friction(base, mu), deviation)
+    try:
+        return with_deviation(with_friction(base, mu), deviation), cycle
+    except SceneError as exc:
+        raise SceneError(exc.key, f"{exc.message}. {_dead_zone_parts(setup, state)}") from None
+
+
+def _dead_zone_parts(setup: CouplingSetup, state: CouplingState) -> str:
+    """What opens and what closes the dead zone in ``state``, separately (the refusal's second sentence)."""
+    pair, u, stagger = setup.pair, setup.kin.u, setup.case.stagger
+    zero = np.zeros(u.size)
+    parts = []
+    for name, wear, zeta in (("the thermal growth", zero, state.thermal_deviation.sum(axis=0)),
+                             ("the wear", state.wear.sum(axis=0), zero)):
+        d = mesh_deviation(pair, u, wear, zeta, stagger, setup.n_phase)
+        if d is not None:
+            parts.append((name, float(np.min(d.opening)), float(np.max(d.opening))))
+    text = []
+    for name, lo, hi in parts:
+        if lo < 0:
+            text.append(f"{name} closes it by up to {-lo * 1e6:.3g} µm")
+        elif hi > 0:
+            text.append(f"{name} opens it by {lo * 1e6:.3g}–{hi * 1e6:.3g} µm (material removed)")
+    rise = state.flank_temperature_rise
+    return (f"Of these, {' and '.join(text) or 'no part alone closes it'} (bulk flank temperature rise "
+            f"{rise:.3g} K over the oil)")
+
+
+def _dynamics(setup: CouplingSetup, state: CouplingState) -> tuple[np.ndarray, DynamicsRun, LTCACycle | None]:
+    """Dynamic mesh force per helix over one mesh period for the inputs in ``state`` (and the pass's LTCA cycle)."""
+    model, cycle = pass_model(setup, state)
     num = setup.case.numerics
     run = run_dynamics(model, method=setup.method or num.dynamics_method, cycles=num.dynamics_cycles,
                        transient_cycles=num.transient_cycles, steps_per_period=num.steps_per_mesh_period,
@@ -450,7 +484,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
     zero = np.zeros((2, setup.kin.u.size))
     ref_wear, ref_contact = _references(setup, setup.ltca, zero, zero)
     wear, face = _wear(setup, force, ref_wear)
-    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact)
+    w, mu, dT = _contact_response(setup, force, wear.sum(axis=0), ref_contact, setup.case.thermal.flank_temperature_rise)
     rise, zeta, zeta_face = _thermal(setup, dT)
     state = CouplingState(iteration=0, mesh_force=force, load_per_length=w, mu=mu, temperature_rise=dT,
                           flank_temperature_rise=rise, thermal_deviation=zeta, wear=wear,
@@ -464,7 +498,7 @@ def coupling_iterations(setup: CouplingSetup, relax: float = 1.0) -> Iterator[Co
                                             state.thermal_face)
         wear_new, face_new = _wear(setup, force, ref_wear)
         t2 = time.perf_counter()
-        w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact)
+        w, mu_new, dT = _contact_response(setup, force, state.removed, ref_contact, state.flank_temperature_rise)
         rise, zeta_new, zeta_face = _thermal(setup, dT)
         mix = lambda old, new: old + relax * (new - old)  # noqa: E731
         lte = math.nan if cycle is None else cycle.lte_peak_to_peak
@@ -548,6 +582,7 @@ def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1
     history: dict[str, list] = {"iteration": [], "mesh_force_change": [], "mu_change": [], "seconds": []}
     start = time.perf_counter()
     passes: list[CouplingState] = []
+    lines = Progress(f"coupling of scene {setup.case.name!r}", None)     # shown once the loop has run 10 s
 
     def done(state: CouplingState, alternation: tuple[float, float] | None = None) -> CoupledResult:
         return CoupledResult(state, CouplingHistory(**{k: tuple(v) for k, v in history.items()}), True,
@@ -560,6 +595,9 @@ def run_coupled(setup: CouplingSetup, tol_force: float = 1e-6, tol_mu: float = 1
         history["seconds"].append(state.seconds)
         if progress is not None:
             progress(state)
+        lines(state.iteration, f"pass {state.iteration} done in {state.seconds:.1f} s, mesh-force change "
+                               f"{state.mesh_force_change:.3g}, μ change {state.mu_change:.3g}" if state.iteration else
+                               f"quasi-static start done in {state.seconds:.1f} s")
         if state.iteration == 0:
             continue
         if one_way or (state.mesh_force_change < tol_force and state.mu_change < tol_mu):

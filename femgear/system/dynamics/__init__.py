@@ -18,9 +18,18 @@
   ``simulation`` the recorded :class:`Simulation` and shared input helpers.
 - ``response``   amplitudes (half peak-to-peak), mesh forces, bearing accelerations,
                  Hanning spectra with mesh orders; frozen :class:`Response`.
+- ``bearings``   bearing loads F = K_F q + C_F q̇ of the four stations from a state history (every level),
+                 their mean, peak-to-peak and mesh orders; Newton's law per member.
+- ``orders``     least-squares line fits at known frequencies (mesh and shaft orders).
 - ``modal``      linearised (mean-stiffness) modal analysis with modal energy per DOF group;
                  the highest mode the mesh excitation reaches.
 - ``sweep``      time-domain speed sweeps (DTE RMS vs mesh frequency).
+- ``family``     :class:`SpeedFamily`: the models of a case at many speeds, the speed-independent parts built once.
+- ``harmonic``   steady state per order by harmonic balance, flanks in contact (``harmonic_core``: the batched
+                 equations); ``harmonic_sweep``: whine against speed, contact loss handed to time integration.
+- ``aft``        nonlinear harmonic balance (alternating frequency–time) with pseudo-arclength continuation;
+  ``sdof_hb``    the Kahraman–Singh oscillator traced through its folds.
+- ``runup``      a speed ramp in the time domain and order tracking by resampling to shaft angle.
 - ``sdof``       Kahraman–Singh single-DOF backlash oscillator and frequency sweeps.
 - ``run``        one dynamic run of a model (integration → response → modes), pure; the default
                  step plan (docs/dynamics_step.md).

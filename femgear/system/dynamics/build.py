@@ -20,17 +20,22 @@ import numpy as np
 from scipy.linalg import eigh
 
 from femgear.case import Case
+from femgear.case.checks import bearing_stations, toothed_width
 from femgear.errors import SceneError
 from femgear.levels import dynamics as dynamics_levels
+from femgear.levels import housing as housing_levels
 from femgear.levels import stiffness as stiffness_levels
-from femgear.physics.excitation import Eccentricity, ProfileError, RandomError, Unbalance
+from femgear.physics.excitation import CumulativePitchError, Eccentricity, ProfileError, RandomError, Unbalance
+from femgear.system.dynamics.housing import couple_housing
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import (
+    FrictionLines,
     MeshGeometry,
     StiffnessTable,
     as_stiffness_table,
     constant_stiffness,
     contact_line_stiffness,
+    friction_from_lines,
     friction_table,
     mesh_geometry,
 )
@@ -185,6 +190,14 @@ def excitations(case: Case, omega: tuple[float, float], fm: float):
     return profile, rnd, ecc, unb
 
 
+def pitch_errors(case: Case, fm: float) -> tuple[tuple[CumulativePitchError, ...], ...]:
+    """Per helix (its mesh offset: the stagger), the cumulative pitch deviations of the members that have one."""
+    members = [(m.cumulative_pitch_error, z, math.radians(m.cumulative_pitch_phase_deg))
+               for m, z in zip(case.members, (case.pair.z1, case.pair.z2))]
+    return tuple(tuple(CumulativePitchError(a, fm, z, phi, off) for a, z, phi in members if a > 0)
+                 for off in (0.0, case.stagger))
+
+
 def rayleigh_damping(M: np.ndarray, K_struct: np.ndarray, K_mean: np.ndarray, ratio: float):
     """a0 M_f + a1 K_struct on the two lowest flexible modes of the mean system.
 
@@ -206,7 +219,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
                 mesh_damping_ratio: float | None = None, v_reg: float | None = None,
                 bearing_span: tuple[float, float] | None = None, shaft_diameter: tuple[float, float] | None = None,
                 backlash: float | None = None, load_stiffness: float | None = None,
-                deviation: MeshDeviation | None = None) -> GearRotorModel:
+                deviation: MeshDeviation | None = None, rigid_housing: bool = False) -> GearRotorModel:
     """Assemble the model of ``case``.
 
     ``level``: "lumped" or "timoshenko" (default: ``physics.dynamics``, "lumped" when that
@@ -219,6 +232,8 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     ``<member>.shaft_diameter``, ``stiffness.rayleigh_ratio``, ``stiffness.damping_ratio``,
     ``friction.regularisation_speed``, ``pair.backlash`` and ``operating.loop_stiffness``.
     ``deviation``: flank deviations of the drive and coast flanks (:class:`MeshDeviation`).
+    An FE ``[housing]`` is coupled (:func:`femgear.system.dynamics.housing.couple_housing`: the bearings join the
+    shafts to its seats) unless ``rigid_housing``.
     """
     pair, members = case.pair, case.members
     dyn = dynamics_levels.model_level(level, case.levels.dynamics)
@@ -226,15 +241,11 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         raise SceneError("physics.dynamics", f"level {dyn.name!r} has no rotor model; choose a dynamic level")
     bearing_span = bearing_span or tuple(m.bearing_span for m in members)
     shaft_diameter = shaft_diameter or tuple(m.shaft_diameter for m in members)
-    # helix centres at ±half; a pair with one mesh (spur, single helix) meshes in the mid-plane: the
+    # helix centres at ±half; a pair with one mesh (spur, single helix) meshes in the mid-plane of its face: the
     # two "halves" coincide and the right one carries no mesh (k_right = 0 from the stiffness level)
     half = 0.5 * (pair.b + case.groove_width) if pair.n_helices == 2 else 0.0
-    if pair.n_helices == 1 and dyn.shaft_elements:
-        raise SceneError("physics.dynamics", f"a {pair.kind} pair (one mesh) runs with the lumped dynamics level")
-    for name, span in zip(("pinion", "gear"), bearing_span):
-        if not span > 2 * half:
-            raise SceneError(f"{name}.bearing_span",
-                             f"must exceed the distance of the helix centres {2 * half:.4g} m (got {span!r})")
+    stations = tuple(bearing_stations(name, span, m.face_offset, toothed_width(case.scene, name))
+                     for name, span, m in zip(("pinion", "gear"), bearing_span, members))
     load_stiffness = case.operating.loop_stiffness if load_stiffness is None else load_stiffness
     if load_stiffness < 0:
         raise ValueError(f"load_stiffness must be non-negative (got {load_stiffness!r})")
@@ -242,7 +253,7 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     if b0 < 0:
         raise ValueError(f"backlash must be non-negative (got {b0!r})")
 
-    st = assemble_structure(members, case.material, pair, dyn.shaft_elements, bearing_span, shaft_diameter, half)
+    st = assemble_structure(members, case.material, pair, dyn.shaft_elements, stations, shaft_diameter, half)
     K = st.K + (loop_spring(pair, st.T, load_stiffness) if load_stiffness > 0 else 0.0)
     geom = mesh_geometry(pair, half)
     G = geom.g @ st.T
@@ -269,8 +280,15 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
         stagger=case.stagger, profile_errors=profile, random_errors=rnd, eccentricities=ecc, unbalances=unb,
         rayleigh=(a0, a1), geometry=geom, nominal_rate=rate, flexible_modes_hz=tuple(wflex / (2 * math.pi)),
         half_spacing=half, v_reg=case.friction.regularisation_speed if v_reg is None else v_reg,
-        load_stiffness=load_stiffness, base_deviation=tooth_contact_deviation(source),
+        load_stiffness=load_stiffness, bearings=st.bearings, base_deviation=tooth_contact_deviation(source),
+        pitch_errors=pitch_errors(case, fm),
     )
+    layer = None if rigid_housing else housing_levels.of(case)
+    if layer is not None and layer.reduced is not None:
+        try:
+            model = couple_housing(model, layer.reduced)
+        except ValueError as exc:
+            raise SceneError("housing.model", str(exc)) from None
     if friction is None:
         from femgear.levels.lubrication import static_friction
 
@@ -278,8 +296,11 @@ def build_model(case: Case, level: str | None = None, *, stiffness: StiffnessTab
     return with_deviation(with_friction(model, friction), deviation)
 
 
-def with_friction(model: GearRotorModel, friction: Friction) -> GearRotorModel:
-    """``model`` with friction μ (a number or μ(u)); the load torque absorbs the mean friction torque."""
+def with_friction(model: GearRotorModel, friction: Friction, lines: FrictionLines | None = None) -> GearRotorModel:
+    """``model`` with friction μ (a number or μ(u)); the load torque absorbs the mean friction torque.
+
+    ``lines``: the contact-line points of :func:`femgear.system.dynamics.mesh.friction_lines` when already
+    built (they do not depend on speed or friction; :class:`femgear.system.dynamics.family.SpeedFamily`)."""
     mu_of_u = None
     if callable(friction):              # μ(u) along the path is folded into the tables
         mu_of_u, mu = friction, 1.0
@@ -293,7 +314,10 @@ def with_friction(model: GearRotorModel, friction: Friction) -> GearRotorModel:
         torque[6 * (2 + side) + 5] = T1 * model.pair.rb2 / model.pair.rb1 / 2
     if mu == 0:
         return replace(model, mu=0.0, friction=None, torque_full=torque)
-    ftab = friction_table(model.pair, geom.h0 @ rate, geom.h1 @ rate, model.stagger, model.v_reg, mu_of_u=mu_of_u)
+    if lines is None:
+        ftab = friction_table(model.pair, geom.h0 @ rate, geom.h1 @ rate, model.stagger, model.v_reg, mu_of_u=mu_of_u)
+    else:
+        ftab = friction_from_lines(lines, geom.h0 @ rate, geom.h1 @ rate, model.v_reg, mu_of_u)
     # the load torque absorbs the mean friction power, so the free rotation does not drift
     N0 = T1 / model.pair.n_helices / geom.g[0, 5]     # mean normal force of a loaded helix
     Qf = -mu * N0 * (ftab.A.mean(axis=1) @ geom.h0 + ftab.B.mean(axis=1) @ geom.h1)

@@ -124,11 +124,12 @@ def as_stiffness_table(source, samples: int = 256) -> StiffnessTable:
 
 
 def constant_stiffness(pair: GearPair, c_gamma: float) -> StiffnessTable:
-    """``constant`` level: k = c_γ b per helix (c_γ [N/m per m of face width])."""
+    """``constant`` level: k = c_γ b per helix (c_γ [N/m per m of face width]); a pair with one mesh (spur,
+    single helix) has no right helix (k_right = 0)."""
     if not c_gamma > 0:
         raise ValueError(f"c_gamma (stiffness.mesh_stiffness_per_width) must be positive (got {c_gamma!r})")
     k = c_gamma * pair.b
-    return StiffnessTable(np.array([k]), np.array([k]), label="constant")
+    return StiffnessTable(np.array([k]), np.array([k if pair.n_helices == 2 else 0.0]), label="constant")
 
 
 def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0, samples: int = 256) -> StiffnessTable:
@@ -138,7 +139,7 @@ def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0,
     mean mesh stiffness per face width, so the time mean of k equals the ``constant``
     level's c_γ b; equivalently k = c_γ L(φ) cos β_b / ε_α).  L_s(φ) comes from
     :func:`femgear.physics.geometry.double_helical_contact`, the right helix shifted by the
-    ``stagger`` (in base pitches).
+    ``stagger`` (in base pitches); a pair with one mesh has no right helix (k_right = 0).
     """
     if not c_gamma > 0:
         raise ValueError(f"c_gamma (stiffness.mesh_stiffness_per_width) must be positive (got {c_gamma!r})")
@@ -146,7 +147,8 @@ def contact_line_stiffness(pair: GearPair, c_gamma: float, stagger: float = 0.0,
     c = double_helical_contact(pair, phases, stagger)
     mean_length = pair.mean_contact_length
     scale = c_gamma * pair.b / mean_length
-    return StiffnessTable(scale * c["length_left"], scale * c["length_right"], label="contact-line")
+    right = scale * c["length_right"] if pair.n_helices == 2 else np.zeros(samples)
+    return StiffnessTable(scale * c["length_left"], right, label="contact-line")
 
 
 @dataclass(frozen=True)
@@ -207,6 +209,65 @@ class FrictionTable:
                 np.stack([periodic_interp(b, phase) for b in self.B]))
 
 
+@dataclass(frozen=True)
+class FrictionLines:
+    """The contact-line sample points of both helices over one mesh period (speed-independent), flattened and
+    sorted by their path position u (a speed sweep evaluates μ(u) and the sliding sign on them per speed).
+
+    ``u`` (P,): path positions of the points [m]; ``weight`` (P,): each point's share of its helix's total contact
+    length at its phase [-], so that a contact-line average is Σ weight · value over the points of one (helix,
+    phase); ``helix`` (P,) 0 or 1 and ``cell`` (P,) = helix · samples + phase index of each point [-].
+    """
+
+    u: np.ndarray
+    weight: np.ndarray
+    helix: np.ndarray
+    cell: np.ndarray
+    samples: int
+    u_pitch: float
+
+
+def friction_lines(pair: GearPair, stagger: float = 0.0, samples: int = 256,
+                   points_per_line: int = 64) -> FrictionLines:
+    """:class:`FrictionLines` of ``pair``: ``points_per_line`` midpoints on every contact line at the phases
+    i/``samples`` (the right helix shifted by ``stagger`` base pitches)."""
+    from femgear.physics.geometry import contact_lines
+
+    xi = (np.arange(points_per_line) + 0.5) / points_per_line
+    us, ws, cells = [], [], []
+    for s, offset in enumerate((0.0, stagger)):
+        for i in range(samples):
+            lines = contact_lines(pair, i / samples, offset)
+            if lines.count == 0:
+                continue
+            u = lines.u_lo[:, None] + (lines.u_hi - lines.u_lo)[:, None] * xi[None, :]
+            w = np.repeat(lines.length[:, None], points_per_line, axis=1) / points_per_line / lines.total_length
+            us.append(u.ravel())
+            ws.append(w.ravel())
+            cells.append(np.full(u.size, s * samples + i))
+    u, w, cell = np.concatenate(us), np.concatenate(ws), np.concatenate(cells)
+    order = np.argsort(u, kind="stable")
+    return FrictionLines(u=u[order], weight=w[order], helix=cell[order] // samples, cell=cell[order], samples=samples,
+                         u_pitch=float(pair.u_pitch))
+
+
+def friction_from_lines(lines: FrictionLines, rate0: np.ndarray, rate1: np.ndarray, v_reg: float = 0.01,
+                        mu_of_u: MuFunction | None = None) -> FrictionTable:
+    """The tables A, B of :func:`friction_table` on precomputed contact-line points (vectorised: a speed sweep
+    builds the points once and evaluates the sliding sign per speed)."""
+    if not v_reg > 0:
+        raise ValueError(f"v_reg must be positive (got {v_reg!r})")
+    du = lines.u - lines.u_pitch
+    rate0, rate1 = np.asarray(rate0, dtype=float), np.asarray(rate1, dtype=float)
+    wsg = lines.weight * np.tanh((rate0[lines.helix] + du * rate1[lines.helix]) / v_reg)
+    if mu_of_u is not None:
+        wsg = wsg * mu_of_u(lines.u)
+    n = 2 * lines.samples
+    A = np.bincount(lines.cell, wsg, minlength=n).reshape(2, lines.samples)
+    B = np.bincount(lines.cell, wsg * du, minlength=n).reshape(2, lines.samples)
+    return FrictionTable(A=A, B=B)
+
+
 def friction_table(pair: GearPair, rate0: np.ndarray, rate1: np.ndarray, stagger: float = 0.0,
                    v_reg: float = 0.01, samples: int = 256, points_per_line: int = 64,
                    mu_of_u: MuFunction | None = None) -> FrictionTable:
@@ -219,26 +280,9 @@ def friction_table(pair: GearPair, rate0: np.ndarray, rate1: np.ndarray, stagger
     sgn(ẇ) (regularisation speed ``v_reg`` [m/s]), so a contact line crossing the
     pitch point feels friction of both signs.  ``mu_of_u``: friction coefficient along
     the path (u [m] -> μ [-]); it is then folded into A and B (use μ_ref = 1 with them).
+    The contact-line points are :func:`friction_lines` (``points_per_line`` midpoints per line).
     """
-    from femgear.physics.geometry import contact_lines
-
     if not v_reg > 0:
         raise ValueError(f"v_reg must be positive (got {v_reg!r})")
-    A = np.zeros((2, samples))
-    B = np.zeros((2, samples))
-    xi = (np.arange(points_per_line) + 0.5) / points_per_line
-    for i in range(samples):
-        for s, offset in enumerate((0.0, stagger)):
-            lines = contact_lines(pair, i / samples, offset)
-            if lines.count == 0:
-                continue
-            u = lines.u_lo[:, None] + (lines.u_hi - lines.u_lo)[:, None] * xi[None, :]
-            w = np.repeat(lines.length[:, None], points_per_line, axis=1) / points_per_line
-            du = u - pair.u_pitch
-            sg = np.tanh((rate0[s] + du * rate1[s]) / v_reg)
-            if mu_of_u is not None:
-                sg = sg * mu_of_u(u)
-            A[s, i] = np.sum(w * sg) / lines.total_length
-            B[s, i] = np.sum(w * sg * du) / lines.total_length
-    return FrictionTable(A=A, B=B)
-
+    return friction_from_lines(friction_lines(pair, stagger, samples, points_per_line), rate0, rate1, v_reg,
+                               mu_of_u)

@@ -6,7 +6,7 @@ Mode shapes are returned in the full 24 DOFs, mass-normalised in the reduced one
 
 Modal energy per DOF group: the kinetic-energy fractions φ_i (M φ)_i / φᵀMφ summed
 over the DOFs of each group (per member: lateral x-y, axial z, tilt θx-θy,
-torsion θz), and the strain-energy fraction stored in the two mesh springs,
+torsion θz; a coupled housing's coordinates as the group ``housing``), and the strain-energy fraction stored in the two mesh springs,
 Σ k̄_s (G_s φ)² / φᵀ K̄ φ.
 """
 
@@ -40,10 +40,10 @@ class ModalResult:
 
 
 def _reduced_labels(model: GearRotorModel) -> list[tuple[int, int]]:
-    """(member, direction) of each reduced DOF."""
-    if model.n == 12:
-        return [(m, d) for m in range(2) for d in range(6)]
-    return [(b // 2, d) for b in range(4) for d in range(6)]
+    """(member, direction) of each reduced DOF of the rotor ((-1, -1): a coordinate of a coupled housing)."""
+    n = model.n if model.housing is None else model.housing.n_rotor
+    rotor = [(m, d) for m in range(2) for d in range(6)] if n == 12 else [(b // 2, d) for b in range(4) for d in range(6)]
+    return rotor + [(-1, -1)] * (model.n - n)
 
 
 def modal_analysis(model: GearRotorModel) -> ModalResult:
@@ -59,6 +59,8 @@ def modal_analysis(model: GearRotorModel) -> ModalResult:
         for kind, dirs in GROUP_KINDS.items():
             rows = [i for i, (mm, d) in enumerate(labels) if mm == m and d in dirs]
             energy[f"{member}.{kind}"] = ke[rows].sum(axis=0)
+    if model.housing is not None:
+        energy["housing"] = ke[model.housing.n_rotor:].sum(axis=0)
     kbar = np.array(model.stiffness.mean)
     strain = np.einsum("ij,ij->j", phi, K @ phi)
     mesh = (kbar[:, None] * (model.G @ phi) ** 2).sum(axis=0)

@@ -44,13 +44,15 @@ both thresholds together.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from femgear.physics.excitation import Eccentricity, ProfileError, RandomError, Unbalance
+from femgear.physics.excitation import CumulativePitchError, Eccentricity, ProfileError, RandomError, Unbalance
 from femgear.physics.geometry import GearPair
 from femgear.system.dynamics.layout import NDOF
 from femgear.system.dynamics.mesh import FrictionTable, MeshGeometry, StiffnessTable, periodic_interp, periodic_slope
+from femgear.system.dynamics.structure import Bearings
 
 
 @dataclass(frozen=True)
@@ -131,11 +133,17 @@ class GearRotorModel:
     half_spacing: float             #: z of the helix centres [m]
     v_reg: float                    #: friction regularisation speed [m/s]
     load_stiffness: float           #: power-loop stiffness [N m/rad]
+    bearings: Bearings              #: springs, dashpots and positions of the four bearing stations
     #: flank deviations of the drive and coast flanks per helix over one mesh period
     deviation: MeshDeviation | None = None
     #: the part of ``deviation`` that belongs to the tooth geometry (the unloaded TE of the
     #: flank modifications from the LTCA level); :func:`with_deviation` adds to it
     base_deviation: MeshDeviation | None = None
+    #: per helix, the once-per-revolution cumulative pitch deviations of pinion and gear it sees
+    pitch_errors: tuple[tuple[CumulativePitchError, ...], ...] = ()
+    #: the compliant housing the bearings sit in (:class:`femgear.system.dynamics.housing.HousingCoupling`,
+    #: :func:`femgear.system.dynamics.housing.couple_housing`); None: the bearings stand on rigid ground
+    housing: Any = None
 
     @property
     def n(self) -> int:
@@ -174,6 +182,9 @@ class GearRotorModel:
             ed[s] = -(rd @ gx[s])
             e[s] += self.profile_errors[s].value(t) + self.random_errors[s].value(t)
             ed[s] += self.profile_errors[s].rate(t) + self.random_errors[s].rate(t)
+            for pitch in self.pitch_errors[s] if self.pitch_errors else ():
+                e[s] += pitch.value(t)
+                ed[s] += pitch.rate(t)
             if self.deviation is not None:
                 ph = self.mesh_phase(t)
                 e[s] += periodic_interp(self.deviation.shift[s], ph)

@@ -9,6 +9,8 @@ Definitions (SI):
   and at the knots of a piecewise-linear stiffness table (its corners, the state there from
   the Hermite interpolants), else by a 3-point parabola through the extreme sample;
 - member displacement = mean of its two halves (the member's centre);
+- bearing loads = the force of the shaft on each bearing, radial x, y and axial z, with mean,
+  peak-to-peak and mesh orders (:mod:`femgear.system.dynamics.bearings`);
 - bearing acceleration = acceleration of the shaft at the bearing stations (the
   housing itself is rigid ground in this model; it is the quantity an accelerometer
   on a stiff housing sees, up to the housing's own transfer function);
@@ -27,8 +29,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from femgear.docfields import document_fields
+from femgear.system.dynamics.bearings import BearingLoads, bearing_loads
 from femgear.system.dynamics.integrate import Simulation
 from femgear.system.dynamics.layout import BODIES
+from femgear.system.dynamics.orders import Sidebands, sidebands
 
 MEMBERS = ("pinion", "gear")
 AXES = ("x", "y", "z")
@@ -46,7 +50,7 @@ class Amplitudes(Mapping[str, float]):
 
     ``<member>.displacement|velocity.x|y|z`` and ``<member>.torsion_velocity`` for the member
     centres (pinion, gear), ``<half>.displacement.x|y|z`` for the four helix halves,
-    ``mesh_force.L|R.mean|amplitude``, ``contact_loss_fraction.L|R``,
+    ``mesh_force.L|R.mean|amplitude|max``, ``contact_loss_fraction.L|R``,
     ``bearing_acceleration.<station>.peak`` and ``dte_rms`` (SI; amplitudes are half
     peak-to-peak).  The flat names are the JSON contract of ``dynamics.amplitudes``.
     """
@@ -97,6 +101,13 @@ class Response:
     amplitudes: Amplitudes = field(default_factory=Amplitudes)
     """steady-state figures by name (:class:`Amplitudes`; amplitudes are half peak-to-peak, SI by quantity: displacement
     m, velocity m/s, acceleration m/s², force N) [m, m/s, m/s², N]"""
+    bearings: BearingLoads | None = None
+    """loads of the four bearing stations over the record: history, mean, peak-to-peak, mesh orders
+    (:func:`femgear.system.dynamics.bearings.bearing_loads`) [N]"""
+    sidebands: tuple[Sidebands, ...] = ()
+    """per member (pinion, gear) the lines k f_m ± j f_s of the DTE, the mesh forces and its bearing loads
+    (:func:`femgear.system.dynamics.orders.sidebands`; empty where the record is shorter than a revolution)
+    [m, N]"""
 
     @property
     def dte(self) -> np.ndarray:
@@ -258,7 +269,8 @@ def analyse(sim: Simulation, transient_cycles: float = 50.0) -> Response:
     bearing = (acc @ model.bearing_map.T).reshape(t.size, 4, 3)
     x_full, v_full = q @ model.T.T, v @ model.T.T
     resp = Response(t=t, displacement=x_full, velocity=v_full, delta=delta, mesh_force=N,
-                    bearing_acceleration=bearing, mesh_frequency=model.mesh_frequency)
+                    bearing_acceleration=bearing, mesh_frequency=model.mesh_frequency,
+                    bearings=bearing_loads(model, t, q, v))
     amps: dict = {}
     a_full = acc @ model.T.T
     for i, name in enumerate(MEMBERS):
@@ -284,14 +296,31 @@ def analyse(sim: Simulation, transient_cycles: float = 50.0) -> Response:
         amps[f"mesh_force.{side}.mean"] = float(N[:, s].mean())
         if loss > 0:
             amp = half_peak_to_peak(N[:, s])
+            hi = float(_refined_extreme(N[:, s:s + 1], 1.0)[0])
         else:      # Hermite between the samples, and the corners at the stiffness table's knots
             hi, lo = hermite_extremes(N[:, s], dN[:, s], dt)
             if Nk.shape[0]:
                 hi, lo = max(float(hi), Nk[:, s].max()), min(float(lo), Nk[:, s].min())
             amp = 0.5 * (hi - lo)
         amps[f"mesh_force.{side}.amplitude"] = float(amp)
+        amps[f"mesh_force.{side}.max"] = float(hi)
         amps[f"contact_loss_fraction.{side}"] = loss
     for j, station in enumerate(("pinion_L", "pinion_R", "gear_L", "gear_R")):
         amps[f"bearing_acceleration.{station}.peak"] = float(np.max(np.linalg.norm(bearing[:, j, :2], axis=1)))
     amps["dte_rms"] = float(np.sqrt(np.mean(resp.dte**2)))
-    return Response(**{**resp.__dict__, "amplitudes": Amplitudes(amps)})
+    return Response(**{**resp.__dict__, "amplitudes": Amplitudes(amps), "sidebands": _sidebands(model, resp)})
+
+
+def _sidebands(model, resp: Response) -> tuple[Sidebands, ...]:
+    """Per member the sidebands of the DTE, the mesh force of each loaded helix and the radial loads of its
+    bearing stations."""
+    out = []
+    for member, z in enumerate((model.pair.z1, model.pair.z2)):
+        signals = {"dte": resp.dte, "mesh_force_L": resp.mesh_force[:, 0]}
+        if np.any(model.stiffness.k_right > 0):                 # a pair with one mesh has no right helix
+            signals["mesh_force_R"] = resp.mesh_force[:, 1]
+        for j in (2 * member, 2 * member + 1):
+            for d, axis in enumerate("xy"):
+                signals[f"bearing_{resp.bearings.stations[j]}_{axis}"] = resp.bearings.force[:, j, d]
+        out.append(sidebands(signals, resp.t, model.mesh_frequency, z, MEMBERS[member]))
+    return tuple(out)

@@ -53,7 +53,10 @@ def stability_limit(model: GearRotorModel) -> float:
 
 
 def rk4(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndarray, record_every: int,
-        record_from: float) -> Simulation:
+        record_from: float, known: tuple[np.ndarray, ...] | None = None) -> Simulation:
+    """RK4 over ``steps`` steps from (q, v); ``known``: the inputs (k_L, k_R, e, ė, f, A, B, b̄) on the half-step
+    grid (2 steps + 1 times) when the caller prescribes them (a speed ramp, :mod:`femgear.system.dynamics.runup`),
+    else :func:`~femgear.system.dynamics.simulation.inputs` of the model."""
     n = model.n
     Minv = np.linalg.inv(model.M)
     L = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ model.K, -Minv @ model.C]])
@@ -64,14 +67,18 @@ def rk4(model: GearRotorModel, steps: int, dt: float, q: np.ndarray, v: np.ndarr
     W = np.zeros((2 * n, 6))
     W[n:] = -Minv @ np.vstack([model.G[0], model.G[1], model.H0[0], model.H1[0], model.H0[1], model.H1[1]]).T
     th = np.arange(2 * steps + 1) * (dt / 2)
-    kL, kR, e, ed, f, A, B = inputs(model, th)
+    if known is None:
+        kL, kR, e, ed, f, A, B = inputs(model, th)
+        bb = model.backlash_at(th)
+    else:
+        kL, kR, e, ed, f, A, B, bb = known
     F = np.zeros((th.size, 2 * n))
     F[:, n:] = f @ Minv.T
     kL, kR = kL.tolist(), kR.tolist()
     e0, e1, ed0, ed1 = e[0].tolist(), e[1].tolist(), ed[0].tolist(), ed[1].tolist()
     mu = model.mu
     A0, A1, B0, B1 = A[0].tolist(), A[1].tolist(), B[0].tolist(), B[1].tolist()
-    bb0, bb1 = model.backlash_at(th).tolist()
+    bb0, bb1 = bb.tolist()
     c0, c1 = float(model.mesh_damping[0]), float(model.mesh_damping[1])
     n2 = 2 * n
 
