@@ -2,9 +2,10 @@
 
 The scene's own validation (schema, input ranges, temperatures) is :func:`femgear.scene.load_scene`;
 what follows needs the pair and runs where the pair is bound: the tip speed against the rim's
-burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), the bearings outside the
-teeth (:func:`check_supports`), the face-resolved wear's needs, the flank modifications' lengths against
-the flanks, the TEHL levels' ranges, the pitch-line speed warning; the Hertz pressure warning needs the
+burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), a rim below 0.5 h_t, the bearings
+outside the teeth (:func:`check_supports`), the face-resolved wear's needs, the flank modifications' lengths
+against the flanks, the TEHL levels' ranges, the FE bodies' memory, an undercut member's warning, the
+pitch-line speed warning; the Hertz pressure warning needs the
 run's own contact pass (:func:`contact_warnings`, called by the driver after it).
 """
 
@@ -13,8 +14,10 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from femgear.case.pair import undercut_warnings
 from femgear.errors import SceneError
 from femgear.levels import stiffness as stiffness_levels
+from femgear.levels import thermal as thermal_levels
 from femgear.scene.plausibility import (
     check_operating_limits,
     log_warnings,
@@ -35,12 +38,35 @@ def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
     (``key: message``; the scene's were logged by :func:`femgear.scene.load_scene`)."""
     scene, pair = case.scene, case.pair
     check_operating_limits(scene, pair)
+    check_rims(scene, pair)
     check_supports(scene)
     check_wear_field(scene, pair)
     check_modifications(case)
     check_lubrication_range(case)
+    check_fe_resources(case)
     earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
-    return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair), earlier, warn))
+    return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair) + undercut_warnings(pair), earlier, warn))
+
+
+def check_rims(scene: Scene, pair: GearPair) -> None:
+    """Raise :class:`SceneError` naming ``pinion/gear.bore_radius`` for a rim thinner than ISO 6336-3's lower
+    limit 0.5 h_t below the root circle (the message gives the thinnest rim that runs)."""
+    from femgear.physics.mesh.section import check_rim
+
+    for member, name in ((1, "pinion"), (2, "gear")):
+        bore = getattr(scene, name).bore_radius
+        if bore > 0:
+            try:
+                check_rim(pair, member, bore)
+            except ValueError as exc:
+                raise SceneError(f"{name}.bore_radius", str(exc).removeprefix("bore_radius=")) from None
+
+
+def check_fe_resources(case: Case) -> None:
+    """Refuse up front the FE bodies of the case's levels whose memory estimate exceeds the budget (the level's
+    own check, which names the resolution that fits; the stages check again as they start)."""
+    stiffness_levels.check_resources(case)
+    thermal_levels.check_resources(case)
 
 
 def toothed_width(scene: Scene, member: str) -> float:

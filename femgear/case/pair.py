@@ -13,9 +13,14 @@ CLI prints one line:
   ``modifications.helix_slope_deviation_right`` must be 0 (the left helix's key is its slope deviation);
 - ``pair.basic_rack`` (ISO 53 A–D) sets h_aP, h_fP, ρ_fP; a coefficient given beside it
   must agree with it;
-- ``pinion/gear.tip_diameter`` derives the profile shift (d_a = d + 2 m_n (h_aP + x + k),
-  ISO 21771 §5.4, with the tip alteration k of the centre distance) or is checked
-  against a given ``profile_shift`` (to 0.2 % of m_n on the diameter);
+- ``pinion/gear.tip_diameter`` is the tip as made (the tip circle of every level); it derives the
+  profile shift where none is given (d_a = d + 2 m_n (h_aP + x + k), ISO 21771 §5.4, with the tip
+  alteration k of the centre distance), else it must lie between the shift's shortened and full tips
+  d + 2 m_n (h_aP + x + k) … d + 2 m_n (h_aP + x) within ``pair.tip_diameter_tolerance`` (a drawing's
+  ±0.1 mm by default; the FZG A pinion's 88.77 mm is 0.09 mm above its full tip);
+- an undercut member (x below the rack's x_min) is a warning with its amount
+  (:func:`undercut_warnings`), refused only where its involute begins above the start of the active
+  profile (:func:`check_active_profile`);
 - ``pair.centre_distance`` fixes x1 + x2 by inv α_wt = inv α_t + 2 tan α_n (x1 + x2)/(z1 + z2)
   and is checked against given shifts (to 1e-3 in x1 + x2, about 1e-3 m_n on a_w).
 """
@@ -32,8 +37,10 @@ from femgear.physics.geometry.involute import inv
 #: ISO 53:1998 basic-rack profiles: (h_aP, h_fP, ρ_fP) / m_n, α_P = 20°
 BASIC_RACKS = {"A": (1.0, 1.25, 0.38), "B": (1.0, 1.25, 0.30), "C": (1.0, 1.25, 0.25), "D": (1.0, 1.40, 0.39)}
 _MEMBERS = ("pinion", "gear")
-TIP_TOLERANCE = 2e-3      #: tip-diameter mismatch allowed, in units of m_n
 SHIFT_TOLERANCE = 1e-3    #: x1 + x2 mismatch allowed against the centre distance
+#: a given tip diameter this close to the shift's own (shortened) tip is that tip [m]: the round-off of a file
+#: that wrote it (REXS, 4 decimals in mm), not a drawing's choice, so the pair stays the one it was written from
+TIP_ROUND_OFF = 1e-7
 
 
 def _check_kind(scene) -> None:
@@ -138,14 +145,68 @@ def _resolve_shifts(scene, pair):
         raise SceneError("pair.centre_distance",
                          f"a_w = {a_w * 1e3:.4f} mm needs x1 + x2 = {total:.4f}; the tip diameters give "
                          f"{pair.x1 + pair.x2:.4f}")
+    tips = {}
     for i, m in enumerate(members):
-        ra = pair.ra1 if i == 0 else pair.ra2
-        if m.tip_diameter is not None and abs(2 * ra - m.tip_diameter) > TIP_TOLERANCE * pair.m_n:
-            x = pair.x1 if i == 0 else pair.x2
-            raise SceneError(f"{_MEMBERS[i]}.tip_diameter",
-                             f"d_a = {m.tip_diameter * 1e3:.4f} mm does not match profile shift x = {x:.4f} "
-                             f"(which gives d_a = {2 * ra * 1e3:.4f} mm); correct one of them or omit one")
-    return pair
+        if m.tip_diameter is not None:
+            _check_tip(pair, i + 1, m.tip_diameter, scene.pair.tip_diameter_tolerance)
+            if abs(m.tip_diameter - 2 * pair.standard_tip_radius(i + 1)) > TIP_ROUND_OFF:
+                tips[f"tip_radius{i + 1}"] = m.tip_diameter / 2
+    return _with(pair, **tips)
+
+
+def _check_tip(pair, member: int, d_a: float, tolerance: float) -> None:
+    """A drawing's tip diameter lies between the shortened and the full tip of its profile shift, within
+    ``tolerance`` [m] (:class:`SceneError` naming the tip diameter, with what the shift gives)."""
+    short, full = (2 * pair.standard_tip_radius(member, shortened) for shortened in (True, False))
+    lo, hi = min(short, full), max(short, full)
+    if lo - tolerance <= d_a <= hi + tolerance:
+        return
+    name = _MEMBERS[member - 1]
+    x = pair.x1 if member == 1 else pair.x2
+    raise SceneError(
+        f"{name}.tip_diameter",
+        f"d_a = {d_a * 1e3:.4f} mm does not match profile shift x = {x:.4f}: the rack and the shift give "
+        f"d + 2 m_n (h_aP + x) = {full * 1e3:.4f} mm, or {short * 1e3:.4f} mm with ISO 21771's tip shortening "
+        f"k m_n = {pair.k_tip * pair.m_n * 1e3:.4f} mm (k = (a_w − a)/m_n − (x1 + x2): the tips are turned down by "
+        f"that much so that the tip clearance stays c = (h_fP − h_aP) m_n at the working centre distance); a "
+        f"drawing's tip lies between the two within pair.tip_diameter_tolerance = {tolerance * 1e3:g} mm: correct "
+        f"{name}.profile_shift or {name}.tip_diameter, or widen the tolerance")
+
+
+def check_active_profile(pair: GearPair) -> None:
+    """Refuse (naming ``*.profile_shift``) an undercut so deep that the involute no longer reaches down to the
+    start of the active profile: the mating tip would run on the undercut fillet (interference)."""
+    from femgear.physics.geometry.profile import tooth_profile
+
+    for member, name in ((1, "pinion"), (2, "gear")):
+        if pair.undercut_margin(member) >= 0:
+            continue
+        r_form, r_sap = tooth_profile(pair, member).r_form, pair.active_root_radius(member)
+        if r_form > r_sap:
+            raise SceneError(
+                f"{name}.profile_shift",
+                f"the {name} is undercut so deep (x − x_min = {pair.undercut_margin(member):.3f}) that its involute "
+                f"begins at d = {2 * r_form * 1e3:.3f} mm, above the start of the active profile at "
+                f"d = {2 * r_sap * 1e3:.3f} mm: the mating tip would run on the undercut fillet; raise "
+                f"{name}.profile_shift or {name}.teeth, or lower the mate's tip")
+
+
+def undercut_warnings(pair: GearPair) -> list[str]:
+    """``key: message`` of each undercut member (its amount, and where its involute begins against the start of
+    its active profile), not logged."""
+    from femgear.physics.geometry.profile import tooth_profile
+
+    out = []
+    for member, name in ((1, "pinion"), (2, "gear")):
+        margin = pair.undercut_margin(member)
+        if margin >= 0:
+            continue
+        r_form, r_sap = tooth_profile(pair, member).r_form, pair.active_root_radius(member)
+        out.append(f"{name}.profile_shift: the {name} is undercut by the generating rack (x − x_min = {margin:.3f}): "
+                   f"its involute begins at d = {2 * r_form * 1e3:.3f} mm, "
+                   f"{(r_sap - r_form) * 2e3:.3f} mm below the start of its active profile "
+                   f"(d = {2 * r_sap * 1e3:.3f} mm), so the contact stays on the involute; the root is thinner")
+    return out
 
 
 def pair_from_scene(scene) -> GearPair:
@@ -162,4 +223,5 @@ def pair_from_scene(scene) -> GearPair:
     )
     pair = _resolve_shifts(scene, pair)
     pair.check()
+    check_active_profile(pair)
     return pair

@@ -133,9 +133,13 @@ def mesh_stiffness(pair: GearPair, level: str = "pem", n_positions: int = 200, s
 
 
 def body_options(case: Case) -> dict:
-    """``bore_radius`` (each member's bore radius if > 0, else its shaft radius), ``groove_width`` and
+    """``bore_radius`` (each member's bore radius if > 0, else, a member cut on its shaft, its shaft radius but at
+    least 1.2 h_t below the root, :func:`femgear.physics.mesh.section.shaft_clamp_radius`), ``groove_width`` and
     ``stagger`` of the member bodies (:func:`femgear.physics.ltca.analysis.build_model`)."""
-    bores = tuple(m.bore_radius if m.bore_radius > 0 else 0.5 * m.shaft_diameter for m in case.members)
+    from femgear.physics.mesh.section import shaft_clamp_radius
+
+    bores = tuple(m.bore_radius if m.bore_radius > 0 else shaft_clamp_radius(case.pair, j, 0.5 * m.shaft_diameter)
+                  for j, m in zip((1, 2), case.members))
     return {"bore_radius": bores, "groove_width": case.groove_width, "stagger": case.stagger}
 
 
@@ -185,6 +189,19 @@ def of(case: Case, level: str | None = None, **options: Any) -> MeshStiffness:
     """The mesh stiffness of ``case`` at its ``physics.stiffness`` level (or ``level``); ``options`` override
     the keywords :func:`case_arguments` reads from the case (``fe_options``, ``ltca_options`` are merged)."""
     return REGISTRY.build(level or case.levels.stiffness, case, **options)
+
+
+def check_resources(case: Case) -> None:
+    """Refuse up front (:class:`femgear.errors.ResourceError` naming ``numerics.body_level`` and the level that
+    fits) an ``ltca`` stiffness whose member bodies, not cached, need more memory than the budget; a thin rim
+    below 0.5 h_t is refused naming its bore (:func:`femgear.physics.ltca.level.body_estimates`)."""
+    if case.levels.stiffness != "ltca":
+        return
+    from femgear.physics.ltca.level import check_body_memory
+
+    opts = ltca_options(case)
+    check_body_memory(case.pair, case.material.youngs_modulus, case.material.poisson_ratio, opts["level"],
+                      case.stagger, order=opts["order"], **opts["body"])
 
 
 def has_contact_lines(level: str) -> bool:

@@ -124,13 +124,27 @@ def _fe3d_units(case: Case, **_: Any) -> ThermalUnits:
     """The members' 3-D unit solutions and their face means along the path (the values of the ``fe3d``
     :func:`flank_deviation`, which reads the same cached solutions)."""
     from femgear.physics.body.thermal_units import ThermalUnits, roll_distances
-    from femgear.physics.ltca.thermal import thermal_units_3d
+    from femgear.physics.ltca.thermal import check_thermal_memory, thermal_units_3d
 
     m = case.material
+    check_thermal_memory(case.pair, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, case.bore_radii,
+                         case.groove_width, case.stagger, case.numerics.level_of("fe3d"))
     bodies = tuple(thermal_units_3d(case.pair, j, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, b,
                                     case.groove_width, case.stagger, level=case.numerics.level_of("fe3d"))
                    for j, b in zip((1, 2), case.bore_radii))
     return ThermalUnits.from_bodies(bodies, roll_distances(case.pair, case.path.u))
+
+
+def check_resources(case: Case) -> None:
+    """Refuse up front (naming ``numerics.body_level`` and the level that fits) ``fe3d`` bodies that, not cached,
+    need more memory than the budget (:func:`femgear.physics.ltca.thermal.check_thermal_memory`)."""
+    if case.levels.thermal != "fe3d":
+        return
+    from femgear.physics.ltca.thermal import check_thermal_memory
+
+    m = case.material
+    check_thermal_memory(case.pair, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio, case.bore_radii,
+                         case.groove_width, case.stagger, case.numerics.level_of("fe3d"))
 
 
 def of(case: Case) -> ThermalUnits | None:

@@ -73,6 +73,10 @@ class Pair(_Frozen):
     centre_distance: Pos | None = Field(
         None, description="working centre distance a_w [m]; checked against the profile shifts (or, with "
                           "tip diameters, used to derive them)")
+    tip_diameter_tolerance: NonNeg = Field(
+        1.0e-4, description="how far a given pinion/gear.tip_diameter may lie outside what its profile shift gives, "
+                            "d + 2 m_n (h_aP + x + k) with ISO 21771's tip shortening k m_n to d + 2 m_n (h_aP + x) "
+                            "without it (a drawing's tolerance; the given diameter is the tip as made) [m]")
     backlash: NonNeg = Field(0.0, description="HALF the normal backlash, b0 = j_bn/2 [m]: the dead zone of the mesh deflection "
                     "along the normal line of action is |δ| ≤ b0, so the total free play between the drive and "
                     "the coast flanks is 2 b0 (the paper's 'half backlash' b; Kahraman & Singh 1990)")
@@ -89,7 +93,8 @@ class Member(_Frozen):
     teeth: int = Field(ge=5, le=1000, description="number of teeth z [-]")
     profile_shift: float = Field(0.0, ge=-1.5, le=1.5, description="profile shift coefficient x [-]")
     tip_diameter: Pos | None = Field(
-        None, description="tip diameter d_a [m]; derives profile_shift if that is not given, else checked against it")
+        None, description="tip diameter d_a as made [m]: the tip circle of the member; derives profile_shift if that "
+                          "is not given, else lies within pair.tip_diameter_tolerance of what the shift gives")
     face_width: Pos | None = Field(
         None, description="this member's face width [m]; default pair.face_width; the contact width is the smaller")
     axial_stiffness: Pos | None = Field(
@@ -104,9 +109,12 @@ class Member(_Frozen):
                                      "without the shaft, as mass) [kg m^2]")
     bore_radius: NonNeg = Field(
         0.0, description="inner radius of the gear body, where it sits on the shaft (usually shaft_diameter/2) [m]: "
-                         "the thermal models hold the bore at shaft_temperature_rise there, the LTCA member body is "
-                         "clamped there. 0 = not given: the analytic and FE thermal levels take half the root radius, "
-                         "the LTCA body half the shaft_diameter")
+                         "the thermal models hold the bore at shaft_temperature_rise there, the FE bodies are "
+                         "clamped there; the rim below the root circle must be at least 0.5 h_t (ISO 6336-3's limit, "
+                         "h_t the tooth depth). 0 = no bore, the member is cut on its shaft (a pinion shaft, a solid "
+                         "pinion): the analytic and FE thermal levels take half the root radius, the LTCA body is "
+                         "clamped at half the shaft_diameter but at least 1.2 h_t below the root, the rating takes "
+                         "no rim factor")
     support_stiffness: Pos = Field(
         description="bearing stiffness of the WHOLE member (the sum of its two bearings) in each direction x, y "
                     "and, without axial_stiffness, z [N/m]; each of the two bearings gets half")

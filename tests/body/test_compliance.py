@@ -59,9 +59,17 @@ def test_compliance_linear_in_load_and_grows_to_tip(pair):
     assert c_root < c1 < c_tip
 
 
-def test_mesh_size_too_coarse_named(pair):
+def test_a_coarse_mesh_refines_the_tip_and_a_thin_rim_is_named(pair):
+    """h = m_n puts fewer than two elements across the tip: the tip circle gets its own size (issue 39); a rim of
+    one module (0.44 h_t, under ISO 6336-3's 0.5 h_t) is refused naming the bore."""
+    import numpy as np
+
+    sec = gear_section(pair, 1, h=pair.m_n, n_teeth=3)
+    tip = sec.boundaries["tip"]
+    width = pair.tip_thickness(1)
+    assert np.linalg.norm(sec.p[:, sec.facets[0, tip]] - sec.p[:, sec.facets[1, tip]], axis=0).max() <= 0.5 * width
     with pytest.raises(ValueError, match="mesh size h"):
-        gear_section(pair, 1, h=pair.m_n, n_teeth=3)
+        gear_section(pair, 1, h=-1.0, n_teeth=3)
     with pytest.raises(ValueError, match="bore_radius"):
         gear_section(pair, 1, h=pair.m_n / 3, n_teeth=3, bore_radius=pair.rf1 - pair.m_n)
 

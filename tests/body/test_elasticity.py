@@ -70,3 +70,21 @@ def test_cantilever_matches_timoshenko_beam():
     timo = P * L**3 / (3 * E * I) + P * L / (5 / 6 * G * A)
     assert tip == pytest.approx(timo, rel=0.03)
     assert info.iterations < 100
+
+
+def test_a_thin_part_is_its_thickness_times_plane_stress():
+    """``thin`` = (mask, t): the masked elements get t times the plane-stress stiffness (a disc t of the face width
+    thick), the others keep theirs; a wrong mask or thickness is refused."""
+    from skfem import MeshTri
+
+    mesh = MeshTri.init_tensor(np.linspace(0, 4e-3, 9), np.linspace(0, 1e-3, 3))
+    every = np.ones(mesh.t.shape[1], bool)
+    stress = ElasticProblem(mesh, E, NU, "stress", order=1).K
+    thin = ElasticProblem(mesh, E, NU, "strain", order=1, thin=(every, 0.25)).K
+    assert abs(thin - 0.25 * stress).max() <= 1e-12 * abs(stress).max()
+    none = ElasticProblem(mesh, E, NU, "strain", order=1, thin=(~every, 0.25)).K
+    assert abs(none - ElasticProblem(mesh, E, NU, "strain", order=1).K).max() == 0.0
+    with pytest.raises(ValueError, match="one entry per element"):
+        ElasticProblem(mesh, E, NU, "strain", order=1, thin=(every[:-1], 0.25))
+    with pytest.raises(ValueError, match="relative thickness"):
+        ElasticProblem(mesh, E, NU, "strain", order=1, thin=(every, 1.5))

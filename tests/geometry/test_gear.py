@@ -76,8 +76,10 @@ def test_baseline_contact_ratios(baseline_pair):
     assert p.eps_gamma == pytest.approx(p.eps_alpha + p.eps_beta)
 
 
-def test_undercut_and_pointed_teeth_are_refused():
-    with pytest.raises(SceneError, match="pinion.profile_shift"):
+def test_interfering_and_pointed_teeth_are_refused():
+    """z = 8 at x = 0 is undercut (a warning, tests/mesh/test_profile.py) and its mate's tip would meet it below
+    the base circle (involute interference, T1A < 0): refused; a tooth pointed below its tip: refused."""
+    with pytest.raises(SceneError, match="involute interference"):
         GearPair.from_parameters(z1=8, z2=40, m_n=3e-3, alpha_n=math.radians(20), beta=0.0, b=0.02, x1=0.0, x2=0.0)
     with pytest.raises(SceneError, match="pointed"):
         GearPair.from_parameters(z1=10, z2=40, m_n=3e-3, alpha_n=math.radians(20), beta=0.0, b=0.02, x1=1.2, x2=0.0)

@@ -49,7 +49,48 @@ def test_overlapping_rack_roundings_rejected():
         tooth_profile(p, 1)
 
 
-def test_undercut_rejected():
-    p = _pair(z1=9, x1=0.0)
+def test_sweep_reproduces_the_trochoid_envelope():
+    """The point sweep of the undercut fillet gives the analytic envelope where the rack does not undercut."""
+    from femgear.physics.geometry.profile import _swept_half_angle
+
+    p = _pair()
+    for member in (1, 2):
+        t = tooth_profile(p, member)
+        fil = t.part <= 1
+        np.testing.assert_allclose(_swept_half_angle(p, member, t.radius[fil][1:]), t.polar[fil][1:], atol=3e-6)
+
+
+@pytest.mark.parametrize("dx, undercut", [(-0.15, True), (+0.03, False)])
+def test_the_sweep_undercuts_below_isos_limit(dx, undercut):
+    """ISO 21771's x_min = h_a0 − z sin²α_t/2 (h_a0 = h_fP − ρ_fP(1 − sin α_n)): 0.15 below it the swept root
+    cuts into the involute above the base circle, 0.03 above it the involute is whole (the cut grows from
+    zero at the limit: 0.4 µm above r_b at 0.03 below it, on this pinion)."""
+    from femgear.physics.geometry.profile import _swept_half_angle
+
+    p0 = _pair(z1=14, beta=0.0, kind="spur", x1=0.0)
+    p = _pair(z1=14, beta=0.0, kind="spur", x1=p0.x1 - p0.undercut_margin(1) + dx)
+    r = np.linspace(p.rb1 * 1.0001, p.rb1 + 0.3 * p.m_n, 60)
+    cut = _swept_half_angle(p, 1, r) < involute_half_angle(p, 1, r) - 1e-9
+    assert bool(cut.any()) is undercut
+    t = tooth_profile(p, 1)
+    if undercut:           # the involute begins where the cut ends
+        assert t.r_form >= r[cut].max()
+
+
+def test_an_undercut_that_reaches_the_active_profile_is_refused():
+    """z = 9 at x = 0 (x − x_min = −0.474), its mate's tip turned down to r_a2 = 51.99 mm so that contact starts
+    1 mm above the base circle (u_A > 0: no involute interference, ε_α 1.08): the involute begins at 12.80 mm,
+    above the start of the active profile at 12.73 mm: refused naming the shift.  The FZG A wheel
+    (x − x_min = −0.096) keeps its involute below the start of its active profile: made."""
+    from femgear.case.pair import check_active_profile
+
+    deep = _pair(z1=9, x1=0.0, beta=0.0, kind="spur", tip_radius2=51.988e-3)
+    deep.check()
+    assert deep.u_start > 0
     with pytest.raises(SceneError, match="pinion.profile_shift"):
-        tooth_profile(p, 1)
+        check_active_profile(deep)
+    fzg_a = GearPair(z1=16, z2=24, m_n=4.5e-3, alpha_n=math.radians(20), beta=0.0, b=0.02, x1=0.8532, x2=-0.5,
+                     kind="spur", tip_radius1=88.77e-3 / 2, tip_radius2=112.5e-3 / 2)
+    check_active_profile(fzg_a)
+    assert fzg_a.undercut_margin(2) == pytest.approx(-0.0962, abs=1e-4)
+    assert tooth_profile(fzg_a, 2).r_form < fzg_a.active_root_radius(2)

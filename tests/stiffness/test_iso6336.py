@@ -5,7 +5,7 @@ import math
 import pytest
 
 from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness.iso6336 import iso6336_stiffness, virtual_teeth
+from femgear.physics.stiffness.iso6336 import gear_blank_factor, iso6336_stiffness, virtual_teeth
 
 
 @pytest.fixture(scope="module")
@@ -42,3 +42,15 @@ def test_low_load_reduction(tr_example):
     low = iso6336_stiffness(tr_example, line_load=50e3)
     assert full.c_prime == pytest.approx(iso6336_stiffness(tr_example).c_prime)
     assert low.c_prime == pytest.approx(full.c_prime * 0.5**0.25)
+
+
+def test_gear_blank_factor():
+    """ISO 6336-1:2019 C_R = 1 + ln(b_s/b)/(5 exp(s_R/(5 m_n))), by hand; b_s/b held to [0.2, 1.2], s_R to ≥ m_n."""
+    m = 3e-3
+    assert gear_blank_factor(m, 0.2, m) == pytest.approx(1 + math.log(0.2) / (5 * math.exp(0.2)), rel=1e-12)
+    assert gear_blank_factor(m, 0.2, m) == pytest.approx(0.73646, abs=1e-5)
+    assert gear_blank_factor(5 * m, 0.5, m) == pytest.approx(0.949002, abs=1e-6)
+    assert gear_blank_factor(2 * m, 1.0, m) == 1.0
+    assert gear_blank_factor(0.5 * m, 0.1, m) == gear_blank_factor(m, 0.2, m)
+    with pytest.raises(ValueError, match="gear blank factor"):
+        gear_blank_factor(0.0, 0.5, m)

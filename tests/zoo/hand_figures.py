@@ -17,7 +17,8 @@ inlet (the zoo scenes give it at the operating temperature).
 Sources (each figure names its own):
 - ISO 21771:2007 §§4–5: d = z m_n/cos β, tan α_t = tan α_n/cos β, d_b = d cos α_t,
   inv α_wt = inv α_t + 2 tan α_n (x1 + x2)/(z1 + z2), a_w = a cos α_t/cos α_wt,
-  tip alteration k = (a_w − a)/m_n − (x1 + x2), d_a = d + 2 m_n (h_aP + x + k),
+  tip alteration k = (a_w − a)/m_n − (x1 + x2), d_a = d + 2 m_n (h_aP + x + k) (or the scene's
+  ``tip_diameter``, the tip as made),
   ε_α = (√(r_a1² − r_b1²) + √(r_a2² − r_b2²) − a_w sin α_wt)/p_bt, ε_β = b sin β/(π m_n).
 - ISO 6336-1:2019 §9 method B: q' = C1 + C2/z_n1 + ... (Table 9), c'_th = 1/q',
   c' = c'_th C_M C_R C_B cos β (C_M 0.8, C_R 1, C_B = [1 + 0.5(1.2 − h_fP/m_n)][1 − 0.02(20° − α_n)]),
@@ -51,6 +52,8 @@ import numpy as np
 RACKS = {"A": (1.0, 1.25, 0.38), "B": (1.0, 1.25, 0.30), "C": (1.0, 1.25, 0.25), "D": (1.0, 1.40, 0.39)}  # ISO 53
 Q_COEFFS = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)  # ISO 6336-1 T. 9
 
+#: where a tip radius comes from: the scene's tip_diameter (as made), else ISO 21771 from the shift
+TIP_SOURCE = {True: "the drawing's d_a/2 (pinion/gear.tip_diameter)", False: "ISO 21771 d_a = d + 2 m_n (h_aP + x + k)"}
 #: tolerances (relative) stated beside each figure
 TOL = {"geometry": 1e-6, "ratio": 1e-5, "iso": 5e-3, "hertz": 5e-3, "film": 1e-2, "flash": 1e-2}
 
@@ -101,8 +104,10 @@ class Pair:
         a = (self.d1 + self.d2) / 2
         self.aw = a * math.cos(self.at) / math.cos(self.awt)
         k = (self.aw - a) / self.mn - (self.x1 + self.x2)
-        self.da1 = self.d1 + 2 * self.mn * (self.haP + self.x1 + k)
-        self.da2 = self.d2 + 2 * self.mn * (self.haP + self.x2 + k)
+        # a tip diameter given in the scene is the tip as made (a drawing's d_a), else the rack's with k
+        self.tip_given = ("tip_diameter" in g1, "tip_diameter" in g2)
+        self.da1 = g1.get("tip_diameter", self.d1 + 2 * self.mn * (self.haP + self.x1 + k))
+        self.da2 = g2.get("tip_diameter", self.d2 + 2 * self.mn * (self.haP + self.x2 + k))
         self.pbt = math.pi * self.mn / math.cos(self.beta) * math.cos(self.at)
         self.g1 = math.sqrt((self.da1 / 2) ** 2 - (self.db1 / 2) ** 2)    # T1E
         self.g2 = math.sqrt((self.da2 / 2) ** 2 - (self.db2 / 2) ** 2)
@@ -195,8 +200,8 @@ def figures(path: str | Path) -> list[tuple[str, float, float, str]]:
         ("geometry.reference_radius.1", P.d2 / 2, G["geometry"], "ISO 21771 d = z m_n/cos β"),
         ("geometry.base_radius.0", P.db1 / 2, G["geometry"], "ISO 21771 d_b = d cos α_t"),
         ("geometry.base_radius.1", P.db2 / 2, G["geometry"], "ISO 21771 d_b = d cos α_t"),
-        ("geometry.tip_radius.0", P.da1 / 2, G["geometry"], "ISO 21771 d_a = d + 2 m_n (h_aP + x + k)"),
-        ("geometry.tip_radius.1", P.da2 / 2, G["geometry"], "ISO 21771 d_a = d + 2 m_n (h_aP + x + k)"),
+        ("geometry.tip_radius.0", P.da1 / 2, G["geometry"], TIP_SOURCE[P.tip_given[0]]),
+        ("geometry.tip_radius.1", P.da2 / 2, G["geometry"], TIP_SOURCE[P.tip_given[1]]),
         ("geometry.centre_distance", P.aw, G["geometry"], "ISO 21771 inv α_wt, a_w = a cos α_t/cos α_wt"),
         ("geometry.eps_alpha", P.ea, G["ratio"], "ISO 21771 ε_α from the tip circles"),
         ("geometry.eps_beta", P.eb, G["ratio"], "ISO 21771 ε_β = b sin β/(π m_n), one helix"),

@@ -114,7 +114,7 @@ def test_the_zoo_spans_what_issue_25_asks():
         rows.append(dict(name=path.stem, kind=P.kind, m=P.mn, eb=P.eb, n1=n1, P=T1 * n1 * math.pi / 30,
                          T=op["torque"], v=math.pi * P.d1 * n1 / 60, b=P.b))
     by = {r["name"]: r for r in rows}
-    assert {"automotive_spur", "fzg_c14", "paper_baseline", "marine", "turbo", "wind"} <= set(by)
+    assert {"automotive_spur", "fzg_a", "fzg_c14", "paper_baseline", "marine", "turbo", "wind"} <= set(by)
     assert by["automotive_spur"]["kind"] == "spur"
     assert by["marine"]["kind"] == "double-helical" and 2.5 <= by["marine"]["eb"] <= 3.5
     assert by["marine"]["b"] >= 0.1 and by["marine"]["P"] >= 1e6

@@ -46,25 +46,67 @@ def section_size(pair: GearPair, level: int = 1) -> float:
     return pair.m_n / (3 + level)
 
 
+def section_dofs(mesh, order: int) -> int:
+    """Unknowns of a plane vector P``order`` model on the section ``mesh``."""
+    return 2 * (mesh.p.shape[1] + (mesh.facets.shape[1] if order == 2 else 0))
+
+
 def section_estimate(mesh, order: int, member: int, n_positions: int) -> Estimate:
     """Expected DOF, memory and time of one member's ``fe`` compliance: SuperLU (COLAMD) on the 2-D section,
-    fitted on this 2-core machine (docs/cost.md): 0.3 GB + 3 kB per DOF, 20 µs per DOF plus 3 µs per DOF
-    and path position."""
-    n_nodes = mesh.p.shape[1] + (mesh.facets.shape[1] if order == 2 else 0)
-    dofs = 2 * n_nodes
+    fitted on this 2-core machine (``python studies/benchmarks/estimates.py``, five zoo pairs, docs/cost.md):
+    the process's 0.13 GB + 3.7 kB per DOF; 40 µs per DOF plus 3 µs per DOF and path position (measured
+    CPU / estimate 0.8–1.2, peak memory / estimate 0.97–1.03 at 10–18 k DOF)."""
+    dofs = section_dofs(mesh, order)
     return Estimate(f"fe stiffness, {'pinion' if member == 1 else 'gear'} section (P{order})", dofs,
-                    0.3e9 + 3.0e3 * dofs, 2e-5 * dofs + 3e-6 * dofs * n_positions)
+                    0.13e9 + 3.7e3 * dofs, 4e-5 * dofs + 3e-6 * dofs * n_positions)
+
+
+def coarser_fits(estimate: Estimate, level: int, budget: float) -> str:
+    """The finest coarser ``fe`` level whose section fits ``budget`` [B] (the DOF scale as (3 + level)², h being
+    m_n/(3 + level)), or the mesh-size key when none does."""
+    for k in range(level - 1, -1, -1):
+        dofs = estimate.dofs * ((3 + k) / (3 + level)) ** 2
+        if 0.13e9 + 3.7e3 * dofs <= budget:
+            return f"numerics.body_level = {k} fits (about {dofs / 1e3:.0f} k DOF)"
+    return "no body level fits: give a larger stiffness.fe_mesh_size"
+
+
+def _web_layout(pair: GearPair, member: int, bore: float, web: tuple[float, float, float], h: float,
+                refine_ratio: float, far: tuple | None):
+    """(split radius, grade) of a section with a web ``web`` = (b_s/b, r_hub, r_rim) above the bore [m]: the rim
+    above r_rim is checked against ISO 6336-3's 0.5 h_t, embedded as a circle and gets its thin-rim size
+    (:func:`femgear.physics.mesh.section.rim_size`) all round, the web too."""
+    from femgear.physics.mesh.section import check_rim, rim_size
+
+    thickness, hub, rim = web
+    if not (0 < thickness <= 1 and bore <= hub < rim):
+        raise ValueError(f"web = (b_s/b, r_hub, r_rim) = {web!r} needs 0 < b_s/b ≤ 1 and bore ≤ r_hub < r_rim "
+                         f"(bore {bore * 1e3:.4g} mm)")
+    check_rim(pair, member, rim)
+    thin = rim_size(pair, member, rim)
+    if thin is not None and far is not None:
+        far = (far[0], min(far[1], max(thin, h * refine_ratio))) + tuple(far[2:])
+    return rim, far
 
 
 class ToothFE:
-    """One member's FE model, reused for all load positions."""
+    """One member's FE model, reused for all load positions.
+
+    ``support``: ``"clamped"`` (the bore held: a body on a rigid shaft, the default) or ``"distributed"`` (the
+    bore's mean rigid motion held, :meth:`ElasticProblem.tie`: a free ring, the softest support).  ``web`` =
+    (b_s/b, r_hub, r_rim): a webbed gear, the annulus r_hub < r < r_rim a central web b_s/b of the face width
+    thick (plane stress), the rim above r_rim checked against ISO 6336-3's 0.5 h_t and meshed as a thin rim
+    (``studies/body/thin_rim.py``)."""
 
     def __init__(self, pair: GearPair, member: int, youngs_modulus: float, poisson_ratio: float,
                  h: float | None = None, n_teeth: int | None = None, bore_radius: float = 0.0,
                  plane: str = "strain", order: int = 2, refine_ratio: float = 0.5, solver: str = "lu",
-                 level: int = 1, grade: float | None = GRADE, n_positions: int = 9):
+                 level: int = 1, grade: float | None = GRADE, n_positions: int = 9, support: str = "clamped",
+                 web: tuple[float, float, float] | None = None):
         from femgear.physics.mesh.section import gear_section
 
+        if support not in ("clamped", "distributed"):
+            raise ValueError(f"support must be 'clamped' or 'distributed', got {support!r}")
         t0 = time.perf_counter()
         self.pair, self.member = pair, member
         rf = pair.rf1 if member == 1 else pair.rf2
@@ -73,14 +115,25 @@ class ToothFE:
         ra = pair.ra1 if member == 1 else pair.ra2
         centre = (0.0, 0.5 * (rf + ra))
         far = None if grade is None else (grade, max(4.0 * self.h, FAR_FRACTION * (rf - rbore)), 3)
+        split = None
+        if web is not None:
+            split, far = _web_layout(pair, member, rbore, web, self.h, refine_ratio, far)
         self.mesh = gear_section(pair, member, self.h, n_teeth=n_teeth, bore_radius=rbore, refine_at=centre,
-                                 refine_ratio=refine_ratio, refine_radius=1.2 * (ra - rf), grade=far)
+                                 refine_ratio=refine_ratio, refine_radius=1.2 * (ra - rf), grade=far,
+                                 split_radius=split)
         self.mesh_seconds = time.perf_counter() - t0
         self.estimate = section_estimate(self.mesh, order, member, n_positions)
-        announce(self.estimate, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level or "
-                                                                      "a larger stiffness.fe_mesh_size")
-        self.problem = ElasticProblem(self.mesh, youngs_modulus, poisson_ratio, plane, order=order, solver=solver)
-        self.problem.fix(self.problem.boundary_dofs("bore"), 0.0)
+        announce(self.estimate, "numerics.body_level", lambda budget: coarser_fits(self.estimate, level, budget))
+        thin = None
+        if web is not None:                     # the web: the elements between the hub and the rim
+            r = np.hypot(*self.mesh.p[:, self.mesh.t].mean(axis=1))
+            thin = ((r > web[1]) & (r < web[2]), web[0])
+        self.problem = ElasticProblem(self.mesh, youngs_modulus, poisson_ratio, plane, order=order, solver=solver,
+                                      thin=thin)
+        if support == "distributed":            # the bore's mean rigid motion held (a free ring)
+            self.problem.tie("bore")
+        else:                                   # the bore (the hub of a web) held
+            self.problem.fix(self.problem.boundary_dofs("bore"), 0.0)
         self.solve_seconds = 0.0
         # flank facets of the middle tooth, +x side
         f = self.mesh.boundaries["flank"]

@@ -96,7 +96,9 @@ def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: s
     ≈ 110 n^(4/3) B (METIS fill of these swept bodies; ×1.3 for quadratic elements with cholespy's METIS; the
     system's CHOLMOD: 93 and 114 n^(4/3) B measured on the marine gear's P1 and p2-bending bodies, and the
     whole p2-bending marine LTCA peaked at 1.93 GiB where this gives 2.06 GiB); SuperLU's (minimum degree) ≈ 420 n^(4/3) B;
-    SA-AMG ≈ 3 kB per DOF.  Times: ≈ 80 µs per DOF to mesh and assemble, the factor ≈ 3.5 s (n/1e5)^1.5 with
+    SA-AMG ≈ 3 kB per DOF.  Times: ≈ 65 µs per DOF to mesh and assemble (80 µs before the probes located
+points by a k-d tree of the elements; ``python studies/benchmarks/estimates.py`` on five zoo pairs then gave
+CPU / estimate 0.76–1.24 for the ``ltca`` bodies and 0.84–1.10 for the ``fe3d`` ones, memory 0.74–1.18), the factor ≈ 3.5 s (n/1e5)^1.5 with
     the system's CHOLMOD (scikit-sparse, one BLAS thread; marine bodies: P1 88 k / 106 k DOF 3.4 / 3.9 s,
     p2-bending 96 k / 185 k DOF 5.1 / 14.1 s, ×1.3² for quadratic elements) and ≈ 40 s (n/1e5)^1.5 with cholespy,
     0.3 µs per DOF and load case to solve; SA-CG ≈ 13 µs per DOF and load case.  Checked against the CPU
@@ -106,7 +108,7 @@ def solve_cost(dofs: int, tets: int, order: int = 1, n_loads: int = 1, solver: s
     solver = auto_solver(order, dofs) if solver == "auto" else solver
     n = float(max(dofs, 1))
     memory = 0.3e9 + 4.0e3 * n + 8.0 * n * n_loads
-    seconds = 8.0e-5 * n + 1e-5 * tets
+    seconds = 6.5e-5 * n + 1e-5 * tets
     if solver == "cholmod":      # quadratic elements couple more unknowns per row: more fill (marine gear, docs/cost.md)
         dense = 1.0 if order == 1 else 1.3
         system = cholmod_backend() == "scikit-sparse"
@@ -330,21 +332,92 @@ class Elastic3D:
         """Sparse point-evaluation matrices (x, y, z component) at ``points`` (3, n): u_c = M_c @ u."""
         from scipy.sparse import csr_matrix
 
+        points = np.asarray(points, float)
+        cells = locate(self.mesh, points)
         mats = []
         for idx, (_, b) in zip(self.basis.split_indices(), self.basis.split(np.zeros(self.basis.N))):
-            P = b.probes(points).tocoo()
+            P = point_matrix(b, points, cells)
             mats.append(csr_matrix((P.data, (P.row, idx[P.col])), shape=(points.shape[1], self.basis.N)))
         return mats
 
     def probe(self, u: np.ndarray, points: np.ndarray) -> np.ndarray:
         """Displacement vectors at ``points`` (3, n) → (3, n) [m]."""
-        comps = self.basis.split(u)
-        return np.vstack([b.probes(points) @ c for c, b in comps])
+        return np.vstack([M @ u for M in self.probe_matrices(points)])
 
     def stats(self) -> SolveStats:
         nnz = int(self._ml.L.nnz + self._ml.U.nnz) if self.solver == "lu" and self._ml is not None else 0
         return SolveStats(self.N, self.assembly_seconds, self.setup_seconds, self.solve_seconds,
                           self.solves, self.iterations, nnz)
+
+
+def locate(mesh, points: np.ndarray, k: int = 16, tol: float = 1e-6) -> np.ndarray:
+    """The tetrahedron of ``mesh`` holding each of ``points`` (3, n): index per point.
+
+    Candidates are the ``k`` elements with the nearest centroids (a k-d tree, built once per mesh), widened
+    fourfold for the points none of them holds, up to every element; a point is held where its barycentric
+    coordinates are ≥ −``tol`` (the best candidate is taken, so a point on a shared face or a hair outside
+    a faceted curved boundary finds one).  scikit-fem's own finder searched every element for all points at
+    once when one point missed its ten nearest: 300 k elements × a thousand flank readings was 7 GB on the FZG
+    A pinion's 3-D body (thin tetrahedra at its narrow tip).  Raises ValueError for a point outside the mesh.
+    """
+    points = np.asarray(points, float)
+    tree = _centroid_tree(mesh)
+    n_el = mesh.t.shape[1]
+    cells = np.full(points.shape[1], -1, dtype=np.int64)
+    todo = np.arange(points.shape[1])
+    kk = min(k, n_el)
+    while todo.size:
+        best, score = _best_of(mesh, points[:, todo], tree.query(points[:, todo].T, kk)[1].reshape(todo.size, kk))
+        hit = score >= -tol
+        cells[todo[hit]] = best[hit]
+        todo = todo[~hit]
+        if todo.size and kk == n_el:
+            x = points[:, todo[0]]
+            raise ValueError(f"point ({x[0]:.6g}, {x[1]:.6g}, {x[2]:.6g}) m lies outside the body's mesh")
+        kk = min(4 * kk, n_el)
+    return cells
+
+
+def _centroid_tree(mesh):
+    """k-d tree of the element centroids of ``mesh``, kept on the mesh object (built once)."""
+    tree = getattr(mesh, "_femgear_tree", None)
+    if tree is None:
+        from scipy.spatial import cKDTree
+
+        tree = cKDTree(mesh.p[:, mesh.t].mean(axis=1).T)
+        object.__setattr__(mesh, "_femgear_tree", tree)
+    return tree
+
+
+def _best_of(mesh, x: np.ndarray, cand: np.ndarray, chunk: int = 4096) -> tuple[np.ndarray, np.ndarray]:
+    """For points ``x`` (3, n) and candidate elements ``cand`` (n, k): the candidate with the largest smallest
+    barycentric coordinate, and that coordinate (≥ 0 inside)."""
+    best = np.empty(x.shape[1], dtype=np.int64)
+    score = np.empty(x.shape[1])
+    for lo in range(0, x.shape[1], chunk):
+        c = cand[lo:lo + chunk]                                       # (m, k)
+        v = mesh.p[:, mesh.t[:, c]]                                   # (3, 4, m, k)
+        J = np.moveaxis(v[:, 1:] - v[:, :1], (0, 1), (-2, -1))        # (m, k, 3, 3): columns the edge vectors
+        rhs = (x[:, lo:lo + chunk, None] - v[:, 0])                   # (3, m, k)
+        lam = np.linalg.solve(J, np.moveaxis(rhs, 0, -1)[..., None])[..., 0]     # (m, k, 3)
+        low = np.minimum(lam.min(axis=-1), 1 - lam.sum(axis=-1))
+        j = np.argmax(low, axis=1)
+        best[lo:lo + chunk] = c[np.arange(c.shape[0]), j]
+        score[lo:lo + chunk] = low[np.arange(c.shape[0]), j]
+    return best, score
+
+
+def point_matrix(basis, points: np.ndarray, cells: np.ndarray):
+    """Point-evaluation matrix (COO, one row per point) of a scalar ``basis`` at ``points`` (3, n) inside the
+    elements ``cells``: the shape functions at the points' reference coordinates."""
+    from scipy.sparse import coo_matrix
+
+    ref = basis.mapping.invF(points[:, :, None], tind=cells)
+    phis = np.array([basis.elem.gbasis(basis.mapping, ref, k, tind=cells)[0] for k in range(basis.Nbfun)])
+    n = points.shape[1]
+    rows = np.tile(np.arange(n), basis.Nbfun)
+    cols = basis.element_dofs[:, cells].ravel()
+    return coo_matrix((phis.ravel(), (rows, cols)), shape=(n, basis.N))
 
 
 def _assemble_chunks(mesh, elem, intorder: int, form, chunk: int = ASSEMBLY_CHUNK, elements: np.ndarray | None = None,

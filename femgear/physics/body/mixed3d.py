@@ -138,9 +138,11 @@ class MixedElastic3D(Elastic3D):
         """Point-evaluation matrices (x, y, z component) at ``points`` (3, n): u_c = M_c @ u."""
         from scipy.sparse import csr_matrix
 
+        from femgear.physics.body.elastic3d import locate
+
         mesh = self.mesh
         points = np.asarray(points, float)
-        el = mesh.element_finder()(*points)
+        el = locate(mesh, points)
         x = mesh.p[:, mesh.t[:, el]]                                    # (3, 4, n)
         J = np.transpose(x[:, 1:] - x[:, :1], (2, 0, 1))                # (n, 3, 3)
         lam123 = np.linalg.solve(J, (points - x[:, 0]).T[:, :, None])[:, :, 0]

@@ -28,7 +28,7 @@ class GearPair:
     """Dimensions of one helix of an external involute helical gear pair.
 
     Built by :meth:`from_parameters` or :func:`femgear.case.pair.pair_from_scene`, which check that the gear
-    can be made and meshes (no undercut, no pointed tip, no interference, ε_α ≥ 1).
+    can be made and meshes (no pointed tip, no interference, ε_α ≥ 1).
     """
 
     z1: int
@@ -43,10 +43,19 @@ class GearPair:
     h_fP: float = 1.25  #: basic-rack dedendum / m_n
     rho_fP: float = 0.38  #: basic-rack root radius / m_n
     kind: str = "double-helical"  #: "double-helical", "single-helical" or "spur"
+    tip_radius1: float | None = None  #: the pinion's tip radius as made (a drawing's d_a/2) [m]; None: r + m_n (h_aP + x + k)
+    tip_radius2: float | None = None  #: the gear's, likewise [m]
 
     def __post_init__(self):
         if self.kind not in KINDS:
             raise ValueError(f"kind must be one of {', '.join(KINDS)}, got {self.kind!r}")
+
+    def identity(self) -> dict:
+        """The pair's fields for a cache key: :func:`dataclasses.asdict` without the tip radii that are not
+        given (so that a pair whose tips follow from its shifts keeps the key it had before tips were data)."""
+        from dataclasses import asdict
+
+        return {k: v for k, v in asdict(self).items() if v is not None}
 
     @property
     def n_helices(self) -> int:
@@ -124,14 +133,20 @@ class GearPair:
         """Tip alteration coefficient k = (a_w − a)/m_n − (x1 + x2) ≤ 0 (ISO 21771 §5.4)."""
         return (self.a_w - self.a) / self.m_n - (self.x1 + self.x2)
 
+    def standard_tip_radius(self, member: int, shortened: bool = True) -> float:
+        """Tip radius the rack and the shift give, r + m_n (h_aP + x + k) with ISO 21771's tip alteration k
+        (``shortened``), else r + m_n (h_aP + x) [m]."""
+        r, x = (self.r1, self.x1) if member == 1 else (self.r2, self.x2)
+        return r + self.m_n * (self.h_aP + x + (self.k_tip if shortened else 0.0))
+
     @cached_property
     def ra1(self) -> float:
-        """Tip radius r_a = r + m_n (h_aP + x + k)."""
-        return self.r1 + self.m_n * (self.h_aP + self.x1 + self.k_tip)
+        """Tip radius: the given one (:attr:`tip_radius1`), else r_a = r + m_n (h_aP + x + k)."""
+        return self.tip_radius1 if self.tip_radius1 is not None else self.standard_tip_radius(1)
 
     @cached_property
     def ra2(self) -> float:
-        return self.r2 + self.m_n * (self.h_aP + self.x2 + self.k_tip)
+        return self.tip_radius2 if self.tip_radius2 is not None else self.standard_tip_radius(2)
 
     @property
     def rf1(self) -> float:
@@ -172,6 +187,13 @@ class GearPair:
     def u_pitch(self) -> float:
         """T1C: the pitch point, r_b1 tan α_wt."""
         return self.rb1 * math.tan(self.alpha_wt)
+
+    def active_root_radius(self, member: int) -> float:
+        """Radius of the lowest point of ``member``'s flank in contact (start of active profile, SAP): the
+        pinion's at A, the gear's at E [m]."""
+        if member == 1:
+            return math.hypot(self.rb1, self.u_start)
+        return math.hypot(self.rb2, self.line_of_action - self.u_end)
 
     @cached_property
     def g_alpha(self) -> float:
@@ -226,19 +248,20 @@ class GearPair:
         return pair
 
     def check(self) -> None:
-        """Raise :class:`SceneError` if the pair cannot be made or does not mesh."""
+        """Raise :class:`SceneError` if the pair cannot be made or does not mesh.  An undercut tooth can be
+        made; whether its involute still carries the whole contact is
+        :func:`femgear.case.pair.check_active_profile`'s question."""
         for member, name in ((1, "pinion"), (2, "gear")):
-            margin = self.undercut_margin(member)
-            if margin < -1e-9:
-                raise SceneError(
-                    f"{name}.profile_shift",
-                    f"the {name} is undercut by the generating rack (x − x_min = {margin:.3f}); "
-                    f"raise {name}.profile_shift or {name}.teeth",
-                )
             if self.tip_thickness(member) <= 0:
                 raise SceneError(f"{name}.profile_shift", f"the {name}'s teeth are pointed (tip thickness ≤ 0)")
         if self.rf1 <= 0 or self.rf2 <= 0:
             raise SceneError("pair.dedendum_coeff", "root radius ≤ 0")
+        if self.u_start <= 0 and self.undercut_margin(1) < 0:
+            raise SceneError(
+                "pinion.profile_shift",
+                f"involute interference: the pinion is undercut (x − x_min = {self.undercut_margin(1):.3f}) and the "
+                f"gear's tip would meet it below its base circle (T1A = {self.u_start * 1e3:.3f} mm); raise "
+                "pinion.profile_shift or pinion.teeth")
         if self.u_start <= 0:
             raise SceneError(
                 "pair.addendum_coeff",

@@ -120,12 +120,67 @@ def _envelope(pair: GearPair, member: int, X, Y, nX, nY):
     return np.hypot(gx, gy), np.arctan2(gx, gy)   # angle from +y (space centre)
 
 
+def _swept_half_angle(pair: GearPair, member: int, r: np.ndarray, n_tool: int = 600) -> np.ndarray:
+    """ψ(r) of the material the rack leaves below the involute, from the paths of its points [rad].
+
+    Each point P = (X, Y) of the tool's rounding and of its straight flank up to the interference limit
+    moves on a trochoid relative to the gear: at rolling angle φ it sits at (X − rφ, r_ref + x m_n + Y) in
+    the fixed frame, i.e. at polar angle atan2(w, R₀) + (X − w)/r_ref from the space centre where it crosses
+    the radius ρ (w = ±√(ρ² − R₀²), R₀ = r_ref + x m_n + Y).  The tooth at radius ρ ends at the largest such
+    angle over all points: ψ(ρ) = π/z − max (Litvin & Fuentes §11: the generated surface is the boundary of
+    the region the tool sweeps).  Where the envelope is not undercut this is the trochoidal fillet; where the
+    rack undercuts, it is the undercut fillet below its intersection with the involute.
+    """
+    z, x, *_ = _member_data(pair, member)
+    r_ref = z * pair.m_t / 2
+    Xr, Yr, _, _ = _rack_rounding(pair, n_tool)
+    y_limit = -x * pair.m_n - r_ref * math.sin(pair.alpha_t) ** 2
+    Y_top = max(float(Yr[-1]), y_limit + 0.25 * pair.m_n)
+    Yf = np.linspace(float(Yr[-1]), Y_top, n_tool)
+    Xf = (float(Xr[-1]) + (Yf - Yr[-1]) * math.tan(pair.alpha_n) / math.cos(pair.beta))
+    X, Y = np.concatenate([Xr, Xf]), np.concatenate([Yr, Yf])
+    R0 = r_ref + x * pair.m_n + Y
+    rho = np.asarray(r, float)[:, None]
+    reach = rho >= R0[None, :] * (1 - 1e-12)          # (the root circle itself: the tool tip's R₀ to round-off)
+    w = np.sqrt(np.where(reach, np.maximum(rho**2 - R0[None, :] ** 2, 0.0), 0.0))
+    ang = np.maximum(np.arctan2(w, R0) + (X - w) / r_ref, -np.arctan2(w, R0) + (X + w) / r_ref)
+    ang = np.where(reach, ang, -np.inf)
+    return math.pi / z - ang.max(axis=1)
+
+
+def _undercut_fillet(pair: GearPair, member: int, n_fillet: int) -> tuple[np.ndarray, np.ndarray, float]:
+    """(radii, ψ, form radius) of an undercut root: the swept fillet from the root circle up to where it meets
+    the involute (the form circle), radii clustered at the root circle where the fillet is tangent to it."""
+    from scipy.optimize import brentq
+
+    z, x, rb, rf, ra = _member_data(pair, member)
+
+    def gap(r):
+        return float(_swept_half_angle(pair, member, np.array([r]))[0]
+                     - involute_half_angle(pair, member, np.array([r]))[0])
+
+    lo, hi = max(rb, rf) * (1 + 1e-12), ra
+    if gap(hi) <= 0:           # the swept fillet reaches the tip: no involute left
+        return np.zeros(0), np.zeros(0), ra
+    # below the form circle the sweep cuts deeper than the involute (gap < 0); above it, the involute bounds
+    grid = np.linspace(lo, hi, 200)
+    gaps = np.array([gap(g) for g in grid])
+    above = np.nonzero(gaps < -1e-12)[0]
+    r_form = lo if above.size == 0 else float(brentq(gap, grid[above[-1]], grid[above[-1] + 1], xtol=1e-14 * rf))
+    s = np.linspace(0.0, 1.0, n_fillet)
+    radii = rf + (r_form - rf) * s**2
+    return radii, _swept_half_angle(pair, member, radii), r_form
+
+
 def tooth_profile(pair: GearPair, member: int, n_fillet: int = 40, n_involute: int = 60,
                   n_tip: int = 8) -> ToothProfile:
     """Generate the right half of a tooth of ``member`` (1 pinion, 2 gear).
 
-    Raises :class:`SceneError` if the rack's roundings overlap (no fillet can be cut)
-    or if the fillet cuts into the involute above the base circle (undercut).
+    An undercut tooth (the rack's rounding or its flank below the interference limit cuts into the
+    involute) gets its swept, undercut fillet up to the form circle where the involute begins
+    (:func:`_undercut_fillet`); whether the contact stays on that involute is the case's check
+    (:func:`femgear.case.pair.check_active_profile`).  Raises :class:`SceneError` if the rack's roundings
+    overlap (no fillet can be cut), if no involute is left below the tip, or if the teeth are pointed.
     """
     z, x, rb, rf, ra = _member_data(pair, member)
     name = "pinion" if member == 1 else "gear"
@@ -142,11 +197,7 @@ def tooth_profile(pair: GearPair, member: int, n_fillet: int = 40, n_involute: i
     y_tangent = float(Y[-1])
     y_limit = -x * pair.m_n - r_ref * math.sin(pair.alpha_t) ** 2
     if y_tangent < y_limit - 1e-12 * pair.m_n or np.any(np.diff(rr) < -1e-12 * rf):
-        raise SceneError(
-            f"{name}.profile_shift",
-            f"the {name} is undercut: the rack rounding cuts the involute (form radius "
-            f"{r_form * 1e3:.3f} mm, base radius {rb * 1e3:.3f} mm)",
-        )
+        rr, psi_f, r_form = _undercut_fillet(pair, member, n_fillet)
     if r_form >= ra:
         raise SceneError(f"{name}.profile_shift", f"the {name}'s fillet reaches the tip circle: no involute left")
     r_inv = np.linspace(r_form, ra, n_involute + 1)[1:]

@@ -67,7 +67,7 @@ import json
 import logging
 import os
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -176,7 +176,7 @@ def _key(pair: GearPair, member: int, spec: SegmentSpec, E: float, nu: float, or
          n_rho: int, n_z: int, depth: float) -> str:
     from femgear.physics.mesh.segment import mesh_revision
 
-    payload = {"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
+    payload = {"v": CACHE_VERSION, "pair": pair.identity(), "member": member, "spec": spec.key(),
                "E": E, "nu": nu, "order": order, "grid": [n_rho, n_z], "depth": depth}
     revision = mesh_revision(pair, member, spec)
     if revision is not None:      # the far-field rule or the graded groove changed this body's mesh

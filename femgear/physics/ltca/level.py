@@ -147,7 +147,7 @@ def body_estimates(pair: GearPair, youngs_modulus: float, poisson_ratio: float, 
 
             name = "pinion" if member == 1 else "gear"
             raise SceneError(f"{name}.bore_radius", f"the {name}'s LTCA body cannot be meshed: {exc} "
-                             f"(the bore is the scene's bore_radius, else half the shaft_diameter)") from None
+                             f"(the bore is the scene's bore_radius, else the shaft radius, at least 1.2 h_t below the root)") from None
     return out
 
 
@@ -169,6 +169,9 @@ def check_body_memory(pair: GearPair, youngs_modulus: float, poisson_ratio: floa
                                                 order=order, **body))),
                 None)
     hint = f"numerics.body_level = {fits} fits" if fits is not None else "no body level fits"
+    if fits is None and order != 1 and all(e.memory_bytes <= budget for e in body_estimates(
+            pair, youngs_modulus, poisson_ratio, 0, stagger, cached=False, order=1, **body)):
+        hint += ' with these elements; numerics.body_elements = "p1" at level 0 fits (stiffer by ≈ 5 %, docs/cost.md)'
     worst = max(over, key=lambda e: e.memory_bytes)
     raise ResourceError("numerics.body_level", worst.memory_bytes, budget, f"{worst.stage} at level {level}; {hint}")
 

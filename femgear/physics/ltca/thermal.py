@@ -5,7 +5,7 @@ of the real face width for a single-helical or spur pair —,
 a whole ring with ``n_teeth`` teeth, the rim down to the bore; P1 tetrahedra), with the bore
 of the thermal levels (the scene's, else half the root radius, as ``analytic`` and ``fe``).
 
-Conduction (:func:`femgear.physics.body.conduction.solve_temperature`, P1).  Tooth surfaces (``flank``,
+Conduction (:func:`femgear.physics.body.conduction.solve_temperature_cases`, P1, one factor).  Tooth surfaces (``flank``,
 ``fillet``, ``tip``) and the toothless root circle of the ring (``rim``, which stands for the
 roots of the teeth the body leaves out) at ΔT_f, the bore at ΔT_s; the end faces and the groove
 are insulated — the assumption of the 2-D ``fe`` model (its cut sides and, in plane stress, its
@@ -41,7 +41,7 @@ from __future__ import annotations
 import json
 import math
 import time
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -108,35 +108,74 @@ def body_spec(pair: GearPair, member: int, level: int = 1, bore_radius: float = 
     return default_spec(pair, member, level, n_teeth=n_teeth, r_bore=r_bore, groove=groove, stagger=stagger)
 
 
+def thermal_cache_path(pair: GearPair, member: int, spec, expansion: float, youngs_modulus: float,
+                       poisson_ratio: float, n_rho: int = 13, n_z: int = 9):
+    """The disk-cache file of :func:`thermal_units_3d` with these arguments (it may not exist)."""
+    from femgear.physics.ltca.compliance import cache_dir, cache_key
+    from femgear.physics.mesh.segment import mesh_revision
+
+    payload = {"v": CACHE_VERSION, "pair": pair.identity(), "member": member, "spec": spec.key(),
+               "E": youngs_modulus, "nu": poisson_ratio, "expansion": expansion, "grid": [n_rho, n_z]}
+    if mesh_revision(pair, member, spec) is not None:     # the far-field rule or the graded groove changed the mesh
+        payload["mesh"] = mesh_revision(pair, member, spec)
+    return cache_dir() / f"thermal3d-member{member}-{cache_key(payload)}.npz"
+
+
+def thermal_estimate(pair: GearPair, member: int, spec):
+    """:class:`femgear.perf.Estimate` of one member's unit solutions (P1 body, two load cases)."""
+    from femgear.physics.ltca.compliance import build_estimate
+
+    est = build_estimate(pair, member, spec, 1, 2)
+    return replace(est, stage=est.stage.replace("LTCA", "fe3d thermal"))
+
+
+def check_thermal_memory(pair: GearPair, expansion: float, youngs_modulus: float, poisson_ratio: float,
+                         bores: tuple[float, float], groove: float, stagger: float, level: int) -> None:
+    """Refuse (:class:`femgear.errors.ResourceError` naming ``numerics.body_level`` and the finest level that fits)
+    before either member's body is built when one that is not cached needs more memory than the budget."""
+    from femgear.errors import ResourceError
+    from femgear.perf import memory_budget
+
+    def estimates(k: int, cached: bool) -> list:
+        out = []
+        for member in (1, 2):
+            spec = body_spec(pair, member, k, bores[member - 1], groove, stagger)
+            if cached and thermal_cache_path(pair, member, spec, expansion, youngs_modulus, poisson_ratio).exists():
+                continue
+            out.append(thermal_estimate(pair, member, spec))
+        return out
+
+    budget = memory_budget()
+    over = [e for e in estimates(level, True) if e.memory_bytes > budget]
+    if not over:
+        return
+    fits = next((k for k in range(level - 1, -1, -1) if all(e.memory_bytes <= budget for e in estimates(k, False))),
+                None)
+    hint = f"numerics.body_level = {fits} fits" if fits is not None else "no body level fits"
+    worst = max(over, key=lambda e: e.memory_bytes)
+    raise ResourceError("numerics.body_level", worst.memory_bytes, budget, f"{worst.stage} at level {level}; {hint}")
+
+
 def thermal_units_3d(pair: GearPair, member: int, expansion: float, youngs_modulus: float = 210e9,
                      poisson_ratio: float = 0.3, bore_radius: float = 0.0, groove: float = 0.0,
                      stagger: float = 0.0, level: int = 1, n_rho: int = 13, n_z: int = 9,
                      cache: bool = True) -> Thermal3DUnits:
     """Unit responses of ``member`` on its 3-D body at resolution ``level``, from the disk cache when present."""
-    from femgear.physics.ltca.compliance import cache_dir, cache_key, save_cache
+    from femgear.physics.ltca.compliance import save_cache
 
     if level < 0:
         raise ValueError(f"level must be ≥ 0, got {level}")
     spec = body_spec(pair, member, level, bore_radius, groove, stagger)
-    from femgear.physics.mesh.segment import mesh_revision
-
-    payload = {"v": CACHE_VERSION, "pair": asdict(pair), "member": member, "spec": spec.key(),
-               "E": youngs_modulus, "nu": poisson_ratio, "expansion": expansion, "grid": [n_rho, n_z]}
-    if mesh_revision(pair, member, spec) is not None:     # the far-field rule or the graded groove changed the mesh
-        payload["mesh"] = mesh_revision(pair, member, spec)
-    key = cache_key(payload)
-    path = cache_dir() / f"thermal3d-member{member}-{key}.npz"
+    path = thermal_cache_path(pair, member, spec, expansion, youngs_modulus, poisson_ratio, n_rho, n_z)
     if cache and path.exists():
         d = np.load(path, allow_pickle=False)
         info = json.loads(str(d["info"]))
         info["cached"] = True
         return Thermal3DUnits(member, d["rho"], d["zeta"], d["flank"], d["shaft"], info)
     from femgear.perf import announce, interruptible
-    from femgear.physics.ltca.compliance import build_estimate
 
-    est = build_estimate(pair, member, spec, 1, 2)
-    est = replace(est, stage=est.stage.replace("LTCA", "fe3d thermal"))
-    announce(est, "numerics.body_level", lambda budget: "choose a coarser numerics.body_level")
+    announce(thermal_estimate(pair, member, spec), "numerics.body_level",
+             lambda budget: "choose a coarser numerics.body_level")
     res = interruptible(_compute, pair, member, spec, expansion, youngs_modulus, poisson_ratio, n_rho, n_z)
     if cache:
         save_cache(path, rho=res.rho, zeta=res.zeta, flank=res.flank, shaft=res.shaft, info=json.dumps(res.info))
@@ -185,7 +224,7 @@ def remove_bore_rigid_motion(model, mesh, U: np.ndarray, z_mid: float, n_angles:
 def _compute(pair, member, spec, expansion, E, nu, n_rho, n_z) -> Thermal3DUnits:
     from skfem import Basis
 
-    from femgear.physics.body.conduction import solve_temperature
+    from femgear.physics.body.conduction import solve_temperature_cases
     from femgear.physics.body.elastic3d import Elastic3D
     from femgear.physics.body.forms import thermal_load, thermal_modulus
     from femgear.physics.ltca.flank import roll_range
@@ -196,8 +235,9 @@ def _compute(pair, member, spec, expansion, E, nu, n_rho, n_z) -> Thermal3DUnits
     t_mesh = time.perf_counter() - t0
     frame = helix_frame(pair, member, spec)
     hot = ("flank", "fillet", "tip", "rim")
-    temps = [solve_temperature(mesh, 1.0, {**{n: f for n in hot if n in mesh.boundaries}, "bore": s}, order=1)
-             for f, s in ((1.0, 0.0), (0.0, 1.0))]
+    _, fields = solve_temperature_cases(mesh, 1.0, [{**{n: f for n in hot if n in mesh.boundaries}, "bore": s}
+                                                    for f, s in ((1.0, 0.0), (0.0, 1.0))], order=1)
+    temps = [(None, T) for T in fields]
     t_cond = time.perf_counter() - t0 - t_mesh
     from skfem import ElementTetP1, ElementVector
 

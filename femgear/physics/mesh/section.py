@@ -70,21 +70,28 @@ def _to_skfem(gmsh, groups: dict[str, int]):
 
 
 def _size_field(gmsh, h: float, refine_at, refine_ratio: float, refine_radius: float | None = None,
-                grade: tuple[float, float, float] | None = None):
+                grade: tuple[float, float, float] | None = None, tip: tuple[list, float] | None = None):
     """Background size: ``h``, refined to ``h·refine_ratio`` within ``refine_radius`` of ``refine_at``.
 
     ``grade`` = (r0, rate, h_max, reach): below the radius r0 the size may grow with the depth and beyond
     ``reach`` from ``refine_at`` with the distance, max(refined size, h·refine_ratio + rate·(r0 − r),
     h + rate·(distance − reach)), capped at h_max (a far field coarse towards the bore and round the ring).
+    ``tip`` = (tip curves, h_tip): the size is at most h_tip on those curves, growing from them at the rate
+    :data:`TIP_GRADE` (a narrow tip gets its two elements across without refining the whole tooth).
     """
-    if refine_at is None:
+    f = gmsh.model.mesh.field
+    if refine_at is None and tip is None:
         gmsh.option.setNumber("Mesh.MeshSizeMin", h)
         gmsh.option.setNumber("Mesh.MeshSizeMax", h)
+        return
+    if refine_at is None:
+        base = f.add("MathEval")
+        f.setString(base, "F", f"{h:.9f}")
+        _background(gmsh, _with_tip(gmsh, base, tip))
         return
     geo = gmsh.model.geo
     pt = geo.addPoint(refine_at[0], refine_at[1], 0.0, h)
     geo.synchronize()
-    f = gmsh.model.mesh.field
     d = f.add("Distance")
     f.setNumbers(d, "PointsList", [pt])
     th = f.add("Threshold")
@@ -105,7 +112,27 @@ def _size_field(gmsh, h: float, refine_at, refine_ratio: float, refine_radius: f
         f.setNumbers(hi, "FieldsList", [th, radial, far])
         th = f.add("Min")
         f.setNumbers(th, "FieldsList", [hi, cap])
-    f.setAsBackgroundMesh(th)
+    _background(gmsh, _with_tip(gmsh, th, tip))
+
+
+def _with_tip(gmsh, field: int, tip: tuple[list, float] | None) -> int:
+    """``field``, capped near the tip curves of ``tip`` = (curves, h_tip) by h_tip + TIP_GRADE·distance."""
+    if tip is None:
+        return field
+    f = gmsh.model.mesh.field
+    curves, h_tip = tip
+    d = f.add("Distance")
+    f.setNumbers(d, "CurvesList", curves)
+    f.setNumber(d, "Sampling", 40)
+    near = f.add("MathEval")
+    f.setString(near, "F", f"{h_tip:.9f} + {TIP_GRADE:.9f} * F{d}")
+    out = f.add("Min")
+    f.setNumbers(out, "FieldsList", [field, near])
+    return out
+
+
+def _background(gmsh, field: int) -> None:
+    gmsh.model.mesh.field.setAsBackgroundMesh(field)
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
@@ -149,19 +176,70 @@ def _circle(geo, c, r, h):
     return [geo.addCircleArc(pts[i], c, pts[(i + 1) % 4]) for i in range(4)]
 
 
+MIN_RIM = 0.5         #: thinnest rim the bodies mesh, s_R/h_t (ISO 6336-3: Y_B defined for 0.5 < s_R/h_t < 1.2)
+THICK_RIM = 1.2       #: s_R/h_t from which ISO 6336-3's rim factor Y_B is 1
+THIN_RIM = 1.0        #: below this s_R/h_t a rim is meshed with RIM_ELEMENTS elements through it
+RIM_ELEMENTS = 3.0    #: elements through a thin rim
+TIP_FRACTION = 0.45   #: element size on a narrow tip circle, as a fraction of the tip's width
+TIP_GRADE = 0.3       #: growth of the element size with the distance from a narrow tip [m/m]
+
+
 def _rot(x, y, a):
     c, s = math.cos(a), math.sin(a)
     return c * x - s * y, s * x + c * y
 
 
-def _check_tip_resolution(prof, h: float) -> None:
-    """Raise ValueError (naming ``h``) unless two elements of size h fit across the tooth tip."""
-    tip_arc = 2 * prof.ra * float(prof.half_angle(np.array([prof.ra * (1 - 1e-9)]))[0])
-    if not 0 < h <= tip_arc / 2:
+def tip_width(prof) -> float:
+    """Arc width of the tooth on its tip circle [m]."""
+    return 2 * prof.ra * float(prof.half_angle(np.array([prof.ra * (1 - 1e-9)]))[0])
+
+
+def tip_size(prof, h: float) -> float | None:
+    """Element size the tip circle needs when ``h`` puts fewer than two elements across it (None: ``h`` does):
+    :data:`TIP_FRACTION` of the tip's width (a pointed tip of a high addendum modification, e.g. the FZG A
+    pinion's 0.59 mm = 0.13 m_n)."""
+    width = tip_width(prof)
+    if not width > 0:
+        raise ValueError(f"the tooth tip has no width ({width * 1e3:.3g} mm): a pointed tooth cannot be meshed")
+    return None if h <= width / 2 else TIP_FRACTION * width
+
+
+def rim_limit(pair: GearPair, member: int) -> float:
+    """The largest bore radius the FE bodies mesh: the root radius less ISO 6336-3's thinnest rim,
+    s_R = :data:`MIN_RIM` h_t (h_t = r_a − r_f, the tooth depth) [m]."""
+    rf, ra = (pair.rf1, pair.ra1) if member == 1 else (pair.rf2, pair.ra2)
+    return rf - MIN_RIM * (ra - rf)
+
+
+def check_rim(pair: GearPair, member: int, r_bore: float) -> None:
+    """Raise ValueError (naming ``bore_radius`` and the thinnest rim that runs) for a rim s_R = r_f − r_bore below
+    :data:`MIN_RIM` h_t, ISO 6336-3's lower limit of the rim factor Y_B."""
+    rf, ra = (pair.rf1, pair.ra1) if member == 1 else (pair.rf2, pair.ra2)
+    limit = rim_limit(pair, member)
+    if not 0 < r_bore <= limit * (1 + 1e-12):
         raise ValueError(
-            f"mesh size h={h:.3g} m is too coarse: the tooth tip is {tip_arc * 1e3:.3f} mm wide and needs "
-            f"two elements across (h ≤ {tip_arc / 2:.3g} m)"
-        )
+            f"bore_radius={r_bore * 1e3:.4g} mm leaves a rim s_R = {(rf - r_bore) * 1e3:.4g} mm = "
+            f"{(rf - r_bore) / (ra - rf):.3g} h_t below the root circle, under ISO 6336-3's lower limit "
+            f"{MIN_RIM:g} h_t (h_t = {(ra - rf) * 1e3:.4g} mm); the thinnest rim that runs has bore_radius ≤ "
+            f"{math.floor(limit * 1e6) / 1e3:g} mm")       # rounded down to the µm: the figure itself runs
+
+
+def shaft_clamp_radius(pair: GearPair, member: int, shaft_radius: float) -> float:
+    """Where the body of a member cut on its shaft (no bore) is clamped: at the shaft radius, but never less
+    than :data:`THICK_RIM` h_t below the root circle [m].  The body is solid; below ISO 6336-3's thick-rim
+    depth 1.2 h_t (Y_B = 1) the core no longer changes the tooth's deflection or root stress, and the steel
+    between is kept elastic: a pinion shaft whose journals are nearly as large as its root circle (the zoo's
+    automotive and wind pinions) is a solid pinion, not a thin rim."""
+    rf, ra = (pair.rf1, pair.ra1) if member == 1 else (pair.rf2, pair.ra2)
+    return min(shaft_radius, rf - THICK_RIM * (ra - rf))
+
+
+def rim_size(pair: GearPair, member: int, r_bore: float) -> float | None:
+    """Largest element size in a thin rim (s_R < :data:`THIN_RIM` h_t, where ISO 6336-3's Y_B > 1.29 and the rim
+    bends with the tooth): s_R/:data:`RIM_ELEMENTS` [m]; None for a thicker rim (its far field's own rule)."""
+    rf, ra = (pair.rf1, pair.ra1) if member == 1 else (pair.rf2, pair.ra2)
+    s_r = rf - r_bore
+    return s_r / RIM_ELEMENTS if s_r < THIN_RIM * (ra - rf) else None
 
 
 def _teeth_outline(geo, c, prof, offsets, full: bool, h: float):
@@ -228,18 +306,23 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
     beyond the middle ``fine_teeth`` teeth (default all ``n_teeth``).
     ``ring``: the ``n_teeth`` teeth sit on a whole ring (root circle outside them, named ``rim``) on a
     whole bore circle, instead of a sector cut along radial lines.
-    Raises ValueError (naming ``h``) if ``h`` does not give at least two elements
-    across the tooth tip, or ``bore_radius`` leaves no rim.
+    A tip narrower than two elements of size ``h`` gets its own size near the tip circles (:func:`tip_size`);
+    a thin rim (:func:`rim_size`) caps the far field at a third of its thickness.  Raises ValueError (naming
+    ``bore_radius``) if the rim is thinner than ISO 6336-3's 0.5 h_t (:func:`check_rim`).
     """
     prof = tooth_profile(pair, member)
     z = prof.z
     rf = prof.rf
     r_bore = 0.5 * rf if bore_radius is None or bore_radius <= 0 else bore_radius
-    if not 0 < r_bore < rf - 2 * pair.m_n:
-        raise ValueError(f"bore_radius={r_bore:.4g} m leaves a rim thinner than 2 m_n below the root circle")
+    check_rim(pair, member, r_bore)
     if split_radius is not None and not r_bore < split_radius < rf:
         raise ValueError(f"split_radius={split_radius:.4g} m must lie between the bore and the root circle")
-    _check_tip_resolution(prof, h)
+    if not h > 0:
+        raise ValueError(f"mesh size h={h!r} must be positive")
+    h_tip = tip_size(prof, h)
+    thin = rim_size(pair, member, r_bore)
+    if thin is not None and grade is not None:       # a thin rim: RIM_ELEMENTS elements through it, all round
+        grade = (grade[0], min(grade[1], max(thin, h * refine_ratio))) + tuple(grade[2:])
     full = n_teeth is None or n_teeth >= z
     nt = z if full else int(n_teeth)
     if nt < 1:
@@ -265,7 +348,8 @@ def gear_section(pair: GearPair, member: int, h: float, n_teeth: int | None = 3,
         gmsh.model.addPhysicalGroup(2, [surf])
         _size_field(gmsh, h, refine_at, refine_ratio, refine_radius,
                     None if grade is None else (split_radius or rf, grade[0], grade[1],
-                                                _teeth_reach(prof, grade[2] if len(grade) > 2 else nt, refine_at)))
+                                                _teeth_reach(prof, grade[2] if len(grade) > 2 else nt, refine_at)),
+                    None if h_tip is None else (groups_curves["tip"], h_tip))
         gmsh.model.mesh.generate(2)
         return _to_skfem(gmsh, groups)
 

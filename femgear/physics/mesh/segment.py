@@ -62,6 +62,7 @@ GROOVE_DEPTH = 0.5     #: groove floor below the root circle, in normal modules 
 FAR_FRACTION = 0.25    #: far-field element size cap as a fraction of the rim depth below the groove floor
 FAR_DZ = 2.0           #: layer spacing of the far field, in normal modules (every k-th layer of the teeth's)
 FAR_MARGIN = 1.0       #: the far field starts this many m_n beyond the five teeth and below the groove floor
+TIP_FLOOR = 0.5        #: h_tooth is at least this fraction of m_n/(2 + level), whatever the tip's width
 
 
 @dataclass(frozen=True)
@@ -94,13 +95,16 @@ def default_spec(pair: GearPair, member: int, level: int = 1, n_teeth: int = 5, 
     """Body resolution ``level`` (0 coarse, 1 default, 2 fine, 3 finer) of ``pair``'s member: both helices of a
     double-helical pair, the one helix of a single-helical or spur pair (``pair.n_helices``; no groove, no stagger).
 
-    h_tooth = m_n / (2 + level) (at most half the tip width); the other teeth are capped by the
-    two-elements-across-the-tip rule of :func:`gear_section`; layers ≈ b / (1.6 h_tooth) per helix.
+    h_tooth = m_n / (2 + level), at most half the tip width but never below :data:`TIP_FLOOR` of m_n / (2 + level)
+    (module units: a narrower tip, a pointed one of a high addendum modification, gets its own size near the
+    tip circles, :func:`femgear.physics.mesh.section.tip_size`, instead of refining the whole body; the FZG A
+    pinion's 0.13 m_n tip would give 26 to 29 times the nodes); the other teeth are capped alike; layers ≈
+    b / (1.6 h_tooth) per helix.
     """
     if level < 0:
         raise ValueError(f"level must be ≥ 0, got {level}")
     tip = min(pair.tip_thickness(1), pair.tip_thickness(2))
-    h_tooth = min(pair.m_n / (2 + level), 0.49 * tip)
+    h_tooth = min(pair.m_n / (2 + level), max(0.49 * tip, TIP_FLOOR * pair.m_n / (2 + level)))
     h = max(min(0.49 * tip, 2.0 * h_tooth), h_tooth)
     layers = max(4, int(math.ceil(pair.b / (1.6 * h_tooth))))
     if pair.n_helices == 1:

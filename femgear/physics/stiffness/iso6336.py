@@ -51,13 +51,23 @@ def virtual_teeth(z: int, beta: float, beta_b: float) -> float:
     return z / (math.cos(beta_b) ** 2 * math.cos(beta))
 
 
+def gear_blank_factor(rim: float, web_ratio: float, m_n: float) -> float:
+    """ISO 6336-1:2019's gear blank factor C_R = 1 + ln(b_s/b) / (5 exp(s_R/(5 m_n))) of a webbed gear: ``rim`` the
+    rim thickness s_R below the root circle [m], ``web_ratio`` the web's thickness over the face width b_s/b [-],
+    clamped to the standard's ranges 0.2 ≤ b_s/b ≤ 1.2 and s_R ≥ m_n (1 for a solid disc, b_s = b)."""
+    if not (rim > 0 and web_ratio > 0 and m_n > 0):
+        raise ValueError(f"gear blank factor: s_R, b_s/b and m_n must be positive, got {rim!r}, {web_ratio!r}, {m_n!r}")
+    bs = min(max(web_ratio, 0.2), 1.2)
+    return 1.0 + math.log(bs) / (5.0 * math.exp(max(rim, m_n) / (5.0 * m_n)))
+
+
 def iso6336_stiffness(pair: GearPair, line_load: float | None = None, C_M: float = 0.8,
                       C_R: float = 1.0, eps_alpha: float | None = None,
                       youngs_modulus: float = 206e9) -> IsoStiffness:
     """c', c_γα, c_γβ of ``pair`` by ISO 6336-1:2019 Method B.
 
     ``line_load`` = F_t K_A / b [N/m]; below 100 N/mm the standard scales c' by
-    (F_t K_A/b / 100 N/mm)^0.25.  ``C_R`` = 1 for solid discs.  ``eps_alpha`` defaults
+    (F_t K_A/b / 100 N/mm)^0.25.  ``C_R`` = 1 for solid discs (:func:`gear_blank_factor` for a webbed gear).  ``eps_alpha`` defaults
     to the pair's transverse contact ratio.  Materials other than steel scale with
     E/E_steel (E_steel = 206 GPa in the standard).
     """
