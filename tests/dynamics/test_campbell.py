@@ -110,6 +110,9 @@ def test_campbell_command_writes_png_and_json(tmp_path, capsys):
     (["--campbell", "0:3000", "--shaft-orders", "0"], "--shaft-orders"),
     (["--campbell", "0:3000", "--sweep", "100:200:3"], "--campbell"),
     (["--campbell", "0:1e9"], "--campbell"),             # above the rim's burst speed
+    (["--sweep", "1000:2000:3", "--orders", "-1"], "--orders"),      # negative, and outside a Campbell run
+    (["--sweep", "1000:2000:3", "--orders", "2"], "--orders"),       # would be ignored by the sweep
+    (["--runup", "800:900:1", "--shaft-orders", "1"], "--shaft-orders"),
 ])
 def test_bad_campbell_arguments_are_one_line(args, name, tmp_path, capsys):
     out = tmp_path / "never"

@@ -18,15 +18,19 @@ from femgear.errors import ArgumentError
 DEFAULT_SPEEDS, MAX_SPEEDS = 61, 20000
 
 
+#: the order lists of :func:`add_campbell_arguments` and their defaults
+ORDER_ARGUMENTS = {"--orders": ("orders", "1,2,3,4"), "--shaft-orders": ("shaft_orders", "1,2")}
+
+
 def add_campbell_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--campbell", metavar="RPM0:RPM1[:N]", default=None,
                    help="instead of one run: the Campbell diagram, natural frequencies (with the gear bodies' "
                         "gyroscopic moments, tracked by MAC) against the driver speed from RPM0 ≥ 0 to RPM1 at N "
                         f"speeds (default {DEFAULT_SPEEDS}), with the mesh and shaft orders and the critical speeds "
                         "(writes campbell.png, campbell.json)")
-    p.add_argument("--orders", default="1,2,3,4", metavar="K,K,...",
+    p.add_argument("--orders", default=ORDER_ARGUMENTS["--orders"][1], metavar="K,K,...",
                    help="mesh orders of --campbell (positive; default 1,2,3,4)")
-    p.add_argument("--shaft-orders", default="1,2", metavar="J,J,...",
+    p.add_argument("--shaft-orders", default=ORDER_ARGUMENTS["--shaft-orders"][1], metavar="J,J,...",
                    help="shaft orders of --campbell, of pinion and gear (positive; default 1,2)")
 
 
@@ -69,7 +73,15 @@ def order_list(argument: str, text: str) -> tuple[float, ...]:
 
 
 def check_campbell_arguments(args: argparse.Namespace) -> None:
-    """Every argument of a Campbell run checked before anything is loaded or computed."""
+    """Every argument of a Campbell run checked before anything is loaded or computed; without ``--campbell`` an
+    order list given is refused (it would be ignored: the sweep and run-up report their own orders)."""
+    if not args.campbell:
+        for flag, (name, default) in ORDER_ARGUMENTS.items():
+            if getattr(args, name) != default:
+                order_list(flag, getattr(args, name))
+                raise ArgumentError(flag, "applies to --campbell only (the --sweep and --runup outputs hold every "
+                                          "mesh order they resolve)")
+        return
     if args.sweep or args.kahraman_singh:
         raise ArgumentError("--campbell", "give one of --campbell, --sweep, --kahraman-singh")
     campbell_speeds(args.campbell)

@@ -65,8 +65,7 @@ def _run(args: argparse.Namespace) -> int:
     from femgear.edge.cli import dynamics_nvh as nvh
 
     nvh.check_nvh_arguments(args)
-    if args.campbell:
-        check_campbell_arguments(args)
+    check_campbell_arguments(args)
     case = load_case_arg(args)
     if args.sweep:
         _check_sweep_speeds(case, sweep_speeds(args.sweep))
