@@ -347,13 +347,14 @@ FIGURES: tuple[Figure, ...] = (
            (P + "ehl.py::plot_centreline", IO + "ehl.py::write_all"),
            ("Pressure P = p/p_H (blue) and film H (red) across the contact, the oil entering from the left: a "
             "flat film in the Hertzian zone, closing to its minimum at the outlet.",
-            "At this light load (M ≈ 4) the outlet's pressure spike stands at about three times the Hertz "
-            "pressure; the title's Hc and Hmin are in Moes' film unit, not the axis's h R/a².")),
+            "At this light load (M ≈ 4) the pressure never reaches a Hertzian dome and the outlet's spike stands "
+            "at about 1.75 times the Hertz pressure; the inlet starts at 4 times the fully flooded distance the "
+            "solver sizes it to.  The title's Hc and Hmin are in Moes' film unit, not the axis's h R/a².")),
     Figure("marine_ehl_line", "ehl", "Line-contact EHL at the marine pair's pitch point",
            "femgear ehl line --M 16.22 --L 11.63 --roelands --ph 9.343e8", "ehl_line_centreline.png",
            (P + "ehl.py::plot_centreline", IO + "ehl.py::write_all"),
-           ("The heavier load (M ≈ 16) gives the textbook picture: a nearly Hertzian pressure with a small spike "
-            "just ahead of the outlet constriction.",
+           ("The heavier load (M ≈ 16) gives the textbook picture: a nearly Hertzian pressure with a spike of "
+            "about 1.3 p_H just ahead of the outlet constriction.",
             "The film is flat over the Hertzian zone; the minimum film at the constriction is about ¾ of the "
             "central one (the title: Hmin/Hc = 0.75), the classic rule of thumb.")),
     # ---- sweeps
