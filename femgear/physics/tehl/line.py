@@ -89,7 +89,7 @@ class TEHLResult:
     hmin: float               #: minimum film [m]
     pmax: float               #: maximum pressure [Pa]
     hc_isothermal: float      #: central film of the isothermal solve [m]
-    dT_max: float             #: maximum film temperature rise [K]
+    dT_max: float             #: maximum film temperature rise, its walls included (≥ ``dT_surface``) [K]
     dT_surface: float         #: maximum surface (flash) temperature rise, both bodies [K]
     mu: float                 #: sliding friction coefficient |μ_couette| [-]
     mu_couette: float         #: ∫τ_c dx / w', signed like v2 − v1 [-]
@@ -426,9 +426,13 @@ class _Run:
         mu_p = float(st.tau_poiseuille @ dx / c.w)
         i0 = int(np.argmin(np.abs(X)))
         hs = c.hs
+        # the film's peak is over the film with its two walls: a surface hotter than every layer centre (heat
+        # flowing back into the film near the outlet) bounds the film too
+        surface_peak = max(peak(st.surface1, lv.xc), peak(st.surface2, lv.xc))
+        film_peak = max(peak(np.maximum(theta.max(axis=1), np.maximum(st.surface1, st.surface2)), lv.xc), surface_peak)
         out = TEHLResult(
             hc=float(H[i0] * hs), hmin=float(H.min() * hs), pmax=float(P.max() * c.ph), hc_isothermal=float(iso.Hc_hertz * hs),
-            dT_max=peak(theta.max(axis=1), lv.xc), dT_surface=max(peak(st.surface1, lv.xc), peak(st.surface2, lv.xc)),
+            dT_max=film_peak, dT_surface=surface_peak,
             mu=abs(mu_c), mu_couette=mu_c, mu_poiseuille=mu_p, heat=st.heat, iterations=self.its,
             newton_iterations=self.newton_its, seconds=time.perf_counter() - t0, seconds_isothermal=t_iso, b=c.b,
             ph=c.ph, x=X * c.b, p=P * c.ph, h=H * hs, x_cells=lv.xc, T_film=c.T_bulk + theta,

@@ -156,11 +156,11 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
     mu_p = float(sum(s.tau_poiseuille.sum() for s in states) * dx * dy / load)
     P, H = sol["P"], sol["H"]
     j0, i0 = int(np.argmin(np.abs(g.y))), int(np.argmin(np.abs(g.x)))
-    surf = max([max(s.surface1.max(), s.surface2.max()) for s in states] + [0.0])
+    surf = max([max(s.surface1.max(), s.surface2.max()) for s in states] + [0.0])   # the film's walls bound its peak too
     Tc = theta.mean(axis=2)
     out = TEHLPointResult(
         hc=float(H[j0, i0] * hs), hmin=float(H.min() * hs), pmax=float(P.max() * ph), hc_isothermal=iso.hc,
-        dT_max=float(max(theta.max(), 0.0)), dT_surface=float(surf), mu=abs(mu_c), mu_couette=mu_c,
+        dT_max=float(max(theta.max(), surf)), dT_surface=float(surf), mu=abs(mu_c), mu_couette=mu_c,
         mu_poiseuille=mu_p, heat=heat_tot, iterations=it, newton_iterations=newton_its,
         seconds=time.perf_counter() - t0, seconds_isothermal=t_iso, a=a, ph=ph, x=g.x * a, y=g.y * a, p=P * ph,
         h=H * hs, T_mean=T_bulk + np.concatenate([Tc, Tc[:, -1:]], axis=1))
