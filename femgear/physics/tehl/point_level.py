@@ -70,6 +70,7 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
     level = POINT_LEVEL if level is None else level
 
     memory: dict = {}     # per contact (R_x, R_y, ue, srr, T): the latest solves [(load, result)], newest last
+    sliced = [None]       # the grid level of the latest face-slice hand-over (the next contact's first try)
 
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
@@ -87,7 +88,7 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
                 ratio = float(Rx[i] / Ry[i]) if np.isfinite(Ry[i]) else 0.0
                 if ratio < MIN_POINT_RATIO and slices is not None:
                     handed.append("slender")
-                    r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options)
+                    r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options, sliced)
                 else:
                     try:
                         r = solve_tehl_point(*args, Ry=float(Ry[i]), level=level, **kw)
@@ -96,7 +97,8 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
                             r = _line_contact(float(w[i]), args, setup, line_options, exc)
                         else:
                             handed.append("failed")
-                            r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options)
+                            r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options,
+                                        sliced)
                 memory[key] = (memory.get(key, []) + [(args[0], r)])[-2:]
             mu[i], dT[i] = r.mu, r.dT_surface
             results.append(r)
@@ -121,9 +123,12 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
     return solve
 
 
-def _slices(w, R, ue, srr, T, Rx, Ry, geo: SliceGeometry, setup: TEHLSetup, options: dict):
-    return slice_contact(float(w), float(R), float(ue), float(srr), float(T), float(Rx), float(Ry), geo, setup,
-                         **options)
+def _slices(w, R, ue, srr, T, Rx, Ry, geo: SliceGeometry, setup: TEHLSetup, options: dict, level: list):
+    """The contact in face slices, first tried on ``level[0]`` (the previous hand-over's level, updated)."""
+    r = slice_contact(float(w), float(R), float(ue), float(srr), float(T), float(Rx), float(Ry), geo, setup,
+                      start_level=level[0], **options)
+    level[0] = r.level
+    return r
 
 
 def _line_contact(w: float, args: tuple, setup: TEHLSetup, options: dict, exc: ConvergenceError):

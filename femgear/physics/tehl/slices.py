@@ -13,9 +13,16 @@ conventions).  The load along the line follows the Hertz ellipse of the crowned 
 for an uncrowned pair; it is scaled so that the slices carry the contact's load F = w̄ L.  Each slice is a :func:`femgear.physics.tehl.line.
 solve_tehl_line` contact (all on one grid level, :func:`femgear.physics.tehl.solver.tehl_path_results`).
 
-The contact's figures: μ = |Σ μ_c,j w_j| / Σ w_j (the friction force of the slices over the load, signed by
-each slice's sliding direction: a line that straddles the pitch point has both), the largest temperatures and
-pressure, the smallest film, the middle slice's central film.
+The slices are the nodes of a quadrature along the line (:func:`slice_nodes`): Gauss–Lobatto where the load is
+finite at the line's ends (uncrowned, or crowned with the ellipse longer than the line), so the ends, where the
+film is thinnest and the film hottest, are solved; Gauss–Legendre inside a crowned span, whose load vanishes at
+its ends.  A line that straddles the pitch point is split there: the friction force turns its sign within a
+small slide, and each side is smooth (Gauss–Radau there, with the line's end as its fixed node).
+
+The contact's figures: μ = |Σ W_j μ_c,j w_j| / Σ W_j w_j (W_j the quadrature weights: the friction force of the
+slices over the load, signed by each slice's sliding direction: a line that straddles the pitch point has
+both), the largest temperatures and pressure and the smallest film over the slices, the central film at the
+line's middle (linear between the slices beside it).
 """
 
 from __future__ import annotations
@@ -28,6 +35,7 @@ import numpy as np
 from femgear.physics.contact.hertz import hertz_point
 
 SLICES = 7   #: face slices of one contact line (odd: the middle one is the contact's centre)
+PITCH_MARGIN = 0.05   #: a pitch point closer than this share of the span to a line end does not split the line
 
 
 @dataclass(frozen=True)
@@ -55,9 +63,50 @@ class SliceResult:
     dT_surface: float
     mu: float
     error_estimate: dict
+    level: int                                 #: the grid level all slices were solved on
     s: np.ndarray = field(repr=False)          #: slice centres along the contact line [m]
     load: np.ndarray = field(repr=False)       #: load per length of each slice [N/m]
     results: tuple = field(repr=False, default=())
+
+
+def slice_rule(count: int, rule: str) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes on [−1, 1] and weights (summing to 2) of a ``count``-point Gauss rule: ``"legendre"`` (no end
+    node), ``"lobatto"`` (both ends nodes) or ``"radau"`` (the node −1 and none at +1).  Nodes and weights as
+    in Abramowitz & Stegun (1964) §25.4.29–32; ``count`` 1 is the midpoint."""
+    if count == 1:
+        return np.zeros(1), np.full(1, 2.0)
+    P = np.polynomial.Legendre.basis
+    if rule == "legendre":
+        return np.polynomial.legendre.leggauss(count)
+    if rule == "lobatto":
+        x = np.concatenate(([-1.0], np.sort(P(count - 1).deriv().roots().real), [1.0]))
+        return x, 2.0 / (count * (count - 1) * P(count - 1)(x) ** 2)
+    inner = np.sort(((P(count - 1) + P(count)) // np.polynomial.Legendre([1.0, 1.0])).roots().real)
+    x = np.concatenate(([-1.0], inner))
+    wt = np.concatenate(([2.0 / count**2], (1.0 - inner) / (count**2 * P(count - 1)(inner) ** 2)))
+    return x, wt
+
+
+def slice_nodes(span: float, pitch: float, count: int, ends: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Positions s [m] along a loaded line of length ``span`` (centred on 0) and their quadrature weights [m]
+    (summing to ``span``): ``count`` Gauss–Lobatto nodes where the load is finite at the ends (``ends``: the
+    line's extremes are solved), Gauss–Legendre ones otherwise.  A line that straddles the pitch point (at
+    s = ``pitch``, more than :data:`PITCH_MARGIN` of the span inside) is integrated on each side separately, with
+    ``count`` // 2 nodes per side (at least 2): the friction force turns its sign there within a small slide, which no
+    polynomial over the line follows, and on either side it is smooth.  A side has Gauss–Radau nodes with its
+    fixed node at the line's end (``ends``) or Gauss–Legendre nodes: no node at the pitch point itself, whose
+    pure-rolling value stands for neither side."""
+    half = span / 2
+    if not abs(pitch) < half * (1.0 - 2.0 * PITCH_MARGIN):
+        x, wt = slice_rule(count, "lobatto" if ends else "legendre")
+        return x * half, wt * half
+    m = max(count // 2, 2)
+    x, wt = slice_rule(m, "radau" if ends else "legendre")
+    left = -half + (x + 1.0) * (pitch + half) / 2           # Radau's fixed node at the line's left end
+    right = half - (x + 1.0) * (half - pitch) / 2            # ... and, mirrored, at its right end
+    s = np.concatenate((left, right[::-1]))
+    w = np.concatenate((wt * (pitch + half) / 2, (wt * (half - pitch) / 2)[::-1]))
+    return s, w
 
 
 def slice_inputs(w: float, R: float, ue: float, srr: float, Rx: float, Ry: float, geo: SliceGeometry,
@@ -78,7 +127,8 @@ def slice_inputs(w: float, R: float, ue: float, srr: float, Rx: float, Ry: float
     crowned = geo.kappa > 0 and np.isfinite(Ry)
     bH = hertz_point(w * L, Rx, Ry, E_red).b if crowned else math.inf
     span = min(L, 2.0 * bH)         # the loaded part of the line
-    s = (np.arange(count) + 0.5) * span / count - span / 2
+    pitch = (geo.omega2 * r2 - geo.omega1 * r1) / ((geo.omega1 + geo.omega2) * sb) if sb > 0 else math.inf
+    s, weights = slice_nodes(span, pitch, count, ends=not (crowned and 2.0 * bH < L))
     d = s * sb
     lo = 1e-3 * min(r1, r2)
     rho1, rho2 = np.maximum(r1 + d, lo), np.maximum(r2 - d, lo)
@@ -86,23 +136,26 @@ def slice_inputs(w: float, R: float, ue: float, srr: float, Rx: float, Ry: float
     v1, v2 = geo.omega1 * rho1, geo.omega2 * rho2
     uej = 0.5 * (v1 + v2)
     srrj = (v1 - v2) / uej
-    shape = 1.0 - (s / bH) ** 2 if crowned else np.ones(count)
-    wj = shape * (w * L / (shape.sum() * span / count))     # the slices carry F = w L
-    return s, wj, Rj, uej, srrj
+    shape = 1.0 - (s / bH) ** 2 if crowned else np.ones(s.size)
+    wj = shape * (w * L / np.dot(weights, shape))     # the slices carry F = w L
+    return s, wj, Rj, uej, srrj, weights
 
 
 def slice_contact(w: float, R: float, ue: float, srr: float, T: float, Rx: float, Ry: float, geo: SliceGeometry,
-                  setup, count: int = SLICES, **options) -> SliceResult:
+                  setup, count: int = SLICES, start_level: int | None = None, **options) -> SliceResult:
     """The contact as ``count`` line TEHL slices (module docstring); ``setup`` a
-    :class:`femgear.physics.tehl.solver.TEHLSetup`, ``options`` to :func:`femgear.physics.tehl.line.solve_tehl_line`."""
-    from femgear.physics.tehl.solver import tehl_path_results
+    :class:`femgear.physics.tehl.solver.TEHLSetup`, ``start_level`` the level to try first (the previous
+    contact's :attr:`SliceResult.level`, :func:`femgear.physics.tehl.solver.tehl_path_results`), ``options`` to
+    :func:`femgear.physics.tehl.line.solve_tehl_line`."""
+    from femgear.physics.tehl.solver import _level_of_nodes, tehl_path_results
 
-    s, wj, Rj, uej, srrj = slice_inputs(w, R, ue, srr, Rx, Ry, geo, setup.E_red, count)
-    rs = tehl_path_results(wj, Rj, uej, srrj, T, setup, **options)
-    force = sum(r.mu_couette * wi for r, wi in zip(rs, wj))     # per slice width: equal widths
-    mid = rs[count // 2]
+    s, wj, Rj, uej, srrj, weights = slice_inputs(w, R, ue, srr, Rx, Ry, geo, setup.E_red, count)
+    rs = tehl_path_results(wj, Rj, uej, srrj, T, setup, start_level=start_level, **options)
+    force = float(np.dot(weights, [r.mu_couette * wi for r, wi in zip(rs, wj)]))
+    centre = lambda name: float(np.interp(0.0, s, [getattr(r, name) for r in rs]))  # noqa: E731
     est = [max(v for v in r.error_estimate.values() if v is not None) for r in rs]
-    return SliceResult(hc=mid.hc, hmin=min(r.hmin for r in rs), pmax=max(r.pmax for r in rs),
-                       hc_isothermal=mid.hc_isothermal, dT_max=max(r.dT_max for r in rs),
-                       dT_surface=max(r.dT_surface for r in rs), mu=abs(force) / float(np.sum(wj)),
-                       error_estimate={"hc": max(est), "hmin": max(est)}, s=s, load=wj, results=tuple(rs))
+    return SliceResult(hc=centre("hc"), hmin=min(r.hmin for r in rs), pmax=max(r.pmax for r in rs),
+                       hc_isothermal=centre("hc_isothermal"), dT_max=max(r.dT_max for r in rs),
+                       dT_surface=max(r.dT_surface for r in rs), mu=abs(force) / float(np.dot(weights, wj)),
+                       error_estimate={"hc": max(est), "hmin": max(est)},
+                       level=_level_of_nodes(rs[0].nodes), s=s, load=wj, results=tuple(rs))

@@ -102,18 +102,23 @@ def tehl_line_solver(setup: TEHLSetup, level: int | None = None, **options):
 
 
 def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int | None = None,
-                      **options) -> list[TEHLResult]:
+                      start_level: int | None = None, **options) -> list[TEHLResult]:
     """TEHL line solves at the contacts (arrays ``w``, ``R``, ``ue``, ``srr``; oil at ``T`` [K]) on one grid
     level: ``level``, or the one that the tolerance-driven solve of the contact with the largest Moes M (the
     thinnest film for its width, which needs the finest grid) picks, kept for the others, so that the fields
     of a path or map are smooth to the solver's tolerance (a level that changed from point to point would step
     them by up to that tolerance); when another contact's estimate then exceeds the tolerance, the whole sequence
-    is solved once more one level finer.  ``options`` to :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
+    is solved once more one level finer.  ``start_level``: the level a similar sequence ended on (the face slices
+    of the previous contact), tried first instead of the probe's choice, with the same check and refinement: the
+    answer still meets the tolerance, and a sequence that needs that level is not solved twice.  ``options`` to
+    :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
     w, R, ue, srr = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr)))
     kw = {**setup.kwargs(), **options}
     out: list = [None] * w.size
     progress = map_progress("TEHL line solves", w.size, LINE_SECONDS)
-    if level is None:
+    if level is None and start_level is not None:
+        level, auto = max(start_level, options.get("min_level") or 0), True
+    elif level is None:
         oil = ehl_oil_at(setup.oil, T)
         E = setup.E_red
         M = [moes_line(wi / (E * Ri), oil.eta0 * ui / (E * Ri), oil.alpha * E)[0] for wi, Ri, ui in zip(w, R, ue)]
