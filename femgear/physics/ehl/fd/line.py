@@ -15,8 +15,9 @@ GMRES on the exact Jacobian; both give the same films to the Newton tolerance (m
 With ``reuse`` (a dict the caller keeps across a sequence of solves) the last factors of a level size
 precondition right-preconditioned GMRES on the exact Jacobian (:mod:`femgear.physics.ehl.fe.krylov`) and are
 refactorised only when it needs more than :data:`REUSE_KRYLOV` iterations.  Measured at (1000, 4.3), one solve
-nested up to 2049 / 4097 / 8193 / 16385 nodes: dense 1.2 s at 2049 (x2.2, x3.4, x4.4 per refinement from 257),
-HODLR 0.23 / 0.48 / 0.91 / 1.9 s (``python studies/benchmarks/line_scaling.py``).
+nested up to 1025 / 2049 / 4097 / 8193 / 16385 nodes: dense LU on every level 0.27 / 1.2 / 7.6 s (x2.6, x4.4,
+x6.4 per doubling), the default (HODLR above 513 nodes) 0.083 / 0.16 / 0.32 / 0.73 / 1.7 s (x1.6-2.4;
+``python studies/benchmarks/line_scaling.py``).
 
 Cold start (the coarsest level): the dry Hertz pressure with Moes's central film; when
 Newton fails from it (heavy loads: the steps are capped at 4/alpha_bar and the line search
