@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from femgear.physics.ehl.core.elastic import _log_integrals
+from femgear.physics.ehl.core.elastic import half_hat_integral
 
 LEAF = 128      #: the largest leaf (dense block) [nodes]
 EPS = 1e-12     #: relative accuracy of each compressed block (Frobenius) [-]
@@ -168,10 +168,7 @@ def hat_kernel(X: np.ndarray, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
                 out[sel] += ls * (np.log(np.abs(xs[:, None] - a_s[:, None] - ls[:, None] * t)) @ shape)
         sel = ~done
         if sel.any():
-            xs, a_s, ls = x[sel], a[sel], length[sel]
-            I0, I1 = _log_integrals(a_s - xs, a_s + ls - xs)
-            rise = (I1 + (xs - a_s) * I0) / ls
-            out[sel] += rise if side < 0 else I0 - rise
+            out[sel] += half_hat_integral(x[sel], a[sel], b[sel], length[sel], side)
     return -out / np.pi
 
 
