@@ -1,7 +1,8 @@
 """Benchmark: how the cost of one converged line EHL solve grows with the grid (issue 43 item 1).
 
     python studies/benchmarks/line_scaling.py [--M 1000] [--L 4.3] [--levels 5-10] [--repeats 3]
-                                              [--dense-max 4097] [--viscosity barus] [--json FILE]
+                                              [--dense-max 4097] [--viscosity barus] [--ph PA] [--compressible]
+                                              [--json FILE]
 
 Per refinement level k (16 * 2**k + 1 nodes, 513 ... 16385 by default) one nested solve up to that level
 (``solve_line_fd(M, L, level=k, tol=None)``: the levels from the cold start up, which is what a solve converged
@@ -46,13 +47,13 @@ def _levels(text: str) -> list[int]:
     return list(range(int(lo), int(hi or lo) + 1))
 
 
-def time_level(M: float, L: float, k: int, path: str, repeats: int, viscosity: str) -> dict:
+def time_level(M: float, L: float, k: int, path: str, repeats: int, rheology: dict) -> dict:
     """Cold and warm CPU seconds of the nested solve up to level ``k`` by ``path``."""
     fdl._kernel.cache_clear()
     cpu, r = [], None
     for _ in range(max(repeats, 1) + 1):
         t = time.process_time()
-        r = fdl.solve_line_fd(M, L, level=k, tol=None, max_level=k, fast=PATHS[path], viscosity=viscosity)
+        r = fdl.solve_line_fd(M, L, level=k, tol=None, max_level=k, fast=PATHS[path], **rheology)
         cpu.append(time.process_time() - t)
     return {"path": path, "level": k, "nodes": r.nodes, "cold": cpu[0], "cpu": statistics.median(cpu[1:]),
             "Hc": r.Hc, "Hmin": r.Hmin, "newton": [lv["iterations"] for lv in r.levels],
@@ -77,10 +78,16 @@ def main(argv: list[str] | None = None) -> dict:
     ap.add_argument("--repeats", type=int, default=3, help="warm solves per level (median)")
     ap.add_argument("--dense-max", type=int, default=4097, help="largest grid solved by the dense path")
     ap.add_argument("--viscosity", default="barus", choices=("barus", "roelands"))
+    ap.add_argument("--ph", type=float, help="Hertz pressure [Pa] (Roelands and Dowson-Higginson need it)")
+    ap.add_argument("--compressible", action="store_true", help="Dowson-Higginson density")
     ap.add_argument("--json", help="write the figures to this file")
     args = ap.parse_args(argv)
-    out: dict = {"M": args.M, "L": args.L, "dense_nodes": fdl.DENSE_NODES, "paths": {}}
-    print(f"(M, L) = ({args.M:g}, {args.L:g}), {args.viscosity}; CPU s, median of {args.repeats} warm solves")
+    if (args.viscosity == "roelands" or args.compressible) and not args.ph:
+        ap.error("--ph is needed with --viscosity roelands or --compressible")
+    rheology = dict(viscosity=args.viscosity, ph=args.ph, compressible=args.compressible)
+    out: dict = {"M": args.M, "L": args.L, **rheology, "dense_nodes": fdl.DENSE_NODES, "paths": {}}
+    print(f"(M, L) = ({args.M:g}, {args.L:g}), {args.viscosity}{', Dowson-Higginson' if args.compressible else ''}"
+          f"; CPU s, median of {args.repeats} warm solves")
     print(f"{'path':6} {'nodes':>6} {'cold':>8} {'warm':>8} {'x/doubling':>10} {'NlogN':>6} "
           f"{'Hc':>14} {'Hmin':>14} {'|dHc|, |dHmin| vs dense':>24}")
     for path in PATHS:
@@ -89,7 +96,7 @@ def main(argv: list[str] | None = None) -> dict:
             if path == "dense" and 16 * 2**k + 1 > args.dense_max:
                 continue
             row = time_level(args.M, args.L, k, path, args.repeats if path != "dense" or k < 9 else 1,
-                             args.viscosity)
+                             rheology)
             ref = next((d for d in out["paths"].get("dense", {}).get("rows", []) if d["level"] == k), None)
             if ref is not None and path != "dense":
                 row["dHc"], row["dHmin"] = abs(row["Hc"] - ref["Hc"]), abs(row["Hmin"] - ref["Hmin"])
