@@ -191,8 +191,13 @@ def line_hat_kernel(X: np.ndarray, rows: np.ndarray | None = None, cols: np.ndar
         a = np.where(side < 0, X[jj], X[j])   # [a, b] = [X_(j-1), X_j] or [X_j, X_(j+1)]
         b = np.where(side < 0, X[j], X[jj])
         length = np.where(ok, b - a, 1.0)
-        I0, I1 = _log_integrals(a - x, b - x)
-        rise = (I1 + (x - a) * I0) / length
-        part = rise if side < 0 else I0 - rise
-        out += np.where(ok, part, 0.0)
+        out += np.where(ok, half_hat_integral(x, a, b, length, side), 0.0)
     return -out / np.pi
+
+
+def half_hat_integral(x, a, b, length, side: int):
+    """int phi ln|x - s| ds over [a, b] (closed form) for the rising (``side`` -1: (s - a)/length) or the falling
+    (+1: (b - s)/length) half of a hat function."""
+    I0, I1 = _log_integrals(a - x, b - x)
+    rise = (I1 + (x - a) * I0) / length
+    return rise if side < 0 else I0 - rise

@@ -7,13 +7,17 @@ Newton of :mod:`femgear.physics.ehl.fe.newton` on the FD operator of
 :mod:`femgear.physics.ehl.core.accuracy` are within ``tol`` (default 1 %) and at least
 ``min_level`` is reached: the grid is chosen by the solver, not by the caller.
 
-Newton steps: the bordered dense Jacobian (the FD band times the dense kernel) is factorised by
-LAPACK (LU); with ``reuse`` (a dict the caller keeps across a sequence of solves) the last factors of
-a level size precondition right-preconditioned GMRES on the exact Jacobian
-(:mod:`femgear.physics.ehl.fe.krylov`) and are refactorised only when it needs more than
-:data:`REUSE_KRYLOV` iterations.  The cost is that of the dense algebra, O(n^3) for the factors and
-O(n^2) for the kernel (measured at (1000, 4.3): 0.037 / 0.081 / 0.28 / 1.2 s on 257 / 513 / 1025 / 2049
-nodes); the graded grids keep n at 257-1025 for 1 % over the tested envelope, where it is 0.01-0.3 s.
+Newton steps, by the size of the level (:data:`DENSE_NODES`): on coarse levels the bordered dense Jacobian (the
+FD band times the dense kernel) is factorised by LAPACK (LU), O(n^3); on finer ones the kernel is an
+:class:`femgear.physics.ehl.fd.line_hodlr.HKernel` (HODLR, O(n log n) to apply) and the Jacobian is factorised
+in the same hierarchical form (:mod:`femgear.physics.ehl.fd.line_fast`, O(n log^2 n)), the direction found by
+GMRES on the exact Jacobian; both give the same films to the Newton tolerance (measured 1e-11 at (1000, 4.3)).
+With ``reuse`` (a dict the caller keeps across a sequence of solves) the last factors of a level size
+precondition right-preconditioned GMRES on the exact Jacobian (:mod:`femgear.physics.ehl.fe.krylov`) and are
+refactorised only when it needs more than :data:`REUSE_KRYLOV` iterations.  Measured at (1000, 4.3), one solve
+nested up to 1025 / 2049 / 4097 / 8193 / 16385 nodes: dense LU on every level 0.27 / 1.2 / 7.6 s (x2.6, x4.4,
+x6.4 per doubling), the default (HODLR above 513 nodes) 0.083 / 0.16 / 0.32 / 0.73 / 1.7 s (x1.6-2.4;
+``python studies/benchmarks/line_scaling.py``).
 
 Cold start (the coarsest level): the dry Hertz pressure with Moes's central film; when
 Newton fails from it (heavy loads: the steps are capped at 4/alpha_bar and the line search
@@ -44,7 +48,9 @@ from femgear.physics.ehl.core.elastic import line_hat_kernel
 from femgear.physics.ehl.core.history import History
 from femgear.physics.ehl.core.results import EHLResult
 from femgear.physics.ehl.core.rheology import Rheology
+from femgear.physics.ehl.fd.line_fast import fast_direction
 from femgear.physics.ehl.fd.line_grid import LineDomain, expected_film, hertz_start, line_domain
+from femgear.physics.ehl.fd.line_hodlr import HKernel
 from femgear.physics.ehl.fd.line_operator import FDLine
 from femgear.physics.ehl.fe.krylov import gmres_right
 from femgear.physics.ehl.fe.newton import _dense_forcing, _newton
@@ -58,13 +64,20 @@ REUSE_KRYLOV = 12    #: GMRES iterations allowed on reused factors before refact
 M_EASY = 10.0        #: where the load continuation of a cold start begins (up or down to M)
 COLD_LEVELS = 3      #: the levels a cold start is tried on, from COARSE_LEVEL up
 NEWTON_TOL = 1e-8    #: Newton's step tolerance (relative |dP|, |dH0|)
+#: the largest grid solved with the dense kernel and LU; finer ones take the HODLR kernel and factorisation of
+#: :mod:`femgear.physics.ehl.fd.line_fast` (O(n log^2 n); the crossover measured by
+#: ``studies/benchmarks/line_scaling.py``)
+DENSE_NODES = 513
 
 
-@lru_cache(maxsize=8)
-def _kernel(dom: LineDomain, level: int) -> np.ndarray:
-    """K[:, interior] of the grid (cached: the levels of a nested solve, the thermal loop and
-    the positions of a path whose contacts share a domain build it once)."""
+@lru_cache(maxsize=16)
+def _kernel(dom: LineDomain, level: int, fast: bool | None = None) -> np.ndarray | HKernel:
+    """K[:, interior] of the grid: dense up to :data:`DENSE_NODES` nodes, an :class:`HKernel` above (or as
+    ``fast`` says); cached: the levels of a nested solve, the thermal loop and the positions of a path whose
+    contacts share a domain build it once."""
     X = dom.nodes(level)
+    if X.size > DENSE_NODES if fast is None else fast:
+        return HKernel(X)
     K = line_hat_kernel(X, cols=np.arange(1, X.size - 1))
     K.setflags(write=False)
     return K
@@ -74,8 +87,8 @@ class LineProblem:
     """The levels of one line contact (M, L) on a domain, with the oil's rheology."""
 
     def __init__(self, M: float, L: float, dom: LineDomain, rheology: dict, surface=None,
-                 rheology_factory=None, rigid: bool = False):
-        self.M, self.L, self.dom, self.rigid = M, L, dom, rigid
+                 rheology_factory=None, rigid: bool = False, fast: bool | None = None):
+        self.M, self.L, self.dom, self.rigid, self.fast = M, L, dom, rigid, fast
         self.rheology, self.surface = rheology, surface
         self.factory = rheology_factory or (lambda M_, frac: Rheology(pr.line_alpha_bar(M_, L) * frac, **rheology))
         self.fac = pr.line_h_moes_factor(M)
@@ -84,9 +97,8 @@ class LineProblem:
         M_ = self.M if M_ is None else M_
         X = self.dom.nodes(k)
         R = None if self.surface is None else self.surface(X)
-        K = _kernel(self.dom, k)
-        return FDLine(X, self.factory(M_, frac), pr.line_lam_bar(M_), pr.LINE_LOAD, surface=R,
-                      kernel=np.zeros_like(K) if self.rigid else K)
+        K = np.zeros((X.size, X.size - 2)) if self.rigid else _kernel(self.dom, k, self.fast)
+        return FDLine(X, self.factory(M_, frac), pr.line_lam_bar(M_), pr.LINE_LOAD, surface=R, kernel=K)
 
     def summary(self, lv: FDLine, PI, H0, its: int, t0: float) -> dict:
         P, H = lv.film(PI, H0)
@@ -97,7 +109,10 @@ class LineProblem:
 
 def direction(lv: FDLine, reuse: dict | None):
     """The Newton direction of level ``lv``: dense LU, or GMRES on the exact Jacobian preconditioned by the
-    factors kept in ``reuse``."""
+    factors kept in ``reuse``; on a level with an :class:`HKernel`, the HODLR factorisation of
+    :func:`femgear.physics.ehl.fd.line_fast.fast_direction` instead."""
+    if isinstance(lv.K, HKernel):
+        return fast_direction(lv, reuse, _dense_forcing)
     key = ("fd line", lv.n)
 
     def solve(PI, H0, F, state, s, act):
@@ -149,7 +164,7 @@ class NestedLine:
         PI = hertz_start(lv.X)[1:-1]
         PI *= lv.load / (lv.dual @ PI)
         i0 = int(np.argmin(np.abs(lv.X)))
-        return PI, expected_film(M_, self.prob.L) - float(lv.K[i0] @ PI)
+        return PI, expected_film(M_, self.prob.L) - float(lv.deflection(lv.full(PI))[i0])
 
     def cold(self, k: int):
         """(level, PI, H0) on level ``k`` from Hertz, by load continuation when needed."""
@@ -197,7 +212,8 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
                   x1: float | None = None, viscosity: str = "barus", compressible: bool = False,
                   ph: float | None = None, z: float = 0.68, newton_tol: float = NEWTON_TOL,
                   max_iter: int = 60, start: EHLResult | None = None, reuse: dict | None = None,
-                  surface=None, graded: bool = True, rheology_factory=None, rigid: bool = False) -> EHLResult:
+                  surface=None, graded: bool = True, rheology_factory=None, rigid: bool = False,
+                  fast: bool | None = None) -> EHLResult:
     """Isothermal line-contact EHL in Moes line groups (M, L), converged to ``tol``.
 
     ``tol``: relative accuracy of Hc and Hmin by the two-level Richardson estimate (None:
@@ -208,7 +224,9 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
     explicit inlet inside m* is solved and flagged).  Rheology as :class:`Rheology`;
     ``surface``: stationary roughness R(X) (a callable, Hertzian units); ``start``/``reuse``:
     warm starts along a sequence (module docstring).  ``graded=False``: uniform grids (for
-    convergence studies); ``rigid``: no elastic deflection (the rigid limits' checks).  Raises
+    convergence studies); ``rigid``: no elastic deflection (the rigid limits' checks); ``fast``: the HODLR
+    kernel and factorisation on every level (True), the dense ones (False), or by size (None: above
+    :data:`DENSE_NODES`; the answers agree to the Newton tolerance).  Raises
     :class:`ConvergenceError` with the history when no level converges."""
     if not (M > 0 and L >= 0 and np.isfinite(M) and np.isfinite(L)):
         raise ValueError("need finite M > 0 and L >= 0")
@@ -221,7 +239,7 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
     inlet = acc.inlet_problem(dom.x0, H_exp) if x0 is not None else None
     top = max_level if level is None else level
     prob = LineProblem(M, L, dom, dict(viscosity=viscosity, ph=ph, z=z, compressible=compressible), surface,
-                       rheology_factory, rigid)
+                       rheology_factory, rigid, fast)
     run = NestedLine(prob, reuse, f"ehl line M={M:g} L={L:g}", newton_tol, max_iter)
     got, k = None, min(COARSE_LEVEL, top)
     if start is not None:

@@ -61,7 +61,9 @@ class FDLine:
     ``film``, ``full``, ``load``, ``m``, ``interior``, ``X``, ``Y``, ``n``, ``alpha_bar``).
 
     ``kernel``: K[:, interior] (all nodes x interior nodes) when the caller has it (the
-    levels of a nested solve share it by grid); built here otherwise."""
+    levels of a nested solve share it by grid): a dense array, or any operator with ``K @ v``
+    (the HODLR :class:`femgear.physics.ehl.fd.line_hodlr.HKernel` of fine grids, whose
+    Newton steps do not use :meth:`dense`); built here (dense) otherwise."""
 
     dim = 1
 
