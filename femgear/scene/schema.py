@@ -289,6 +289,15 @@ class SurfaceRoughness(_Frozen):
     finishing: Finishing | None = Field(
         None, description="flank finishing, which sets R_a of both flanks when neither ra nor rq is given (ground 0.4, "
                           "honed 0.3, shaved 0.8, hobbed 1.6 µm); default ground")
+    state: Literal["new", "run-in"] = Field(
+        "new", description="running-in state of the flanks: new (R_a/R_q as given, or as the finishing sets them) or "
+                           "run-in (those as-manufactured values times the running-in factor of the finishing, "
+                           "femgear.physics.lubrication.running_in: ground 0.70, honed 0.77, shaved 0.70, hobbed 0.59; "
+                           "GearCalc manual §14.12); the ratings and the tribology both read the result")
+    run_in_factor: float | None = Field(
+        None, gt=0, le=1, description="roughness after running-in over as manufactured, with state = \"run-in\" "
+                                      "(default: the finishing's typical factor; the finishing is ground when none "
+                                      "is given) [-]")
     model: Literal["greenwood-tripp", "smooth"] = Field(
         "greenwood-tripp", description="the tribology's flanks: greenwood-tripp (the asperities carry a share of the "
                                        "load at low λ, μ rising towards friction.boundary_coefficient) or smooth "
