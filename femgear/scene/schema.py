@@ -166,7 +166,7 @@ class Oil(_Frozen):
 
     name: str | None = Field(
         None, description="a named oil of femgear's library (femgear oils lists them with their sources: "
-                          "mineral-vg32 … mineral-vg460, min100-fzg, pao-vg100, pag-eo-po); it fills every oil key "
+                          "mineral-vg32 … mineral-vg460, min100-fzg, fva3a, pao-vg100, pag-eo-po); it fills every oil key "
                           "not given here, at reference_temperature (default: operating.ambient_temperature); "
                           "None: the table's own values")
     viscosity: Pos = Field(description="dynamic viscosity η0 at ambient pressure and the reference temperature [Pa s] (kinematic "

@@ -2,7 +2,7 @@
 the FZG power-loss fit of Schlenk with Fernandes's measured lubricant factor (issue 38, item 2).
 
     PYTHONPATH=$PWD python studies/validation/fzg_friction.py [--coarse] [--gt=ηβσ,σ/β] [--contact=LAW] [--film=FILM]
-        [--state=run-in]
+        [--state=run-in] [--oil=NAME]
 
 The pair: FZG A (ISO 14635-1: m 4.5 mm, z 16/24, a 91.5 mm, x 0.8532/−0.5, b 20 mm), bound directly as the
 rating's FZG A pair (:func:`femgear.physics.rating.scuffing.fzg_a_pair`: tip diameters from x and a_w,
@@ -15,7 +15,7 @@ of ISO 14635-1.
 femgear (``formula`` level, the load sharing of :mod:`femgear.physics.lubrication.mixed`, by default Greenwood–Tripp
 asperities, the fluid film the mean gap, the scene's default asperity statistics ηβσ 0.04, σ/β 3e-3, μ_b 0.1;
 ``--contact``, ``--film``, ``--gt`` and ``--state`` set ``roughness.contact``, ``roughness.fluid_film``, the
-statistics and ``roughness.state``): the flanks' bulk temperature is the oil's plus femgear's own estimate, the fixed
+statistics and ``roughness.state``, ``--oil`` the library oil, e.g. ``fva3a``): the flanks' bulk temperature is the oil's plus femgear's own estimate, the fixed
 point ϑ_M = ϑ_oil + 0.7 · mean ΔT (the ISO/TS 6336-21 integral-temperature rule femgear's coupling loop uses,
 ``thermal.bulk_fraction``), fed back as ``thermal.flank_temperature_rise``; μ̄ is the constant μ with femgear's
 mesh loss (Ohlendorf's H_V, ``power_loss.equivalent_mu``), the quantity a power-loss measurement gives.
@@ -47,14 +47,14 @@ BULK_FRACTION = 0.7          #: ISO/TS 6336-21 C1, femgear's thermal.bulk_fracti
 
 
 def setup(gt: tuple[float, float] | None = None, contact: str | None = None, film: str | None = None,
-          state: str | None = None) -> list[str]:
+          state: str | None = None, oil: str = "mineral-vg100") -> list[str]:
     """The scene overrides shared by every stage (the stage sets the torque)."""
     from femgear.physics.rating.scuffing import fzg_a_pair
 
     pair = fzg_a_pair()
     rpm = 8.3 / (2 * math.pi * pair.rw1) * 60
     out = ['meta.name="fzg_a"', "pair.face_width=0.020", "pinion.profile_shift=0.8532", "gear.profile_shift=-0.5",
-           f"operating.speed_rpm={rpm!r}", "operating.ambient_temperature=363.15", 'oil.name="mineral-vg100"',
+           f"operating.speed_rpm={rpm!r}", "operating.ambient_temperature=363.15", f'oil.name="{oil}"',
            "oil.reference_temperature=363.15", f"roughness.ra=[{RA!r}, {RA!r}]", 'physics.lubrication="formula"',
            "numerics.path_points=41"]
     if gt is not None:
@@ -147,15 +147,16 @@ def stage(overrides: list[str], ks: int) -> dict:
 
 
 def run(coarse: bool = False, gt: tuple[float, float] | None = None, contact: str | None = None,
-        film: str | None = None, state: str | None = None) -> dict:
+        film: str | None = None, state: str | None = None, oil: str = "mineral-vg100") -> dict:
     logging.getLogger("femgear").setLevel(logging.ERROR)
-    overrides = setup(gt, contact, film, state)
+    overrides = setup(gt, contact, film, state, oil)
     if coarse:
         overrides = [*overrides, "numerics.path_points=21"]
     stages = (5, 9, 12) if coarse else STAGES
     rows = [stage(overrides, ks) for ks in stages]
     mu, iso, ratio = (np.array([r[k] for r in rows]) for k in ("mu_mean", "mu_mC_iso", "ratio_iso"))
-    return {"rows": rows, "coarse": coarse, "gt": gt, "contact": contact, "film": film, "state": state, "ra": RA,
+    return {"rows": rows, "coarse": coarse, "gt": gt, "contact": contact, "film": film, "state": state, "oil": oil,
+            "ra": RA,
             "trend": {"mu_last_over_first": float(mu[-1] / mu[0]), "iso_last_over_first": float(iso[-1] / iso[0]),
                       "ratio_min": float(ratio.min()), "ratio_max": float(ratio.max())}}
 
@@ -167,9 +168,10 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--contact", default=None, help="roughness.contact (default greenwood-tripp)")
     p.add_argument("--film", default=None, help="roughness.fluid_film (default mean-gap)")
     p.add_argument("--state", default=None, help="roughness.state (default new)")
+    p.add_argument("--oil", default="mineral-vg100", help="the library oil (default mineral-vg100)")
     args = p.parse_args(argv)
     gt = tuple(float(x) for x in args.gt.split(",")) if args.gt else None
-    res = run(args.coarse, gt, args.contact, args.film, args.state)
+    res = run(args.coarse, gt, args.contact, args.film, args.state, args.oil)
     print("KS  T1[Nm]  pH[GPa]  dT_M[K]  λ_min  λ_GF(ISO)  μ̄ smooth  μ̄ femgear  μ_mC ISO  μ_mz Schlenk  "
           "μ̄/μ_mC  μ̄/μ_mz  θmax[°C] θB,ISO[°C]  W_C/W")
     for r in res["rows"]:
