@@ -33,9 +33,12 @@ def test_the_asperity_share_and_mu_rise_as_lambda_falls(curve):
         assert np.all(mu >= smooth[order] - 1e-12)                           # asperities only add friction
         full = lam[order] > 2.5
         np.testing.assert_allclose(mu[full], smooth[order][full], atol=1e-3)   # full film: the smooth μ
-    rough = curve["curves"][1]
+    by = {(c["contact"], c["fluid_film"], c["eta_beta_sigma"]): c for c in curve["curves"]}
     i = int(np.argmin(lam))
-    assert rough["asperity_fraction"][i] > 0.5 and rough["mu"][i] > 0.06          # towards μ_b = 0.1
+    rough = by["greenwood-tripp", "mean-gap", 0.1]
+    assert rough["asperity_fraction"][i] > 0.99 and rough["mu"][i] > 0.099         # at μ_b = 0.1
+    default, before = by["greenwood-tripp", "mean-gap", 0.04], by["greenwood-tripp", "separation", 0.04]
+    assert default["asperity_fraction"][i] > 0.4 > 0.05 > before["asperity_fraction"][i]   # the bound p_C(0) before
 
 
 def test_the_asperities_heat_adds_bloks_flash_temperature():
