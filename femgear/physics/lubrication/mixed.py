@@ -122,7 +122,7 @@ class LoadSplit:
     separation: np.ndarray      #: nominal separation of the mean planes over σ, h/σ [-]
 
 
-def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 64) -> LoadSplit:
+def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 52) -> LoadSplit:
     """The load sharing W = W_H + W_C per contact, solved for the nominal separation h.
 
     ``film(w, E_red)`` returns the central film [m] of smooth line contacts of loads per length w [N/m] and
@@ -131,7 +131,7 @@ def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 
     W_H = W − W_C with E' W_H/W, and the split holds where the fluid's film film(W_H, E' W_H/W) equals its gap at h
     (:meth:`Roughness.fluid_gap`).  The mismatch film − gap falls monotonically with h (W_C falls, so the fluid
     carries more at a stiffer E' W_H/W and its film thins, while the gap grows), so all contacts are solved at once
-    by bisection in t = h/σ on :data:`T_BRACKET` (``bisections`` halvings: 100/2^64 ≈ 5e-18); the side kept has
+    by bisection in t = h/σ on :data:`T_BRACKET` (``bisections`` halvings: 100/2^52 ≈ 2e-14); the side kept has
     W_C < W, so the fluid always keeps a positive share.  A contact whose smooth film exceeds the gap at the top of the bracket
     is full film (γ₁ = 1, W_C = 0).
     """
