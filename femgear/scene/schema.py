@@ -299,9 +299,10 @@ class SurfaceRoughness(_Frozen):
                                       "(default: the finishing's typical factor; the finishing is ground when none "
                                       "is given) [-]")
     model: Literal["greenwood-tripp", "smooth"] = Field(
-        "greenwood-tripp", description="the tribology's flanks: greenwood-tripp (the asperities carry a share of the "
-                                       "load at low λ, μ rising towards friction.boundary_coefficient) or smooth "
-                                       "(full film everywhere; the ratings still read the roughness)")
+        "greenwood-tripp", description="the tribology's flanks: greenwood-tripp (rough: the asperities carry a share "
+                                       "of the load at low λ by the load sharing, their law roughness.contact, μ "
+                                       "rising towards friction.boundary_coefficient) or smooth (full film "
+                                       "everywhere; the ratings still read the roughness)")
     contact: Literal["greenwood-tripp", "greenwood-williamson"] = Field(
         "greenwood-tripp", description="the asperity contact law of the load sharing: greenwood-tripp (two rough "
                                        "surfaces, p_C = K E* F_5/2; Akbarzadeh & Khonsari's gear model) or "

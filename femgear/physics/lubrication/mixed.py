@@ -132,8 +132,9 @@ def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 
     (:meth:`Roughness.fluid_gap`).  The mismatch film − gap falls monotonically with h (W_C falls, so the fluid
     carries more at a stiffer E' W_H/W and its film thins, while the gap grows), so all contacts are solved at once
     by bisection in t = h/σ on :data:`T_BRACKET` (``bisections`` halvings: 100/2^52 ≈ 2e-14); the side kept has
-    W_C < W, so the fluid always keeps a positive share.  A contact whose smooth film exceeds the gap at the top of the bracket
-    is full film (γ₁ = 1, W_C = 0).
+    W_C < W, so the fluid always keeps a positive share.  A contact whose smooth film exceeds the gap at the top of
+    the bracket is full film (γ₁ = 1, W_C = 0; its ``separation`` is then the film over σ).  A film that is not
+    finite at the solution raises :class:`~femgear.errors.ConvergenceError`.
     """
     w, R = np.broadcast_arrays(np.atleast_1d(np.asarray(w, float)), np.atleast_1d(np.asarray(R, float)))
     w, R = w.astype(float), R.astype(float)
@@ -161,7 +162,11 @@ def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 
     frac = np.where(full, 0.0, frac)
     h = np.where(full, np.reshape(film(w, np.full(w.shape, E_red)), w.shape), h)
     if not np.all(np.isfinite(h)):
-        raise ValueError("load sharing: the fluid's film is not finite (asperities carry the whole load)")
+        from femgear.errors import ConvergenceError
+
+        bad = ~np.isfinite(h)
+        raise ConvergenceError("jgp_split", "the fluid's film is not finite at the load sharing's solution",
+                               {"separation": hi[bad].tolist(), "asperity_fraction": frac[bad].tolist()})
     return LoadSplit(gamma1=1.0 / (1.0 - frac), asperity_fraction=frac, film=h, film_parameter=h / sigma,
                      separation=np.where(full, h / sigma, hi))
 
