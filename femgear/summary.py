@@ -170,9 +170,10 @@ def oil_summary(case) -> dict[str, Any]:
 
 def roughness_summary(case) -> dict[str, Any]:
     """The flanks' roughness both the ratings and the tribology read (:func:`femgear.scene.roughness.flank_roughness`)."""
-    f = case.flanks
+    f, r = case.flanks, case.roughness
     return {"ra": list(f.ra), "rq": list(f.rq), "sigma": f.sigma, "model": f.model, "source": f.source,
-            "finishing": f.finishing}
+            "finishing": f.finishing, "state": f.state, "run_in_factor": f.run_in_factor, "contact": r.contact,
+            "fluid_film": r.fluid_film}
 
 
 def scene_summary(case, contact: ContactPath, figures: ContactFigures, ratings: PairRating | None = None

@@ -140,7 +140,8 @@ def line_friction(case: Case) -> LineFriction:
     mixed = flanks.model == "greenwood-tripp" and flanks.sigma > 0
     return LineFriction(oil=oil_law(case), E_red=reduced_modulus_of(case), solids=solids_of(case.material, case.oil),
                         tau0=case.oil.eyring_stress, limiting_shear=case.oil.limiting_shear_coeff,
-                        roughness=Roughness(flanks.sigma, rough.eta_beta_sigma, rough.sigma_over_beta)
+                        roughness=Roughness(flanks.sigma, rough.eta_beta_sigma, rough.sigma_over_beta, rough.contact,
+                                            rough.fluid_film)
                         if mixed else None, boundary_coefficient=case.friction.boundary_coefficient)
 
 

@@ -137,7 +137,7 @@ def wear_roughness(case: Case) -> Roughness:
 
     rough, flanks = case.roughness, case.flanks
     sigma = flanks.sigma if flanks.sigma > 0 else math.hypot(*flanks.rq)
-    return Roughness(sigma, rough.eta_beta_sigma, rough.sigma_over_beta)
+    return Roughness(sigma, rough.eta_beta_sigma, rough.sigma_over_beta, rough.contact, rough.fluid_film)
 
 
 def film_inputs(case: Case) -> FilmInputs:

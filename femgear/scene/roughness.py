@@ -34,6 +34,8 @@ class FlankRoughness:
     model: str                     #: "greenwood-tripp" or "smooth"
     source: str                    #: which keys (or defaults) gave the values, in words
     finishing: str | None = None   #: the finishing that set R_a (None: given)
+    state: str = "new"             #: running-in state: "new" or "run-in"
+    run_in_factor: float = 1.0     #: factor applied to the as-manufactured R_a, R_q, σ [-] (1: new)
 
     @property
     def ra_mean(self) -> float:
@@ -61,8 +63,17 @@ def flank_roughness(scene: Scene) -> FlankRoughness:
     if isinstance(r.rq, float | int) and not isinstance(r.rq, bool) and r.rq is not None:   # the old composite σ
         sigma, source = float(r.rq), source + "; the tribology's σ from roughness.rq (one number)"
         model = "smooth" if sigma == 0 else model
+    factor = 1.0
+    if r.state == "run-in":
+        from femgear.physics.lubrication.running_in import run_in_factor
+
+        given = r.run_in_factor is not None
+        factor = r.run_in_factor if given else run_in_factor(finishing or r.finishing or rating.finishing or "ground")
+        source += (f"; run-in: × {factor:.3g} " + ("(roughness.run_in_factor)" if given else
+                                                   "(the finishing's typical factor, GearCalc manual §14.12)"))
+        ra, rq, sigma = [a * factor for a in ra], [q * factor for q in rq], sigma * factor
     return FlankRoughness(ra=(float(ra[0]), float(ra[1])), rq=(float(rq[0]), float(rq[1])), sigma=sigma,
-                          model=model, source=source, finishing=finishing)
+                          model=model, source=source, finishing=finishing, state=r.state, run_in_factor=factor)
 
 
 def check_roughness(scene: Scene) -> list[str]:
@@ -74,6 +85,8 @@ def check_roughness(scene: Scene) -> list[str]:
     if rating.finishing is not None and r.finishing is not None and rating.finishing != r.finishing:
         raise SceneError("rating.finishing", f"{rating.finishing!r} contradicts roughness.finishing = {r.finishing!r}:"
                                              " keep roughness.finishing")
+    if r.run_in_factor is not None and r.state != "run-in":
+        raise SceneError("roughness.run_in_factor", 'applies to run-in flanks only: set roughness.state = "run-in"')
     m = scene.pair.normal_module
     out: list[str] = []
     for key, values, factor in (("roughness.ra", r.ra, 1.0), ("rating.roughness_ra", rating.roughness_ra, 1.0),

@@ -166,7 +166,7 @@ class Oil(_Frozen):
 
     name: str | None = Field(
         None, description="a named oil of femgear's library (femgear oils lists them with their sources: "
-                          "mineral-vg32 … mineral-vg460, min100-fzg, pao-vg100, pag-eo-po); it fills every oil key "
+                          "mineral-vg32 … mineral-vg460, min100-fzg, fva3a, pao-vg100, pag-eo-po); it fills every oil key "
                           "not given here, at reference_temperature (default: operating.ambient_temperature); "
                           "None: the table's own values")
     viscosity: Pos = Field(description="dynamic viscosity η0 at ambient pressure and the reference temperature [Pa s] (kinematic "
@@ -289,10 +289,31 @@ class SurfaceRoughness(_Frozen):
     finishing: Finishing | None = Field(
         None, description="flank finishing, which sets R_a of both flanks when neither ra nor rq is given (ground 0.4, "
                           "honed 0.3, shaved 0.8, hobbed 1.6 µm); default ground")
+    state: Literal["new", "run-in"] = Field(
+        "new", description="running-in state of the flanks: new (R_a/R_q as given, or as the finishing sets them) or "
+                           "run-in (those as-manufactured values times the running-in factor of the finishing, "
+                           "femgear.physics.lubrication.running_in: ground 0.70, honed 0.77, shaved 0.70, hobbed 0.59; "
+                           "GearCalc manual §14.12); the ratings and the tribology both read the result")
+    run_in_factor: float | None = Field(
+        None, gt=0, le=1, description="roughness after running-in over as manufactured, with state = \"run-in\" "
+                                      "(default: the finishing's typical factor; the finishing is ground when none "
+                                      "is given) [-]")
     model: Literal["greenwood-tripp", "smooth"] = Field(
-        "greenwood-tripp", description="the tribology's flanks: greenwood-tripp (the asperities carry a share of the "
-                                       "load at low λ, μ rising towards friction.boundary_coefficient) or smooth "
-                                       "(full film everywhere; the ratings still read the roughness)")
+        "greenwood-tripp", description="the tribology's flanks: greenwood-tripp (rough: the asperities carry a share "
+                                       "of the load at low λ by the load sharing, their law roughness.contact, μ "
+                                       "rising towards friction.boundary_coefficient) or smooth (full film "
+                                       "everywhere; the ratings still read the roughness)")
+    contact: Literal["greenwood-tripp", "greenwood-williamson"] = Field(
+        "greenwood-tripp", description="the asperity contact law of the load sharing: greenwood-tripp (two rough "
+                                       "surfaces, p_C = K E* F_5/2; Akbarzadeh & Khonsari's gear model) or "
+                                       "greenwood-williamson (a rough surface on a flat, p_C = 4/3 E* ηβσ √(σ/β) "
+                                       "F_3/2; Gelinck & Schipper's Stribeck curves)")
+    fluid_film: Literal["mean-gap", "separation"] = Field(
+        "mean-gap", description="the fluid's film at a nominal separation h of the flanks' mean planes: mean-gap "
+                                "(Patir & Cheng's mean gap σ(tΦ(t) + φ(t)), t = h/σ: the flanks may close below the "
+                                "mean planes, so the asperities take the whole load as the film vanishes) or "
+                                "separation (the film is h ≥ 0: the asperity pressure never exceeds its value at "
+                                "h = 0; femgear's split before this option)")
     eta_beta_sigma: Pos = Field(0.04, le=1.0, description="Greenwood–Tripp ηβσ (asperity density × radius × σ) [-]")
     sigma_over_beta: Pos = Field(
         3e-3, le=1.0, description="σ/β, roughness over the asperity tip radius (typical 1e-3…1e-2) [-]")

@@ -1,7 +1,8 @@
 """Gear friction of the FZG A test gear over load stages KS 5–12: femgear's μ̄ beside ISO/TS 6336-20's μ_mC and
 the FZG power-loss fit of Schlenk with Fernandes's measured lubricant factor (issue 38, item 2).
 
-    PYTHONPATH=$PWD python studies/validation/fzg_friction.py [--coarse] [--gt=ηβσ,σ/β]
+    PYTHONPATH=$PWD python studies/validation/fzg_friction.py [--coarse] [--gt=ηβσ,σ/β] [--contact=LAW] [--film=FILM]
+        [--state=run-in] [--oil=NAME]
 
 The pair: FZG A (ISO 14635-1: m 4.5 mm, z 16/24, a 91.5 mm, x 0.8532/−0.5, b 20 mm), bound directly as the
 rating's FZG A pair (:func:`femgear.physics.rating.scuffing.fzg_a_pair`: tip diameters from x and a_w,
@@ -11,8 +12,10 @@ the pitch circle, 90 °C dip-lubricated, the library's mineral ISO VG 100 (``oil
 FVA 3-like oil), ground flanks R_a 0.35 µm (the test gear's, as ISO/TS 6336-20 evaluates it), load stage torques
 of ISO 14635-1.
 
-femgear (``formula`` level, Greenwood–Tripp mixed lubrication with the scene's default asperity statistics
-ηβσ 0.04, σ/β 3e-3, μ_b 0.1): the flanks' bulk temperature is the oil's plus femgear's own estimate, the fixed
+femgear (``formula`` level, the load sharing of :mod:`femgear.physics.lubrication.mixed`, by default Greenwood–Tripp
+asperities, the fluid film the mean gap, the scene's default asperity statistics ηβσ 0.04, σ/β 3e-3, μ_b 0.1;
+``--contact``, ``--film``, ``--gt`` and ``--state`` set ``roughness.contact``, ``roughness.fluid_film``, the
+statistics and ``roughness.state``, ``--oil`` the library oil, e.g. ``fva3a``): the flanks' bulk temperature is the oil's plus femgear's own estimate, the fixed
 point ϑ_M = ϑ_oil + 0.7 · mean ΔT (the ISO/TS 6336-21 integral-temperature rule femgear's coupling loop uses,
 ``thermal.bulk_fraction``), fed back as ``thermal.flank_temperature_rise``; μ̄ is the constant μ with femgear's
 mesh loss (Ohlendorf's H_V, ``power_loss.equivalent_mu``), the quantity a power-loss measurement gives.
@@ -43,18 +46,20 @@ X_L_MINERAL = 0.846          #: the GEARpie library's mineral-oil lubricant fact
 BULK_FRACTION = 0.7          #: ISO/TS 6336-21 C1, femgear's thermal.bulk_fraction default
 
 
-def setup(gt: tuple[float, float] | None = None) -> list[str]:
+def setup(gt: tuple[float, float] | None = None, contact: str | None = None, film: str | None = None,
+          state: str | None = None, oil: str = "mineral-vg100") -> list[str]:
     """The scene overrides shared by every stage (the stage sets the torque)."""
     from femgear.physics.rating.scuffing import fzg_a_pair
 
     pair = fzg_a_pair()
     rpm = 8.3 / (2 * math.pi * pair.rw1) * 60
     out = ['meta.name="fzg_a"', "pair.face_width=0.020", "pinion.profile_shift=0.8532", "gear.profile_shift=-0.5",
-           f"operating.speed_rpm={rpm!r}", "operating.ambient_temperature=363.15", 'oil.name="mineral-vg100"',
+           f"operating.speed_rpm={rpm!r}", "operating.ambient_temperature=363.15", f'oil.name="{oil}"',
            "oil.reference_temperature=363.15", f"roughness.ra=[{RA!r}, {RA!r}]", 'physics.lubrication="formula"',
            "numerics.path_points=41"]
     if gt is not None:
         out += [f"roughness.eta_beta_sigma={gt[0]!r}", f"roughness.sigma_over_beta={gt[1]!r}"]
+    out += [f'roughness.{k}="{v}"' for k, v in (("contact", contact), ("fluid_film", film), ("state", state)) if v]
     return out
 
 
@@ -89,6 +94,25 @@ def bulk_rise(overrides: list[str], torque: float, tol: float = 0.05) -> float:
     raise RuntimeError(f"bulk temperature did not settle at T1 = {torque} N m (last {rise:.2f} K)")
 
 
+def asperity_share(case, rise: float) -> float:
+    """The path mean of the asperity load share W_C/W of the formula level's split at the bulk temperature [-]."""
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import bulk_temperature, line_friction
+    from femgear.physics.lubrication.mixed import jgp_split
+    from femgear.physics.lubrication.traction import thermal_central_film
+
+    lf, k = line_friction(case), case.path
+    if lf.roughness is None:
+        return 0.0
+    w, T = contact_pass(case).line_load, bulk_temperature(case, rise)
+    m = w > 0
+
+    def film(wf, Ef):
+        return thermal_central_film(wf, k.R[m], k.ue[m], np.abs(k.srr[m]), T, lf.oil, Ef, lf.solids)[0]
+
+    return float(np.mean(jgp_split(w[m], k.R[m], film, lf.E_red, lf.roughness).asperity_fraction))
+
+
 def schlenk_mu(case) -> float:
     """μ_mz of Schlenk with the mineral X_L of Fernandes (units of the fit: N/mm, m/s, mm, mPa s, µm)."""
     pair, op = case.pair, case.operating
@@ -118,32 +142,47 @@ def stage(overrides: list[str], ks: int) -> dict:
             "mu_mz_schlenk": sch, "ratio_iso": mu / iso, "ratio_schlenk": mu / sch,
             "max_contact_temperature": r.own.max_temperature, "iso_max_contact_temperature":
                 r.scuffing.max_contact_temperature, "iso_integral_temperature": r.scuffing.theta_int,
-            "power_loss": f.power_loss.mean_loss, "iso_power_loss": f.power_loss_iso.mean_loss}
+            "power_loss": f.power_loss.mean_loss, "iso_power_loss": f.power_loss_iso.mean_loss,
+            "asperity_share": asperity_share(case, rise)}
 
 
-def run(coarse: bool = False, gt: tuple[float, float] | None = None) -> dict:
+def run(coarse: bool = False, gt: tuple[float, float] | None = None, contact: str | None = None,
+        film: str | None = None, state: str | None = None, oil: str = "mineral-vg100") -> dict:
     logging.getLogger("femgear").setLevel(logging.ERROR)
-    overrides = setup(gt)
+    overrides = setup(gt, contact, film, state, oil)
     if coarse:
         overrides = [*overrides, "numerics.path_points=21"]
     stages = (5, 9, 12) if coarse else STAGES
-    return {"rows": [stage(overrides, ks) for ks in stages], "coarse": coarse, "gt": gt, "ra": RA}
+    rows = [stage(overrides, ks) for ks in stages]
+    mu, iso, ratio = (np.array([r[k] for r in rows]) for k in ("mu_mean", "mu_mC_iso", "ratio_iso"))
+    return {"rows": rows, "coarse": coarse, "gt": gt, "contact": contact, "film": film, "state": state, "oil": oil,
+            "ra": RA,
+            "trend": {"mu_last_over_first": float(mu[-1] / mu[0]), "iso_last_over_first": float(iso[-1] / iso[0]),
+                      "ratio_min": float(ratio.min()), "ratio_max": float(ratio.max())}}
 
 
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--coarse", action="store_true")
-    p.add_argument("--gt", default=None, help="Greenwood–Tripp ηβσ,σ/β (default: the scene's 0.04,3e-3)")
+    p.add_argument("--gt", default=None, help="asperity statistics ηβσ,σ/β (default: the scene's 0.04,3e-3)")
+    p.add_argument("--contact", default=None, help="roughness.contact (default greenwood-tripp)")
+    p.add_argument("--film", default=None, help="roughness.fluid_film (default mean-gap)")
+    p.add_argument("--state", default=None, help="roughness.state (default new)")
+    p.add_argument("--oil", default="mineral-vg100", help="the library oil (default mineral-vg100)")
     args = p.parse_args(argv)
     gt = tuple(float(x) for x in args.gt.split(",")) if args.gt else None
-    res = run(args.coarse, gt)
+    res = run(args.coarse, gt, args.contact, args.film, args.state, args.oil)
     print("KS  T1[Nm]  pH[GPa]  dT_M[K]  λ_min  λ_GF(ISO)  μ̄ smooth  μ̄ femgear  μ_mC ISO  μ_mz Schlenk  "
-          "μ̄/μ_mC  μ̄/μ_mz  θmax[°C] θB,ISO[°C]")
+          "μ̄/μ_mC  μ̄/μ_mz  θmax[°C] θB,ISO[°C]  W_C/W")
     for r in res["rows"]:
         print(f"{r['stage']:2d} {r['pinion_torque']:7.1f} {r['max_hertz_pressure'] / 1e9:7.2f} {r['bulk_rise']:7.1f} "
               f"{r['lambda_min']:6.3f} {r['lambda_GFmin_iso']:9.3f} {r['mu_mean_smooth']:9.4f} {r['mu_mean']:10.4f} "
               f"{r['mu_mC_iso']:9.4f} {r['mu_mz_schlenk']:12.4f} {r['ratio_iso']:8.2f} {r['ratio_schlenk']:7.2f} "
-              f"{r['max_contact_temperature'] - 273.15:8.0f} {r['iso_max_contact_temperature'] - 273.15:10.0f}")
+              f"{r['max_contact_temperature'] - 273.15:8.0f} {r['iso_max_contact_temperature'] - 273.15:10.0f}"
+              f"  {r['asperity_share']:5.3f}")
+    t = res["trend"]
+    print(f"μ̄(KS {res['rows'][-1]['stage']})/μ̄(KS {res['rows'][0]['stage']}) = {t['mu_last_over_first']:.2f} "
+          f"(ISO μ_mC: {t['iso_last_over_first']:.2f}); μ̄/μ_mC {t['ratio_min']:.2f}…{t['ratio_max']:.2f}")
     out = ROOT / "out"
     out.mkdir(exist_ok=True)
     (out / "fzg_friction.json").write_text(json.dumps(res, indent=1))

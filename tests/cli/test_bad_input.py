@@ -58,6 +58,12 @@ INPUT_ERRORS = [
     (["info", BASE, "--set", "roughness.ra=[0.4, 0.4]"], "roughness.ra"),
     (["info", BASE, "--set", "roughness.ra=[0.4e-6, 0.4e-6]", "--set", "roughness.rq=[0.2e-6, 0.2e-6]"],
      "roughness.rq"),
+    (["info", BASE, "--set", 'roughness.state="worn"'], "roughness.state"),
+    (["info", BASE, "--set", "roughness.run_in_factor=0.7"], "roughness.run_in_factor"),
+    (["info", BASE, "--set", 'roughness.state="run-in"', "--set", "roughness.run_in_factor=1.4"],
+     "roughness.run_in_factor"),
+    (["info", BASE, "--set", 'roughness.contact="hertz"'], "roughness.contact"),
+    (["info", BASE, "--set", 'roughness.fluid_film="gap"'], "roughness.fluid_film"),
     # the cases of issue 17
     (["info", BASE, "--set", "operating.torque=inf"], "operating.torque"),
     (["info", BASE, "--set", "pair.normal_module=inf"], "pair.normal_module"),

@@ -46,6 +46,19 @@ def test_the_viscosity_goes_through_its_data_sheet_points_and_alpha_through_the_
     assert pag.viscosity(333.15) == pytest.approx(0.0625, rel=0.05)
 
 
+def test_fva3a_holds_its_measured_data():
+    """Manjunath, Fauconnier, Ost & De Baets, Machines 11 (2023) 801, Table 3 (FVA 3A, measured): ν40 90.02, ν100
+    10.41 mm²/s, VI 97; α 21.6 / 15.8 GPa⁻¹ at 25 / 80 °C, which one Roelands z0 carries within 4 %."""
+    from femgear.physics.lubrication.library import FVA3A_ALPHA
+
+    fva = library_oil("fva3a")
+    assert fva.kinematic_viscosity(313.15) == pytest.approx(90.02e-6, rel=1e-9)
+    assert fva.kinematic_viscosity(373.15) == pytest.approx(10.41e-6, rel=1e-9)
+    for T, alpha in FVA3A_ALPHA:
+        assert oil_table(fva, T)["pressure_viscosity"] == pytest.approx(alpha, rel=0.04)
+    assert fva.unsourced() == ("traction",)
+
+
 def test_a_named_oil_fills_every_key_at_the_supply_temperature(baseline_path, tmp_path):
     scene = load_scene(_strip_oil(baseline_path, tmp_path))
     oil, T = scene.oil, scene.operating.ambient_temperature

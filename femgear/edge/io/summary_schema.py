@@ -125,7 +125,8 @@ SECTIONS: dict[str, Section] = {
         **_keys("oil", LIST, "unsourced")}),
     "roughness": Section({
         **_keys("roughness", PAIR, "ra rq"), **_keys("roughness", NUMBER, "sigma"),
-        **_keys("roughness", TEXT, "model source"), **_keys("roughness", TEXT, "finishing", optional=True)}),
+        **_keys("roughness", TEXT, "model source state contact fluid_film"), **_keys("roughness", TEXT, "finishing", optional=True),
+        **_keys("roughness", NUMBER, "run_in_factor")}),
     "inlet_heating": Section({
         **_keys("inlet_heating.pitch", NUMBER, "thermal_loading phi_murch_wilson phi_gupta position"),
         **_keys("inlet_heating.max", NUMBER, "thermal_loading phi_murch_wilson phi_gupta position")}),

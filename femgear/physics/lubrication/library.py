@@ -38,6 +38,12 @@ GEARPIE_MINERAL_DENSITY = f"ρ15 902 kg/m³, ε 5.8e-4 1/K of mineral oils in th
 IMECHE_Z = ("Roelands z0 = 0.67 from the Tribology Handbook (IMechE), Table 25, paraffinic oils "
             "(α at 30/60/100 °C)")
 CRAGOE = "Cragoe, US Bureau of Standards Misc. Publ. 97 (1929): c_p and k of petroleum oils from ρ15"
+MANJUNATH = ("Manjunath, Fauconnier, Ost & De Baets, Machines 11 (2023) 801 (open access), Table 3 'Oil FVA 3A "
+             "properties', measured")
+#: FVA 3A's pressure–viscosity coefficients of Manjunath et al.'s Table 3 [1/Pa] at 25 and 80 °C ("at 200 MPa";
+#: the table prints 2.16 and 1.58 with the unit "× 10^3 bar⁻¹" as the stored text reads it, whose only physical
+#: reading is × 10⁻³ bar⁻¹ = 21.6 and 15.8 GPa⁻¹)
+FVA3A_ALPHA = ((298.15, 2.16e-8), (353.15, 1.58e-8))
 
 
 @dataclass(frozen=True)
@@ -98,6 +104,17 @@ LIBRARY: dict[str, LibraryOil] = {o.name: o for o in [
              "mineral-vg100 with the Eyring stress of Lohner et al. 2016", eyring_stress=6.0e6,
              traction="Lohner, Ziegltrum, Stemplinger, Stahl, Adv. Tribol. 2016, 6507203: Eyring stress τc = 6 MPa "
                       "of MIN100 (no limiting shear stress)"),
+    LibraryOil(
+        name="fva3a", base="mineral",
+        description="FVA reference oil 3A, a paraffin-based solvent raffinate (VI 97), as Manjunath et al. 2023 "
+                    "measured it",
+        points=((313.15, 90.02e-6), (373.15, 10.41e-6)), rho15=884.1, expansion=5.8e-4, z0=0.546,
+        sources={"viscosity": f"{MANJUNATH}: ν40 90.02, ν100 10.41 mm²/s (VI 97)",
+                 "density": f"{MANJUNATH}: ρ 884.1 kg/m³ (its temperature not stated; taken as ρ15); ε 5.8e-4 1/K "
+                            f"of mineral oils in the {GEARPIE}",
+                 "pressure_viscosity": f"{MANJUNATH}: α 21.6 / 15.8 GPa⁻¹ at 25 / 80 °C (2.16 / 1.58e-3 1/bar): "
+                                       "Roelands z0 = 0.546, the mean of 0.529 and 0.564 at the two temperatures",
+                 "thermal": CRAGOE, "traction": None}),
     LibraryOil(
         name="pao-vg100", base="pao", description="polyalphaolefin gear oil, ISO VG 100 (VI ≈ 150)",
         points=((313.15, 99.4e-6), (373.15, 14.46e-6)), rho15=859.0, expansion=5.5e-4, z0=0.67,

@@ -1,30 +1,40 @@
-"""Mixed lubrication of rough line contacts: Greenwood–Tripp asperities and the JGP load split.
+"""Mixed lubrication of rough line contacts: the load-sharing concept with statistical asperity contact.
 
-Rough surfaces (composite roughness σ = √(σ₁² + σ₂²), Gaussian heights) touch through the
-film where the film parameter λ = h/σ is small.  Greenwood & Tripp (Proc. IMechE 185:625,
-1970) give the mean asperity pressure at a mean separation h
+Rough surfaces (composite roughness σ = √(σ₁² + σ₂²), Gaussian heights) touch through the film where the film
+parameter λ = h/σ is small.  The load is shared after Johnson, Greenwood & Poon (Wear 19:91, 1972), as Gelinck &
+Schipper (Tribol. Int. 33:175, 2000) use it for Stribeck curves of line contacts and Akbarzadeh & Khonsari
+(J. Tribol. 130:021503, 2008) for spur gears: W = W_H + W_C, the fluid carrying W_H = W/γ₁ as a smooth EHL contact
+of modulus E'/γ₁, the asperities W_C = W/γ₂ over the Hertz width 2b of the whole load (1/γ₁ + 1/γ₂ = 1), both
+at one nominal separation h of the surfaces' mean planes, solved together; the friction is
 
-    p_a = K E* F_5/2(h/σ),    K = (16√2/15) π (ηβσ)² √(σ/β),    E* = E'/2,
+    μ = (μ_b W_C + μ_EHL W_H) / W
 
-with η the asperity density, β the asperity tip radius and
+(μ_b the boundary coefficient ``friction.boundary_coefficient``, μ_EHL the thermal Eyring traction of the fluid
+part), and the asperities' heat adds Blok's flash temperature to the contact temperature.
 
-    F_n(t) = (2π)^−½ ∫_t^∞ (s − t)ⁿ e^(−s²/2) ds
+The asperity pressure at the separation h (t = h/σ, negative where the mean planes interpenetrate):
 
-(closed form of F_5/2 with modified Bessel functions K_ν, F_2 with erfc).  The load is
-shared after Johnson, Greenwood & Poon (Wear 19:91, 1972): the fluid carries W/γ₁ as a
-smooth EHL contact with modulus E'/γ₁, the asperities W/γ₂ = W (1 − 1/γ₁) as the
-Greenwood–Tripp pressure over the Hertz width 2b of the whole load; γ₁ is chosen so that
-both agree at the central film of the fluid part.  Friction: the fluid traction of the
-fluid part plus μ_b times the asperity load (μ_b the boundary friction coefficient,
-``friction.boundary_coefficient``), whose heat adds Blok's flash temperature to the contact
-temperature.  λ > 3: full film (γ₁ → 1); λ ≲ 1: a share of the load on the asperities, μ rising
-towards μ_b.
+- ``"greenwood-tripp"`` (Greenwood & Tripp, Proc. IMechE 185:625, 1970; Akbarzadeh & Khonsari's choice)
+  p_C = K E* F_5/2(t),  K = (16√2/15) π (ηβσ)² √(σ/β),  E* = E'/2;
+- ``"greenwood-williamson"`` (Greenwood & Williamson, Proc. R. Soc. A 295:300, 1966; Gelinck & Schipper's choice)
+  p_C = (4/3) E* ηβσ √(σ/β) F_3/2(t),
+
+with η the asperity density, β the asperity tip radius and F_n(t) = (2π)^−½ ∫_t^∞ (s − t)ⁿ e^(−s²/2) ds, in closed
+form Γ(n+1) (2π)^−½ e^(−t²/4) D_−(n+1)(t) with the parabolic cylinder function D (any t, any n).
+
+The fluid's film at the separation h (``fluid_film``):
+
+- ``"mean-gap"`` (default): the mean gap between the rough surfaces, h_T = σ (t Φ(t) + φ(t)) with the standard
+  normal Φ, φ (Patir & Cheng, J. Lubr. Technol. 100:12, 1978: the average gap of Gaussian heights), positive at any
+  separation, so the surfaces may close below the mean planes: the fluid film tends to 0 only as the asperities
+  take the whole load (the boundary limit μ → μ_b);
+- ``"separation"``: the film is the separation itself (h ≥ 0), the split femgear had before: the asperity
+  pressure cannot exceed its value at h = 0, 0.617 K E* (30 MPa for the default statistics), so at gear pressures
+  the asperities never take more than a few per cent of the load, whatever the film.
 
 The share depends strongly on the asperity statistics ηβσ and σ/β (``roughness.eta_beta_sigma``,
-``roughness.sigma_over_beta``): at h = 0 the Greenwood–Tripp pressure is K E* F_5/2(0) = 0.617 K E*,
-30 MPa for the defaults (0.04, 3e-3; K = 4.2e-4) but 0.58 GPa for (0.1, 0.03; K = 8.2e-3): with the defaults a
-gear contact at 1–2 GPa stays almost all fluid at any λ (docs/models/lubrication.md, "Mixed
-lubrication on gears").
+``roughness.sigma_over_beta``; defaults 0.04, 3e-3: K = 4.2e-4); see docs/models/lubrication.md, "Mixed lubrication
+on gears".
 """
 
 from __future__ import annotations
@@ -33,11 +43,16 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import integrate, special
+from scipy import special
 
 K_GT = 16.0 * math.sqrt(2.0) / 15.0 * math.pi
 #: R_a of the flank by finishing process [m] (typical values, docs/rating.md; the ratings' default is ground)
 FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
+#: the asperity contact laws and the fluid films of the load sharing
+CONTACT_LAWS = ("greenwood-tripp", "greenwood-williamson")
+FLUID_FILMS = ("mean-gap", "separation")
+#: the bracket of the nominal separation t = h/σ searched by the split [-]: F_5/2(−40) = 1e4, F_n(60) underflows to 0
+T_BRACKET = (-40.0, 60.0)
 
 
 def composite_sigma(ra1: float, ra2: float) -> float:
@@ -47,77 +62,113 @@ def composite_sigma(ra1: float, ra2: float) -> float:
 
 
 def gt_function(n: float, t: np.ndarray | float) -> np.ndarray:
-    """F_n(t) = (2π)^−½ ∫_t^∞ (s − t)ⁿ e^(−s²/2) ds for n = 2 or 5/2 (closed forms, vectorised; for n = 5/2 below
-    t = 0.05, where the Bessel form loses precision, and for any other n: quadrature)."""
+    """F_n(t) = (2π)^−½ ∫_t^∞ (s − t)ⁿ e^(−s²/2) ds [-] for any n > −1 and any t (vectorised), by the parabolic
+    cylinder function: ∫_0^∞ uⁿ e^(−u²/2 − tu) du = Γ(n+1) e^(t²/4) D_−(n+1)(t) (Abramowitz & Stegun 19.5.3)."""
     t = np.atleast_1d(np.asarray(t, dtype=float))
-    if n == 2:
-        return 0.5 * (t**2 + 1) * special.erfc(t / math.sqrt(2)) - t * np.exp(-t**2 / 2) / math.sqrt(2 * math.pi)
-    out = np.empty_like(t)
-    closed = (t >= 0.05) if n == 2.5 else np.zeros(t.shape, bool)
-    if np.any(closed):
-        tc = t[closed]
-        x = tc**2 / 4
-        out[closed] = (tc**1.5 * np.exp(-x) * ((2 * tc**2 + 3) * special.kv(0.75, x) - (2 * tc**2 + 5) * special.kv(0.25, x))
-                       / (8 * math.sqrt(math.pi)))
-    for i in zip(*np.nonzero(~closed)):
-        ti = t[i]
-        out[i] = integrate.quad(lambda s: (s - ti) ** n * math.exp(-s * s / 2), ti, np.inf)[0] / math.sqrt(2 * math.pi)
-    return out
+    d, _ = special.pbdv(np.full(t.shape, -n - 1.0), t)
+    return special.gamma(n + 1) / math.sqrt(2 * math.pi) * np.exp(-t * t / 4) * d
+
+
+def mean_gap(t: np.ndarray | float) -> np.ndarray:
+    """Mean gap h_T/σ = t Φ(t) + φ(t) [-] between rough surfaces of Gaussian composite heights at the nominal
+    separation t = h/σ of their mean planes (Patir & Cheng 1978): → t for t ≫ 1, → 0 for t → −∞, φ(0) at contact."""
+    t = np.asarray(t, dtype=float)
+    return t * special.ndtr(t) + np.exp(-t * t / 2) / math.sqrt(2 * math.pi)
 
 
 @dataclass(frozen=True)
 class Roughness:
-    """Composite roughness of the two flanks and its asperity statistics."""
+    """Composite roughness of the two flanks, its asperity statistics and the load-sharing laws."""
 
     sigma: float                    #: composite Rq √(σ₁² + σ₂²) [m]
     eta_beta_sigma: float = 0.04    #: ηβσ [-] (typical 0.03–0.05)
     sigma_over_beta: float = 3e-3   #: σ/β [-] (typical 1e-3…1e-2; the geometric middle)
+    contact: str = "greenwood-tripp"    #: asperity contact law, one of :data:`CONTACT_LAWS`
+    fluid_film: str = "mean-gap"        #: the fluid film at a separation, one of :data:`FLUID_FILMS`
+
+    def __post_init__(self) -> None:
+        if self.contact not in CONTACT_LAWS:
+            raise ValueError(f"asperity contact law must be one of {CONTACT_LAWS} (got {self.contact!r})")
+        if self.fluid_film not in FLUID_FILMS:
+            raise ValueError(f"fluid film must be one of {FLUID_FILMS} (got {self.fluid_film!r})")
 
     @property
     def K(self) -> float:
+        """Greenwood–Tripp K = (16√2/15) π (ηβσ)² √(σ/β) [-]."""
         return K_GT * self.eta_beta_sigma**2 * math.sqrt(self.sigma_over_beta)
 
     def asperity_pressure(self, h, E_red: float) -> np.ndarray:
-        """Mean asperity pressure p_a [Pa] at the mean separation h [m] (E_red = E')."""
-        return self.K * 0.5 * E_red * gt_function(2.5, np.maximum(np.asarray(h, dtype=float), 0.0) / self.sigma)
+        """Mean asperity pressure p_C [Pa] at the nominal separation h [m] of the mean planes (negative:
+        interpenetrating; E_red = E' = 2E*)."""
+        t = np.asarray(h, dtype=float) / self.sigma
+        if self.contact == "greenwood-tripp":
+            return self.K * 0.5 * E_red * gt_function(2.5, t)
+        return (4 / 3) * 0.5 * E_red * self.eta_beta_sigma * math.sqrt(self.sigma_over_beta) * gt_function(1.5, t)
+
+    def fluid_gap(self, h) -> np.ndarray:
+        """The fluid's film [m] at the nominal separation h [m] (``fluid_film``: the mean gap or h itself)."""
+        h = np.asarray(h, dtype=float)
+        return self.sigma * mean_gap(h / self.sigma) if self.fluid_film == "mean-gap" else h
 
 
 @dataclass(frozen=True)
 class LoadSplit:
-    """The JGP split at each contact."""
+    """The load sharing at each contact."""
 
-    gamma1: np.ndarray          #: fluid load = W/γ₁
-    asperity_fraction: np.ndarray   #: W_a / W = 1 − 1/γ₁
+    gamma1: np.ndarray          #: fluid load W_H = W/γ₁ [-]
+    asperity_fraction: np.ndarray   #: W_C / W = 1/γ₂ = 1 − 1/γ₁ [-]
     film: np.ndarray            #: central film of the fluid part [m]
-    film_parameter: np.ndarray  #: λ = h/σ
+    film_parameter: np.ndarray  #: λ = h_film/σ [-]
+    separation: np.ndarray      #: nominal separation of the mean planes over σ, h/σ [-]
 
 
-def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 48) -> LoadSplit:
-    """γ₁ per contact with p_a(h(W/γ₁, E'/γ₁)) 2b = W (1 − 1/γ₁).
+def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 52) -> LoadSplit:
+    """The load sharing W = W_H + W_C per contact, solved for the nominal separation h.
 
     ``film(w, E_red)`` returns the central film [m] of smooth line contacts of loads per length w [N/m] and
-    reduced moduli E_red (arrays of the contacts' shape), their other parameters bound by the caller.  The
-    excess p_a 2b/W − (1 − 1/γ₁) grows monotonically with 1/γ₁ ∈ (0, 1], so all contacts are solved at once
-    by bisection on [1e-6, 1] (``bisections`` halvings: 1/γ₁ to 2^−48 ≈ 4e-15).
+    reduced moduli E_red (arrays of the contacts' shape), their other parameters bound by the caller.  At a
+    separation h the asperities carry W_C(h) = p_C(h) 2b (b the Hertz half-width of the whole load), the fluid
+    W_H = W − W_C with E' W_H/W, and the split holds where the fluid's film film(W_H, E' W_H/W) equals its gap at h
+    (:meth:`Roughness.fluid_gap`).  The mismatch film − gap falls monotonically with h (W_C falls, so the fluid
+    carries more at a stiffer E' W_H/W and its film thins, while the gap grows), so all contacts are solved at once
+    by bisection in t = h/σ on :data:`T_BRACKET` (``bisections`` halvings: 100/2^52 ≈ 2e-14); the side kept has
+    W_C < W, so the fluid always keeps a positive share.  A contact whose smooth film exceeds the gap at the top of
+    the bracket is full film (γ₁ = 1, W_C = 0; its ``separation`` is then the film over σ).  A film that is not
+    finite at the solution raises :class:`~femgear.errors.ConvergenceError`.
     """
     w, R = np.broadcast_arrays(np.atleast_1d(np.asarray(w, float)), np.atleast_1d(np.asarray(R, float)))
     w, R = w.astype(float), R.astype(float)
     b = np.sqrt(8 * w * R / (math.pi * E_red))
+    sigma = roughness.sigma
 
-    def excess(inv_g: np.ndarray) -> np.ndarray:      # asperity load − its share, in units of W
-        h = np.reshape(film(w * inv_g, E_red * inv_g), w.shape)
-        return np.reshape(roughness.asperity_pressure(h, E_red), w.shape) * 2 * b / w - (1 - inv_g)
+    def shares(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(W_C/W, fluid film [m]) at the separations t σ (film +inf where the asperities carry it all)."""
+        frac = np.reshape(roughness.asperity_pressure(t * sigma, E_red), w.shape) * 2 * b / w
+        inv = np.clip(1.0 - frac, 1e-12, 1.0)
+        with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+            h = np.reshape(film(w * inv, E_red * inv), w.shape)
+        return frac, np.where(frac < 1.0, h, np.inf)
 
-    mixed = excess(np.ones(w.shape)) > 0.0            # elsewhere full film at the whole load: 1/γ₁ = 1
-    lo, hi = np.full(w.shape, 1e-6), np.ones(w.shape)
-    for _ in range(bisections if np.any(mixed) else 0):
+    def mismatch(t: np.ndarray) -> np.ndarray:
+        return shares(t)[1] - np.reshape(roughness.fluid_gap(t * sigma), w.shape)
+
+    lo, hi = np.full(w.shape, T_BRACKET[0]), np.full(w.shape, T_BRACKET[1])
+    full = mismatch(hi) >= 0.0
+    for _ in range(bisections):
         mid = 0.5 * (lo + hi)
-        up = excess(mid) > 0
-        hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
-    inv = np.where(mixed, 0.5 * (lo + hi), 1.0)
-    h = np.reshape(film(w * inv, E_red * inv), w.shape)
-    g1 = 1.0 / inv
-    return LoadSplit(gamma1=g1, asperity_fraction=1 - 1 / g1, film=h, film_parameter=h / roughness.sigma)
+        up = mismatch(mid) > 0
+        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
+    frac, h = shares(hi)
+    frac = np.where(full, 0.0, frac)
+    h = np.where(full, np.reshape(film(w, np.full(w.shape, E_red)), w.shape), h)
+    if not np.all(np.isfinite(h)):
+        from femgear.errors import ConvergenceError
+
+        bad = ~np.isfinite(h)
+        raise ConvergenceError("jgp_split", "the fluid's film is not finite at the load sharing's solution",
+                               {"separation": hi[bad].tolist(), "asperity_fraction": frac[bad].tolist()})
+    return LoadSplit(gamma1=1.0 / (1.0 - frac), asperity_fraction=frac, film=h, film_parameter=h / sigma,
+                     separation=np.where(full, h / sigma, hi))
 
 
 def split_table(loads, R, ue, srr, T_bulk: float, oil, E_red: float, solids, roughness: Roughness
