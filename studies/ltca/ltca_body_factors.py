@@ -1,0 +1,74 @@
+"""The LTCA's mean mesh stiffness of a pair, one body or contact factor at a time.
+
+    python studies/ltca/ltca_body_factors.py [SCENE] [--set KEY=VALUE ...] [--only NAME ...]
+
+Issue 37: is the single-helical LTCA's gap to PEM and FE a discretisation of its bodies?  Beside the default (the
+``ltca`` level's bodies: ``numerics.body_level`` and ``numerics.body_elements``, five teeth on a whole ring, the
+reading depth 0.4 m_n, 16 points per contact line; unmodified flanks, 32 phases) each row changes one thing: the
+teeth of the body (7), the reading depth of the FE/half-space split (0.25 and 0.6 m_n), the points per contact line
+(32), the body level (+2).  Each changed body is built once into the disk cache (``$FEMGEAR_CACHE``; 1–3 min a
+member for the industrial stage's p2-bending bodies, ≤ 3.4 GB).  Prints one line per row and a JSON line.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+ROWS = ("default", "teeth 7", "depth 0.25", "depth 0.6", "points 32", "level +2")
+
+
+def row_model(case, name: str):
+    """The :class:`femgear.physics.ltca.analysis.LTCAModel` of row ``name`` (bodies from the disk cache)."""
+    from femgear.levels.stiffness import body_options, body_order
+    from femgear.physics.ltca.analysis import LTCAModel
+    from femgear.physics.ltca.compliance import member_compliance
+    from femgear.physics.mesh.segment import default_spec
+
+    pair, mat = case.pair, case.material
+    body = body_options(case)
+    level = case.numerics.level_of("ltca") + (2 if name == "level +2" else 0)
+    teeth = 7 if name == "teeth 7" else 5
+    depth = float(name.split()[1]) * pair.m_n if name.startswith("depth") else None
+    t0 = time.perf_counter()
+    kernels = {m: member_compliance(pair, m, default_spec(pair, m, level, n_teeth=teeth, r_bore=body["bore_radius"][m - 1],
+                                                          groove=body["groove_width"], stagger=body["stagger"]),
+                                    mat.youngs_modulus, mat.poisson_ratio, order=body_order(case.numerics.body_elements),
+                                    depth=depth)
+               for m in (1, 2)}
+    return LTCAModel(pair, mat.youngs_modulus, mat.poisson_ratio, kernels, level, time.perf_counter() - t0,
+                     body["stagger"])
+
+
+def main(argv=None) -> dict:
+    from femgear.case import build_case
+    from femgear.physics.ltca.analysis import mesh_cycle
+    from femgear.scene import load_scene
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("scene", nargs="?", default=str(ROOT / "studies" / "zoo" / "industrial.toml"))
+    ap.add_argument("--set", action="append", default=[], help="scene override KEY=VALUE (repeatable)")
+    ap.add_argument("--only", action="append", choices=ROWS, help="rows to run (repeatable; default all)")
+    args = ap.parse_args(argv)
+    case = build_case(load_scene(Path(args.scene), args.set))
+    out = {"scene": Path(args.scene).stem, "set": args.set, "rows": {}}
+    for name in args.only or ROWS:
+        model = row_model(case, name)
+        res = mesh_cycle(model, case.operating.normal_force, n_phases=32, stagger=model.stagger,
+                         n_line=32 if name == "points 32" else 16, keep_lines=False)
+        k = res.mean_stiffness()
+        out["rows"][name] = {"k_mean": k, "dofs": [int(c.ndofs) for c in model.kernels.values()],
+                             "build_seconds": model.seconds}
+        ref = out["rows"].get("default", {}).get("k_mean")
+        change = f" ({100 * (k / ref - 1):+.2f} %)" if ref and name != "default" else ""
+        print(f"{name:12s} k mean {k:.4e} N/m{change}  DOF {out['rows'][name]['dofs']}  "
+              f"bodies {model.seconds:.0f} s", flush=True)
+    print(json.dumps(out))
+    return out
+
+
+if __name__ == "__main__":
+    main()
