@@ -17,6 +17,14 @@ import json
 import time
 from pathlib import Path
 
+try:
+    from studies import _common as C
+except ImportError:
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+    from studies import _common as C
+
 ROOT = Path(__file__).resolve().parents[2]
 ROWS = ("default", "teeth 7", "depth 0.25", "depth 0.6", "points 32", "level +2")
 
@@ -43,30 +51,41 @@ def row_model(case, name: str):
                      body["stagger"])
 
 
-def main(argv=None) -> dict:
+def setup(argv=None) -> dict:
+    """The options of :func:`run` from the command line."""
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("scene", nargs="?", default=str(ROOT / "studies" / "zoo" / "industrial.toml"))
+    ap.add_argument("--set", action="append", default=[], dest="overrides", help="scene override KEY=VALUE (repeatable)")
+    ap.add_argument("--only", action="append", choices=ROWS, dest="rows", help="rows to run (repeatable; default all)")
+    return vars(ap.parse_args(argv))
+
+
+def run(coarse: bool = False, scene: str = str(ROOT / "studies" / "zoo" / "industrial.toml"), overrides=(),
+        rows=None) -> dict:
+    """Each row's mean stiffness [N/m]; ``coarse``: the default and the points-per-line rows (no new body)."""
     from femgear.case import build_case
     from femgear.physics.ltca.analysis import mesh_cycle
     from femgear.scene import load_scene
 
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("scene", nargs="?", default=str(ROOT / "studies" / "zoo" / "industrial.toml"))
-    ap.add_argument("--set", action="append", default=[], help="scene override KEY=VALUE (repeatable)")
-    ap.add_argument("--only", action="append", choices=ROWS, help="rows to run (repeatable; default all)")
-    args = ap.parse_args(argv)
-    case = build_case(load_scene(Path(args.scene), args.set))
-    out = {"scene": Path(args.scene).stem, "set": args.set, "rows": {}}
-    for name in args.only or ROWS:
+    case = build_case(load_scene(Path(scene), list(overrides)))
+    out = {"scene": Path(scene).stem, "set": list(overrides), "rows": {}}
+    for name in rows or (ROWS[::4] if coarse else ROWS):
         model = row_model(case, name)
         res = mesh_cycle(model, case.operating.normal_force, n_phases=32, stagger=model.stagger,
                          n_line=32 if name == "points 32" else 16, keep_lines=False)
-        k = res.mean_stiffness()
-        out["rows"][name] = {"k_mean": k, "dofs": [int(c.ndofs) for c in model.kernels.values()],
+        out["rows"][name] = {"k_mean": res.mean_stiffness(), "dofs": [int(c.ndofs) for c in model.kernels.values()],
                              "build_seconds": model.seconds}
-        ref = out["rows"].get("default", {}).get("k_mean")
-        change = f" ({100 * (k / ref - 1):+.2f} %)" if ref and name != "default" else ""
-        print(f"{name:12s} k mean {k:.4e} N/m{change}  DOF {out['rows'][name]['dofs']}  "
-              f"bodies {model.seconds:.0f} s", flush=True)
-    print(json.dumps(out))
+    return out
+
+
+def main(argv=None) -> dict:
+    out = run(**setup(argv))
+    ref = out["rows"].get("default", {}).get("k_mean")
+    for name, row in out["rows"].items():
+        change = f" ({100 * (row['k_mean'] / ref - 1):+.2f} %)" if ref and name != "default" else ""
+        print(f"{name:12s} k mean {row['k_mean']:.4e} N/m{change}  DOF {row['dofs']}  bodies {row['build_seconds']:.0f} s")
+    C.write_results("ltca_body_factors", out)
+    print(json.dumps(C.jsonable(out)))
     return out
 
 

@@ -41,6 +41,14 @@ from pathlib import Path
 
 import numpy as np
 
+try:
+    from studies import _common as C
+except ImportError:
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+    from studies import _common as C
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -116,48 +124,65 @@ NAMES = {"direct": "slices, at the surface (the Hertz pressure itself)",
          "ltca_own_tooth": "ltca without the tooth-to-tooth kernels"}
 
 
-def main(argv=None) -> dict:
-    from femgear.case import build_case
-    from femgear.levels import stiffness as levels
-    from femgear.levels.stiffness import body_options
-    from femgear.scene import load_scene
-
+def setup(argv=None) -> dict:
+    """The options of :func:`run` from the command line."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("scene", nargs="?", default=str(ROOT / "studies" / "zoo" / "industrial.toml"))
-    ap.add_argument("--set", action="append", default=[], help="scene override KEY=VALUE (repeatable)")
+    ap.add_argument("--set", action="append", default=[], dest="overrides", help="scene override KEY=VALUE (repeatable)")
     ap.add_argument("--n-fe", type=int, default=9, help="path positions of the slice reference")
     ap.add_argument("--phases", type=int, default=16, help="transverse phases of the coupled reference (0: none)")
     ap.add_argument("--level", type=int, default=1, help="element size m_n/(3 + level) on the teeth")
     ap.add_argument("--contact-elements", type=float, default=4.0, help="elements across the Hertz half-width")
     ap.add_argument("--ltca", action="store_true", help="the LTCA's means too (its bodies, disk-cached)")
-    args = ap.parse_args(argv)
-    case = build_case(load_scene(Path(args.scene), args.set))
+    ap.add_argument("--coarse", action="store_true", help="5 slice positions, 4 phases")
+    return vars(ap.parse_args(argv))
+
+
+def run(coarse: bool = False, scene: str = str(ROOT / "studies" / "zoo" / "industrial.toml"), overrides=(),
+        n_fe: int = 9, phases: int = 16, level: int = 1, contact_elements: float = 4.0, ltca: bool = False) -> dict:
+    """The references (and with ``ltca`` the LTCA's means) of ``scene``; ``coarse``: 5 positions, 4 phases."""
+    from femgear.case import build_case
+    from femgear.levels import stiffness as levels
+    from femgear.levels.stiffness import body_options
+    from femgear.scene import load_scene
+
+    if coarse:
+        n_fe, phases = min(n_fe, 5), min(phases, 4)
+    case = build_case(load_scene(Path(scene), list(overrides)))
     pair, mat = case.pair, case.material
     E, nu = mat.youngs_modulus, mat.poisson_ratio
     bores = body_options(case)["bore_radius"]
-    h = pair.m_n / (3 + args.level)
+    h = pair.m_n / (3 + level)
     w = case.operating.normal_force / (pair.n_helices * pair.b * pair.eps_alpha / math.cos(pair.beta_b))
-    out = {"scene": Path(args.scene).stem, "set": args.set, "bores": list(bores), "w": w, "level": args.level,
-           "contact_elements": args.contact_elements}
-    out.update(slice_table(pair, E, nu, bores, w, args.n_fe, h, args.contact_elements))
-    print(f"{out['scene']} {' '.join(args.set)}: bores {bores[0] * 1e3:.2f} / {bores[1] * 1e3:.2f} mm, "
-          f"mean line load {w:.4g} N/m; per unit line load [m/N·m]:")
+    out = {"scene": Path(scene).stem, "set": list(overrides), "bores": list(bores), "w": w, "level": level,
+           "contact_elements": contact_elements}
+    out.update(slice_table(pair, E, nu, bores, w, n_fe, h, contact_elements))
+    if phases:
+        out.update(coupled_cycle(pair, E, nu, bores, w, phases, h, contact_elements))
+        out["coupled_slices"] = out["direct"] * out["ratio"]
+    out["pem"] = float(np.mean(levels.of(case, "pem").k_total))
+    out["fe"] = float(np.mean(levels.of(case, "fe").k_total))
+    if ltca:
+        out.update(ltca_means(case, 32))
+    return out
+
+
+def main(argv=None) -> dict:
+    out = run(**setup(argv))
+    bores = out["bores"]
+    print(f"{out['scene']} {' '.join(out['set'])}: bores {bores[0] * 1e3:.2f} / {bores[1] * 1e3:.2f} mm, "
+          f"mean line load {out['w']:.4g} N/m; per unit line load [m/N·m]:")
     for r in out["rows"]:
         print(f"  u {r['u'] * 1e3:7.3f} mm  b_H {r['b_H'] * 1e3:.4f} mm  surface {r['surface']:.4e}  section "
               f"{r['section']:.4e}  local {r['surface'] - r['section']:.4e}  Weber-Banaschek {r['weber_banaschek']:.4e}"
-              f"  Yang-Lin {out['yang_lin']:.4e}", flush=True)
-    if args.phases:
-        out.update(coupled_cycle(pair, E, nu, bores, w, args.phases, h, args.contact_elements))
-        out["coupled_slices"] = out["direct"] * out["ratio"]
+              f"  Yang-Lin {out['yang_lin']:.4e}")
+    if "ratio" in out:
         print(f"coupled / uncoupled teeth in the sections, cycle means: {out['ratio']:.4f}")
-    out["pem"] = float(np.mean(levels.of(case, "pem").k_total))
-    out["fe"] = float(np.mean(levels.of(case, "fe").k_total))
-    if args.ltca:
-        out.update(ltca_means(case, 32))
     for key, name in NAMES.items():
         if key in out:
             print(f"mean mesh stiffness, {name}: {out[key]:.4e} N/m")
-    print(json.dumps(out))
+    C.write_results("ltca_local_contact", out)
+    print(json.dumps(C.jsonable(out)))
     return out
 
 
