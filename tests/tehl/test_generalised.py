@@ -16,7 +16,6 @@ import pytest
 from scipy.integrate import quad
 
 from femgear.physics.tehl import generalised as gf
-from femgear.physics.tehl import solve_tehl_line
 from femgear.physics.tehl.energy import _mass_flux
 from femgear.physics.tehl.opposite import solve_tehl_opposite
 
@@ -107,13 +106,11 @@ def test_the_dimple_deepens_with_load_and_shallows_with_speed():
 
 
 @pytest.mark.slow
-def test_opposite_sliding_is_routed_and_mirrors_with_the_bodies():
-    """SRR > 2 through solve_tehl_line is the opposite-sliding solve; SRR < −2 (surface 2 forward) is the same
-    contact with the bodies swapped: the same film, the surfaces' temperatures and heat exchanged, μ_couette
-    reversed."""
-    ue = 0.5
-    a = solve_tehl_line(case.W, case.R, ue, 20.0, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0)
-    b = solve_tehl_line(case.W, case.R, ue, -20.0, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0)
+def test_opposite_sliding_mirrors_with_the_bodies():
+    """Surface 2 forward (v2 > 0 > v1) is the same contact with the bodies swapped: the same film, the surfaces'
+    temperatures and heat exchanged, μ_couette reversed, the layers mirrored across the film."""
+    a = solve_tehl_opposite(case.W, case.R, 5.5, -4.5, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0)
+    b = solve_tehl_opposite(case.W, case.R, -4.5, 5.5, case.T0, case.OIL, case.E_RED, case.PROPS, tau0=case.TAU0)
     assert a.hc > 0 and a.hc == pytest.approx(b.hc, rel=1e-9) and a.mu_couette == pytest.approx(-b.mu_couette)
     assert np.allclose(a.T_surface1, b.T_surface2) and a.heat["solid1"] == pytest.approx(b.heat["solid2"])
     assert np.allclose(a.T_film, b.T_film[:, ::-1])

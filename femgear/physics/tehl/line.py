@@ -264,9 +264,9 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     the isothermal solver).  ``heat=False`` switches the heat sources off.  ``estimate=False``: the thermal
     loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
     level the heaviest corner's estimated solve fixed).  ``reynolds``: "reduced" or "generalised" (module
-    docstring).  |``srr``| > 2 (the surfaces move in opposite directions) is solved by
-    :func:`femgear.physics.tehl.opposite.solve_tehl_opposite` (``level``, ``min_level``, ``x0``, ``estimate``,
-    ``heat`` and ``reynolds`` do not apply there).  Raises
+    docstring).  Surfaces moving in opposite directions (|``srr``| > 2, down to
+    zero entrainment): :func:`femgear.physics.tehl.opposite.solve_tehl_opposite`, which carries the thermal wedge
+    this reduced, single-direction solve lacks.  Raises
     :class:`ConvergenceError` with the history when the isothermal start, a Newton solve or the thermal
     loop fails (or temperatures run away beyond ``max_rise``); never returns NaN."""
     for name, v in (("w", w), ("R", R), ("ue", ue), ("T_bulk", T_bulk), ("E_red", E_red)):
@@ -274,13 +274,6 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
             raise ValueError(f"{name} must be positive and finite (got {v!r})")
     if not math.isfinite(srr):
         raise ValueError("srr must be finite")
-    if abs(srr) > 2.0:   # the surfaces move in opposite directions: the thermal wedge's solver
-        from femgear.physics.tehl.opposite import solve_tehl_opposite
-
-        return solve_tehl_opposite(w, R, ue * (1 + srr / 2), ue * (1 - srr / 2), T_bulk, oil, E_red, props,
-                                   model=model, tau0=tau0, limiting_shear=limiting_shear, tol=tol,
-                                   max_level=max_level, nz=nz, compressible=compressible, thermal_tol=thermal_tol,
-                                   relax=relax, max_iter=max_iter, max_rise=max_rise, max_step=max_step)
     case = f"tehl line w={w:.4g} R={R:.4g} ue={ue:.4g} srr={srr:.4g} T={T_bulk:.4g}"
     t0 = time.perf_counter()
     c = _Contact.of(w, R, ue, srr, T_bulk, oil, E_red, compressible)

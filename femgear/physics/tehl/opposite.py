@@ -55,9 +55,10 @@ def solve_tehl_opposite(w: float, R: float, v1: float, v2: float, T_bulk: float,
                         limiting_shear: float = 0.0, tol: float = DEFAULT_TOL, max_level: int = MAX_LEVEL,
                         nz: int = 16, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                         max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0) -> TEHLResult:
-    """Thermal EHL line contact with surface 1 moving forward at ``v1`` > 0 and surface 2 backward at ``v2``
-    < 0 (or surface 2 forward, v2 > 0 > v1: the bodies swapped), v1 + v2 ≥ 0 (entrainment u_e = (v1 + v2)/2 from 0 to below the half speed difference, where the
-    surfaces move apart; at and above it use :func:`femgear.physics.tehl.line.solve_tehl_line`): load per length
+    """Thermal EHL line contact with surface 1 moving forward at ``v1`` > 0 and surface 2 backward at ``v2`` < 0
+    (or surface 2 forward, v2 > 0 > v1: the bodies swapped), v1 + v2 ≥ 0 (entrainment u_e = (v1 + v2)/2 from 0 to
+    below the half speed difference, where the surfaces move apart; at and above it use
+    :func:`femgear.physics.tehl.line.solve_tehl_line`): load per length
     ``w`` [N/m], reduced radius ``R`` [m], bulk temperature ``T_bulk`` [K]; the other arguments as
     :func:`~femgear.physics.tehl.line.solve_tehl_line`.  The result's ``hc_isothermal`` is the isothermal film of
     the scaling contact (pure rolling at U = (v1 − v2)/2), the isothermal film at u_e = 0 being nil.  Raises
@@ -148,7 +149,8 @@ def solve_continued(w: float, R: float, u_ref: float, T_bulk: float, oil: OilLaw
 def _continue(run: _Run, c: _Contact, k: int, state, flow):
     """The thermal loop on level ``k`` along the speeds ``flow(s)``, s from 1 to 0, the step in s halved where a
     stage fails (down to :data:`MIN_STEP`); the last state."""
-    s, ds = 1.0, 0.5
+    s = s_good = 1.0
+    ds = 0.5
     good = None
     tol = run.loop["thermal_tol"]
     while True:
@@ -162,11 +164,13 @@ def _continue(run: _Run, c: _Contact, k: int, state, flow):
                 raise ConvergenceError(run.case, f"continuation stalled at the speeds "
                                        f"{run.c.speeds[0]:.4g}, {run.c.speeds[1]:.4g} m/s: "
                                        f"{exc}", run.history) from exc
-            run.history["continuation"].append({"level": k, "reason": f"speeds {run.c.speeds[0]:.4g}, {run.c.speeds[1]:.4g} m/s failed; step halved"})
-            s, ds = s + ds, 0.5 * ds
-            s -= ds
+            v1, v2 = run.c.speeds
+            run.history["continuation"].append({"level": k, "reason": f"speeds {v1:.4g}, {v2:.4g} m/s failed; "
+                                                "step halved"})
+            ds *= 0.5
+            s = max(s_good - ds, 0.0)
             continue
-        good = state
+        good, s_good = state, s
         if s <= 0.0:
             return state
         s = max(s - ds, 0.0)
