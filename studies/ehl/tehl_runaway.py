@@ -34,14 +34,20 @@ CASES = ((40.0, 0.5e9), (40.0, 2.5e9), (150.0, 2.5e9))
 R, UE = 0.02, 60.0
 
 
-def main(argv: list[str] | None = None) -> dict:
+def setup(argv: list[str] | None = None) -> argparse.Namespace:
+    """The command line ``argv`` parsed."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--json", help="write the figures to this file")
-    args = ap.parse_args(argv)
-    sys.path.insert(0, str(ROOT))
+    return ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> dict:
+    """The slide continuation of each case and Blok's flash temperatures, printed as they come."""
+    sys.path.insert(0, str(ROOT / "studies" / "benchmarks"))
+    from tehl_envelope import E_RED, _setup
+
     from femgear.physics.lubrication.flash import blok_flash_temperature
     from femgear.physics.tehl.opposite import solve_continued
-    from studies.benchmarks.tehl_envelope import E_RED, _setup
 
     oil, props = _setup("VG32")
     out: dict = {"slide": [], "blok": []}
@@ -72,6 +78,12 @@ def main(argv: list[str] | None = None) -> dict:
             out["blok"].append({"ph": ph, "mu": mu, "rise": rise, "heat": mu * w * 2.0 * UE})
             print(f"Blok at SRR 2, {ph / 1e9:.1f} GPa, mu {mu}: flash rise {rise:5.0f} K (heat "
                   f"{mu * w * 2.0 * UE / 1e6:.2f} MW/m)")
+    return out
+
+
+def main(argv: list[str] | None = None) -> dict:
+    args = setup(argv)
+    out = run(args)
     if args.json:
         Path(args.json).write_text(json.dumps(out, indent=1))
     return out
