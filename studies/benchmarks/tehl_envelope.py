@@ -14,7 +14,8 @@ m/s, 0.8 GPa); heavy wind and mill contacts (PAO VG 320 at 60 °C, 1.5–2 GPa, 
 balance error and the film's error estimate; the summary the median and largest CPU seconds of the converged
 points (targets ≤ 1 s and ≤ 5 s) and the M, L covered.
 
-Also: the isothermal (M, L) = (1000, 4.3) to 1 % (target ≤ 0.5 s), the Galerkin (FE) solver of the base tree at
+Also: opposite sliding at zero entrainment (the thermal-wedge dimple; not with ``--quick``), the isothermal
+(M, L) = (1000, 4.3) to 1 % (target ≤ 0.5 s), the Galerkin (FE) solver of the base tree at
 its own tolerance-driven grid for the same accuracy, the base tree's line TEHL at five contacts where it converges
 (its default level 5 and level 6, against this tree at its tolerance; ``--no-base`` skips both), and with ``--zoo``
 the wall time of the
@@ -185,6 +186,38 @@ print(json.dumps(out))
     return rows
 
 
+def opposite_sliding() -> list[dict]:
+    """Opposite sliding at zero entrainment (the thermal-wedge dimple, :mod:`femgear.physics.tehl.opposite`) on the
+    baseline's mid-path contact (its oil and steel, 84.3 kN/m, R 12.3 mm, 40 °C): each surface at 5 and 10 m/s, and
+    at 5 m/s under twice the load.  The dimple's depth is h_c less the smaller of the two rims' minima."""
+    from femgear.physics.contact.hertz import reduced_modulus
+    from femgear.physics.lubrication.oil import OilLaw
+    from femgear.physics.lubrication.path import solids_of
+    from femgear.physics.tehl.opposite import solve_tehl_opposite
+    from femgear.physics.tehl.solver import thermal_props
+    from femgear.scene import load_scene
+
+    sc = load_scene(ROOT / "studies" / "paper_baseline.toml")
+    oil = OilLaw.from_table(sc.oil, sc.oil_reference_temperature)
+    props = thermal_props(solids_of(sc.material, sc.oil), sc.oil.specific_heat, sc.material.conductivity)
+    E = reduced_modulus(sc.material.youngs_modulus, sc.material.poisson_ratio)
+    rows = []
+    for w, U in ((84332.0, 5.0), (84332.0, 10.0), (168664.0, 5.0)):
+        t = time.process_time()
+        try:
+            r = solve_tehl_opposite(w, 0.0123, U, -U, 313.0, oil, E, props, tau0=sc.oil.eyring_stress)
+        except Exception as exc:    # reported, not hidden
+            rows.append({"w": w, "U": U, "converged": False, "error": str(exc)[:200]})
+            continue
+        X = r.x / r.b
+        rim = min(r.h[(X < 0) & (X > -1)].min(), r.h[(X > 0) & (X < 1)].min())
+        rows.append({"w": w, "U": U, "converged": True, "hc": r.hc, "rim": rim, "depth": r.hc - rim,
+                     "pmax_ph": r.pmax / r.ph, "dT_max": r.dT_max, "mu": r.mu,
+                     "balance": abs(r.heat["balance_error"]), "estimate": max(r.error_estimate.values()),
+                     "cpu": time.process_time() - t})
+    return rows
+
+
 def zoo_cells() -> dict:
     """Wall seconds of the ``tehl`` zoo cells of the turbo pair and the baseline (--coarse), in this run."""
     out = {}
@@ -248,6 +281,16 @@ def main(argv: list[str] | None = None) -> dict:
                   f"{b5['cpu']:.2f} s (h_c {b5['hc'] / b6['hc'] - 1:+.2%}, h_min {b5['hmin'] / b6['hmin'] - 1:+.2%} "
                   f"from its level 6, {b6['cpu']:.2f} s); new - base level 6: h_c {n['hc'] / b6['hc'] - 1:+.2%}, "
                   f"h_min {n['hmin'] / b6['hmin'] - 1:+.2%}")
+    if not args.quick:
+        out["opposite"] = opposite_sliding()
+        for o in out["opposite"]:
+            if not o["converged"]:
+                print(f"opposite sliding w' {o['w']:.0f} N/m, ±{o['U']:g} m/s: FAILED: {o['error']}")
+                continue
+            print(f"opposite sliding (u_e = 0) w' {o['w']:.0f} N/m, ±{o['U']:g} m/s: h_c {1e9 * o['hc']:.0f} nm, rims "
+                  f"{1e9 * o['rim']:.0f} nm, dimple {1e9 * o['depth']:.0f} nm, p_max/p_H {o['pmax_ph']:.2f}, "
+                  f"peak rise {o['dT_max']:.0f} K, mu {o['mu']:.4f}, balance {o['balance']:.1e}, estimate "
+                  f"{100 * o['estimate']:.2f} %, {o['cpu']:.1f} s CPU")
     if args.zoo:
         out["zoo"] = zoo_cells()
         print(f"zoo tehl cells: turbo {out['zoo']['turbo']['seconds']:.1f} s, baseline "

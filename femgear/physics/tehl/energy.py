@@ -182,14 +182,14 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
     rho_f = oil.density(p_faces, T_f)
     m_tot = _mass_flux(xf, p_faces, hf, rho_f, oil.viscosity(p_faces, T_f), ue) if mass_flux is None \
         else float(mass_flux)
-    if not m_tot > 0:
+    if not math.isfinite(m_tot) or (v1 * v2 >= 0 and not m_tot > 0):   # any sign when the surfaces move apart
         raise ConvergenceError("tehl energy", "non-positive mass flux (no entrainment)")
     zeta = np.linspace(0.0, 1.0, nz + 1)
     wc = v1 * np.diff(zeta) + du * np.diff(zeta**2) / 2.0        # Couette flux / h per layer
     wp = poiseuille_weights(nz)
     phi_f = hf[:, None] * wc[None, :] + (m_tot / rho_f - ue * hf)[:, None] * wp[None, :]
     m = rho_f[:, None] * phi_f                                   # (nt+1, nz) kg/(m s): rows sum to m_tot
-    m *= (m_tot / m.sum(axis=1))[:, None]                        # exact to round-off
+    m += wp[None, :] * (m_tot - m.sum(axis=1))[:, None]          # exact to round-off (any sign of m_tot)
     phi = 0.5 * (phi_f[:-1] + phi_f[1:])
     G = np.zeros((nt, nz + 1))                                   # upward mass flux between layers
     G[:, 1:] = np.cumsum(m[:-1] - m[1:], axis=1)

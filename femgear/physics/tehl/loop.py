@@ -52,12 +52,13 @@ def anderson_step(res: np.ndarray, d_theta: list, d_res: list, beta: float) -> n
 
 def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol: float, relax: float,
                  max_step: float, max_rise: float, max_iter: int, case: str, depth: int = 5,
-                 solved: bool = True, growth: float = 1.0, history: list | None = None):
+                 solved: bool = True, growth: float = 1.0, history: list | None = None, bulk: float | None = None):
     """Returns (state, θ, thermal iterations, Newton iterations).  ``solved`` = False: the
     EHL state that ``energy`` sees is only a prediction (a prolonged coarse-grid solution),
     not yet re-solved at θ; the loop then does not stop before one ``resolve``.  ``history``: a
     list the temperature changes are appended to (the caller's record across loops); the
-    ConvergenceError of a failed loop carries the changes of this loop."""
+    ConvergenceError of a failed loop carries the changes of this loop; ``bulk``: the inlet temperature [K], which
+    the runaway's message turns into the film temperature it would pass."""
     record = history if history is not None else []
     history = []
     d_theta: list[np.ndarray] = []
@@ -86,7 +87,9 @@ def thermal_loop(energy: Callable, resolve: Callable, theta: np.ndarray, *, tol:
             previous = (theta, res)
         step = np.clip(anderson_step(res, d_theta, d_res, beta), -max_step, max_step)
         if float(np.max(np.abs(theta + step))) > max_rise:
-            raise ThermalRunaway(case, f"temperatures run away (max rise > {max_rise} K)",
+            hot = "" if bulk is None else (f": the film would pass {bulk + max_rise - 273.15:.0f} °C, beyond the flash "
+                                           "and decomposition temperatures of lubricating oils")
+            raise ThermalRunaway(case, f"temperatures run away (max rise > {max_rise} K){hot}",
                                  {"temperature_change": history})
         for attempt in range(4):
             try:

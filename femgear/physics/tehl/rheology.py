@@ -17,11 +17,20 @@ which is the paper's law referred to T0 exactly (ln η + 9.67 is a product of a 
 a temperature factor).  Barus: ln(η/η_b) = α p − β_T (T − T_b).  Density (only when the
 Dowson–Higginson law is on): ρ/ρ_b = DH(p) (1 − ε (T − T_ref))/(1 − ε (T_b − T_ref)).
 With T ≡ T_b every expression reduces bit for bit to the isothermal one (tested).
+
+The generalised Reynolds equation (:mod:`femgear.physics.tehl.generalised`) enters as two nodal factors
+frozen during a Newton solve (``state["eps_factor"]``, ``state["wedge_factor"]``, set by the thermal
+loop from the layer temperatures): the Poiseuille coefficient is the reduced one at the film-mean
+temperature times ``eps_factor`` = ε / ε_reduced, and the density of the wedge term (the only other
+use of :meth:`density` in the FD line operator) is ρ times ``wedge_factor`` = q_c / (ρ u_ref h), which
+may change sign (opposite sliding).  Their pressure dependence, which nearly cancels in the ratios, is
+lagged by one thermal iteration; the fixed point is the generalised equation's solution.  Absent, both
+are 1 and nothing changes.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -64,7 +73,28 @@ class ThermalRheology(Rheology):
     def density(self, P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         rho, drho = super().density(P)
         T = self._temperature(P)
-        if T is None or not self.compressible:
-            return rho, drho
-        f = (1.0 - self.expansion * (T - self.T_ref)) / (1.0 - self.expansion * (self.T_bulk - self.T_ref))
-        return rho * f, drho * f
+        if T is not None and self.compressible:
+            f = (1.0 - self.expansion * (T - self.T_ref)) / (1.0 - self.expansion * (self.T_bulk - self.T_ref))
+            rho, drho = rho * f, drho * f
+        w = self._factor("wedge_factor", P)
+        return (rho, drho) if w is None else (rho * w, drho * w)
+
+    def epsilon(self, P: np.ndarray, H: np.ndarray, lam_bar: float):
+        """The Poiseuille coefficient at the film-mean temperature (with the density of the film, not the wedge's),
+        times the generalised equation's ``eps_factor``."""
+        f = self._factor("eps_factor", P)
+        w = self._factor("wedge_factor", P)
+        if f is None and w is None:
+            return super().epsilon(P, H, lam_bar)
+        plain = replace(self, state={k: v for k, v in self.state.items() if k in ("node", "quad")})
+        eps, dP, dH = plain.epsilon(P, H, lam_bar)
+        return (eps, dP, dH) if f is None else (eps * f, dP * f, dH * f)
+
+    def _factor(self, key: str, P: np.ndarray):
+        """The nodal factor ``key`` of the generalised equation (None: absent, or a quadrature-point call)."""
+        if np.ndim(P) != 1:
+            return None
+        f = self.state.get(key)
+        if f is not None and np.shape(f) != np.shape(P):
+            raise ValueError(f"{key} of shape {np.shape(f)} does not match {np.shape(P)}")
+        return f
