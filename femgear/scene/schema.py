@@ -16,9 +16,7 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
 from femgear.errors import SceneError
-from femgear.levels import coupling as coupling_levels
-from femgear.levels import dynamics as dynamics_levels
-from femgear.scene.levels import check_level
+from femgear.scene.levels import CATALOGUE, LEVELS, LevelSpec, check_level
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -547,9 +545,7 @@ PerMember = Annotated[list[Pos], Field(min_length=2, max_length=2)]
 
 
 def _housing_doc() -> str:
-    from femgear.levels.housing import REGISTRY
-
-    return "the housing model: " + "; ".join(f"{k} ({v.summary})" for k, v in REGISTRY.items())
+    return "the housing model: " + "; ".join(f"{s.name} ({s.summary})" for s in CATALOGUE["housing"].levels)
 
 
 class Housing(_Frozen):
@@ -635,9 +631,7 @@ class Housing(_Frozen):
     @field_validator("model")
     @classmethod
     def _model_exists(cls, name: str) -> str:
-        from femgear.levels.housing import REGISTRY
-
-        problem = REGISTRY.problem(name)
+        problem = CATALOGUE["housing"].problem(name)
         if problem:
             raise ValueError(problem)
         return name
@@ -655,9 +649,7 @@ class Housing(_Frozen):
 
 
 def _levels_doc(submodel: str, what: str) -> str:
-    """The description of a ``[physics]`` key, listing its levels from the registry (cheapest first)."""
-    from femgear.scene.levels import LEVELS
-
+    """The description of a ``[physics]`` key, listing its levels from the catalogue (cheapest first)."""
     return f"level of the {what} sub-model, cheapest first: " + ", ".join(LEVELS[submodel])
 
 
@@ -691,10 +683,15 @@ class Physics(_Frozen):
     @classmethod
     def _coupling_needs_dynamics(cls, level: str, info: ValidationInfo) -> str:
         dynamics = info.data.get("dynamics")
-        if coupling_levels.spec(level).iterates and dynamics is not None and \
-                not dynamics_levels.spec(dynamics).is_dynamic:
+        if CATALOGUE["coupling"].spec(level).iterates and dynamics is not None and \
+                not CATALOGUE["dynamics"].spec(dynamics).is_dynamic:
             raise ValueError("bidirectional coupling needs a dynamics level (set physics.dynamics)")
         return level
+
+    def spec(self, submodel: str) -> LevelSpec:
+        """The catalogue's spec of this table's ``submodel`` level (:mod:`femgear.scene.levels`): what callers
+        branch on instead of the level's name."""
+        return CATALOGUE[submodel].spec(getattr(self, submodel))
 
 
 class Scene(_Frozen):
