@@ -112,8 +112,7 @@ def case_rating(case: Case, contact: ContactPath, tribology: Tribology, stiffnes
 
     physics = {"amplitudes": amplitudes, "cycle": None if stiffness is None else stiffness.ltca}
     try:
-        return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
-                         tribology.film, case=case, physics=physics)
+        return rate_case(case, contact, tribology, physics=physics)
     except ValueError as exc:
         logging.getLogger("femgear.physics.rating").warning("rating: not computed: %s", exc)
         return None

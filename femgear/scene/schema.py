@@ -11,7 +11,7 @@ fixed for a study; the operating point and errors change per load case.
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
@@ -417,8 +417,23 @@ class Rating(_Frozen):
     the scene's physics computes them, else by ISO 6336-1's methods (``load_factors``; a value given wins),
     accuracy grade 6; σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
     life, lubricant and roughness factors are 1 (reference conditions) unless their
-    inputs are given; Z_W = Z_X = 1.
+    inputs are given; Z_W = Z_X = 1.  The keys left unset (None) whose default the rating logs as used are
+    :data:`Rating.DEFAULTS` (:meth:`value`).
     """
+
+    #: the value of each key left unset (None) that the ratings use, named in their "defaults used" line
+    DEFAULTS: ClassVar[dict[str, Any]] = {
+        "bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5], "oil_type": "mineral",
+        "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0, "accuracy_grade": 6}
+
+    def value(self, key: str) -> Any:
+        """``key``'s value, or its default (:data:`DEFAULTS`) where the scene leaves it unset."""
+        given = getattr(self, key)
+        return self.DEFAULTS[key] if given is None else given
+
+    def defaulted(self, keys: tuple[str, ...]) -> list[str]:
+        """``rating.<key>=<default>`` for each of ``keys`` the scene leaves unset (the "defaults used" line)."""
+        return [f"rating.{k}={self.DEFAULTS[k]}" for k in keys if getattr(self, k) is None]
 
     application_factor: float = Field(1.0, ge=1, description="application factor K_A (ISO 6336-1) [-]")
     dynamic_factor: float | None = Field(
