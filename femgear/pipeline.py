@@ -38,14 +38,9 @@ from femgear.physics.contact.path import ContactPath
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.results import RunResult, Tribology
 from femgear.stages import derived_fields
-from femgear.system.coupling.loop import (
-    CouplingSetup,
-    CouplingState,
-    line_stiffness,
-    ltca_face_reference,
-    ltca_reference,
-    run_coupled,
-)
+from femgear.system.coupling.loop import run_coupled
+from femgear.system.coupling.setup import CouplingSetup, line_stiffness, ltca_face_reference, ltca_reference
+from femgear.system.coupling.state import CouplingState
 from femgear.system.coupling.thermal import ThermalUnits, roll_distances, thermal_units
 
 

@@ -46,6 +46,7 @@ from femgear.physics.tehl.inlet import inlet_figures
 from femgear.physics.tehl.path import tehl_path_results
 from femgear.physics.tehl.point_level import POINT_LEVEL
 from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
+from femgear.physics.tehl.reuse import RecordingSolver
 from femgear.physics.tehl.slices import SliceGeometry
 from femgear.physics.tehl.solver import TEHLSetup, check_envelope, tehl_line_solver, tehl_map_axes, tehl_map_solver
 
@@ -193,15 +194,14 @@ def _ehl_line_film(case: Case) -> FilmOf:
     return film
 
 
-def _reused(solve: Solver, case: Case, w: np.ndarray, T: float) -> list | None:
-    """The results of ``solve``'s latest call when it was at exactly these path inputs (else None)."""
-    last = getattr(solve, "last", None)
-    if last is None:
+def _reused(solve: Solver, case: Case, w: np.ndarray, T: float) -> tuple | None:
+    """The results of ``solve``'s latest call when it was at exactly these path inputs (else None: a solver that
+    keeps no record, or other inputs)."""
+    latest = solve.latest if isinstance(solve, RecordingSolver) else None
+    if latest is None:
         return None
     k = case.path
-    inputs = (w, k.R, k.ue, np.abs(k.srr), np.full(w.shape, T))
-    same = all(a.shape == b.shape and np.array_equal(a, b) for a, b in zip(last[0], inputs))
-    return last[1] if same else None
+    return latest.at(w, k.R, k.ue, np.abs(k.srr), np.full(w.shape, T))
 
 
 def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
