@@ -395,18 +395,20 @@ class Numerics(_Frozen):
 
     def level_of(self, body: str) -> int:
         """Resolution level of ``body`` (``"ltca"``, ``"fe3d"`` or ``"fe"``): ``body_level`` when the scene gives
-        it, else that body's default (:data:`DEFAULT_BODY_LEVELS`; the ``ltca`` bodies with p1 elements: 1)."""
+        it, else that body's default (:data:`DEFAULT_BODY_LEVELS`; with ``body_elements = "p1"``
+        :data:`P1_BODY_LEVELS`)."""
         if self.body_level is not None:
             return self.body_level
-        if body == "ltca" and self.body_elements == "p1":
-            return 1
-        return DEFAULT_BODY_LEVELS[body]
+        return (P1_BODY_LEVELS if self.body_elements == "p1" else DEFAULT_BODY_LEVELS)[body]
 
 
 #: the default resolution of each FE body (``numerics.body_level`` unset; docs/cost.md): the ltca bodies at level 0
 #: with p2-bending elements (< 2 % on the mean stiffness and the LTE peak-to-peak), the fe3d thermal bodies and
 #: the fe stiffness sections at level 1
 DEFAULT_BODY_LEVELS = {"ltca": 0, "fe3d": 1, "fe": 1}
+#: the default resolution of each FE body with ``numerics.body_elements = "p1"`` (linear tetrahedra, which only the
+#: ltca bodies take from that key): level 1 throughout
+P1_BODY_LEVELS = {"ltca": 1, "fe3d": 1, "fe": 1}
 
 
 class Rating(_Frozen):

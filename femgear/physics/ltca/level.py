@@ -1,4 +1,4 @@
-"""The ``ltca`` stiffness level: one LTCA mesh cycle for :func:`femgear.levels.stiffness.mesh_stiffness`.
+"""The ``ltca`` stiffness level: one LTCA mesh cycle for the level's factory (:mod:`femgear.levels.stiffness`).
 
 tvms wraps the cycle as a ``MeshStiffness``: ``k_left``/``k_right`` are the secant
 stiffnesses F_h/(δ − NLTE_h) of each helix along the normal line of action at the
