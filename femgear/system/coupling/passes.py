@@ -16,8 +16,8 @@ import numpy as np
 from femgear.errors import ConvergenceError, SceneError
 from femgear.levels import wear as wear_levels
 from femgear.levels.lubrication import bulk_temperature
-from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.ltca import level as ltca_level
+from femgear.physics.ltca.cycle import LTCACycle
 from femgear.physics.ltca.separation import face_deviation, path_deviation
 from femgear.physics.wear import run_wear
 from femgear.physics.wear.face import run_face_wear
