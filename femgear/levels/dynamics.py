@@ -8,24 +8,11 @@ dynamic at all (``none`` is quasi-static) and whether the helix halves are joine
 
 from __future__ import annotations
 
-from typing import Any
-
-from femgear.case import Case
 from femgear.levels.registry import Registry
 from femgear.scene.levels import DynamicsLevel
 
 REGISTRY = Registry("dynamics")
-
-
-def _spec_of(name: str):
-    def factory(case: Case | None = None, **_: Any) -> DynamicsLevel:
-        return REGISTRY.catalogue.spec(name)
-    factory.__doc__ = f"The ``{name}`` level's :class:`~femgear.scene.levels.DynamicsLevel`."
-    return factory
-
-
-for _name in REGISTRY.catalogue.available:
-    REGISTRY.register(_name)(_spec_of(_name))
+REGISTRY.register_specs()
 
 
 def model_level(name: str | None, default: str) -> DynamicsLevel:

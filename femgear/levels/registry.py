@@ -62,6 +62,13 @@ class Registry(Mapping[str, Level]):
             return factory
         return decorate
 
+    def register_specs(self) -> None:
+        """Register every available level of the catalogue with a factory that returns its own spec: the
+        sub-models whose product is what they ask of the driver (``dynamics``, ``coupling``)."""
+        for name in self.catalogue.available:
+            spec = self.catalogue.spec(name)
+            self.register(name)(lambda case=None, _spec=spec, **_: _spec)
+
     def __getitem__(self, name: str) -> Level:
         self.catalogue.spec(name)                  # an unknown or planned level raises, naming the key
         return self._levels[name]
