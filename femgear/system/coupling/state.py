@@ -31,15 +31,20 @@ def agree(a: tuple, b: tuple) -> bool:
     return True
 
 
+@document_fields
 @dataclass(frozen=True)
 class DeviatedCycle:
     """The ``ltca`` cycles one pass ran on its deviated flanks, with what they ran from: the next pass reuses them
     where it runs from the same unworn cycle on a deviation that :func:`agree` s with theirs."""
 
-    source: LTCACycle                    #: the unworn cycle they ran from (the setup's)
-    inputs: tuple                        #: (wear, ζ_T, wear face field, thermal face field), copies
-    worn: LTCACycle                      #: the cycle of the deviated flanks
-    unworn: LTCACycle                    #: the unworn cycle, with the mesh orders resolved on both
+    source: LTCACycle
+    """the unworn cycle they ran from (the setup's) [-]"""
+    inputs: tuple
+    """(wear [m], ζ_T [m], wear face field [m], thermal face field [m]) they ran on, copies [-]"""
+    worn: LTCACycle
+    """the cycle of the deviated flanks [-]"""
+    unworn: LTCACycle
+    """the unworn cycle, with the mesh orders resolved on both [-]"""
 
     def reusable(self, source: LTCACycle, inputs: tuple) -> bool:
         return self.source is source and agree(self.inputs, inputs)
