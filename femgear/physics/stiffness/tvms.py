@@ -31,7 +31,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import KW_ONLY, dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -95,9 +95,9 @@ class MeshStiffness:
     """``iso6336``: the ISO 6336-1 Method B single and mesh stiffnesses the level's constant comes from [-]"""
     fe: FESamples | None = None
     """``fe``: the FE samples of the tooth-pair stiffness that ``k_pair_per_width`` interpolates [-]"""
-    ltca: Any = None
+    ltca: LTCACycle | None = None  # noqa: F821 (a higher tier's class, named not imported: docfields resolves it)
     """``ltca``: the loaded tooth contact analysis cycle whose secant stiffnesses are ``k_left``/``k_right`` (a
-    :class:`femgear.physics.ltca.cycle.LTCACycle`, a higher tier: not imported here) [-]"""
+    :class:`femgear.physics.ltca.cycle.LTCACycle`, a higher tier: named, not imported) [-]"""
 
     @property
     def resolved_orders(self) -> int | None:
