@@ -28,8 +28,7 @@ import numpy as np
 
 from femgear.case import Case
 from femgear.case.checks import contact_warnings
-from femgear.levels import coupling as coupling_levels
-from femgear.levels import dynamics as dynamics_levels
+from femgear.levels import check_case
 from femgear.levels import housing as housing_levels
 from femgear.levels import stiffness as stiffness_levels
 from femgear.levels import wear as wear_levels
@@ -39,27 +38,26 @@ from femgear.physics.contact.path import ContactPath
 from femgear.physics.stiffness.tvms import MeshStiffness
 from femgear.results import RunResult, Tribology
 from femgear.stages import derived_fields
-from femgear.system.coupling.loop import (
-    CouplingSetup,
-    CouplingState,
-    line_stiffness,
-    ltca_face_reference,
-    ltca_reference,
-    run_coupled,
-)
+from femgear.system.coupling.loop import run_coupled
+from femgear.system.coupling.setup import CouplingSetup, line_stiffness, ltca_face_reference, ltca_reference
+from femgear.system.coupling.state import CouplingState
 from femgear.system.coupling.thermal import ThermalUnits, roll_distances, thermal_units
 
 
 def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None,
              wear_checkpoint: Path | None = None) -> RunResult:
-    """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``."""
+    """Run ``case``; ``progress`` receives every coupling state; wear resumes from ``wear_checkpoint``.
+
+    The checks of the case's levels run first (:func:`femgear.levels.check_case`: the TEHL levels' speed envelope,
+    the FE bodies' memory), before anything costly."""
     t0 = time.perf_counter()
+    check_case(case)
     housing_levels.of(case)        # the housing first (built once, cached): its bad input fails before any work
     stiffness = stiffness_levels.of(case)
     contact = contact_pass(case, stiffness=stiffness)
     contact_warnings(case, float(contact.hertz_pressure.max()))     # the scene's plausibility, on the run's pass
     te = transmission_error(case, stiffness)
-    if not dynamics_levels.spec(case.levels.dynamics).is_dynamic:
+    if not case.levels.spec("dynamics").is_dynamic:
         lubrication = lubrication_solver(case)
         tribology = static_tribology(case, contact, stiffness, wear_checkpoint, lubrication)
         tribology = replace(tribology, film=lubrication.film(tribology.load_per_length,
@@ -68,7 +66,7 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
                                         transmission_error=te, rating=case_rating(case, contact, tribology,
                                                                                   stiffness)))
     setup = CouplingSetup.from_case(case, stiffness=stiffness)
-    coupled = run_coupled(setup, one_way=not coupling_levels.spec(case.levels.coupling).iterates, progress=progress)
+    coupled = run_coupled(setup, one_way=not case.levels.spec("coupling").iterates, progress=progress)
     st = coupled.state
     worn, lubricated = setup.wear is not None, setup.lubrication.friction
     tribology = Tribology(
@@ -88,14 +86,15 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
 
 
 def transmission_error(case: Case, stiffness: MeshStiffness, n_harmonics: int = 5):
-    """The :class:`femgear.physics.ltca.te.TEAnalysis` of the ``ltca`` level's cycle (None for other levels)."""
+    """The :class:`femgear.physics.ltca.te.TEAnalysis` of the ``ltca`` level's cycle at the pinion torque (None for
+    other levels)."""
     ltca = None if stiffness.ltca is None else stiffness.ltca.result
     if ltca is None or not ltca.line_load:
         return None
     from femgear.physics.ltca.te import analyse_cycle
 
-    m, op = case.material, case.scene.operating
-    return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, op.torque, n_harmonics)
+    m = case.material
+    return analyse_cycle(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, case.operating.pinion_torque, n_harmonics)
 
 
 def case_rating(case: Case, contact: ContactPath, tribology: Tribology, stiffness: MeshStiffness | None = None,
@@ -108,8 +107,7 @@ def case_rating(case: Case, contact: ContactPath, tribology: Tribology, stiffnes
 
     physics = {"amplitudes": amplitudes, "cycle": None if stiffness is None else stiffness.ltca}
     try:
-        return rate_case(case.scene, case.pair, contact, tribology.temperature_rise, case.levels.lubrication,
-                         tribology.film, case=case, physics=physics)
+        return rate_case(case, contact, tribology, physics=physics)
     except ValueError as exc:
         logging.getLogger("femgear.physics.rating").warning("rating: not computed: %s", exc)
         return None

@@ -15,12 +15,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from femgear.case import Case, build_case, operating_point
+from femgear.case import Case
+from femgear.case.checks import contact_warnings
 from femgear.docfields import document_fields
-from femgear.levels.contact import contact_pass
-from femgear.levels.lubrication import bulk_temperature, lubrication_solver
+from femgear.levels.contact import contact_pass, reduced_modulus_of
+from femgear.levels.lubrication import bulk_temperature, lubrication_solver, oil_law, summary_level
+from femgear.physics.contact.film import line_film
 from femgear.physics.contact.path import ContactPath, zone_grid
-from femgear.physics.geometry import GearPair
 from femgear.physics.lubrication.flash import blok_flash_temperature, thermal_effusivity
 from femgear.physics.rating import (
     LoadFactors,
@@ -36,29 +37,16 @@ from femgear.physics.rating.load_factors import DynamicFactorCurve, RatingFactor
 from femgear.physics.rating.scuffing import OIL_FACTOR, ScuffingInputs
 from femgear.physics.rating.suite import OwnFigures, PairRating, rate_pair
 from femgear.physics.stiffness.iso6336 import iso6336_stiffness
-from femgear.results import ContactFigures
+from femgear.results import ContactFigures, Tribology
 
 log = logging.getLogger("femgear.physics.rating")
-
-DEFAULTS = {"bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5],
-            "oil_type": "mineral", "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0,
-            "accuracy_grade": 6}
-
-
-def _value(r, key: str, used: list[str]):
-    v = getattr(r, key)
-    if v is None:
-        used.append(f"rating.{key}={DEFAULTS[key]}")
-        return DEFAULTS[key]
-    return v
-
 
 def contact_figures(case: Case, contact: ContactPath, mu: np.ndarray | None, mu_u: np.ndarray, level: str,
                     rating: PairRating | None = None) -> ContactFigures:
     """ISO 6336-2 pitting (``rating.pitting`` when given), ISO 6336-1 stiffness, Blok's flash temperature and the
     mesh power loss at the contact pass's line load, with μ(``mu_u``) = ``mu`` of the lubrication ``level`` (the
     run's own; None: dry, μ = 0), interpolated onto the contact pass's positions."""
-    scene, pair = case.scene, case.pair
+    pair = case.pair
     k = contact.kin
     w = contact.line_loads()
     mu_at = _friction_at(mu, mu_u)
@@ -66,13 +54,13 @@ def contact_figures(case: Case, contact: ContactPath, mu: np.ndarray | None, mu_
     B = thermal_effusivity(m.conductivity, m.density, m.specific_heat)
     theta = np.asarray(blok_flash_temperature(mu_at(k.u), w, k.vs, contact.hertz_half_width, k.v1, k.v2, B, B), float)
     T1 = case.operating.pinion_torque
-    line_load = T1 / pair.r1 * scene.rating.application_factor / (pair.b * pair.n_helices)
+    line_load = T1 / pair.r1 * case.scene.rating.application_factor / (pair.b * pair.n_helices)
     iso = iso6336_stiffness(pair, line_load=line_load, youngs_modulus=m.youngs_modulus)
     iso_loss = None
     if rating is not None:
         mu_mC = rating.scuffing.path.mu_m
         iso_loss = power_loss(case, contact, lambda u: np.full(np.shape(u), mu_mC))
-    return ContactFigures(pitting=scene_rating(scene, pair, T1) if rating is None else rating.pitting,
+    return ContactFigures(pitting=pitting_of(case) if rating is None else rating.pitting,
                           iso_stiffness=iso, iso_line_load=line_load, friction_level=level,
                           flash_position=np.asarray(k.s, float), flash_temperature=theta,
                           power_loss=power_loss(case, contact, mu_at), power_loss_iso=iso_loss)
@@ -120,13 +108,10 @@ def scene_info(case: Case) -> SceneInfo:
     levels solve for seconds to minutes; ``femgear run`` carries their own μ): ``figures.friction_level`` says which.
     The contacts see the flanks' bulk temperature (the supply temperature plus ``thermal.flank_temperature_rise``,
     :func:`femgear.levels.lubrication.bulk_temperature`)."""
-    from femgear.case.checks import contact_warnings
-    from femgear.levels.lubrication import summary_level
-
     pair = case.pair
     contact = contact_pass(case, u=zone_grid(pair, case.numerics.path_points))
     contact_warnings(case, float(contact.hertz_pressure.max()))
-    rating = rate_case(case.scene, pair, contact, case=case)
+    rating = rate_case(case, contact)
     k = contact.kin
     w = contact.line_loads()
     level = summary_level(case.levels.lubrication)
@@ -139,8 +124,6 @@ def scene_info(case: Case) -> SceneInfo:
 def oil_laws(case: Case):
     """(η(T) [Pa s], α(T) [1/Pa]) at ambient pressure: the case's oil law (Roelands, the oil bound at the supply
     temperature, :func:`femgear.case.oil.oil_at`), which the ratings' films and μ_mC read."""
-    from femgear.levels.lubrication import oil_law
-
     law = oil_law(case)
     return (lambda T: float(law.viscosity(0.0, T))), (lambda T: float(law.pressure_viscosity(T)))
 
@@ -163,10 +146,6 @@ def own_figures(case, contact: ContactPath, Ra: float, temperature_rise: np.ndar
     elif bulk == case.operating.ambient_temperature:
         h, label = np.asarray(contact.film_minimum, float), "contact pass: Dowson–Higginson h_min of the shared line load"
     else:
-        from femgear.levels.contact import reduced_modulus_of
-        from femgear.levels.lubrication import oil_law
-        from femgear.physics.contact.film import line_film
-
         law = oil_law(case)
         h = line_film(contact.line_loads(), k.R, k.ue, reduced_modulus_of(case), float(law.viscosity(0.0, bulk)),
                       float(law.pressure_viscosity(bulk))).minimum_dh
@@ -191,28 +170,27 @@ def _fillets(case):
                                scene.material.poisson_ratio, bore_radius=clamp[m - 1]) for m in (1, 2))
 
 
-def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.ndarray | None = None,
-              level: str | None = None, film=None, case=None, physics: dict | None = None) -> PairRating:
-    """The four ratings of a scene's pair at its operating point, with femgear's own figures beside them
-    (``case``: the run's bound case, else bound here from ``scene`` and ``pair``; ``physics``: what the run's
-    physics gives the load factors, ``amplitudes`` of its dynamics and its LTCA ``cycle``, :func:`rating_factors`).
+def rate_case(case: Case, contact: ContactPath, tribology: Tribology | None = None,
+              physics: dict | None = None) -> PairRating:
+    """The four ratings of the case's pair at its operating point, with femgear's own figures beside them on the
+    ``contact`` pass: the contact temperature and film of the run's ``tribology`` (its lubrication level's; None:
+    the ``formula`` level's and the contact pass's film); ``physics``: what the run's physics gives the load
+    factors, ``amplitudes`` of its dynamics and its LTCA ``cycle`` (:func:`rating_factors`).
 
     The defaults line and the range flags are logged at INFO (``-v``) and carried in the result
     (``defaults``, ``flags``), which ``femgear info`` prints and results.json holds; stderr keeps the
     CLI's one-line-per-problem contract (``tests/cli/test_bad_input.py``)."""
     from dataclasses import replace
 
-    case = case if case is not None else build_case(scene, pair)
-    r, used = scene.rating, []
-    sigma_Flim = _value(r, "bending_stress_limit", used)
-    root_rz = _value(r, "root_roughness_rz", used)
+    scene, pair = case.scene, case.pair
+    r = scene.rating
+    used = r.defaulted(("bending_stress_limit", "root_roughness_rz"))
     Ra = case.flanks.ra
     if case.flanks.finishing is not None and "(default)" in case.flanks.source:
         used.append(f"roughness.finishing={case.flanks.finishing}")
-    oil_type = _value(r, "oil_type", used)
-    stage_s = _value(r, "scuffing_load_stage", used)
-    stage_m = _value(r, "micropitting_load_stage", used)
-    grade = _value(r, "accuracy_grade", used)
+    used += r.defaulted(("oil_type", "scuffing_load_stage", "micropitting_load_stage", "accuracy_grade"))
+    sigma_Flim, root_rz, oil_type = r.value("bending_stress_limit"), r.value("root_roughness_rz"), r.value("oil_type")
+    stage_s, stage_m, grade = (r.value(k) for k in ("scuffing_load_stage", "micropitting_load_stage", "accuracy_grade"))
     if used:
         log.info("rating: defaults used for %s (docs/rating.md)", ", ".join(used))
     factors = rating_factors(case, grade, **(physics or {}))
@@ -233,9 +211,11 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
                            effusivity=thermal_effusivity(mat.conductivity, mat.density, mat.specific_heat),
                            Ra=Ra, X_L=OIL_FACTOR[oil_type], K=K, X_S=1.2 if r.lubrication_method == "spray" else 1.0,
                            X_W=r.structural_factor)
-    own = own_figures(case, contact, 0.5 * (Ra[0] + Ra[1]), temperature_rise, level, film)
+    t = tribology
+    own = own_figures(case, contact, 0.5 * (Ra[0] + Ra[1]), None if t is None else t.temperature_rise,
+                      None if t is None else case.levels.lubrication, None if t is None else t.film)
     T1 = case.operating.pinion_torque
-    rating = rate_pair(pair, scene_rating(scene, pair, T1, load_factors(r, factors)), T1, scene.pinion_rpm, bending,
+    rating = rate_pair(pair, pitting_of(case, load_factors(r, factors)), T1, scene.pinion_rpm, bending,
                        scuff, float(stage_s), float(stage_m), eta, alpha, own=own, defaults=tuple(used))
     rating = replace(rating, factors=factors)
     for flag in rating.flags:
@@ -245,15 +225,14 @@ def rate_case(scene, pair: GearPair, contact: ContactPath, temperature_rise: np.
     return rating
 
 
-def scene_rating(scene, pair: GearPair, pinion_torque: float | None = None,
-                 factors: LoadFactors | None = None) -> PittingRating:
-    """ISO 6336-2 method B rating of a scene's pair at its operating point (``pinion_torque`` [N m]: the bound
-    case's, else derived here) and ``[rating]`` table; ``factors``: the load factors (None: ISO 6336-1's methods,
-    :func:`rating_factors` without the run's physics, where the scene does not give them)."""
-    r = scene.rating
+def pitting_of(case: Case, factors: LoadFactors | None = None) -> PittingRating:
+    """ISO 6336-2 method B rating of the case's pair at its operating point (the pinion torque) and ``[rating]``
+    table; ``factors``: the load factors (None: ISO 6336-1's methods, :func:`rating_factors` without the run's
+    physics, where the scene does not give them)."""
+    scene, pair, r = case.scene, case.pair, case.scene.rating
     if factors is None:
-        factors = load_factors(r, rating_factors(build_case(scene, pair), r.accuracy_grade or DEFAULTS["accuracy_grade"]))
-    T1 = operating_point(scene, pair).pinion_torque if pinion_torque is None else pinion_torque
+        factors = load_factors(r, rating_factors(case, r.value("accuracy_grade")))
+    T1 = case.operating.pinion_torque
     stress = contact_stress(pair, T1, scene.material.youngs_modulus, scene.material.poisson_ratio, factors)
     limits = MaterialLimits(sigma_Hlim=r.contact_stress_limit, S_Hmin=r.min_safety_factor, life_hours=r.life_hours,
                             nu40=r.oil_viscosity_40, Rz=None if r.roughness_rz is None else tuple(r.roughness_rz),
@@ -376,7 +355,7 @@ def dynamic_factor_curve(case, speed_rpm, amplitudes: dict, driver_speed: bool =
         speeds = speeds * pair.z2 / pair.z1
     F_t = case.operating.pinion_torque / pair.r1 / pair.n_helices
     iso = iso6336_stiffness(pair, line_load=F_t * r.application_factor / pair.b, youngs_modulus=m.youngs_modulus)
-    tol = grade_tolerances(pair, r.accuracy_grade or DEFAULTS["accuracy_grade"])
+    tol = grade_tolerances(pair, r.value("accuracy_grade"))
     b = [dynamic_factor_b(pair, n, F_t, r.application_factor, iso.c_prime * 1e9, iso.c_gamma_alpha * 1e9, tol,
                           m.density, _tip_relief(case), r.contact_stress_limit, case.bore_radii) for n in speeds]
     helices = []

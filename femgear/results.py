@@ -23,7 +23,7 @@ from femgear.physics.rating import MeshPowerLoss, PittingRating
 from femgear.physics.rating.suite import PairRating
 from femgear.physics.stiffness.iso6336 import IsoStiffness
 from femgear.physics.stiffness.tvms import MeshStiffness
-from femgear.system.coupling.loop import CoupledResult
+from femgear.system.coupling.state import CoupledResult
 from femgear.system.dynamics.housing_result import HousingResult
 
 

@@ -19,7 +19,6 @@ from dataclasses import replace
 import numpy as np
 
 from femgear.case import Case
-from femgear.levels.thermal import has_sections
 from femgear.physics.body.fields import BodySection
 from femgear.physics.ltca.maps import LoadMaps
 from femgear.rate import contact_figures
@@ -51,7 +50,7 @@ def body_sections(case: Case, flank_rise: float) -> tuple[BodySection, BodySecti
     """``thermal = "fe"``: the FE gear sections of pinion and gear at the bulk flank rise ``flank_rise`` [K] and the
     scene's shaft rise (the coupling keeps only the flank deviation, from unit responses: the fields are solved
     once more here); None for other thermal levels."""
-    if not has_sections(case.levels.thermal):
+    if not case.levels.spec("thermal").sections:
         return None
     from femgear.physics.body.fields import section_fields
     from femgear.physics.body.thermal import gear_thermo_elastic
@@ -67,7 +66,8 @@ def body_sections(case: Case, flank_rise: float) -> tuple[BodySection, BodySecti
 
 
 def ltca_maps(result: RunResult) -> LoadMaps | None:
-    """The maps of the ``ltca`` stiffness level's cycle (new flanks with the scene's modifications, operating torque;
+    """The maps of the ``ltca`` stiffness level's cycle (new flanks with the scene's modifications, the operating point's
+    pinion torque;
     ``w_worst`` at the phase of the largest pressure); None for other stiffness levels."""
     cycle = None if result.stiffness is None else result.stiffness.ltca
     ltca = None if cycle is None else cycle.result
@@ -79,7 +79,7 @@ def ltca_maps(result: RunResult) -> LoadMaps | None:
     case, te = result.case, result.transmission_error
     m = case.material
     worst = te.worst_phase if te is not None else pressure_peak(ltca, case.pair, m.youngs_modulus, m.poisson_ratio)[1]
-    return load_maps(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, case.scene.operating.torque, worst,
+    return load_maps(ltca, case.pair, m.youngs_modulus, m.poisson_ratio, case.operating.pinion_torque, worst,
                      case.groove_width, case.stagger)
 
 

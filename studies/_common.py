@@ -6,7 +6,7 @@ reads the typed :class:`femgear.results.RunResult` (``result.tribology``, ``resu
 ``result.case.path``), with the few derived tables here (:func:`deviation_tables`,
 :func:`bearing_accelerations`, :func:`series`).  RunResults pickle, so cases run in worker processes.
 
-The study protocol (DESIGN.md, the Devito habit): each study has ``setup()`` (what to run),
+The study protocol (ARCHITECTURE.md, "Studies"; the Devito habit): each study has ``setup()`` (what to run),
 ``run(coarse=...)`` (compute, return a dict of results) and ``main(argv)`` behind
 ``if __name__ == "__main__"`` (print, plot, write under out/); tests call ``run(coarse=True)``.
 

@@ -100,3 +100,26 @@ def test_one_mesh_pairs_run_coupled_dynamics(scene_file, level):
     assert a["mesh_force.R.mean"] == 0.0 and a["mesh_force.R.amplitude"] == 0.0
     if scene_file.startswith("fzg"):
         assert a["gear.displacement.z"] < 1e-12 and a["pinion.displacement.z"] < 1e-12
+
+
+def test_the_te_analysis_and_the_ltca_maps_of_a_gear_driven_run_carry_the_pinion_torque(baseline_path, monkeypatch):
+    """A gear-driven scene: ``operating.torque`` is the gear's (T2 = T1 z2/z1), but the LTCA cycle of the run is
+    loaded by F_bn = T1/(r_b1 cos β_b), so its TE analysis and load maps are labelled (and their figures computed)
+    with the operating point's pinion torque T1, not the driver's."""
+    from types import SimpleNamespace
+
+    import femgear.physics.ltca.maps as maps
+    import femgear.physics.ltca.te as te
+    from femgear.pipeline import transmission_error
+    from femgear.stages import ltca_maps
+
+    case = build_case(load_scene(baseline_path, ['operating.driver="gear"']))
+    T1, T2 = case.operating.pinion_torque, case.scene.operating.torque
+    assert T2 == pytest.approx(T1 * case.pair.z2 / case.pair.z1) and abs(T2 - T1) > 0.05 * T1
+    seen = {}
+    monkeypatch.setattr(te, "analyse_cycle", lambda r, pair, E, nu, torque, n: seen.setdefault("te", torque))
+    monkeypatch.setattr(maps, "load_maps", lambda r, pair, E, nu, torque, *a: seen.setdefault("maps", torque))
+    stiffness = SimpleNamespace(ltca=SimpleNamespace(result=SimpleNamespace(line_load=[1.0])))
+    transmission_error(case, stiffness)
+    ltca_maps(SimpleNamespace(case=case, stiffness=stiffness, transmission_error=SimpleNamespace(worst_phase=0)))
+    assert seen == {"te": T1, "maps": T1}

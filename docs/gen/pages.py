@@ -6,7 +6,7 @@
   it holds, with meaning and unit, from the attribute docstrings under each field (:mod:`femgear.docfields`
   where it is present; the same docstrings read with :mod:`ast` otherwise);
 - ``reference/levels.md``: the levels of every sub-model with their one-line summaries, from the
-  registries of :mod:`femgear.levels`;
+  catalogue :mod:`femgear.scene.levels`;
 - ``gallery.md``: every figure femgear draws, with its command and what to read in it, from the table of
   ``docs/gen/gallery.py`` (the pictures are committed in ``docs/gallery/``).
 
@@ -70,17 +70,18 @@ def scene_keys_page() -> str:
 
 
 def levels_page() -> str:
-    """Markdown: the levels of every sub-model (the ``[physics]`` keys), cheapest first, from the registries."""
-    from femgear.levels import REGISTRIES
+    """Markdown: the levels of every sub-model (the ``[physics]`` keys), cheapest first, from the catalogue."""
+    from femgear.scene.levels import CATALOGUE, PHYSICS
 
     out = ["# Physics levels", "",
            "The `[physics]` table of a scene picks one level per sub-model; this page is generated from the "
-           "registries in `femgear/levels/` (the one source of level names), cheapest level first. "
+           "catalogue `femgear/scene/levels.py` (the one source of level names), cheapest level first. "
            "How to choose: [Choosing levels](../guide/levels.md).", ""]
-    for sub, reg in REGISTRIES.items():
+    for sub in PHYSICS:
+        levels = CATALOGUE[sub].levels
         out += [f"## `physics.{sub}`", "", "| level | what it computes |", "|---|---|"]
-        out += [f"| `{name}` | {_cell(level.summary)} |" for name, level in reg.items()]
-        out += [f"| `{name}` | planned, refused as \"not available yet\" |" for name in reg.planned]
+        out += [f"| `{s.name}` | {_cell(s.summary)} |" for s in levels if not s.planned]
+        out += [f"| `{s.name}` | planned, refused as \"not available yet\" |" for s in levels if s.planned]
         out.append("")
     return "\n".join(out)
 
@@ -89,12 +90,13 @@ README_MARKERS = ("<!-- levels:begin -->", "<!-- levels:end -->")
 
 
 def levels_table() -> str:
-    """The README's levels table: one row per sub-model, its levels cheapest first (from the registries)."""
-    from femgear.levels import REGISTRIES
+    """The README's levels table: one row per sub-model, its levels cheapest first (from the catalogue)."""
+    from femgear.scene.levels import CATALOGUE, PHYSICS
 
     rows = ["| `[physics]` key | levels, cheapest first |", "|---|---|"]
-    for sub, reg in REGISTRIES.items():
-        names = " · ".join(f"`{n}`" for n in reg.names())
+    for sub in PHYSICS:
+        reg = CATALOGUE[sub]
+        names = " · ".join(f"`{n}`" for n in reg.available)
         planned = f" (planned: {', '.join(f'`{n}`' for n in reg.planned)})" if reg.planned else ""
         rows.append(f"| `{sub}` | {names}{planned} |")
     return "\n".join(rows)

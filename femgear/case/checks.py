@@ -4,20 +4,19 @@ The scene's own validation (schema, input ranges, temperatures) is :func:`femgea
 what follows needs the pair and runs where the pair is bound: the tip speed against the rim's
 burst speed (:func:`femgear.scene.plausibility.check_operating_limits`), a rim below 0.5 h_t, the bearings
 outside the teeth (:func:`check_supports`), the face-resolved wear's needs, the flank modifications' lengths
-against the flanks, the TEHL levels' ranges, the FE bodies' memory, an undercut member's warning, the
-pitch-line speed warning; the Hertz pressure warning needs the
+against the flanks, an undercut member's warning, the pitch-line speed warning (the levels' own checks,
+the TEHL levels' ranges and the FE bodies' memory, are :func:`femgear.levels.check_case`'s); the Hertz pressure warning needs the
 run's own contact pass (:func:`contact_warnings`, called by the driver after it).
 """
 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from femgear.case.pair import undercut_warnings
 from femgear.errors import SceneError
-from femgear.levels import stiffness as stiffness_levels
-from femgear.levels import thermal as thermal_levels
+from femgear.physics.geometry import GearPair
 from femgear.scene.plausibility import (
     check_operating_limits,
     log_warnings,
@@ -25,11 +24,24 @@ from femgear.scene.plausibility import (
     pressure_warnings,
     scene_warnings,
 )
-from femgear.scene.schema import Scene
+from femgear.scene.schema import Modifications, Scene
 
-if TYPE_CHECKING:
-    from femgear.case import Case
-    from femgear.physics.geometry import GearPair
+
+class Case(Protocol):
+    """What these checks read of a :class:`femgear.case.Case` (built by that package's ``__init__``, which
+    imports this module: the checks name its parts, not the class)."""
+
+    @property
+    def scene(self) -> Scene: ...
+
+    @property
+    def pair(self) -> GearPair: ...
+
+    @property
+    def modifications(self) -> Modifications: ...
+
+    @property
+    def warnings(self) -> tuple[str, ...]: ...
 
 
 def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
@@ -42,8 +54,6 @@ def check_bound_case(case: Case, warn: bool = True) -> tuple[str, ...]:
     check_supports(scene)
     check_wear_field(scene, pair)
     check_modifications(case)
-    check_lubrication_range(case)
-    check_fe_resources(case)
     earlier = scene_warnings(scene)        # logged by load_scene (the input ranges' keys cannot collide with these)
     return tuple(earlier) + tuple(log_warnings(pair_warnings(scene, pair) + undercut_warnings(pair), earlier, warn))
 
@@ -60,13 +70,6 @@ def check_rims(scene: Scene, pair: GearPair) -> None:
                 check_rim(pair, member, bore)
             except ValueError as exc:
                 raise SceneError(f"{name}.bore_radius", str(exc).removeprefix("bore_radius=")) from None
-
-
-def check_fe_resources(case: Case) -> None:
-    """Refuse up front the FE bodies of the case's levels whose memory estimate exceeds the budget (the level's
-    own check, which names the resolution that fits; the stages check again as they start)."""
-    stiffness_levels.check_resources(case)
-    thermal_levels.check_resources(case)
 
 
 def toothed_width(scene: Scene, member: str) -> float:
@@ -107,13 +110,6 @@ def check_supports(scene: Scene) -> None:
         bearing_stations(member, m.bearing_span, m.face_offset, toothed_width(scene, member))
 
 
-def check_lubrication_range(case: Case) -> None:
-    """Refuse the lubrication level up front outside its validated range (the checks its registry lists)."""
-    from femgear.levels.lubrication import check_range
-
-    check_range(case)
-
-
 def check_modifications(case: Case) -> None:
     """Raise :class:`SceneError` for a relief longer than the active profile or half the helix's face (the
     ``ltca`` level reads the flank modifications only once its member bodies are built, minutes later)."""
@@ -128,7 +124,7 @@ def check_wear_field(scene: Scene, pair: GearPair) -> None:
     ``ltca`` stiffness's contact-line loads, one contact line per helix at each path position (ε_β ≤ 1)."""
     if scene.wear.field != "face":
         return
-    if not stiffness_levels.has_contact_lines(scene.physics.stiffness):
+    if not scene.physics.spec("stiffness").contact_lines:
         raise SceneError("wear.field", f'"face" needs physics.stiffness = "ltca" (the face-resolved wear reads the '
                                        f"LTCA's contact-line loads; got {scene.physics.stiffness!r})")
     if pair.beta_b == 0:

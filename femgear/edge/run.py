@@ -15,7 +15,7 @@ from femgear.case import Case, build_case
 from femgear.edge.io.run import WEAR_CHECKPOINT, write_run
 from femgear.pipeline import run_case
 from femgear.results import RunResult
-from femgear.system.coupling.loop import CouplingState
+from femgear.system.coupling.state import CouplingState
 
 
 @dataclass(frozen=True)

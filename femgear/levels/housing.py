@@ -17,8 +17,11 @@ import numpy as np
 
 from femgear.errors import SceneError
 from femgear.levels.registry import Registry
+from femgear.physics.housing.fe import HousingMaterial, housing_structure
+from femgear.physics.housing.reduction import lowest_frequencies
+from femgear.physics.mesh.housing import HousingGeometry, housing_mesh
 
-REGISTRY = Registry("housing", key="housing.model")
+REGISTRY = Registry("housing")
 #: the retained band of the reduction check: this fraction of the highest retained fixed-interface frequency (the
 #: rule of thumb "fixed-interface modes to twice the band" left 3.1 % on a mode of the baseline housing; to 2.5 times
 #: the band every mode measured was within 1 %: docs/models/housing.md)
@@ -54,11 +57,8 @@ def of(case: Any) -> HousingLayer | None:
     return None if h is None else REGISTRY.build(h.model, case)
 
 
-@REGISTRY.register("fe", "a parametric gearbox housing meshed by gmsh (quadratic tetrahedra, cast iron by default), "
-                         "Craig-Bampton-reduced at the four bearing seats and coupled into the dynamics")
+@REGISTRY.register("fe")
 def _fe(case: Any) -> HousingLayer:
-    from femgear.physics.housing.fe import HousingMaterial
-
     h = case.housing
     geometry = housing_geometry(case)
     material = HousingMaterial(h.youngs_modulus, h.poisson_ratio, h.density, h.damping_ratio)
@@ -83,8 +83,7 @@ def fe_layer(geometry, material, order: int, modes: int, sensors, directions, us
                         full_dofs=st.n_dofs)
 
 
-@REGISTRY.register("frf", "measured or supplied FRFs from the bearing seats to sensors (UFF 58 or CSV): a receiver "
-                          "of the bearing forces, or coupled by LM-FBS where the seat-to-seat block is given")
+@REGISTRY.register("frf")
 def _frf(case: Any) -> HousingLayer:
     h, frf = case.housing, case.frf
     if frf is None:
@@ -100,8 +99,6 @@ def _frf(case: Any) -> HousingLayer:
 
 def housing_geometry(case: Any):
     """The :class:`~femgear.physics.mesh.housing.HousingGeometry` of ``case``'s pair, bearings and ``[housing]``."""
-    from femgear.physics.mesh.housing import HousingGeometry
-
     h, pair, (p, g) = case.housing, case.pair, case.members
     bore = (p.shaft_diameter, g.shaft_diameter) if h.bore_diameter is None else tuple(0.5 * d for d in h.bore_diameter)
     width = (0.5 * p.shaft_diameter, 0.5 * g.shaft_diameter) if h.bearing_width is None else tuple(h.bearing_width)
@@ -123,9 +120,6 @@ def default_sensors(geometry) -> tuple[tuple[float, float, float], ...]:
 
 
 def _structure(geometry, material, order: int, user_walls: bool):
-    from femgear.physics.housing.fe import housing_structure
-    from femgear.physics.mesh.housing import housing_mesh
-
     try:
         return housing_structure(housing_mesh(geometry), material, order)
     except ValueError as exc:
@@ -148,8 +142,6 @@ def reduced_housing(geometry, material, order: int, modes: int, sensors, directi
 def reduction_check(red, st) -> ReductionCheck:
     """The reduced housing ``red``'s natural frequencies (seats free) against those of its unreduced structure
     ``st`` in the retained band (:data:`RETAINED_BAND` × the highest retained fixed-interface frequency)."""
-    from femgear.physics.housing.reduction import lowest_frequencies
-
     band = RETAINED_BAND * float(red.fixed_interface_hz.max()) if red.fixed_interface_hz.size else 0.0
     reduced = red.frequencies()
     reduced = reduced[reduced <= band]

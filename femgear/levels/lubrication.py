@@ -18,7 +18,6 @@ the film of the same level (:meth:`Lubrication.film`):
 
 The factories read the Case's typed parts and build the physics' own typed objects from its tables
 (:func:`oil_law`, :func:`line_friction`, :func:`tehl_setup`); the physics never sees the scene.
-Imports of the physics are lazy: the scene schema imports this registry for the level names.
 """
 
 from __future__ import annotations
@@ -26,24 +25,35 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
+from femgear.case import Case
 from femgear.docfields import document_fields
+from femgear.levels.contact import contact_pass, reduced_modulus_of
 from femgear.levels.registry import Registry
-
-if TYPE_CHECKING:
-    from femgear.case import Case
-    from femgear.physics.contact.path import ContactPath
-    from femgear.physics.lubrication.oil import OilLaw
-    from femgear.physics.lubrication.path import LineFriction
-    from femgear.physics.tehl.solver import TEHLSetup
+from femgear.physics.contact.crowning import CrownedContact, crowned_contact
+from femgear.physics.contact.film import line_film
+from femgear.physics.contact.hertz import hertz_line
+from femgear.physics.contact.path import ContactPath
+from femgear.physics.ehl.path import ehl_line_solver, line_ehl_path
+from femgear.physics.lubrication.flash import line_flash_temperature
+from femgear.physics.lubrication.map import hertz_level_solver
+from femgear.physics.lubrication.mixed import Roughness
+from femgear.physics.lubrication.oil import OilLaw
+from femgear.physics.lubrication.path import LineFriction, solids_of
+from femgear.physics.tehl.inlet import inlet_figures
+from femgear.physics.tehl.path import tehl_path_results
+from femgear.physics.tehl.point_level import POINT_LEVEL
+from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
+from femgear.physics.tehl.reuse import RecordingSolver
+from femgear.physics.tehl.slices import SliceGeometry
+from femgear.physics.tehl.solver import TEHLSetup, check_envelope, tehl_line_solver, tehl_map_axes, tehl_map_solver
 
 Solver = Callable[..., tuple[np.ndarray, np.ndarray]]
 """solver(w=, R=, ue=, srr=, T=) -> (mu, temperature_rise) — the signature of friction maps."""
 
-REGISTRY = Registry("lubrication", planned=('ehl-point',))
+REGISTRY = Registry("lubrication")
 
 
 @document_fields
@@ -125,17 +135,11 @@ def _product(case: Case, level: str, solve: Solver, film_of: FilmOf, **flags) ->
 # ---------------------------------------------------------------- typed parts from the case's tables
 def oil_law(case: Case) -> OilLaw:
     """The oil's viscosity and density laws (Roelands), referred to the supply temperature (``case.oil``)."""
-    from femgear.physics.lubrication.oil import OilLaw
-
     return OilLaw.from_table(case.oil, case.oil_reference_temperature)
 
 
 def line_friction(case: Case) -> LineFriction:
     """The ``formula`` level's line-contact friction with the case's oil, steel, traction and roughness."""
-    from femgear.levels.contact import reduced_modulus_of
-    from femgear.physics.lubrication.mixed import Roughness
-    from femgear.physics.lubrication.path import LineFriction, solids_of
-
     rough, flanks = case.roughness, case.flanks
     mixed = flanks.model == "greenwood-tripp" and flanks.sigma > 0
     return LineFriction(oil=oil_law(case), E_red=reduced_modulus_of(case), solids=solids_of(case.material, case.oil),
@@ -147,8 +151,6 @@ def line_friction(case: Case) -> LineFriction:
 
 def tehl_setup(case: Case) -> TEHLSetup:
     """Oil, solids and traction of the case's TEHL solves."""
-    from femgear.physics.tehl.solver import TEHLSetup
-
     return TEHLSetup.from_tables(case.material, case.oil, case.oil_reference_temperature)
 
 
@@ -161,25 +163,17 @@ def crowning(case: Case) -> tuple[float, float]:
 def envelope_contact(case: Case, n: int = 21) -> ContactPath:
     """The contact pass at ``n`` positions plus the pitch point that friction-map envelopes span (kinematics
     and the mean load per length only: the load is not shared by the stiffness level)."""
-    from femgear.levels.contact import contact_pass
-
     return contact_pass(case, n=n, shared=False)
 
 
 def tehl_axes(case: Case) -> dict[str, np.ndarray]:
     """The ``tehl`` friction map's axes over the case's path (:func:`femgear.physics.tehl.solver.tehl_map_axes`)."""
-    from femgear.physics.tehl.solver import tehl_map_axes
-
     return tehl_map_axes(envelope_contact(case), case.operating.ambient_temperature)
 
 
 # ---------------------------------------------------------------- films
 def _formula_film(case: Case) -> FilmOf:
     def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
-        from femgear.levels.contact import reduced_modulus_of
-        from femgear.physics.contact.film import line_film
-        from femgear.physics.contact.hertz import hertz_line
-
         k, oil, E_red = case.path, oil_law(case), reduced_modulus_of(case)
         films = line_film(w, k.R, k.ue, E_red, float(oil.viscosity(0.0, T)), float(oil.pressure_viscosity(T)))
         p = np.array([hertz_line(wi, R, E_red).max_pressure for wi, R in zip(w, k.R)])
@@ -191,9 +185,6 @@ def _formula_film(case: Case) -> FilmOf:
 
 def _ehl_line_film(case: Case) -> FilmOf:
     def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
-        from femgear.levels.contact import reduced_modulus_of
-        from femgear.physics.ehl.path import line_ehl_path
-
         n = case.numerics
         f = line_ehl_path(w, case.path.R, case.path.ue, T, oil_law(case), reduced_modulus_of(case), tol=n.ehl_tol,
                           min_level=n.ehl_level)
@@ -204,15 +195,14 @@ def _ehl_line_film(case: Case) -> FilmOf:
     return film
 
 
-def _reused(solve: Solver, case: Case, w: np.ndarray, T: float) -> list | None:
-    """The results of ``solve``'s latest call when it was at exactly these path inputs (else None)."""
-    last = getattr(solve, "last", None)
-    if last is None:
+def _reused(solve: Solver, case: Case, w: np.ndarray, T: float) -> tuple | None:
+    """The results of ``solve``'s latest call when it was at exactly these path inputs (else None: a solver that
+    keeps no record, or other inputs)."""
+    latest = solve.latest if isinstance(solve, RecordingSolver) else None
+    if latest is None:
         return None
     k = case.path
-    inputs = (w, k.R, k.ue, np.abs(k.srr), np.full(w.shape, T))
-    same = all(a.shape == b.shape and np.array_equal(a, b) for a, b in zip(last[0], inputs))
-    return last[1] if same else None
+    return latest.at(w, k.R, k.ue, np.abs(k.srr), np.full(w.shape, T))
 
 
 def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
@@ -233,22 +223,22 @@ def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
 
 def _thermal_figures(case: Case, w: np.ndarray, T: float, results: list) -> dict:
     """L_th, the two inlet factors, the TEHL and Blok flash temperatures at the path positions."""
-    from femgear.levels.contact import reduced_modulus_of
-    from femgear.physics.tehl.inlet import inlet_figures
-
     k = case.path
     return inlet_figures(results, w, k.R, k.ue, np.abs(k.srr), T, oil_law(case), reduced_modulus_of(case),
                          tehl_setup(case).props)
+
+
+# ---------------------------------------------------------------- ranges checked up front
+def check_tehl_envelope(case: Case) -> None:
+    """Refuse a TEHL level up front above the pitch-line speed where its thermal loop does not settle
+    (:func:`femgear.physics.tehl.solver.check_envelope`, a :class:`SceneError` naming ``physics.lubrication``)."""
+    check_envelope(float(np.max(case.path.ue)), case.levels.lubrication)
 
 
 # ---------------------------------------------------------------- the levels
 def _uniform(case: Case, mu0: float) -> Solver:
     """μ = ``mu0`` everywhere and, for μ > 0, Blok's flash temperature of the Hertzian band with it (the heat a
     constant friction coefficient generates; 0 for μ = 0)."""
-    from femgear.levels.contact import reduced_modulus_of
-    from femgear.physics.lubrication.flash import line_flash_temperature
-    from femgear.physics.lubrication.path import solids_of
-
     E_red, solids = reduced_modulus_of(case), solids_of(case.material, case.oil)
 
     def constant(w, R, ue, srr, T):
@@ -261,12 +251,12 @@ def _uniform(case: Case, mu0: float) -> Solver:
     return constant
 
 
-@REGISTRY.register("none", "no friction (μ = 0) and no contact heating; the film of the formulas")
+@REGISTRY.register("none")
 def _none(case: Case, repeated: bool = False) -> Lubrication:
     return _product(case, "none", _uniform(case, 0.0), _formula_film(case), friction=False, uniform=0.0, heats=False)
 
 
-@REGISTRY.register("constant", "a constant friction coefficient (friction.coefficient) and Blok's flash temperature")
+@REGISTRY.register("constant")
 def _constant(case: Case, repeated: bool = False) -> Lubrication:
     """μ = ``friction.coefficient`` everywhere; the contact temperature rise is Blok's flash temperature with it,
     so the bulk flank temperature and the thermal growth follow the constant μ as they follow the other levels'."""
@@ -274,32 +264,22 @@ def _constant(case: Case, repeated: bool = False) -> Lubrication:
     return _product(case, "constant", _uniform(case, mu0), _formula_film(case), uniform=mu0)
 
 
-@REGISTRY.register("formula", "thermal Eyring traction of the Hertzian film (Dowson-Higginson), with the "
-                              "mixed-lubrication split on rough flanks")
+@REGISTRY.register("formula")
 def _formula(case: Case, repeated: bool = False) -> Lubrication:
-    from femgear.physics.lubrication.map import hertz_level_solver
-
     return _product(case, "formula", hertz_level_solver(line_friction(case)), _formula_film(case))
 
 
-@REGISTRY.register("ehl-line", "isothermal line-contact EHL (FE Reynolds, Newton-Krylov) with Eyring traction")
+@REGISTRY.register("ehl-line")
 def _ehl_line(case: Case, repeated: bool = False) -> Lubrication:
-    from femgear.levels.contact import reduced_modulus_of
-    from femgear.physics.ehl.path import ehl_line_solver
-    from femgear.physics.lubrication.path import solids_of
-
     solve = ehl_line_solver(oil_law(case), reduced_modulus_of(case), solids_of(case.material, case.oil),
                             case.oil.eyring_stress, tol=case.numerics.ehl_tol, min_level=case.numerics.ehl_level)
     return _product(case, "ehl-line", solve, _ehl_line_film(case))
 
 
-@REGISTRY.register("tehl", "thermal line-contact EHL (Reynolds + energy) tabulated in a friction map over the path")
+@REGISTRY.register("tehl", check=check_tehl_envelope)
 def _tehl(case: Case, repeated: bool = False) -> Lubrication:
     """``repeated``: the solver will be queried many times (the coupling loop): a friction map of the direct
     solves, built on first use."""
-    from femgear.physics.tehl.path import tehl_path_results
-    from femgear.physics.tehl.solver import tehl_line_solver, tehl_map_solver
-
     setup, n = tehl_setup(case), case.numerics
     opts = {"tol": n.ehl_tol, "min_level": n.ehl_level}
     solve = tehl_map_solver(setup, tehl_axes(case), **opts) if repeated else tehl_line_solver(setup, **opts)
@@ -312,12 +292,10 @@ def _tehl(case: Case, repeated: bool = False) -> Lubrication:
     return _product(case, "tehl", solve, _thermal_film(case, method, path))
 
 
-@REGISTRY.register("tehl-point", "thermal point-contact EHL (crowned flank, multigrid) along the path")
+@REGISTRY.register("tehl-point", check=check_tehl_envelope)
 def _tehl_point(case: Case, repeated: bool = False) -> Lubrication:
     """Direct solves also when ``repeated`` (a friction map of point solves would cost ~170 of them; the path's
     21+ direct solves are cheaper)."""
-    from femgear.physics.tehl.point_level import POINT_LEVEL
-
     solve, details = tehl_point_solver(case), []
     point = tehl_point_solver(case, details=details)
 
@@ -335,10 +313,6 @@ def tehl_point_solver(case: Case, level: int | None = None, details: list | None
     """The ``tehl-point`` direct solver of the case (:func:`femgear.physics.tehl.point_level.tehl_point_solver`):
     its crowned contact, TEHL set-up and stationary roughness; ``level`` the point grid (default
     :data:`~femgear.physics.tehl.point_level.POINT_LEVEL`), ``details`` receives each contact's result."""
-    from femgear.physics.contact.crowning import CrownedContact, crowned_contact
-    from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
-    from femgear.physics.tehl.slices import SliceGeometry
-
     pair, rough = case.pair, case.roughness
     if sum(crowning(case)) > 0:
         geo = crowned_contact(pair, crowning(case))
@@ -388,8 +362,6 @@ def static_friction(case: Case, line_load: np.ndarray | None = None) -> float | 
     :func:`femgear.levels.contact.contact_pass`; U-shaped, zero at the pitch point), interpolated along the
     path.  ``line_load``: that pass's line load [N/m] when already known (it does not depend on the speed:
     a speed sweep computes it once)."""
-    from femgear.levels.contact import contact_pass
-
     lubrication = lubrication_solver(case)
     if lubrication.uniform is not None:
         return lubrication.uniform
@@ -398,32 +370,8 @@ def static_friction(case: Case, line_load: np.ndarray | None = None) -> float | 
     return lambda x: np.interp(x, u, mu)
 
 
-# ---------------------------------------------------------------- ranges checked up front
-def _tehl_envelope(case: Case) -> None:
-    from femgear.physics.tehl.solver import check_envelope
-
-    check_envelope(float(np.max(case.path.ue)), case.levels.lubrication)
-
-
-#: what each level checks of a case before it runs (SceneError naming ``physics.lubrication``)
-RANGE_CHECKS: dict[str, tuple[Callable[[Case], None], ...]] = {
-    "tehl": (_tehl_envelope,),
-    "tehl-point": (_tehl_envelope,),
-}
-
-
-def check_range(case: Case) -> None:
-    """Refuse the case's lubrication level up front where the case is outside its validated range."""
-    for check in RANGE_CHECKS.get(case.levels.lubrication, ()):
-        check(case)
-
-
-#: the levels whose μ ``femgear info`` computes itself (:func:`femgear.rate.scene_info`); costlier ones (the
-#: FE EHL and TEHL levels) are summarised with ``formula`` there (``femgear run`` carries every level's own μ)
-SUMMARY_LEVELS = ("none", "constant", "formula")
-
-
 def summary_level(level: str) -> str:
-    """The level a scene summary computes μ with for the case's ``level`` (``formula`` beyond it)."""
-    REGISTRY[level]     # an unknown level raises, naming physics.lubrication
-    return level if level in SUMMARY_LEVELS else "formula"
+    """The level a scene summary computes μ with for the case's ``level``: itself where the catalogue marks it
+    ``summarised`` (cheap: none, constant, formula), else ``formula`` (``femgear run`` carries every level's own
+    μ)."""
+    return level if REGISTRY.catalogue.spec(level).summarised else "formula"

@@ -1,12 +1,11 @@
-"""One registry per sub-model: ``{level name: factory}`` with a one-line summary each.
+"""One registry per sub-model: ``{level name: factory}``, the names and specs read from the catalogue.
 
-The registries are the one source of level names: the scene schema validates
-``[physics]`` against them, the CLI lists them, the docs print them, and the driver
-dispatches through them (no string comparisons of level names elsewhere).
-
-A factory takes the bound case (and keyword options) and returns the sub-model's typed
-product; it imports its physics lazily, so that importing a registry (as the scene
-schema does) stays cheap.
+The catalogue (:mod:`femgear.scene.levels`) is the one source of level names and of what callers
+branch on; a registry holds the factories that compute them, above the Case: each registered with
+the decorator as ``factory(case, **options) -> product``, optionally with a ``check(case)`` that
+refuses the case before anything costly runs (:func:`femgear.levels.check_case`, which
+:func:`femgear.pipeline.run_case` calls first).  A name the catalogue does not list as available
+cannot be registered; a test holds the registered names equal to the catalogue's.
 """
 
 from __future__ import annotations
@@ -15,62 +14,84 @@ from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from femgear.errors import SceneError
+from femgear.case import Case
+from femgear.scene.levels import CATALOGUE, LevelSpec, SubModel
 
 
 @dataclass(frozen=True)
 class Level:
-    """One level of a sub-model: its name, what it computes, and its factory."""
+    """One level of a sub-model: its catalogue spec, its factory and its up-front check."""
 
-    name: str
-    summary: str                                   #: one line: what the level computes
-    factory: Callable[..., Any]                    #: ``factory(case, **options) -> product``
+    spec: LevelSpec
+    factory: Callable[..., Any]                        #: ``factory(case, **options) -> product``
+    check: Callable[[Case], None] | None = None        #: ``check(case)``: raise before anything costly runs
+
+    @property
+    def name(self) -> str:
+        return self.spec.name
+
+    @property
+    def summary(self) -> str:
+        return self.spec.summary
 
 
 class Registry(Mapping[str, Level]):
-    """The levels of one sub-model, cheapest first (the order of registration)."""
+    """The factories of one sub-model, in the catalogue's order (cheapest first)."""
 
-    def __init__(self, submodel: str, planned: tuple[str, ...] = (), key: str | None = None) -> None:
+    def __init__(self, submodel: str) -> None:
+        self.catalogue: SubModel = CATALOGUE[submodel]
         self.submodel = submodel
-        self.key = key or f"physics.{submodel}"    #: the scene key that names the level (in error messages)
-        self.planned = planned                     #: names of the design not built yet (refused as such)
+        self.key = self.catalogue.key              #: the scene key that names the level (in error messages)
         self._levels: dict[str, Level] = {}
 
-    def register(self, name: str, summary: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
-        """Decorator: register ``factory`` as level ``name``."""
+    @property
+    def planned(self) -> tuple[str, ...]:
+        """Names of the design not built yet (refused as such)."""
+        return self.catalogue.planned
+
+    def register(self, name: str, check: Callable[[Case], None] | None = None
+                 ) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+        """Decorator: register ``factory`` as level ``name`` (an available level of the catalogue), with the
+        up-front ``check(case)`` if given."""
         if name in self._levels:
             raise ValueError(f"{self.submodel}: level {name!r} registered twice")
+        spec = self.catalogue.spec(name)
 
         def decorate(factory: Callable[..., Any]) -> Callable[..., Any]:
-            self._levels[name] = Level(name, summary, factory)
+            self._levels[name] = Level(spec, factory, check)
             return factory
         return decorate
 
+    def register_specs(self) -> None:
+        """Register every available level of the catalogue with a factory that returns its own spec: the
+        sub-models whose product is what they ask of the driver (``dynamics``, ``coupling``)."""
+        for name in self.catalogue.available:
+            spec = self.catalogue.spec(name)
+            self.register(name)(lambda case=None, _spec=spec, **_: _spec)
+
     def __getitem__(self, name: str) -> Level:
-        try:
-            return self._levels[name]
-        except KeyError:
-            raise SceneError(self.key, self.problem(name)) from None
+        self.catalogue.spec(name)                  # an unknown or planned level raises, naming the key
+        return self._levels[name]
 
     def problem(self, name: str) -> str | None:
-        """Why ``<key> = name`` (``physics.<submodel>`` unless the registry names another key) cannot run, or None
-        when it is a registered level."""
-        if name in self._levels:
-            return None
-        have = ", ".join(self._levels)
-        if name in self.planned:
-            return f"level {name!r} is not available yet (available now: {have})"
-        return f"unknown level {name!r}; choose one of {have}"
+        """Why ``<key> = name`` cannot run, or None when it is an available level."""
+        return self.catalogue.problem(name)
 
     def __iter__(self) -> Iterator[str]:
-        return iter(self._levels)
+        return iter(s for s in self.catalogue.available if s in self._levels)
 
     def __len__(self) -> int:
         return len(self._levels)
 
     def names(self) -> tuple[str, ...]:
-        return tuple(self._levels)
+        return tuple(self)
 
-    def build(self, name: str, case: Any, **options: Any) -> Any:
+    def build(self, name: str, case: Case, **options: Any) -> Any:
         """The product of level ``name`` for ``case``."""
         return self[name].factory(case, **options)
+
+    def check(self, name: str, case: Case) -> None:
+        """Run level ``name``'s up-front check on ``case`` (nothing where it has none)."""
+        level = self[name]
+        if level.check is not None:
+            level.check(case)

@@ -18,21 +18,21 @@ where the tribology takes the flanks as smooth (``roughness.model = "smooth"``: 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
+from femgear.case import Case
+from femgear.levels.lubrication import line_friction
 from femgear.levels.registry import Registry
-
-if TYPE_CHECKING:
-    from femgear.case import Case
-    from femgear.physics.geometry import GearPair, PathKinematics
-    from femgear.physics.lubrication.mixed import Roughness
-    from femgear.physics.wear import WearSetup
-    from femgear.physics.wear.load_sharing import ReferenceLoad
-    from femgear.physics.wear.regime import AsperityShare, Regime
+from femgear.physics.geometry import GearPair, PathKinematics
+from femgear.physics.lubrication.mixed import Roughness, split_table
+from femgear.physics.wear import WearSetup
+from femgear.physics.wear.load_sharing import ReferenceLoad
+from femgear.physics.wear.regime import AsperityShare, Regime, regime
 
 REGISTRY = Registry("wear")
 
@@ -72,9 +72,6 @@ class ArchardWear:
     @cached_property
     def share_table(self) -> AsperityShare:
         """The asperity share over the case's path and a range of loads (solved once, about 1 s)."""
-        from femgear.physics.lubrication.mixed import split_table
-        from femgear.physics.wear.regime import AsperityShare
-
         f = self.film
         loads = f.nominal_load * np.geomspace(*LOAD_SPAN, LOAD_POINTS)
         fraction, lam = split_table(loads, f.R, f.ue, f.srr, f.temperature, f.oil, f.E_red, f.solids, f.roughness)
@@ -87,8 +84,6 @@ class ArchardWear:
 
     def regime(self, load_per_length) -> Regime | None:
         """How the film shares the load ``load_per_length`` at the case's path positions [N/m] (None: no film)."""
-        from femgear.physics.wear.regime import regime
-
         return None if self.film is None else regime(self.share_table, load_per_length)
 
     def warnings(self, load_per_length) -> tuple[str, ...]:
@@ -107,8 +102,6 @@ class ArchardWear:
               n_phase: int = 64, reference: ReferenceLoad | None = None) -> WearSetup:
         """The :class:`femgear.physics.wear.WearSetup` of one load case (force per helix, stiffness c_l) on the
         case's path kinematics ``kin`` (the share's positions)."""
-        from femgear.physics.wear import WearSetup
-
         share = self.share
         if share is not None and share.fraction.shape[0] != kin.u.size:
             raise ValueError(f"the asperity share holds {share.fraction.shape[0]} path positions, kin {kin.u.size}")
@@ -116,11 +109,10 @@ class ArchardWear:
                          hardness=self.hardness, n_phase=n_phase, reference=reference, share=share)
 
 
-REGISTRY.register("none", "no wear")(lambda case, **_: None)
+REGISTRY.register("none")(lambda case, **_: None)
 
 
-@REGISTRY.register("archard", "Archard wear along the path (or over the face) with the load updated as the "
-                              "profile wears; wear.load: the asperity-borne load (default) or the whole load")
+@REGISTRY.register("archard")
 def _archard(case: Case, **_: Any) -> ArchardWear:
     w = case.wear
     return ArchardWear(coefficient=w.coefficient, hardness=case.material.hardness, cycles=w.cycles,
@@ -131,10 +123,6 @@ def wear_roughness(case: Case) -> Roughness:
     """The composite roughness σ of the wear's split, from the flanks' one roughness description
     (:attr:`femgear.case.Case.flanks`; also where the tribology takes the flanks as smooth, ``roughness.model =
     "smooth"``: the wear needs the asperities), with the scene's Greenwood–Tripp statistics."""
-    import math
-
-    from femgear.physics.lubrication.mixed import Roughness
-
     rough, flanks = case.roughness, case.flanks
     sigma = flanks.sigma if flanks.sigma > 0 else math.hypot(*flanks.rq)
     return Roughness(sigma, rough.eta_beta_sigma, rough.sigma_over_beta, rough.contact, rough.fluid_film)
@@ -142,8 +130,6 @@ def wear_roughness(case: Case) -> Roughness:
 
 def film_inputs(case: Case) -> FilmInputs:
     """The :class:`FilmInputs` of the case: its path, the ``formula`` level's oil, steel and traction solids."""
-    from femgear.levels.lubrication import line_friction
-
     lf, k, pair = line_friction(case), case.path, case.pair
     return FilmInputs(R=k.R, ue=k.ue, srr=np.abs(k.srr), temperature=case.operating.ambient_temperature, oil=lf.oil,
                       E_red=lf.E_red, solids=lf.solids, roughness=wear_roughness(case),
@@ -164,8 +150,6 @@ def static_setup(case: Case, kin: PathKinematics | None = None, n_phase: int = 6
     """The static load sharing of the case (any wear level's numbers) with the whole load wearing (the
     constant-coefficient form: the tests' and studies' reference): each helix carries F_bn/2, c_l from
     ``stiffness.mesh_stiffness_per_width`` over the mean contact length; ``kin`` defaults to the case's path."""
-    from femgear.physics.wear import WearSetup
-
     pair = case.pair
     c_l = case.stiffness.mesh_stiffness_per_width * pair.b / pair.mean_contact_length
     return WearSetup(pair=pair, kin=case.path if kin is None else kin, force=case.operating.normal_force / 2,

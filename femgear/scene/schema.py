@@ -11,14 +11,12 @@ fixed for a study; the operating point and errors change per load case.
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
 from femgear.errors import SceneError
-from femgear.levels import coupling as coupling_levels
-from femgear.levels import dynamics as dynamics_levels
-from femgear.scene.levels import check_level
+from femgear.scene.levels import CATALOGUE, LEVELS, LevelSpec, check_level
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -418,18 +416,20 @@ class Numerics(_Frozen):
 
     def level_of(self, body: str) -> int:
         """Resolution level of ``body`` (``"ltca"``, ``"fe3d"`` or ``"fe"``): ``body_level`` when the scene gives
-        it, else that body's default (:data:`DEFAULT_BODY_LEVELS`; the ``ltca`` bodies with p1 elements: 1)."""
+        it, else that body's default (:data:`DEFAULT_BODY_LEVELS`; with ``body_elements = "p1"``
+        :data:`P1_BODY_LEVELS`)."""
         if self.body_level is not None:
             return self.body_level
-        if body == "ltca" and self.body_elements == "p1":
-            return 1
-        return DEFAULT_BODY_LEVELS[body]
+        return (P1_BODY_LEVELS if self.body_elements == "p1" else DEFAULT_BODY_LEVELS)[body]
 
 
 #: the default resolution of each FE body (``numerics.body_level`` unset; docs/cost.md): the ltca bodies at level 0
 #: with p2-bending elements (< 2 % on the mean stiffness and the LTE peak-to-peak), the fe3d thermal bodies and
 #: the fe stiffness sections at level 1
 DEFAULT_BODY_LEVELS = {"ltca": 0, "fe3d": 1, "fe": 1}
+#: the default resolution of each FE body with ``numerics.body_elements = "p1"`` (linear tetrahedra, which only the
+#: ltca bodies take from that key): level 1 throughout
+P1_BODY_LEVELS = {"ltca": 1, "fe3d": 1, "fe": 1}
 
 
 class Rating(_Frozen):
@@ -440,8 +440,23 @@ class Rating(_Frozen):
     the scene's physics computes them, else by ISO 6336-1's methods (``load_factors``; a value given wins),
     accuracy grade 6; σ_Hlim 1500 MPa (case-carburised steel, ISO 6336-5 quality MQ), S_Hmin 1;
     life, lubricant and roughness factors are 1 (reference conditions) unless their
-    inputs are given; Z_W = Z_X = 1.
+    inputs are given; Z_W = Z_X = 1.  The keys left unset (None) whose default the rating logs as used are
+    :data:`Rating.DEFAULTS` (:meth:`value`).
     """
+
+    #: the value of each key left unset (None) that the ratings use, named in their "defaults used" line
+    DEFAULTS: ClassVar[dict[str, Any]] = {
+        "bending_stress_limit": 5.0e8, "root_roughness_rz": [1.0e-5, 1.0e-5], "oil_type": "mineral",
+        "scuffing_load_stage": 12.0, "micropitting_load_stage": 8.0, "accuracy_grade": 6}
+
+    def value(self, key: str) -> Any:
+        """``key``'s value, or its default (:data:`DEFAULTS`) where the scene leaves it unset."""
+        given = getattr(self, key)
+        return self.DEFAULTS[key] if given is None else given
+
+    def defaulted(self, keys: tuple[str, ...]) -> list[str]:
+        """``rating.<key>=<default>`` for each of ``keys`` the scene leaves unset (the "defaults used" line)."""
+        return [f"rating.{k}={self.DEFAULTS[k]}" for k in keys if getattr(self, k) is None]
 
     application_factor: float = Field(1.0, ge=1, description="application factor K_A (ISO 6336-1) [-]")
     dynamic_factor: float | None = Field(
@@ -568,9 +583,7 @@ PerMember = Annotated[list[Pos], Field(min_length=2, max_length=2)]
 
 
 def _housing_doc() -> str:
-    from femgear.levels.housing import REGISTRY
-
-    return "the housing model: " + "; ".join(f"{k} ({v.summary})" for k, v in REGISTRY.items())
+    return "the housing model: " + "; ".join(f"{s.name} ({s.summary})" for s in CATALOGUE["housing"].levels)
 
 
 class Housing(_Frozen):
@@ -656,9 +669,7 @@ class Housing(_Frozen):
     @field_validator("model")
     @classmethod
     def _model_exists(cls, name: str) -> str:
-        from femgear.levels.housing import REGISTRY
-
-        problem = REGISTRY.problem(name)
+        problem = CATALOGUE["housing"].problem(name)
         if problem:
             raise ValueError(problem)
         return name
@@ -676,9 +687,7 @@ class Housing(_Frozen):
 
 
 def _levels_doc(submodel: str, what: str) -> str:
-    """The description of a ``[physics]`` key, listing its levels from the registry (cheapest first)."""
-    from femgear.scene.levels import LEVELS
-
+    """The description of a ``[physics]`` key, listing its levels from the catalogue (cheapest first)."""
     return f"level of the {what} sub-model, cheapest first: " + ", ".join(LEVELS[submodel])
 
 
@@ -712,10 +721,15 @@ class Physics(_Frozen):
     @classmethod
     def _coupling_needs_dynamics(cls, level: str, info: ValidationInfo) -> str:
         dynamics = info.data.get("dynamics")
-        if coupling_levels.spec(level).iterates and dynamics is not None and \
-                not dynamics_levels.spec(dynamics).is_dynamic:
+        if CATALOGUE["coupling"].spec(level).iterates and dynamics is not None and \
+                not CATALOGUE["dynamics"].spec(dynamics).is_dynamic:
             raise ValueError("bidirectional coupling needs a dynamics level (set physics.dynamics)")
         return level
+
+    def spec(self, submodel: str) -> LevelSpec:
+        """The catalogue's spec of this table's ``submodel`` level (:mod:`femgear.scene.levels`): what callers
+        branch on instead of the level's name."""
+        return CATALOGUE[submodel].spec(getattr(self, submodel))
 
 
 class Scene(_Frozen):

@@ -20,9 +20,9 @@ from pathlib import Path
 import numpy as np
 
 from femgear.case.pair import pair_from_scene
-from femgear.levels.thermal import flank_deviation
 from femgear.perf import measure
 from femgear.physics.body.compliance import fe_pair_stiffness_per_width
+from femgear.physics.body.thermal import analytic_flank_deviation, fe_flank_deviation
 from femgear.physics.stiffness import iso6336_stiffness
 from femgear.physics.stiffness.pem import pair_stiffness_per_width
 from femgear.scene import load_scene
@@ -64,15 +64,17 @@ def stiffness_rows(scene, pair, quick: bool = False) -> list[dict]:
 def thermal_rows(scene, pair, quick: bool = False) -> list[dict]:
     mat = scene.material
     u = np.linspace(pair.u_start, pair.u_end, 9)
-    args = (50.0, scene.thermal.shaft_temperature_rise, mat.thermal_expansion, mat.youngs_modulus,
-            mat.poisson_ratio, mat.conductivity, scene.pinion.bore_radius)
+    rises = (50.0, scene.thermal.shaft_temperature_rise, mat.thermal_expansion)
+    bore = scene.pinion.bore_radius
     divs = (2.5, 4.0) if quick else (2.5, 4.0, 8.0)
     fe = {}
     for d in divs:
         rep = 1 if d == divs[-1] else 3
-        fe[d] = measure(lambda d=d: flank_deviation(pair, 1, u, "fe", *args, h=pair.m_n / d), rep)
+        fe[d] = measure(lambda d=d: fe_flank_deviation(pair, 1, u, *rises, mat.youngs_modulus,
+                                                               mat.poisson_ratio, mat.conductivity, bore,
+                                                               h=pair.m_n / d), rep)
     ref = fe[divs[-1]].value
-    an = measure(lambda: flank_deviation(pair, 1, u, "analytic", *args), 5)
+    an = measure(lambda: analytic_flank_deviation(pair, 1, u, *rises, mat.poisson_ratio, bore), 5)
     rows = [{"level": "analytic", "dofs": 0, "h_mm": None, "seconds": an.seconds,
              "error": float(np.max(np.abs(an.value / ref - 1)))}]
     for d, m in fe.items():

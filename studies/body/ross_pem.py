@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.pem import pem_mesh_stiffness
 
 ROOT = Path(__file__).resolve().parents[2]
 DATA = ROOT / "tests" / "stiffness" / "data" / "ross_62_62_tvms.json"
@@ -31,7 +31,7 @@ def setup() -> tuple[GearPair, dict]:
 
 
 def run(pair: GearPair, ross: dict, plane: str = "strain") -> dict:
-    ms = mesh_stiffness(pair, "pem", n_positions=400, youngs_modulus=206e9, poisson_ratio=0.3,
+    ms = pem_mesh_stiffness(pair, 206e9, 0.3, 400,
                         bore_radius=(0.0175, 0.0175), plane=plane)
     phase = np.array(ross["phase"])
     ours = ms.at(phase, "left")

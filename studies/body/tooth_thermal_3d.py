@@ -27,8 +27,13 @@ import numpy as np
 
 from femgear.case.pair import pair_from_scene
 from femgear.edge.io.figures import save_figure
-from femgear.levels.thermal import flank_deviation
-from femgear.physics.body.thermal import flank_displacement, solve_temperature, thermo_elastic
+from femgear.physics.body.thermal import (
+    analytic_flank_deviation,
+    fe_flank_deviation,
+    flank_displacement,
+    solve_temperature,
+    thermo_elastic,
+)
 from femgear.physics.ltca.thermal import thermal_units_3d
 from femgear.physics.mesh.section import gear_section
 from femgear.physics.stiffness.pem import contact_geometry
@@ -56,11 +61,11 @@ def two_d(scene, pair, member, u):
     out = {"rho": rho}
     for name, f, s in UNITS:
         t = time.perf_counter()
-        out[f"fe_{name}"] = flank_deviation(pair, member, u, "fe", f, s, mat.thermal_expansion, mat.youngs_modulus,
-                                            mat.poisson_ratio, mat.conductivity, bore)
+        out[f"fe_{name}"] = fe_flank_deviation(pair, member, u, f, s, mat.thermal_expansion, mat.youngs_modulus,
+                                               mat.poisson_ratio, mat.conductivity, bore)
         out["fe_seconds"] = time.perf_counter() - t
-        out[f"analytic_{name}"] = flank_deviation(pair, member, u, "analytic", f, s, mat.thermal_expansion,
-                                                  poisson_ratio=mat.poisson_ratio, bore_radius=bore)
+        out[f"analytic_{name}"] = analytic_flank_deviation(pair, member, u, f, s, mat.thermal_expansion,
+                                                           mat.poisson_ratio, bore)
         out[f"strain_{name}"] = plane_strain_section(pair, member, mat, r, f, s, bore)
     return out
 

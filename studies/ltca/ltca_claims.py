@@ -15,7 +15,7 @@ contact-line mean of the thermal expansion.  Amplitudes: half peak-to-peak of th
 the new gear (wear cases) or against thermal off (45 K).  With ``ltca`` the wear and the
 lubrication load are shared along the contact lines like the LTCA cycles (the wear from the
 unworn cycle, the contact load of each pass from its deviated cycle:
-:func:`femgear.system.coupling.loop.ltca_reference`).  Then the cost of a coupling pass (median
+:func:`femgear.system.coupling.setup.ltca_reference`).  Then the cost of a coupling pass (median
 wall time of the LTCA re-run, the dynamics including it, the wear, the contact response),
 the passes to convergence and the largest wear depth.  Prints a table and a JSON line;
 writes ``out/ltca_claims/ltca_claims.json``.

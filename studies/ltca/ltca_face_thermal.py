@@ -61,16 +61,16 @@ def load_profile(res, b: float, n: int = 8) -> dict:
 def compare(setup) -> dict:
     """The deviated LTCA cycle on −ζ_T face-resolved and face-uniform, from the loop's own functions."""
     from femgear.errors import ConvergenceError
-    from femgear.system.coupling.loop import _removed_deviation, _thermal
+    from femgear.system.coupling.passes import pass_thermal, removed_deviation
 
     n = setup.kin.u.size
-    rise, zeta, face = _thermal(setup, np.zeros(n))
+    rise, zeta, face = pass_thermal(setup, np.zeros(n))
     wear, wear_face = np.zeros((2, n)), np.zeros((2, 2, n, setup.face.grid.size))
     rows = {}
     for name, field in (("face-resolved", face), ("face-uniform", None)):
         t0 = time.perf_counter()
         try:
-            cycle = setup.ltca.deviated(_removed_deviation(setup, wear, zeta, wear_face, field))
+            cycle = setup.ltca.deviated(removed_deviation(setup, wear, zeta, wear_face, field))
         except ConvergenceError as exc:
             rows[name] = {"error": str(exc), "seconds": time.perf_counter() - t0}
             continue
@@ -108,7 +108,7 @@ def passes(setup) -> dict:
 
 def face_cost(setup) -> dict:
     """Seconds of the face field per pass (``ThermalUnits.face`` + the face deviation), medians of 20."""
-    from femgear.system.coupling.loop import _removed_deviation
+    from femgear.system.coupling.passes import removed_deviation
     from femgear.system.coupling.thermal import roll_distances
 
     n, g = setup.kin.u.size, setup.face.grid
@@ -124,8 +124,8 @@ def face_cost(setup) -> dict:
 
     face = setup.thermal.face(rho, g, 30.0, 0.0)
     return {"face_field_s": median(lambda: setup.thermal.face(rho, g, 30.0, 0.0)),
-            "deviation_resolved_s": median(lambda: _removed_deviation(setup, zero, zero, zf, face)),
-            "deviation_uniform_s": median(lambda: _removed_deviation(setup, zero, zero, zf, None)),
+            "deviation_resolved_s": median(lambda: removed_deviation(setup, zero, zero, zf, face)),
+            "deviation_uniform_s": median(lambda: removed_deviation(setup, zero, zero, zf, None)),
             "points": [n, int(g.size)]}
 
 

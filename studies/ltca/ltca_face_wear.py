@@ -12,7 +12,7 @@ the LTCA on that topography).  Prints per case the largest depth and where it is
 path position from the pitch point, face position), the face-mean depth, the mid-face / face-end
 ratio, the gear's y amplitude and v_y, the loaded TE p-p of the worn flanks, the passes, the wear time
 per pass and the mesh orders the LTCA resolves on the converged worn flanks (the face runs band-limit
-their excitation to these, :func:`femgear.system.coupling.loop._worn_orders`; the path runs keep the unworn
+their excitation to these, :func:`femgear.system.coupling.passes.worn_orders`; the path runs keep the unworn
 cycle's); then the
 cost of one wear step (load sharing over the LTCA phases + Archard rates, medians of 5) and of a
 pass's wear integration.  Writes ``out/ltca_face_wear/ltca_face_wear.{json,png}`` (depth maps of the
@@ -82,12 +82,12 @@ def worn_orders(setup, case) -> int:
     :func:`femgear.physics.ltca.level.resolved_orders`); the face runs band-limit their excitation to these, the
     path runs keep the unworn cycle's."""
     from femgear.physics.ltca.level import resolved_orders
-    from femgear.system.coupling.loop import _removed_deviation
+    from femgear.system.coupling.passes import removed_deviation
 
     wear, zeta, face = C.wear(case), C.thermal_deviation(case), case.tribology.wear_face
     c = setup.ltca
     return resolved_orders(c.model, c.force, c.modifications, c.stagger, c.n_line,
-                           _removed_deviation(setup, wear, zeta, face))[0]
+                           removed_deviation(setup, wear, zeta, face))[0]
 
 
 def step_cost(setup) -> dict:
@@ -97,10 +97,10 @@ def step_cost(setup) -> dict:
 
     from femgear.physics.wear import WearSetup, WearState, run_wear, wear_rates
     from femgear.physics.wear.face import FaceWearState, face_rates, run_face_wear
-    from femgear.system.coupling.loop import _references
+    from femgear.system.coupling.passes import reference_loads
 
     zero = np.zeros((2, setup.kin.u.size))
-    ref, _ = _references(setup, setup.ltca, zero, zero)
+    ref, _ = reference_loads(setup, setup.ltca, zero, zero)
     case = setup.case
     ws = WearSetup(pair=setup.pair, kin=setup.kin, force=setup.static_force, c_l=setup.c_l,
                    coefficient=case.wear.coefficient, hardness=case.material.hardness, reference=ref)

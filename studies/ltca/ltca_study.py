@@ -234,7 +234,9 @@ def harris(scene, pair, level, factors, phases=32, rule="helical"):
 
 def run(coarse: bool = False) -> dict:
     from femgear.edge.io.ltca import write_flank_pressure
-    from femgear.levels.stiffness import mesh_stiffness
+    from femgear.physics.stiffness import uniform_mesh_stiffness
+    from femgear.physics.stiffness.pem import pem_mesh_stiffness
+    from femgear.physics.stiffness.tvms import iso6336_helix_stiffness
 
     scene, pair = setup()
     levels = (0, 1) if coarse else (1, 2, 3, 4)
@@ -245,8 +247,10 @@ def run(coarse: bool = False) -> dict:
     h_spur = None if coarse else harris(scene, near_spur_pair(pair), 0, factors, rule="spur")[0]
     h_spur_helical = None if coarse else harris(scene, near_spur_pair(pair), 0, factors, rule="helical")[0]
     disc = discretisation(scene, pair, 0 if coarse else 1)
-    iso = mesh_stiffness(pair, "iso6336", n_positions=16)
-    pem = mesh_stiffness(pair, "pem", n_positions=64)
+    E, nu = scene.material.youngs_modulus, scene.material.poisson_ratio
+    k_iso, record = iso6336_helix_stiffness(pair, E)
+    iso = uniform_mesh_stiffness(pair, k_iso, "iso6336", 16, iso=record)
+    pem = pem_mesh_stiffness(pair, E, nu, 64)
     out = {"convergence": conv, "body": body, "discretisation": disc, "harris": h, "harris_near_spur": h_spur,
            "harris_near_spur_helical_rule": h_spur_helical, "k_iso6336": iso.mean, "k_pem": pem.mean,
            "k_ltca": conv["rows"][-1]["k_mean"], "k_ltca_default": conv["rows"][0]["k_mean"],

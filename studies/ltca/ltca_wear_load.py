@@ -45,7 +45,7 @@ def _model_rows(pair, scene, kw: dict, n_phases: int, n_line: int) -> dict:
     from femgear.physics.wear import WearState, wear_rates
     from femgear.physics.wear.load_sharing import load_map, reference_load_map, reference_loads, trapezoid_weights
     from femgear.scene.schema import FlankModification, Modifications
-    from femgear.system.coupling.loop import ltca_reference
+    from femgear.system.coupling.setup import ltca_reference
 
     F = normal_force(pair, 200.0)
     u = path_positions(pair, 61)

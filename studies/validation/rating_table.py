@@ -43,7 +43,7 @@ def rate(path: Path, fillet: bool, overrides=()):
     case = build_case(scene)
     pair = case.pair
     contact = contact_pass(case, u=zone_grid(pair, scene.numerics.path_points))
-    return scene, pair, rate_case(scene, pair, contact)
+    return scene, pair, rate_case(case, contact)
 
 
 def table(scene, pair, r, unit=None) -> tuple[str, dict]:

@@ -33,8 +33,9 @@ import numpy as np
 
 from femgear.case import build_case
 from femgear.levels import stiffness as stiffness_levels
-from femgear.levels.thermal import flank_deviation_of
+from femgear.levels.thermal import case_arguments
 from femgear.perf import measure, pareto_front
+from femgear.physics.body.thermal import analytic_flank_deviation, fe_flank_deviation
 from femgear.scene import load_scene
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -74,8 +75,12 @@ def thermal(scene, quick: bool, repeats: int) -> list[dict]:
     u = path_positions(case.pair, 21)
     mn = s.pair.normal_module
     fe = [2.5, 4.0] if quick else [2.5, 4.0, 8.0]
-    cases = [("analytic", lambda: flank_deviation_of(case, 1, u, level="analytic"))]
-    cases += [(f"fe h=m/{d:g}", lambda d=d: flank_deviation_of(case, 1, u, level="fe", h=mn / d)) for d in fe]
+    a, rises = case_arguments(case, 1), (case.thermal.flank_temperature_rise, case.thermal.shaft_temperature_rise)
+    cases = [("analytic", lambda: analytic_flank_deviation(case.pair, 1, u, *rises, a["expansion"], a["poisson_ratio"],
+                                                           a["bore_radius"]))]
+    cases += [(f"fe h=m/{d:g}", lambda d=d: fe_flank_deviation(
+        case.pair, 1, u, *rises, a["expansion"], a["youngs_modulus"], a["poisson_ratio"], a["conductivity"],
+        a["bore_radius"], h=mn / d)) for d in fe]
     return _rows("thermal", cases, lambda a, r: np.max(np.abs(a - r)) / np.max(np.abs(r)), repeats)
 
 

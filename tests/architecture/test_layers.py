@@ -1,9 +1,9 @@
 """Identities of the package structure: imports only point down, no cycles, no long functions.
 
-The import graph counts every ``import`` statement of ``femgear`` — at module level and inside
-functions: a lazy import is still a dependency — except those under ``if TYPE_CHECKING:``,
-which never run (a levels factory may name ``femgear.case.Case`` there for its annotations).
-Each edge points at the imported module itself (``from femgear.a import b`` → ``femgear.a.b``
+The import graph counts every ``import`` statement of ``femgear`` — at module level, inside
+functions (a lazy import is still a dependency) and under ``if TYPE_CHECKING:`` (a type-only import
+never runs, but a reader follows it as a dependency all the same: an annotation naming a higher
+layer's class is an upward edge). Each edge points at the imported module itself (``from femgear.a import b`` → ``femgear.a.b``
 when that is a module, else ``femgear.a``).
 
 The allowed directions are data (:data:`ORDER`): for a package, its children in tiers from low
@@ -14,10 +14,11 @@ names fails :func:`test_every_unit_has_a_place`: a new folder or module must be 
 order, not slip in unordered.
 
 Layers of ``femgear`` (low → high; ARCHITECTURE.md says why):
-base (errors, docfields, perf) · physics (the leaves: arrays, numbers, typed objects) · levels
-(one registry per sub-model: the only place that dispatches on a level name) · input (scene,
-rexs) · case (the Case, built once per run) · system (dynamics, coupling) · driver (results,
-rate, stages, pipeline, summary) · edge (plot, io, run, sweep, cli; ``__main__``).
+base (errors, docfields, perf) · physics (the leaves: arrays, numbers, typed objects) · input
+(scene, with the catalogue of levels as data; rexs) · case (the Case, built once per run) · levels
+(one registry of factories per sub-model, each ``(case, **options) -> product``: the only place
+that dispatches on a level name) · system (dynamics, coupling) · driver (results, rate, stages,
+pipeline, summary) · edge (plot, io, run, sweep, cli; ``__main__``).
 
 The physics leaves form a DAG, read from what they compute:
 geometry (the gear) and excitation (errors, backlash) use no other leaf; mesh (gmsh sections
@@ -55,9 +56,9 @@ MAX_FUNCTION_LINES = 100
 LAYERS = {
     "base": [["*"], ["errors", "docfields"], ["perf"]],   # "*": femgear/__init__ (a docstring and __version__)
     "physics": [["physics"]],
-    "levels": [["levels"]],
     "input": [["scene"], ["rexs"]],
     "case": [["case"]],
+    "levels": [["levels"]],
     "system": [["system"]],
     "driver": [["results"], ["rate"], ["stages"], ["pipeline", "summary"]],
     "edge": [["edge"], ["__main__"]],
@@ -71,8 +72,8 @@ ORDER: dict[str, list[list[str]]] = {
     "femgear.edge": [["plot"], ["io"], ["run"], ["sweep"], ["cli"]],
 }
 
-# The only file writers below the edge: build-once disk caches and the resumable wear checkpoint (DESIGN.md: "cached
-# on disk where costly"), which write only under out/cache or a path the caller passes.
+# The only file writers below the edge: build-once disk caches and the resumable wear checkpoint (ARCHITECTURE.md:
+# "cached on disk where costly"), which write only under out/cache or a path the caller passes.
 CACHES = {"femgear.physics.ltca.compliance", "femgear.physics.wear.archard"}
 WRITE_CALLS = {"write_text", "write_bytes", "savefig", "save", "savez", "savez_compressed", "dump", "to_csv",
                "write_vtk", "to_file"}
@@ -88,26 +89,16 @@ def _modules() -> dict[str, Path]:
     return mods
 
 
-def _type_checking_nodes(tree: ast.AST) -> set[int]:
-    """ids of the nodes under ``if TYPE_CHECKING:`` / ``if typing.TYPE_CHECKING:`` (never run)."""
-    skip = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.If):
-            t = node.test
-            if (isinstance(t, ast.Name) and t.id == "TYPE_CHECKING") or (
-                    isinstance(t, ast.Attribute) and t.attr == "TYPE_CHECKING"):
-                skip.update(id(n) for stmt in node.body for n in ast.walk(stmt))
-    return skip
-
-
 def _imports(name: str, path: Path, modules: dict[str, Path]) -> set[str]:
-    tree = ast.parse(path.read_text(encoding="utf-8"))
+    return _imports_of_source(path.read_text(encoding="utf-8"), name, path, modules)
+
+
+def _imports_of_source(source: str, name: str, path: Path, modules: dict[str, Path]) -> set[str]:
+    """The femgear modules that ``source`` (module ``name`` at ``path``) imports, type-only imports included."""
+    tree = ast.parse(source)
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
-    skip = _type_checking_nodes(tree)
     out = set()
     for node in ast.walk(tree):
-        if id(node) in skip:
-            continue
         if isinstance(node, ast.Import):
             out.update(a.name for a in node.names if a.name.startswith("femgear"))
         elif isinstance(node, ast.ImportFrom):
@@ -186,9 +177,14 @@ def test_imports_only_point_down():
 
 
 def test_order_catches_an_upward_import():
-    """The rule itself: physics below the case, ehl's core below its discretisations, FD above FE
-    (its line solver drives FE's damped Newton), never the reverse."""
+    """The rule itself: physics below the case, the case below the levels' factories, the catalogue of
+    levels (input) below the case, ehl's core below its discretisations, FD above FE (its line solver
+    drives FE's damped Newton), never the reverse."""
     assert direction("femgear.physics.lubrication.oil", "femgear.case").startswith("up in femgear")
+    assert direction("femgear.case.checks", "femgear.levels.stiffness").startswith("up in femgear")
+    assert direction("femgear.levels.stiffness", "femgear.case") == "down"
+    assert direction("femgear.scene.schema", "femgear.levels.dynamics").startswith("up in femgear")
+    assert direction("femgear.levels.registry", "femgear.scene.levels") == "down"
     assert direction("femgear.physics.ehl.core.grid", "femgear.physics.ehl.fe.level").startswith("up")
     assert direction("femgear.physics.ehl.fe.point", "femgear.physics.ehl.fd.point").startswith("up")
     assert direction("femgear.physics.ehl.fd.line", "femgear.physics.ehl.fe.newton") == "down"
@@ -209,17 +205,15 @@ def test_no_import_cycles():
 
 
 def test_graph_sees_known_edges():
-    """The graph is not vacuous: it finds the cli → cli.common and lazy edges, and skips TYPE_CHECKING."""
+    """The graph is not vacuous: it finds the cli → cli.common and lazy edges, and type-only ones."""
     _, edges = import_graph()
     assert any(m.startswith("femgear.edge.cli.common") for m in edges["femgear.edge.cli.common"] | edges["femgear.edge.cli.run"])
     assert "femgear.physics.body.elastic3d" in edges["femgear.physics.ltca.compliance"]  # a lazy import
     assert len(sum((list(v) for v in edges.values()), [])) > 100
     src = "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from femgear.case import Case\nimport femgear.errors\n"
-    tree = ast.parse(src)
-    skip = _type_checking_nodes(tree)
-    seen = [n.names[0].name if isinstance(n, ast.Import) else n.module for n in ast.walk(tree)
-            if isinstance(n, (ast.Import, ast.ImportFrom)) and id(n) not in skip]
-    assert seen == ["typing", "femgear.errors"]
+    probe = ROOT / "physics" / "_probe.py"      # not written: _imports reads the text through this stand-in
+    seen = _imports_of_source(src, "femgear.physics._probe", probe, _modules())
+    assert seen == {"femgear.case", "femgear.errors"}     # the type-only import counts (an upward edge here)
 
 
 def _writes(path: Path) -> list[str]:

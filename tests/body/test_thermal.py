@@ -6,12 +6,14 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.case.pair import pair_from_scene
-from femgear.levels.thermal import flank_deviation, flank_deviation_of
+from femgear.levels import REGISTRIES
+from femgear.levels import thermal as thermal_levels
 from femgear.physics.body.thermal import (
+    analytic_flank_deviation,
     analytic_radial_displacement,
     disk_radial_displacement,
     disk_temperature,
+    fe_flank_deviation,
     flank_displacement,
     gear_thermo_elastic,
     solve_temperature,
@@ -107,14 +109,13 @@ def test_thick_disk_converges_at_second_order():
 def test_analytic_level_matches_fe_with_radial_gradient():
     p = _small_pair()
     u = np.linspace(p.u_start, p.u_end, 5)
-    za = flank_deviation(p, 1, u, "analytic", 80.0, 40.0, LAM, E, NU)
-    zf = flank_deviation(p, 1, u, "fe", 80.0, 40.0, LAM, E, NU, h=p.m_n / 4)
+    za = analytic_flank_deviation(p, 1, u, 80.0, 40.0, LAM, NU)
+    zf = fe_flank_deviation(p, 1, u, 80.0, 40.0, LAM, E, NU, h=p.m_n / 4)
     # model difference (tooth not at one temperature near its root), not discretisation error
     np.testing.assert_allclose(zf, za, rtol=0.15)
     assert np.all(np.diff(za) > 0)          # grows with the roll length
-    np.testing.assert_array_equal(flank_deviation(p, 1, u, "none", 80.0, 40.0, LAM), 0.0)
-    with pytest.raises(ValueError, match="level"):
-        flank_deviation(p, 1, u, "weber", 80.0, 40.0, LAM)
+    with pytest.raises(ValueError, match="physics.thermal.*unknown level 'weber'"):
+        REGISTRIES["thermal"]["weber"]
 
 
 def test_analytic_uniform_is_lambda_dT_rho():
@@ -123,15 +124,15 @@ def test_analytic_uniform_is_lambda_dT_rho():
     r, alpha, rho = contact_geometry(p, 1, u)
     ur = analytic_radial_displacement(p, 1, r, 30.0, 30.0, LAM, NU)
     np.testing.assert_allclose(ur, LAM * 30 * r, rtol=1e-12)
-    z = flank_deviation(p, 1, u, "analytic", 30.0, 30.0, LAM)
+    z = analytic_flank_deviation(p, 1, u, 30.0, 30.0, LAM)
     np.testing.assert_allclose(z, LAM * 30 * rho * math.cos(p.beta_b), rtol=1e-12)
 
 
 def test_scene_entry_point():
-    """The scene's rises, material and bore reach :func:`flank_deviation`: a uniform rise (flank =
+    """The scene's rises, material and bore reach the ``analytic`` level's unit responses: a uniform rise (flank =
     shaft = 35 K) is a free dilatation, so the flank moves by λ ΔT ρ cos β_b along the line of action
     (the closed form of ``test_analytic_uniform_is_lambda_dT_rho``) with the baseline's λ = 1.16e-5 /K;
-    a flank-only rise gives what the explicit call with the scene's values gives."""
+    a flank-only rise gives what the physics' own call with the scene's values gives."""
     from pathlib import Path
 
     from femgear.scene import load_scene
@@ -139,17 +140,15 @@ def test_scene_entry_point():
     path = Path(__file__).resolve().parents[2] / "studies" / "paper_baseline.toml"
     sc = load_scene(path, overrides=["thermal.flank_temperature_rise=35", "thermal.shaft_temperature_rise=35",
                                      "physics.thermal=analytic"])
-    p = pair_from_scene(sc)
-    u = np.linspace(p.u_start, p.u_end, 4)
+    case = build_case(sc)
+    p, u = case.pair, case.path.u
     _, _, rho = contact_geometry(p, 1, u)
     lam = sc.material.thermal_expansion
     assert lam == 1.16e-5
-    np.testing.assert_allclose(flank_deviation_of(build_case(sc), 1, u), lam * 35 * rho * math.cos(p.beta_b), rtol=1e-12)
+    uniform = thermal_levels.of(case).deviation(35.0, 35.0)[0]
+    np.testing.assert_allclose(uniform, lam * 35 * rho * math.cos(p.beta_b), rtol=1e-12)
 
-    sc = load_scene(path, overrides=["thermal.flank_temperature_rise=35", "physics.thermal=analytic"])
-    z = flank_deviation_of(build_case(sc), 1, u)
-    mat = sc.material
-    explicit = flank_deviation(p, 1, u, "analytic", 35.0, 0.0, lam, mat.youngs_modulus, mat.poisson_ratio,
-                               bore_radius=sc.pinion.bore_radius)
+    z = thermal_levels.of(case).deviation(35.0, 0.0)[0]
+    explicit = analytic_flank_deviation(p, 1, u, 35.0, 0.0, lam, sc.material.poisson_ratio, sc.pinion.bore_radius)
     np.testing.assert_allclose(z, explicit, rtol=1e-12)
     assert np.all(z < lam * 35 * rho * math.cos(p.beta_b))     # a cool shaft holds the flank back

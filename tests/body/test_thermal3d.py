@@ -8,7 +8,7 @@ import pytest
 
 from femgear.case.pair import pair_from_scene
 from femgear.errors import SceneError
-from femgear.levels.thermal import flank_deviation
+from femgear.physics.body.thermal import fe_flank_deviation
 from femgear.physics.geometry.gear import GearPair
 from femgear.physics.ltca.separation import tabulated_deviation
 from femgear.physics.ltca.thermal import thermal_units_3d
@@ -61,7 +61,7 @@ def test_mid_face_deviation_within_band_of_the_2d_fe():
     u = np.linspace(pair.u_start, pair.u_end, 5)
     _, _, rho = contact_geometry(pair, 1, u)
     for (f, s), band in (((1.0, 0.0), (-0.05, 0.0)), ((0.0, 1.0), (0.0, 0.08))):
-        z2 = flank_deviation(pair, 1, u, "fe", f, s, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio)
+        z2 = fe_flank_deviation(pair, 1, u, f, s, m.thermal_expansion, m.youngs_modulus, m.poisson_ratio)
         ratio = units.at(rho, 0.5 * pair.b, 0, f, s) / z2 - 1.0
         assert np.all((ratio > band[0]) & (ratio < band[1])), ratio
 

@@ -1,6 +1,6 @@
 """Wear removes material, so it opens the backlash; thermal growth closes it (issue 37, item 3).
 
-The model of each coupling pass (:func:`femgear.system.coupling.loop.pass_model`) is read here for the thing it
+The model of each coupling pass (:func:`femgear.system.coupling.passes.pass_model`) is read here for the thing it
 must get right: with wear w on the drive flanks the drive flanks touch w later and the dead zone's half-width
 grows by w/2; a pair without backlash never jams from wear; and where the flanks would jam, the refusal says that
 the thermal growth closes the dead zone and the wear opens it.  Before, that refusal read "the flank deviations
@@ -21,7 +21,7 @@ from femgear.case import build_case
 from femgear.errors import SceneError
 from femgear.scene import load_scene
 from femgear.system.coupling import CouplingSetup, coupling_iterations
-from femgear.system.coupling.loop import pass_model
+from femgear.system.coupling.passes import pass_model
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "zoo" / "fzg_c14.toml"
 COUPLED = ['physics.dynamics="lumped"', 'physics.coupling="bidirectional"', 'physics.stiffness="pem"',
@@ -54,8 +54,8 @@ def test_uniform_wear_opens_the_drive_side_by_its_depth(start):
     setup, state = start
     n = setup.kin.u.size
     zero = np.zeros((2, n))
-    new, _ = pass_model(setup, replace(state, wear=zero, thermal_deviation=zero))
-    worn, _ = pass_model(setup, replace(state, wear=np.full((2, n), 2e-6), thermal_deviation=zero))   # h1 + h2 = 4 µm
+    new, *_ = pass_model(setup, replace(state, wear=zero, thermal_deviation=zero))
+    worn, *_ = pass_model(setup, replace(state, wear=np.full((2, n), 2e-6), thermal_deviation=zero))   # h1 + h2 = 4 µm
     d0, c0 = _thresholds(new)
     d1, c1 = _thresholds(worn)
     np.testing.assert_allclose(d1 - d0, 4e-6, rtol=1e-9)      # the drive flanks touch 4 µm later
@@ -80,7 +80,7 @@ def test_the_computed_wear_opens_and_the_thermal_growth_closes(start):
 def test_a_pair_without_backlash_never_jams_from_wear():
     setup, state = _start(0.0)
     worn = replace(state, thermal_deviation=np.zeros_like(state.thermal_deviation))
-    model, _ = pass_model(setup, worn)
+    model, *_ = pass_model(setup, worn)
     assert np.all(model.backlash_at(np.linspace(0, 1 / model.mesh_frequency, 33)) >= 0)
 
 

@@ -10,8 +10,8 @@ import pytest
 from femgear.case import build_case
 from femgear.case.pair import pair_from_scene
 from femgear.levels import stiffness as stiffness_levels
-from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.pem import pem_mesh_stiffness
 from femgear.scene import load_scene
 from femgear.system.dynamics.one_mesh import (
     MemberData,
@@ -108,7 +108,7 @@ def test_dynamic_run_axial_force_and_mean_mesh_force(kind):
     base = dict(z1=20, z2=40, m_n=3e-3, alpha_n=math.radians(20), b=0.03, x1=0.0, x2=0.0)
     pair = GearPair.from_parameters(beta=math.radians(20) if kind != "spur" else 0.0, kind=kind, **base)
     mems = (MemberData(1.0, 1e-3, 5e8, 2e8, 500.0, 300.0), MemberData(3.0, 8e-3, 5e8, 4e8, 500.0, 300.0))
-    k = mesh_stiffness(pair, "pem", n_positions=60).k_left
+    k = pem_mesh_stiffness(pair, 210e9, 0.3, 60).k_left
     model = build_one_mesh(pair, mems, k, 150.0)
     fm = 0.8 * natural_frequencies(model)[0]
     r = simulate_one_mesh(model, fm, periods=30, record=10)

@@ -96,7 +96,7 @@ def test_the_writer_computes_nothing(tmp_path, monkeypatch):
         raise AssertionError("the writer computed something")
 
     for name in ("femgear.rate.rate_case", "femgear.rate.contact_figures", "femgear.rate.power_loss",
-                 "femgear.rate.scene_rating", "femgear.stages.body_sections", "femgear.stages.ltca_maps",
+                 "femgear.rate.pitting_of", "femgear.stages.body_sections", "femgear.stages.ltca_maps",
                  "femgear.physics.body.thermal.gear_thermo_elastic", "femgear.physics.ltca.maps.load_maps",
                  "femgear.levels.lubrication.lubrication_solver", "femgear.levels.contact.contact_pass",
                  "femgear.physics.contact.path.contact_along_path", "femgear.case.build_case"):

@@ -89,7 +89,7 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
     from types import SimpleNamespace
 
     from femgear.case import build_case
-    from femgear.system.coupling.loop import _deviated_model
+    from femgear.system.coupling.passes import deviated_model
     from femgear.system.dynamics.build import build_model
 
     class Source:
@@ -99,17 +99,20 @@ def test_the_coupling_pass_counts_a_worn_flank_once(unworn, baseline_pair, basel
     model = build_model(case, stiffness=Source, friction=0.0)
     u = path_positions(baseline_pair, 41)
     setup = SimpleNamespace(kin=SimpleNamespace(u=u), pair=baseline_pair, case=SimpleNamespace(stagger=0.0),
-                            n_phase=64, ltca=unworn, model=model, deviated={})
+                            n_phase=64, ltca=unworn, model=model)
     wear = np.array([np.full(u.size, 1e-6), np.zeros(u.size)])
     zeta = np.array([np.zeros(u.size), np.full(u.size, 0.4e-6)])
-    state = SimpleNamespace(wear=wear, thermal_deviation=zeta, wear_face=None, thermal_face=None)
-    base, extra, worn = _deviated_model(setup, state)
+    state = SimpleNamespace(wear=wear, thermal_deviation=zeta, wear_face=None, thermal_face=None, deviated=None)
+    base, extra, worn, deviated = deviated_model(setup, state)
     assert np.allclose(base.base_deviation.drive - model.base_deviation.drive, 1e-6 - 0.4e-6, rtol=1e-6)
     assert np.all(extra.drive == 0) and np.allclose(extra.coast, -0.4e-6, rtol=1e-12)
     assert worn.lte_peak_to_peak == pytest.approx(unworn.lte_peak_to_peak, rel=1e-6)
-    same, none, cycle = _deviated_model(setup, SimpleNamespace(wear=0 * wear, thermal_deviation=0 * zeta,
-                                                              wear_face=None, thermal_face=None))
-    assert same is model and none is None and cycle is unworn
+    again = deviated_model(setup, SimpleNamespace(wear=wear, thermal_deviation=zeta, wear_face=None, thermal_face=None,
+                                                  deviated=deviated))
+    assert again[2] is worn and again[3] is deviated       # the pass before ran this very deviation: reused
+    same, none, cycle, record = deviated_model(setup, SimpleNamespace(wear=0 * wear, thermal_deviation=0 * zeta,
+                                                                      wear_face=None, thermal_face=None, deviated=None))
+    assert same is model and none is None and cycle is unworn and record is None
 
 
 def test_worn_orders_records_the_smaller_band_in_both_cycles(unworn, baseline_pair, monkeypatch):
@@ -118,7 +121,7 @@ def test_worn_orders_records_the_smaller_band_in_both_cycles(unworn, baseline_pa
     import femgear.physics.ltca.level as level
     from femgear.errors import ConvergenceError
     from femgear.physics.ltca.separation import path_deviation
-    from femgear.system.coupling.loop import _worn_orders
+    from femgear.system.coupling.passes import worn_orders
 
     u = path_positions(baseline_pair, 41)
     extra = path_deviation(baseline_pair, u, np.full((2, u.size), 0.5e-6))
@@ -131,18 +134,18 @@ def test_worn_orders_records_the_smaller_band_in_both_cycles(unworn, baseline_pa
         return 4, np.arange(3.0)
 
     monkeypatch.setattr(level, "resolved_orders", orders)
-    a, b = _worn_orders(base, worn, extra)
+    a, b = worn_orders(base, worn, extra)
     assert seen == {"model": base.model, "force": base.force, "mods": base.modifications, "n_line": 8, "extra": extra}
     assert (a.resolved_orders, b.resolved_orders, base.resolved_orders) == (4, 4, 6)
     assert a.result is base.result and b.result is worn.result and np.array_equal(b.harmonic_change, np.arange(3.0))
     monkeypatch.setattr(level, "resolved_orders", lambda *a: (9, None))
-    assert [c.resolved_orders for c in _worn_orders(base, worn, extra)] == [6, 6]     # never more than unworn
+    assert [c.resolved_orders for c in worn_orders(base, worn, extra)] == [6, 6]     # never more than unworn
 
     def fails(*a):
         raise ConvergenceError("LTCA phase 0.5", "no convergence")
 
     monkeypatch.setattr(level, "resolved_orders", fails)
-    a, b = _worn_orders(base, worn, extra)
+    a, b = worn_orders(base, worn, extra)
     assert (a.resolved_orders, b.resolved_orders, b.harmonic_change) == (1, 1, None)
     assert "no convergence" in b.orders_check and a.orders_check is None
 def test_warm_started_deviated_cycle_equals_the_cold_one(coarse_model, baseline_force, baseline_pair):

@@ -15,7 +15,7 @@ from femgear.physics.geometry import path_positions
 from femgear.physics.ltca.flank import roll_range
 from femgear.physics.ltca.thermal import Thermal3DUnits
 from femgear.physics.wear.face import face_mean
-from femgear.system.coupling.loop import _removed_deviation, _thermal
+from femgear.system.coupling.passes import pass_thermal, removed_deviation
 from femgear.system.coupling.thermal import ThermalUnits, roll_distances
 
 N_ZETA = 21
@@ -86,7 +86,7 @@ def test_face_resolved_growth_loads_the_apex_more(units_3d, coarse_model, baseli
     case = SimpleNamespace(thermal=SimpleNamespace(flank_temperature_rise=30.0, shaft_temperature_rise=0.0,
                                                    bulk_fraction=0.7))
     setup = SimpleNamespace(pair=p, kin=SimpleNamespace(u=grid), face=face_grid, thermal=units_3d, case=case)
-    rise, zeta, zeta_face = _thermal(setup, np.zeros(grid.size))
+    rise, zeta, zeta_face = pass_thermal(setup, np.zeros(grid.size))
     assert rise == 30.0 and zeta_face.shape == (2, 2, grid.size, N_ZETA)
     inner = slice(grid.size // 4, 3 * grid.size // 4)
     assert np.all(zeta_face[:, :, inner, -1] > 1.05 * zeta_face[:, :, inner, 0])    # apex above the outer end
@@ -95,7 +95,7 @@ def test_face_resolved_growth_loads_the_apex_more(units_3d, coarse_model, baseli
     wear, wear_face = np.zeros((2, grid.size)), np.zeros((2, 2, grid.size, N_ZETA))
     centre = {}
     for name, field in (("face", zeta_face), ("uniform", None)):
-        dev = _removed_deviation(setup, wear, zeta, wear_face, field)
+        dev = removed_deviation(setup, wear, zeta, wear_face, field)
         res = mesh_cycle(coarse_model, baseline_force, None, n_phases=8, stagger=0.0, n_line=8, extra=dev,
                          keep_lines=True)
         centre[name] = _load_centre(res)

@@ -43,7 +43,7 @@ def base(baseline_scene, baseline_pair, grid):
 def _analysis(model, force, pair, u, mods=None):
     """(LTCA cycle, FaceReference) of a coarse cycle: 32 phases, 8 points per line."""
     from femgear.physics.ltca.analysis import mesh_cycle
-    from femgear.system.coupling.loop import ltca_face_reference
+    from femgear.system.coupling.setup import ltca_face_reference
 
     res = mesh_cycle(model, force, mods, n_phases=32, stagger=0.0, n_line=8)
     return res, ltca_face_reference(pair, u, LTCACycle.from_result(res, model, mods), np.zeros(u.size), n_zeta=N_ZETA)
@@ -209,7 +209,7 @@ def test_a_coupling_pass_reruns_the_ltca_on_the_face_field(plain, coarse_model, 
     from types import SimpleNamespace
 
     from femgear.physics.ltca.analysis import mesh_cycle
-    from femgear.system.coupling.loop import _removed_deviation
+    from femgear.system.coupling.passes import removed_deviation
 
     _, face = plain
     p, z = baseline_pair, face.grid
@@ -220,7 +220,7 @@ def test_a_coupling_pass_reruns_the_ltca_on_the_face_field(plain, coarse_model, 
     wear = np.array([face_mean(wear_face[j], z).mean(axis=0) for j in (0, 1)])
     runs = {}
     for name, field in (("face", wear_face), ("path", None)):
-        dev = _removed_deviation(setup, wear, zeta, field)
+        dev = removed_deviation(setup, wear, zeta, field)
         runs[name] = mesh_cycle(coarse_model, baseline_force, None, n_phases=8, stagger=0.0, n_line=8, extra=dev,
                                 keep_lines=False)
         if name == "face":

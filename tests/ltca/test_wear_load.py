@@ -36,7 +36,7 @@ def _cycle(model, force, mods=None, extra=None):
 
 def _reference(pair, u, res, deviation=None, mods=None, extra=None):
     """The coupling's reference of an LTCA cycle: its loads and secant stiffness w'/(δ − ε) on the grid."""
-    from femgear.system.coupling.loop import ltca_reference
+    from femgear.system.coupling.setup import ltca_reference
 
     dev = np.zeros(u.size) if deviation is None else deviation
     return ltca_reference(pair, u, LTCACycle.from_result(res, modifications=mods), dev, extra)
@@ -147,7 +147,7 @@ def test_a_coupling_pass_shares_the_wear_and_the_contact_load_like_its_ltca_cycl
     from types import SimpleNamespace
 
     from femgear.physics.ltca.separation import path_deviation
-    from femgear.system.coupling.loop import _references
+    from femgear.system.coupling.passes import reference_loads
 
     p, u = baseline_pair, grid
     wear = np.array([2e-6 * ((u - p.u_pitch) / np.ptp(u)) ** 2, np.zeros(u.size)])
@@ -155,19 +155,19 @@ def test_a_coupling_pass_shares_the_wear_and_the_contact_load_like_its_ltca_cycl
     worn = _cycle(coarse_model, baseline_force, extra=path_deviation(p, u, wear - zeta))
     unworn_info, worn_info = (LTCACycle.from_result(r) for r in (plain, worn))
     setup = SimpleNamespace(pair=p, kin=SimpleNamespace(u=u), ltca=unworn_info, wear_anchor="unworn", n_phase=64)
-    ref_wear, ref_contact = _references(setup, worn_info, wear, zeta)
+    ref_wear, ref_contact = reference_loads(setup, worn_info, wear, zeta)
     assert np.array_equal(ref_contact.load, worn.path_load(p, u, scaled=True))
     assert np.allclose(ref_contact.deviation, wear.sum(axis=0) - zeta.sum(axis=0), rtol=0, atol=1e-18)
     assert np.array_equal(ref_wear.load, plain.path_load(p, u, scaled=True)) and ref_wear.end is None
     assert np.allclose(ref_wear.deviation, zeta.sum(axis=0), rtol=0, atol=1e-18)
     setup.wear_anchor = "pass"
-    blended, _ = _references(setup, worn_info, wear, zeta)
+    blended, _ = reference_loads(setup, worn_info, wear, zeta)
     assert np.array_equal(blended.end.load, ref_contact.load) and blended.progress(wear.sum(axis=0)) == 1.0
-    assert _references(setup, None, wear, zeta) == (None, None)
-    same, _ = _references(setup, unworn_info, 0 * wear, 0 * zeta)
+    assert reference_loads(setup, None, wear, zeta) == (None, None)
+    same, _ = reference_loads(setup, unworn_info, 0 * wear, 0 * zeta)
     assert same.end is None and np.array_equal(same.load, ref_wear.load)
     setup.n_phase = 6                        # every third of the 16 phases
-    fewer, _ = _references(setup, unworn_info, 0 * wear, 0 * zeta)
+    fewer, _ = reference_loads(setup, unworn_info, 0 * wear, 0 * zeta)
     assert np.array_equal(fewer.phases, plain.phase[::3]) and np.array_equal(fewer.load, same.load[:, ::3])
 
 

@@ -10,7 +10,6 @@ from pathlib import Path
 import pytest
 
 from femgear.case import build_case
-from femgear.case.pair import pair_from_scene
 from femgear.levels.contact import contact_pass
 from femgear.physics.rating.suite import PairRating
 from femgear.rate import rate_case
@@ -26,9 +25,8 @@ FIXED_K = ["rating.dynamic_factor=1.0", "rating.face_load_factor=1.0", "rating.t
 
 
 def _rate(overrides=()):
-    scene = load_scene(FZG, list(overrides))
-    pair = pair_from_scene(scene)
-    return rate_case(scene, pair, contact_pass(build_case(scene, pair)))
+    case = build_case(load_scene(FZG, list(overrides)))
+    return rate_case(case, contact_pass(case))
 
 
 def test_defaults_are_said_in_one_line(caplog):
@@ -65,8 +63,9 @@ def test_out_of_range_warns_with_key_and_limit(caplog):
 
 def test_marine_pair_flags_the_helix_angle():
     scene = load_scene(ROOT / "studies" / "zoo" / "marine.toml")
-    pair = pair_from_scene(scene)
-    r = rate_case(scene, pair, contact_pass(build_case(scene, pair)))
+    case = build_case(scene)
+    pair = case.pair
+    r = rate_case(case, contact_pass(case))
     assert math.degrees(pair.beta) > 25
     assert r.flagged("S_lambda") and any("helix_angle_deg" in f and "25°" in f for f in r.flags)
     assert all(math.isfinite(v) and v > 0 for v in r.safety_factors.values())

@@ -9,9 +9,8 @@ import numpy as np
 import pytest
 
 from femgear.case import build_case
-from femgear.case.pair import pair_from_scene
 from femgear.levels.contact import contact_pass
-from femgear.rate import power_loss, scene_rating
+from femgear.rate import pitting_of, power_loss
 from femgear.scene import load_scene
 
 FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
@@ -20,9 +19,8 @@ FZG = Path(__file__).resolve().parents[2] / "studies" / "fzg_c14.toml"
 def test_rating_inputs_reach_the_factors():
     fixed = ["rating.dynamic_factor=1.0", "rating.face_load_factor=1.0", "rating.transverse_load_factor=1.0"]
     scene = load_scene(FZG, ["rating.application_factor=1.25", "rating.life_hours=100", *fixed])
-    pair = pair_from_scene(scene)
-    base = scene_rating(load_scene(FZG, fixed), pair)
-    r = scene_rating(scene, pair)
+    base = pitting_of(build_case(load_scene(FZG, fixed)))
+    r = pitting_of(build_case(scene))
     assert r.stress.sigma_H[0] == pytest.approx(base.stress.sigma_H[0] * 1.25**0.5, rel=1e-12)
     assert r.N_L[0] == pytest.approx(60 * 2175 * 100) and r.Z_NT[0] > 1
     assert base.Z_L < 1 and base.Z_R != 1   # ν40 = 95 mm²/s and R_z given in the scene

@@ -13,7 +13,6 @@ from pathlib import Path
 
 import pytest
 
-from femgear.case.pair import pair_from_scene
 from femgear.errors import SceneError
 from femgear.scene import load_scene
 from femgear.scene.ranges import _iso1328, _nominal_contact_stress
@@ -111,11 +110,12 @@ def test_iso1328_tolerances_match_the_standards_formulas():
 def test_nominal_contact_stress_is_isos_sigma_h0_without_z_eps_z_beta():
     """The torque check's σ_H0 against femgear's ISO 6336-2 σ_H0 on the baseline (x = 0: same Z_H),
     divided by Z_ε Z_β that the check leaves out."""
-    from femgear.rate import scene_rating
+    from femgear.case import build_case
+    from femgear.rate import pitting_of
     from femgear.summary import rating_summary
 
     scene = load_scene(BASE)
-    rating = rating_summary(scene_rating(scene, pair_from_scene(scene)))
+    rating = rating_summary(pitting_of(build_case(scene)))
     d1 = 31 * 3e-3 / math.cos(math.radians(30))
     nominal = _nominal_contact_stress(scene, 200.0, d1)
     assert nominal == pytest.approx(rating["sigma_H0"] / (rating["Z_eps"] * rating["Z_beta"]), rel=1e-6)

@@ -5,15 +5,17 @@ import math
 import numpy as np
 import pytest
 
-from femgear.levels.stiffness import mesh_stiffness
+from femgear.physics.stiffness import uniform_mesh_stiffness
 from femgear.physics.stiffness.iso6336 import iso6336_stiffness
 from femgear.physics.stiffness.pem import (
     SAINSOT,
     hertz_compliance,
     pair_stiffness_per_width,
+    pem_mesh_stiffness,
     sainsot_coefficient,
     tooth_compliance,
 )
+from femgear.physics.stiffness.tvms import iso6336_helix_stiffness
 
 
 def test_sainsot_polynomial_exact():
@@ -67,7 +69,7 @@ def test_pem_mean_vs_iso_c_gamma_alpha(baseline_pair):
     (reported by studies/body/mesh_stiffness.py).
     """
     p = baseline_pair
-    ms = mesh_stiffness(p, "pem", n_positions=100, youngs_modulus=206e9)
+    ms = pem_mesh_stiffness(p, 206e9, 0.3, 100)
     k_t = ms.mean_left * math.cos(p.beta_b) ** 2
     iso = iso6336_stiffness(p)
     ratio = k_t / iso.k("c_gamma_alpha")
@@ -81,9 +83,10 @@ def test_one_mesh_kinds_have_no_right_helix():
 
     base = dict(z1=16, z2=24, m_n=4.5e-3, alpha_n=math.radians(20), b=0.014, x1=0.1817, x2=0.1715)
     spur = GearPair.from_parameters(beta=0.0, kind="spur", **base)
-    a = mesh_stiffness(spur, "pem", n_positions=40)
+    a = pem_mesh_stiffness(spur, 210e9, 0.3, 40)
     assert not np.any(a.k_right) and a.ripple("right") == 0.0 and a.mean == pytest.approx(a.mean_left)
     single = GearPair.from_parameters(beta=math.radians(15), kind="single-helical", **base)
-    for level in ("constant", "iso6336", "pem"):
-        ms = mesh_stiffness(single, level, n_positions=20)
+    k_iso, iso = iso6336_helix_stiffness(single)
+    for ms in (uniform_mesh_stiffness(single, 2e10 * single.b, "constant", 20),
+               uniform_mesh_stiffness(single, k_iso, "iso6336", 20, iso=iso), pem_mesh_stiffness(single, 210e9, 0.3, 20)):
         assert not np.any(ms.k_right) and np.all(ms.k_left > 0)

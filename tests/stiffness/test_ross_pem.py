@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry.gear import GearPair
+from femgear.physics.stiffness.pem import pem_mesh_stiffness
 
 DATA = Path(__file__).parent / "data" / "ross_62_62_tvms.json"
 ROSS_TEST_FIRST5 = [396622921.3581085, 396738680.0375346, 396854147.2919756, 396969323.136738, 397084207.5865779]
@@ -33,7 +33,7 @@ def ross():
 def femgear_pem():
     pair = GearPair.from_parameters(z1=62, z2=62, m_n=2e-3, alpha_n=math.radians(20), beta=0.0, b=0.02, x1=0.0,
                                     x2=0.0, kind="spur")
-    return pair, mesh_stiffness(pair, "pem", n_positions=400, youngs_modulus=206e9, poisson_ratio=0.3,
+    return pair, pem_mesh_stiffness(pair, 206e9, 0.3, 400,
                                 bore_radius=(0.0175, 0.0175))
 
 

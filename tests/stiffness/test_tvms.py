@@ -8,11 +8,11 @@ import pytest
 
 from femgear.case import build_case
 from femgear.levels import stiffness as stiffness_levels
-from femgear.levels.stiffness import mesh_stiffness
 from femgear.physics.geometry import double_helical_contact
 from femgear.physics.geometry.gear import GearPair
-from femgear.physics.stiffness.pem import hertz_compliance
-from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness
+from femgear.physics.stiffness import uniform_mesh_stiffness
+from femgear.physics.stiffness.pem import hertz_compliance, pem_mesh_stiffness
+from femgear.physics.stiffness.tvms import MeshStiffness, helix_stiffness, iso6336_helix_stiffness
 
 
 def constant(pair, c: float) -> tuple[np.ndarray, np.ndarray]:
@@ -51,7 +51,7 @@ def test_stiffness_is_continuous_on_a_wide_face():
     from femgear.scene import load_scene
 
     pair = pair_from_scene(load_scene(Path(__file__).resolve().parents[2] / "studies" / "zoo" / "marine.toml"))
-    ms = mesh_stiffness(pair, "pem", n_positions=2000)
+    ms = pem_mesh_stiffness(pair, 210e9, 0.3, 2000)
     k = ms.k_left
     steps = np.abs(np.diff(np.append(k, k[0])))
     # the slope dk/dφ is bounded by the entering and leaving lines: ≤ (k'(u_A) + k'(u_E)) p_bt / tan β_b / cos² β_b
@@ -76,8 +76,8 @@ def test_a_spur_line_sees_one_position():
 
 def test_double_helical_stagger_period_and_ripple(baseline_pair):
     p = baseline_pair
-    half = mesh_stiffness(p, "pem", n_positions=200, stagger=0.5)
-    zero = mesh_stiffness(p, "pem", n_positions=200, stagger=0.0)
+    half = pem_mesh_stiffness(p, 210e9, 0.3, 200, stagger=0.5)
+    zero = pem_mesh_stiffness(p, 210e9, 0.3, 200, stagger=0.0)
     # stagger 0: the sum is twice one helix; stagger ½: period halves, odd harmonics cancel
     np.testing.assert_allclose(zero.k_total, 2 * zero.k_left, rtol=1e-12)
     np.testing.assert_allclose(half.k_total[:100], half.k_total[100:], rtol=1e-9)
@@ -90,7 +90,7 @@ def test_double_helical_stagger_period_and_ripple(baseline_pair):
 
 
 def test_interpolation_periodic(baseline_pair):
-    ms = mesh_stiffness(baseline_pair, "pem", n_positions=64, stagger=0.25)
+    ms = pem_mesh_stiffness(baseline_pair, 210e9, 0.3, 64, stagger=0.25)
     assert isinstance(ms, MeshStiffness)
     np.testing.assert_allclose(ms.at(ms.phase, "left"), ms.k_left)
     np.testing.assert_allclose(ms.at(ms.phase + 3.0, "right"), ms.k_right)
@@ -102,20 +102,22 @@ def test_interpolation_periodic(baseline_pair):
 
 def test_levels_and_bad_arguments(baseline_pair, baseline_scene):
 
-    iso = mesh_stiffness(baseline_pair, "iso6336", n_positions=8)
+    k, record = iso6336_helix_stiffness(baseline_pair)
+    iso = uniform_mesh_stiffness(baseline_pair, k, "iso6336", 8, iso=record)
     assert iso.ripple() == 0 and iso.mean > 0
     const = stiffness_levels.of(build_case(baseline_scene), level="constant", n_positions=8)
     assert const.mean_left == pytest.approx(baseline_scene.stiffness.mesh_stiffness_per_width * baseline_pair.b)
-    with pytest.raises(ValueError, match="level"):
-        mesh_stiffness(baseline_pair, "weber")
+    with pytest.raises(ValueError, match="physics.stiffness.*unknown level 'weber'"):
+        stiffness_levels.of(build_case(baseline_scene), level="weber")
     with pytest.raises(ValueError, match="stagger"):
-        mesh_stiffness(baseline_pair, "pem", stagger=1.2)
+        pem_mesh_stiffness(baseline_pair, 210e9, 0.3, 200, stagger=1.2)
 
 
-def test_fe_level_mean_close_to_pem(baseline_pair):
-    fe = mesh_stiffness(baseline_pair, "fe", n_positions=40,
-                        fe_options={"n_fe": 3, "h": baseline_pair.m_n / 2.5, "refine_ratio": 0.5})
-    pem = mesh_stiffness(baseline_pair, "pem", n_positions=40)
+def test_fe_level_mean_close_to_pem(baseline_pair, baseline_scene):
+    case = build_case(baseline_scene)
+    fe = stiffness_levels.of(case, level="fe", n_positions=40,
+                             fe_options={"n_fe": 3, "h": baseline_pair.m_n / 2.5, "refine_ratio": 0.5})
+    pem = stiffness_levels.of(case, level="pem", n_positions=40)
     assert fe.mean == pytest.approx(pem.mean, rel=0.10)
     assert fe.fe.k.shape == (3,) and all(n > 3000 for n in fe.fe.ndofs)   # graded whole gears
     assert np.allclose(fe.fe.k, 1 / (fe.fe.compliance[0] + fe.fe.compliance[1] + hertz_compliance(210e9, 0.3)))

@@ -1,4 +1,4 @@
-"""Every study follows the one small protocol (DESIGN.md, the Devito habit) and imports from its topic folder.
+"""Every study follows the one small protocol (ARCHITECTURE.md, "Studies"; the Devito habit) and imports from its topic folder.
 
 ``setup()`` says what to run, ``run()`` computes and returns the results, ``main()`` prints and writes behind
 ``if __name__ == "__main__"``; tests call ``run(coarse=True)`` where a study has a coarse level.  Studies

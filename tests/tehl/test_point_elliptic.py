@@ -41,8 +41,8 @@ def test_an_uncrowned_flank_is_handed_over_to_face_slices(caplog):
     with caplog.at_level("WARNING", logger="femgear.physics.tehl"):
         solve = tehl_point_solver(case)
         mu, dT = solve(w=4e5, R=k.R[i], ue=k.ue[i], srr=abs(k.srr[i]), T=313.0)
-    r = solve.last[1][0]
-    assert isinstance(r, SliceResult) and solve.handed_over == 1 and np.allclose(r.load, 4e5)
+    r = solve.latest.results[0]
+    assert isinstance(r, SliceResult) and solve.latest.handed_over == 1 and np.allclose(r.load, 4e5)
     assert len(r.results) == SLICES and 0.005 < mu[0] < 0.1 and dT[0] > 0
     assert len([m for m in caplog.messages if "handed over to line TEHL" in m]) == 1
     with pytest.raises(SceneError, match=r"modifications\.crowning"):
@@ -141,6 +141,7 @@ def test_the_tehl_levels_run_at_turbo_speed_and_refuse_beyond_their_envelope():
     """The turbo zoo pair (131 m/s pitch line, u_e to 57 m/s) and the wind stage (map corner beyond Moes M 340) are
     accepted by both TEHL levels; the turbo pair at 1.6 times its speed (u_e to 90 m/s, above the envelope's
     100 m/s only at 1.8 times) is refused before computing, naming the key and the levels that run there."""
+    from femgear.levels import check_case
     from femgear.levels.contact import reduced_modulus_of
     from femgear.levels.lubrication import oil_law, tehl_axes
     from femgear.physics.tehl.solver import MAX_ENTRAINMENT, map_corner_moes
@@ -150,8 +151,9 @@ def test_the_tehl_levels_run_at_turbo_speed_and_refuse_beyond_their_envelope():
     for level in ("tehl", "tehl-point"):
         build_case(load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"', "modifications.crowning=20e-6"]))
         with pytest.raises(SceneError, match=r'entrainment speed reaches.*"ehl-line"') as info:
-            build_case(load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"', "operating.speed_rpm=28000",
-                                                       "modifications.crowning=20e-6"]))
+            check_case(build_case(load_scene(zoo / "turbo.toml", [f'physics.lubrication="{level}"',
+                                                                  "operating.speed_rpm=28000",
+                                                                  "modifications.crowning=20e-6"])))
         assert info.value.key == "physics.lubrication" and MAX_ENTRAINMENT == 100.0
     wind = build_case(load_scene(zoo / "wind.toml", ['physics.lubrication="tehl"']))
     assert map_corner_moes(tehl_axes(wind), oil_law(wind), reduced_modulus_of(wind))[0] > 300.0

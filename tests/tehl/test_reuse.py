@@ -47,13 +47,13 @@ def test_reused_point_solve_is_within_its_tolerance_of_a_direct_solve():
     args = dict(R=cp.kin.R[i], ue=cp.kin.ue[i], srr=abs(cp.kin.srr[i]), T=scene.operating.ambient_temperature)
     solve = tehl_point_solver(case)
     solve(w=w, **args)
-    assert solve.reuse.solved == 1
+    assert solve.latest.reuse.solved == 1
     mu, dT = solve(w=w * (1 + 2e-5), **args)
-    assert solve.reuse.reused == 1 and solve.reuse.max_estimate <= REUSE_TOL
+    assert solve.latest.reuse.reused == 1 and solve.latest.reuse.max_estimate <= REUSE_TOL
     mu_d, dT_d = tehl_point_solver(case)(w=w * (1 + 2e-5), **args)
     assert abs(mu[0] / mu_d[0] - 1) <= REUSE_TOL and abs(dT[0] / dT_d[0] - 1) <= REUSE_TOL
     mu2, _ = solve(w=w * 1.01, **args)                   # a real load change: solved again
-    assert solve.reuse.solved == 1 and mu2[0] != mu[0]
+    assert solve.latest.reuse.solved == 1 and mu2[0] != mu[0]
 
 
 def test_dense_reuse_converges_to_the_same_point_solution():

@@ -40,13 +40,17 @@ def load_scene_arg(args: argparse.Namespace):
 
 
 def load_case_arg(args: argparse.Namespace):
-    """The bound :class:`femgear.case.Case` of ``SCENE`` (:func:`femgear.case.build_case`, once); for a REXS
-    model, an error of the binding (the gear's feasibility) names the REXS component and attribute."""
+    """The bound :class:`femgear.case.Case` of ``SCENE`` (:func:`femgear.case.build_case`, once), its levels'
+    up-front checks passed (:func:`femgear.levels.check_case`); for a REXS model, an error of the binding (the
+    gear's feasibility) names the REXS component and attribute."""
     from femgear.case import build_case
+    from femgear.levels import check_case
     from femgear.rexs import is_rexs_path
 
     if not is_rexs_path(args.scene):
-        return build_case(load_scene_arg(args))
+        case = build_case(load_scene_arg(args))
+        check_case(case)
+        return case
     from femgear.rexs.importer import read_stage, validate
 
     conv = read_stage(args.scene, args.stage)
@@ -54,14 +58,17 @@ def load_case_arg(args: argparse.Namespace):
 
 
 def bind_rexs(conv, scene):
-    """``build_case(scene)`` of a REXS conversion ``conv``, a :class:`SceneError` re-issued naming the REXS
-    component and attribute of its key (:func:`femgear.rexs.importer.translate`)."""
+    """``build_case(scene)`` of a REXS conversion ``conv`` with its levels' checks, a :class:`SceneError` re-issued
+    naming the REXS component and attribute of its key (:func:`femgear.rexs.importer.translate`)."""
     from femgear.case import build_case
     from femgear.errors import SceneError
+    from femgear.levels import check_case
     from femgear.rexs.importer import translate
 
     try:
-        return build_case(scene)
+        case = build_case(scene)
+        check_case(case)
+        return case
     except SceneError as exc:
         raise translate(conv, exc) from None
 

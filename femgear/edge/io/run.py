@@ -89,9 +89,10 @@ def run_summary(result: RunResult) -> dict[str, Any]:
     summary = scene_summary(case, result.contact, result.figures, ratings=result.rating)
     summary["physics"] = case.levels.model_dump()
     summary["stiffness"] = {"level": ms.level, "mean_total": ms.mean, "ripple_total": ms.ripple()}
-    if ms.level in ("ltca", "fe"):     # the FE bodies' resolution (numerics.body_level unset: the body's default)
-        summary["stiffness"]["body_level"] = case.numerics.level_of(ms.level)
-        if ms.level == "ltca":
+    level = case.levels.spec("stiffness")
+    if level.body is not None:     # the FE bodies' resolution (numerics.body_level unset: the body's default)
+        summary["stiffness"]["body_level"] = case.numerics.level_of(level.body)
+        if level.body_elements:
             summary["stiffness"]["body_elements"] = case.numerics.body_elements
     static = result.coupled is None
     if static:

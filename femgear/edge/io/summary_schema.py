@@ -29,13 +29,11 @@ def _keys(prefix: str, kind: str, names: str, optional: bool = False) -> dict[st
 
 
 def _dynamic(scene) -> bool:
-    from femgear.levels import dynamics as dynamics_levels
-
-    return dynamics_levels.spec(scene.physics.dynamics).is_dynamic
+    return scene.physics.spec("dynamics").is_dynamic
 
 
 def _lubricated(scene) -> bool:
-    return scene.physics.lubrication != "none"
+    return scene.physics.spec("lubrication").friction
 
 
 @dataclass(frozen=True)
@@ -144,11 +142,11 @@ SECTIONS: dict[str, Section] = {
                          **_keys("friction", TEXT, "level")}, _lubricated, 'with a lubrication level other than "none"'),
     "thermal": Section(_keys("thermal", NUMBER, "flank_temperature_rise deviation_pitch_pinion deviation_pitch_gear "
                                                 "max_deviation"),
-                       lambda scene: scene.physics.thermal != "none", 'with a thermal level other than "none"'),
+                       lambda scene: scene.physics.spec("thermal").grows, 'with a thermal level other than "none"'),
     "wear": Section({**_keys("wear", NUMBER, "cycles max_depth_pinion max_depth_gear steps"),
                      **_keys("wear", NUMBER, "film_parameter_min asperity_share_max", optional=True),
                      **_keys("wear", TEXT, "load"), **_keys("wear", LIST, "warnings")},
-                    lambda scene: scene.physics.wear != "none", 'with a wear level other than "none"'),
+                    lambda scene: scene.physics.spec("wear").wears, 'with a wear level other than "none"'),
     "film": Section({**_keys("film", NUMBER, "central_pitch minimum minimum_position pressure_max"),
                      **_keys("film", TEXT, "level method"),
                      # the numerical levels' error estimate; the thermal levels' films beside the isothermal and
@@ -169,7 +167,7 @@ SECTIONS: dict[str, Section] = {
                 optional=True),
         **_keys("transmission_error", TEXT, "max_pressure_where max_pressure_helix"), **_keys("transmission_error", FLAG, "edge_contact"),
         **_keys("transmission_error", TABLE, "units")},
-        lambda scene: scene.physics.stiffness == "ltca", 'with physics.stiffness = "ltca"'),
+        lambda scene: scene.physics.spec("stiffness").contact_lines, 'with physics.stiffness = "ltca"'),
     "dynamics": Section({
         **_keys("dynamics", NUMBER, "dt steps seconds mesh_frequency friction_factor"),
         **_keys("dynamics", PAIR, "mean_mesh_stiffness rayleigh mesh_damping"),

@@ -37,9 +37,10 @@ Element order and resolution (baseline pair, 7 × 9 grid, 64 phases, 200 N m, un
 ``python studies/ltca/ltca_study.py``; member bodies down to the 20 mm shaft): P1 levels 1/2/3/4
 (34 k … 139 k DOF pinion) give a mean mesh stiffness of 7.131/7.026/6.955/6.914e8 N/m and LTE
 p-p 0.5226/0.5275/0.5414/0.5415 µm (the two finest differ by 0.60 % and 0.03 %); Richardson
-puts level 1 at +4.9 % in stiffness.  P1 is the default (``order=1``, level 1: mesh +
-compliance ≈ 23–36 s for both members with the sparse LU) for the 60 s budget; its bias is
-stiff, as expected of linear tetrahedra in bending.  P2 converges much faster per element but
+puts level 1 at +4.9 % in stiffness.  P1 is this module's own default (``order=1``; level 1: mesh +
+compliance ≈ 23–36 s for both members with the sparse LU); its bias is stiff, as expected of linear
+tetrahedra in bending, so the ``ltca`` stiffness level defaults to ``order="p2-bending"`` at level 0
+(``numerics.body_elements``, ``numerics.body_level``) and takes P1 only where a scene asks for it.  P2 converges much faster per element but
 costs ≈ 21 s a unit load with SA-AMG on the bodies (176 k DOF at level 0): on a 5 × 7 grid P1
 level 1 / P1 level 3 / P2 level 0 give 7.119 / 6.954 / 6.742e8 N/m and LTE p-p 0.536 / 0.556 /
 0.564 µm (P1 level 1: +5.6 % / −4.9 % against P2; build 25 s / 183 s / 1503 s;

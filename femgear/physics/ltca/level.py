@@ -1,4 +1,4 @@
-"""The ``ltca`` stiffness level: one LTCA mesh cycle for :func:`femgear.levels.stiffness.mesh_stiffness`.
+"""The ``ltca`` stiffness level: one LTCA mesh cycle for the level's factory (:mod:`femgear.levels.stiffness`).
 
 tvms wraps the cycle as a ``MeshStiffness``: ``k_left``/``k_right`` are the secant
 stiffnesses F_h/(δ − NLTE_h) of each helix along the normal line of action at the
@@ -105,7 +105,7 @@ def ltca_cycle(pair: GearPair, force: float, modifications=None, n_positions: in
     """The :class:`~femgear.physics.ltca.cycle.LTCACycle` at the total normal force ``force`` [N].
 
     The line loads are kept (:meth:`LTCAResult.path_load`: the wear and lubrication load map of
-    the ``ltca`` level, :func:`femgear.system.coupling.loop.ltca_reference`).  ``body``: ``bore_radius``
+    the ``ltca`` level, :func:`femgear.system.coupling.setup.ltca_reference`).  ``body``: ``bore_radius``
     and ``groove_width`` of the member bodies (:func:`femgear.levels.stiffness.body_options`).
     ``n_line`` points per contact line, doubled while fewer than :data:`MIN_RESOLVED_ORDERS`
     mesh orders are resolved (``LTCACycle.n_line`` is the one used).  ``order``: the bodies' elements

@@ -7,8 +7,9 @@
                :class:`MeshStiffness` (the periodic stiffness the dynamics model consumes): a uniform
                table (:func:`uniform_mesh_stiffness`) or one from k'(u) (:func:`integrated_mesh_stiffness`).
 
-The levels (``constant``, ``iso6336``, ``pem``, ``fe``, ``ltca``) are dispatched by
-:mod:`femgear.levels.stiffness` (``mesh_stiffness(pair, level)``, or the registry for a case).
+The levels (``constant``, ``iso6336``, ``pem``, ``fe``, ``ltca``) are the factories of
+:mod:`femgear.levels.stiffness` (the registry, for a case); a bare pair calls the physics
+(:func:`~femgear.physics.stiffness.pem.pem_mesh_stiffness`, :func:`uniform_mesh_stiffness`).
 """
 
 from femgear.physics.stiffness.iso6336 import IsoStiffness, iso6336_stiffness

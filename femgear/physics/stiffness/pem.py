@@ -145,3 +145,18 @@ def pair_stiffness_per_width(pair: GearPair, u: np.ndarray, youngs_modulus: floa
         tc = tooth_compliance(pair, member, u, youngs_modulus, poisson_ratio, bore_radius[member - 1], plane)
         c = c + tc.bending + tc.shear + tc.axial + (tc.foundation if foundation else 0.0)
     return 1.0 / c
+
+
+def pem_mesh_stiffness(pair: GearPair, youngs_modulus: float, poisson_ratio: float, n_positions: int,
+                       stagger: float = 0.0, bore_radius: tuple[float, float] = (0.0, 0.0), plane: str = "strain"):
+    """The potential-energy mesh stiffness of both helices at ``n_positions`` phases of one mesh period (the
+    ``pem`` level, :class:`~femgear.physics.stiffness.tvms.MeshStiffness`): :func:`pair_stiffness_per_width`
+    sampled along the path and integrated over every contact line; ``stagger`` in base pitches [-]."""
+    import time
+
+    from femgear.physics.stiffness.tvms import integrated_mesh_stiffness, path_samples
+
+    t0 = time.perf_counter()
+    u_grid = path_samples(pair)
+    k_grid = pair_stiffness_per_width(pair, u_grid, youngs_modulus, poisson_ratio, bore_radius, plane)
+    return integrated_mesh_stiffness(pair, u_grid, k_grid, "pem", n_positions, stagger, t0=t0)

@@ -42,8 +42,6 @@ from femgear.physics.stiffness.iso6336 import IsoStiffness
 if TYPE_CHECKING:
     from scipy.interpolate import CubicSpline
 
-    from femgear.physics.ltca.cycle import LTCACycle
-
 U_SAMPLES = 161   #: path positions A..E at which the ``pem`` and ``fe`` levels sample k'(u)
 
 
@@ -97,8 +95,9 @@ class MeshStiffness:
     """``iso6336``: the ISO 6336-1 Method B single and mesh stiffnesses the level's constant comes from [-]"""
     fe: FESamples | None = None
     """``fe``: the FE samples of the tooth-pair stiffness that ``k_pair_per_width`` interpolates [-]"""
-    ltca: LTCACycle | None = None
-    """``ltca``: the loaded tooth contact analysis cycle whose secant stiffnesses are ``k_left``/``k_right`` [-]"""
+    ltca: LTCACycle | None = None  # noqa: F821 (a higher tier's class, named not imported: docfields resolves it)
+    """``ltca``: the loaded tooth contact analysis cycle whose secant stiffnesses are ``k_left``/``k_right`` (a
+    :class:`femgear.physics.ltca.cycle.LTCACycle`, a higher tier: named, not imported) [-]"""
 
     @property
     def resolved_orders(self) -> int | None:

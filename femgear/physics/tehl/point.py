@@ -34,7 +34,7 @@ from femgear.physics.ehl.core.grid import Grid
 from femgear.physics.ehl.core.surface import apply_surface, evaluate, scene_features
 from femgear.physics.ehl.dimensional import solve_point_dimensional
 from femgear.physics.ehl.fe.level import Level
-from femgear.physics.ehl.fe.newton import newton_krylov
+from femgear.physics.ehl.fe.newton import KeptPreconditioner, newton_krylov
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.tehl.energy import ThermalProps, jaeger_matrix, solve_energy
 from femgear.physics.tehl.line import ehl_oil_at
@@ -112,7 +112,7 @@ def solve_tehl_point(load: float, R: float, ue: float, srr: float, T_bulk: float
     J2 = jaeger_matrix(nt, (g.x[-1] - g.x[0]) * a, props.B2, v2)
     dy = g.dy * a
     sol = {"PI": res.P.ravel()[fine.interior].copy(), "H0": res.H0, "P": res.P, "H": res.H}
-    prec: dict = {}      # the re-solves' preconditioner, kept across the thermal iterations (newton_krylov keep=)
+    prec = KeptPreconditioner()      # the re-solves' preconditioner, kept across the thermal iterations
 
     def energy(theta):
         P2, H2 = sol["P"], sol["H"]

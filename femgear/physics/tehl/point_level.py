@@ -40,7 +40,7 @@ import numpy as np
 from femgear.errors import ConvergenceError
 from femgear.physics.contact.crowning import MIN_POINT_RATIO, CrownedContact
 from femgear.physics.tehl.point import solve_tehl_point
-from femgear.physics.tehl.reuse import ReuseReport, reusable
+from femgear.physics.tehl.reuse import LatestSolve, RecordingSolver, ReuseReport, reusable
 from femgear.physics.tehl.slices import SLICES, SliceGeometry, slice_contact
 from femgear.physics.tehl.solver import TEHLSetup
 
@@ -64,8 +64,9 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
     (:class:`femgear.physics.tehl.point.TEHLPointResult` or :class:`~femgear.physics.tehl.slices.SliceResult`);
     a contact queried again (same radii, speeds, temperature) at a load that changed so little that the change
     of μ and ΔT is estimated below 1e-4 reuses its latest solve (:mod:`femgear.physics.tehl.reuse`;
-    ``solve.reuse`` reports it); ``solve.last`` holds the inputs and results of the latest call (the film of the
-    run's last pass, :meth:`femgear.levels.lubrication.Lubrication.film`)."""
+    reported in the solver's :attr:`~femgear.physics.tehl.reuse.RecordingSolver.latest`, which also holds the
+    inputs and results of the latest call, its reuse and its hand-overs (the film of the run's last pass,
+    :meth:`femgear.levels.lubrication.Lubrication.film`)."""
     kw = {**setup.kwargs(), "roughness": roughness, **options}
     level = POINT_LEVEL if level is None else level
 
@@ -109,18 +110,12 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
                         handed.count("slender"), MIN_POINT_RATIO, handed.count("failed"))
         if details is not None:
             details.extend(results)
-        solve.last = ((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), results)
-        solve.reuse = reuse
-        solve.handed_over = len(handed)
         if reuse.reused:
             log.info("tehl-point: %s", reuse.describe())
-        return mu, dT
+        latest = LatestSolve((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), tuple(results), reuse, len(handed))
+        return mu, dT, latest
 
-    solve.last = None   #: ((w, R, ue, srr, T), results) of the latest call: its films, without solving again
-    solve.reuse = None  #: :class:`ReuseReport` of the latest call
-    solve.handed_over = 0  #: contacts of the latest call handed over to the face slices
-
-    return solve
+    return RecordingSolver(solve)
 
 
 def _slices(w, R, ue, srr, T, Rx, Ry, geo: SliceGeometry, setup: TEHLSetup, options: dict, level: list):

@@ -17,12 +17,15 @@ solver's answer is smooth in the load at this scale (a 1e-6 load change moves μ
 3.7e-7 relative, linearly), so the estimate is a first-order bound.  Where the estimate
 exceeds the tolerance the contact is solved again: the rule never reuses what its estimate
 does not support.  :class:`ReuseReport` counts both and the largest load change and estimate
-reused (``solver.reuse``; logged at ``-v``).
+reused (the solver's :attr:`LatestSolve.reuse`; logged at ``-v``).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+
+import numpy as np
 
 #: largest estimated relative change of μ and ΔT_max that a reused solve may hide
 REUSE_TOL = 1e-4
@@ -74,3 +77,34 @@ def reusable(history: list, load: float, report: ReuseReport):
             return r_prev
     report.solved += 1
     return None
+
+
+@dataclass(frozen=True)
+class LatestSolve:
+    """What a contact solver's latest call solved: its inputs and per-contact results (a thermal level's film reads
+    them instead of solving the same contacts again), the reuse it made and the contacts it handed over."""
+
+    inputs: tuple[np.ndarray, ...]     #: (w [N/m], R [m], ue [m/s], |srr| [-], T [K]) as solved, broadcast
+    results: tuple                     #: one result per contact, in the inputs' order
+    reuse: ReuseReport | None = None   #: what the call reused (:func:`reusable`; None: the solver never reuses)
+    handed_over: int = 0               #: contacts handed over to the face slices (``tehl-point``) [-]
+
+    def at(self, *inputs: np.ndarray) -> tuple | None:
+        """The results where ``inputs`` are exactly the solved ones (same shapes and values), else None."""
+        same = len(inputs) == len(self.inputs) and all(
+            np.shape(a) == b.shape and np.array_equal(a, b) for a, b in zip(inputs, self.inputs))
+        return self.results if same else None
+
+
+@dataclass
+class RecordingSolver:
+    """A contact solver in the map signature ``solver(w=, R=, ue=, srr=, T=) -> (μ, ΔT)`` that keeps its latest
+    call's :class:`LatestSolve` (declared state of a callable, not attributes set on a function): ``run(w, R, ue,
+    srr, T) -> (μ, ΔT, LatestSolve)``."""
+
+    run: Callable[..., tuple[np.ndarray, np.ndarray, LatestSolve]]
+    latest: LatestSolve | None = None  #: the latest call's record (None before the first)
+
+    def __call__(self, w, R, ue, srr, T) -> tuple[np.ndarray, np.ndarray]:
+        mu, dT, self.latest = self.run(w, R, ue, srr, T)
+        return mu, dT

@@ -27,6 +27,7 @@ from femgear.physics.lubrication.path import solids_of
 from femgear.physics.lubrication.traction import Solids
 from femgear.physics.tehl.energy import ThermalProps
 from femgear.physics.tehl.line import TEHLResult, ehl_oil_at, solve_tehl_line
+from femgear.physics.tehl.reuse import LatestSolve, RecordingSolver
 
 LINE_SECONDS = 0.3    #: rough wall time of one TEHL line solve (announce and progress only) [s]
 
@@ -83,7 +84,8 @@ class TEHLSetup:
 def tehl_line_solver(setup: TEHLSetup, level: int | None = None, **options):
     """Direct TEHL solves (one per point, :func:`tehl_path_results`: on one grid level for all) in the map
     signature; ``options`` go to :func:`solve_tehl_line` (e.g. ``tol``, ``min_level``, ``nz``, ``model``);
-    ``solve.last`` holds the inputs and results of the latest call (the level's film reuses them)."""
+    the solver's :attr:`~femgear.physics.tehl.reuse.RecordingSolver.latest` holds the inputs and results of the
+    latest call (the level's film reuses them)."""
 
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
@@ -94,11 +96,11 @@ def tehl_line_solver(setup: TEHLSetup, level: int | None = None, **options):
             rs = tehl_path_results(w[at], R[at], ue[at], srr[at], float(t), setup, level=level, **options)
             results += list(zip(np.flatnonzero(at), rs))
         rs = [r for _, r in sorted(results, key=lambda x: x[0])]
-        solve.last = ((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), rs)
-        return (np.array([r.mu for r in rs]).reshape(w.shape), np.array([r.dT_surface for r in rs]).reshape(w.shape))
+        latest = LatestSolve((w.copy(), R.copy(), ue.copy(), srr.copy(), T.copy()), tuple(rs))
+        return (np.array([r.mu for r in rs]).reshape(w.shape), np.array([r.dT_surface for r in rs]).reshape(w.shape),
+                latest)
 
-    solve.last = None
-    return solve
+    return RecordingSolver(solve)
 
 
 def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int | None = None,

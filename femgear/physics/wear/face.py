@@ -124,7 +124,7 @@ def face_load(load: np.ndarray, zeta: np.ndarray, grid: np.ndarray, window: floa
     test gear after 1e6 cycles came out at 20–120 nm and changed by up to 3.7× between face grids of 21,
     41 and 81 points; with the window (one point spacing) orders 1–10 agree within 40 % across those
     grids, order 1 within 0.5 % (README, face-resolved wear).  Whether the LTCA resolves them is a separate
-    question (:func:`femgear.system.coupling.loop._worn_orders`).
+    question (:func:`femgear.system.coupling.passes.worn_orders`).
     """
     n_h, _, n_u = load.shape
     b = float(grid[-1])

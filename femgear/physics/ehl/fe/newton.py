@@ -19,6 +19,8 @@ history and raise :class:`femgear.errors.ConvergenceError` on failure; no NaN re
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import scipy.linalg as sla
@@ -45,8 +47,9 @@ LOCAL_RADIUS = 2  # elastic kernel kept in the local (smoother) Jacobian
 REBUILD_KRYLOV, REBUILD_MIN, REBUILD_GROWTH = 30, 8, 2.0
 
 
-def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case: str):
-    """Backtracking on ||scale F||; returns the accepted (PI, H0, F, lin, H, act, alpha).
+def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case: str, watchdog: int):
+    """Backtracking on ||scale F||; returns the accepted (PI, H0, F, lin, H, act, alpha) and the count of watchdog
+    steps in a row up to this one (``watchdog`` before it; 0 after a step that decreased the merit).
 
     When no trial decreases the (non-monotone) merit, the best admissible trial (finite,
     positive film) is accepted anyway up to ``WATCHDOG`` times in a row (a watchdog
@@ -62,14 +65,13 @@ def _line_search(level: Level, PI, H0, F, dP, dH0, s, scale, hist: History, case
         if np.all(np.isfinite(Ft)) and H.min() > 0.0:
             merit = np.linalg.norm(scale * Ft)
             if merit <= (1.0 - 1e-4 * alpha) * merit0:
-                hist.watchdog = 0
-                return Pt, H0t, Ft, lin, H, act, alpha
+                return (Pt, H0t, Ft, lin, H, act, alpha), 0
             if best is None or merit < best[0]:
                 best = (merit, (Pt, H0t, Ft, lin, H, act, alpha))
         alpha *= 0.5
-    hist.watchdog = getattr(hist, "watchdog", 0) + 1
-    if best is not None and hist.watchdog <= WATCHDOG:
-        return best[1]
+    watchdog += 1
+    if best is not None and watchdog <= WATCHDOG:
+        return best[1], watchdog
     raise ConvergenceError(case, "line search failed (residual does not decrease)"
                            + _stall_reason(hist, _step_cap(level)), hist.as_dict())
 
@@ -135,13 +137,15 @@ def _newton(level: Level, PI, H0, direction: Callable, max_iter: int, tol: float
         raise ConvergenceError(case, "non-finite residual at the initial state", hist.as_dict())
     scale = np.ones_like(F)
     scale[-1] = 1.0 / level.load
+    watchdog = 0      # watchdog steps in a row (:func:`_line_search`)
     for _ in range(max_iter):
         dx, its = direction(PI, H0, F, lin, s, act)
         if not np.all(np.isfinite(dx)):
             raise ConvergenceError(case, "non-finite Newton direction", hist.as_dict())
         dP, dH0 = dx[:-1], float(dx[-1])
         _record_direction(hist, level, dP)
-        PI, H0, F, lin, H, act, alpha = _line_search(level, PI, H0, F, dP, dH0, s, scale, hist, case)
+        (PI, H0, F, lin, H, act, alpha), watchdog = _line_search(level, PI, H0, F, dP, dH0, s, scale, hist, case,
+                                                                 watchdog)
         _record(hist, level, F, scale, alpha, its)
         if _converged(level, PI, H0, alpha * dP, alpha * dH0, F, alpha, tol, hist.residual[-1],
                       residual_tol):
@@ -343,10 +347,47 @@ class MultilevelPreconditioner:
         return z
 
 
+@dataclass
+class KeptPreconditioner:
+    """The multilevel preconditioner of :func:`newton_krylov`, kept across its Newton steps (and, passed as its
+    ``keep``, across a sequence of solves), with the GMRES iterations that decide its rebuild
+    (:data:`REBUILD_KRYLOV`, :data:`REBUILD_MIN`, :data:`REBUILD_GROWTH`)."""
+
+    prec: Any = None             #: the :class:`MultilevelPreconditioner` (None: not built yet)
+    its: int = 0                 #: GMRES iterations of the latest solve with it (10**6: GMRES did not converge)
+    its0: int | None = None      #: GMRES iterations of the first solve with it (None: none yet)
+
+    def stale(self) -> bool:
+        """Whether to rebuild it before the next solve: none yet, or GMRES slowed down with it."""
+        first = self.its if self.its0 is None else self.its0
+        return self.prec is None or self.its > REBUILD_KRYLOV or self.its > max(REBUILD_MIN, REBUILD_GROWTH * first)
+
+
+@dataclass
+class Forcing:
+    """The Eisenstat & Walker (1996, choice 2: gamma 0.9, alpha 2) forcing term of one Newton solve, with its
+    safeguard: the previous step's residual norm and term."""
+
+    norm_f: float | None = None  #: |F| of the previous Newton step
+    eta: float | None = None     #: its forcing term
+
+    def next(self, norm_f: float, floor: float) -> float:
+        """The GMRES relative tolerance of the step at residual norm ``norm_f``, in [``floor``, 0.1]."""
+        if self.norm_f is None:
+            eta = 0.1
+        else:
+            eta = 0.9 * (norm_f / self.norm_f) ** 2
+            if 0.9 * self.eta**2 > 0.1:
+                eta = max(eta, 0.9 * self.eta**2)
+        eta = min(0.1, max(floor, eta))
+        self.norm_f, self.eta = norm_f, eta
+        return eta
+
+
 def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: int = 30,
                   tol: float = 1e-7, krylov_rtol: float = 1e-4, restart: int = 60,
                   maxiter_krylov: int = 300, case: str = "ehl", reuse: dict | None = None,
-                  residual_tol: float = RESIDUAL_TOL, keep: dict | None = None):
+                  residual_tol: float = RESIDUAL_TOL, keep: KeptPreconditioner | None = None):
     """Newton on the finest of ``levels`` with GMRES + :class:`MultilevelPreconditioner`.
 
     The preconditioner is factorised once and kept across Newton steps until GMRES
@@ -356,7 +397,7 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
     eta_k = 0.9 (|F_k|/|F_(k-1)|)^2, safeguarded, within [``krylov_rtol``, 0.1]: loose far
     from the solution, tight near it, so that Newton keeps its quadratic rate.
 
-    ``keep``: a dict kept by the caller across a sequence of solves of one problem whose
+    ``keep``: a :class:`KeptPreconditioner` kept by the caller across a sequence of solves of one problem whose
     coefficients move (the thermal loop's re-solves at new film temperatures): the last
     preconditioner starts the next solve and is rebuilt by the same rule when GMRES slows
     down.  The operator is always the current Jacobian, so the converged answer is set by
@@ -364,20 +405,17 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
     fine = levels[-1]
     transfers = [_transfer(levels[k], levels[k + 1]) for k in range(len(levels) - 1)]
 
-    cache: dict = {}
-    if keep is not None and "prec" in keep:
-        cache.update(prec=keep["prec"], its=keep["its"], its0=keep.get("its0", keep["its"]))
+    kept = KeptPreconditioner() if keep is None else keep
+    forcing = Forcing()
 
     def direction(PI, H0, F, lin, s, act):
-        if "prec" not in cache or cache["its"] > REBUILD_KRYLOV or (
-                cache["its"] > max(REBUILD_MIN, REBUILD_GROWTH * cache["its0"])):
-            cache["prec"] = MultilevelPreconditioner(levels, transfers, PI, H0, lin, act,
-                                                     reuse=reuse)
-            cache.pop("its0", None)
-            Jf = cache["prec"].lv[-1]
+        if kept.stale():
+            kept.prec = MultilevelPreconditioner(levels, transfers, PI, H0, lin, act, reuse=reuse)
+            kept.its0 = None
+            Jf = kept.prec.lv[-1]
         else:
             Jf = _PrecLevel(fine, PI, H0, dense=False, radius=0, lin=lin, act=act, factor=False)
-        prec = cache["prec"]
+        prec = kept.prec
         # unscaled Newton system: rows of inactive nodes divided by s
         rhs = -F.copy()
         rhs[:-1] = np.where(act, rhs[:-1], rhs[:-1] / s)
@@ -390,7 +428,7 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
         def cb(_):
             count[0] += 1
 
-        eta = _forcing(cache, float(np.linalg.norm(F)), krylov_rtol)
+        eta = forcing.next(float(np.linalg.norm(F)), krylov_rtol)
         dx, info = spla.gmres(A, rhs, M=M, rtol=eta, restart=restart,
                               maxiter=maxiter_krylov, callback=cb, callback_type="pr_norm")
         if info < 0:
@@ -398,24 +436,10 @@ def newton_krylov(levels: list[Level], PI: np.ndarray, H0: float, *, max_iter: i
         # the active (cavitated) rows of the Jacobian are identity rows: their components
         # are exact, whatever the GMRES tolerance (P = 0 there after a full step)
         dx[:-1][act] = rhs[:-1][act]
-        cache["its"] = count[0] if info == 0 else 10**6
-        cache.setdefault("its0", count[0])
-        if keep is not None:
-            keep.update(prec=cache["prec"], its=cache["its"], its0=cache["its0"])
+        kept.its = count[0] if info == 0 else 10**6
+        if kept.its0 is None:
+            kept.its0 = count[0]
         return dx, count[0]
 
     return _newton(fine, PI, H0, direction, max_iter, tol, case, residual_tol)
 
-
-def _forcing(cache: dict, norm_f: float, floor: float) -> float:
-    """Eisenstat-Walker choice 2 (gamma 0.9, alpha 2) with its safeguard, in [floor, 0.1]."""
-    prev, eta_prev = cache.get("norm_f"), cache.get("eta")
-    if prev is None:
-        eta = 0.1
-    else:
-        eta = 0.9 * (norm_f / prev) ** 2
-        if 0.9 * eta_prev**2 > 0.1:
-            eta = max(eta, 0.9 * eta_prev**2)
-    eta = min(0.1, max(floor, eta))
-    cache["norm_f"], cache["eta"] = norm_f, eta
-    return eta
