@@ -41,7 +41,7 @@ from femgear.errors import ConvergenceError
 from femgear.physics.contact.crowning import MIN_POINT_RATIO, CrownedContact
 from femgear.physics.tehl.point import solve_tehl_point
 from femgear.physics.tehl.reuse import LatestSolve, RecordingSolver, ReuseReport, reusable
-from femgear.physics.tehl.slices import SLICES, SliceGeometry, slice_contact
+from femgear.physics.tehl.slices import SLICES, SliceGeometry, SliceLevel, slice_contact
 from femgear.physics.tehl.solver import TEHLSetup
 
 POINT_LEVEL = 1
@@ -71,7 +71,7 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
     level = POINT_LEVEL if level is None else level
 
     memory: dict = {}     # per contact (R_x, R_y, ue, srr, T): the latest solves [(load, result)], newest last
-    sliced = [None]       # the grid level of the latest face-slice hand-over (the next contact's first try)
+    sliced = SliceLevel()  # the grid level of the latest face-slice hand-over (the next contact's first try)
 
     def solve(w, R, ue, srr, T):
         w, R, ue, srr, T = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float))
@@ -118,11 +118,11 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
     return RecordingSolver(solve)
 
 
-def _slices(w, R, ue, srr, T, Rx, Ry, geo: SliceGeometry, setup: TEHLSetup, options: dict, level: list):
-    """The contact in face slices, first tried on ``level[0]`` (the previous hand-over's level, updated)."""
+def _slices(w, R, ue, srr, T, Rx, Ry, geo: SliceGeometry, setup: TEHLSetup, options: dict, last: SliceLevel):
+    """The contact in face slices, first tried on ``last.level`` (the previous hand-over's level, updated)."""
     r = slice_contact(float(w), float(R), float(ue), float(srr), float(T), float(Rx), float(Ry), geo, setup,
-                      start_level=level[0], **options)
-    level[0] = r.level
+                      start_level=last.level, **options)
+    last.level = r.level
     return r
 
 

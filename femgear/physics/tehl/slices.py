@@ -69,6 +69,15 @@ class SliceResult:
     results: tuple = field(repr=False, default=())
 
 
+@dataclass
+class SliceLevel:
+    """The grid level the latest face-slice hand-over of a solver ended on: the next contact's first try
+    (:func:`slice_contact`'s ``start_level``), so that a contact whose level the probe would miss is not solved
+    twice."""
+
+    level: int | None = None
+
+
 def slice_rule(count: int, rule: str) -> tuple[np.ndarray, np.ndarray]:
     """Nodes on [−1, 1] and weights (summing to 2) of a ``count``-point Gauss rule: ``"legendre"`` (no end
     node), ``"lobatto"`` (both ends nodes) or ``"radau"`` (the node −1 and none at +1).  Nodes and weights as
