@@ -104,7 +104,7 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
             mu[i], dT[i] = r.mu, r.dT_surface
             results.append(r)
         if handed:
-            log.warning("tehl-point: %d of %d contacts handed over to line TEHL in %d face slices each, with each "
+            log.warning("tehl-point: %d of %d contacts handed over to line TEHL in up to %d face slices each, with each "
                         "slice's own load, curvature, speeds and SRR (%d more slender than the point solver's "
                         "R_x/R_y = %g or uncrowned, %d where the point solver failed)", len(handed), w.size, SLICES,
                         handed.count("slender"), MIN_POINT_RATIO, handed.count("failed"))
