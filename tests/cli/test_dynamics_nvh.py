@@ -2,6 +2,8 @@
 
 import json
 
+import numpy as np
+
 from tests.cli.test_bad_input import BASE, cli
 
 
@@ -34,3 +36,5 @@ def test_kahraman_singh_prints_the_folds(tmp_path, capsys):
     rc, out, _ = cli(["dynamics", BASE, "--kahraman-singh", "--json", "--out", str(tmp_path)], capsys)
     data = json.loads(out.strip().splitlines()[-1])
     assert rc == 0 and len(data["hb_folds"]) == 2 and (tmp_path / "kahraman_singh_hb.png").exists()
+    gap = np.array(data["amplitude_down"]) - np.array(data["amplitude_up"])   # the jump between the branches
+    assert gap.max() > 0.05

@@ -88,14 +88,6 @@ def test_formula_friction_along_the_path(baseline_scene):
     assert np.abs(m.friction.B).max() > 0
 
 
-def test_cli_kahraman_singh_json(baseline_path, tmp_path):
-    out = subprocess.run([sys.executable, "-m", "femgear.edge.cli", "dynamics", str(baseline_path), "--kahraman-singh",
-                          "--no-plots", "--json", "--out", str(tmp_path)], capture_output=True, text=True, check=True)
-    payload = json.loads(out.stdout.strip().splitlines()[-1])
-    gap = np.array(payload["amplitude_down"]) - np.array(payload["amplitude_up"])
-    assert gap.max() > 0.05
-
-
 def test_hermite_amplitude_of_a_coarsely_sampled_sine():
     from femgear.system.dynamics.response import hermite_half_peak_to_peak
 

@@ -115,7 +115,7 @@ def test_default_step_matches_a_small_step_reference(baseline_path, rpm):
     clear_propagator_cache()
 
 
-@pytest.mark.parametrize("rpm, cycles", [(10.0, 4.0), (15000.0, 60.0)])
+@pytest.mark.parametrize("rpm, cycles", [pytest.param(10.0, 4.0, marks=pytest.mark.slow), (15000.0, 60.0)])
 def test_extreme_speeds_stay_finite_and_static_at_low_speed(baseline_path, rpm, cycles):
     """10 rpm (mesh order of the top mode 1610: 12928 steps per mesh period while recording) and
     15000 rpm (mesh frequency 7.75 kHz, above most modes): no NaN, bounded response; at 10 rpm the

@@ -2,6 +2,8 @@
 
 import json
 
+import pytest
+
 from femgear.edge.cli import main
 
 
@@ -28,6 +30,7 @@ def test_cli_point_json(capsys):
     assert 0 < d["Hmin"] < d["Hc"]
 
 
+@pytest.mark.slow
 def test_cli_nonconvergence_is_reported(capsys):
     rc = main(["ehl", "point", "--M", "1000", "--L", "10", "--level", "1", "--json"])
     d = _last_json(capsys)
@@ -37,6 +40,7 @@ def test_cli_nonconvergence_is_reported(capsys):
         assert d["converged"] is True and d["Hc"] > 0
 
 
+@pytest.mark.slow
 def test_cli_point_method_picks_the_solver_and_reports_it(capsys):
     """--method fas and --method newton solve (20, 10) on 129² within 1 % of each other (two independent
     discretisations, FD multigrid and FE Newton); the JSON says which solver ran; auto takes the multigrid there."""

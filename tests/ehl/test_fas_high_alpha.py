@@ -41,6 +41,7 @@ def test_spike_guard_marks_the_steep_faces_only():
     assert not _steep(np.full((5, 5), 0.3), 3).any()
 
 
+@pytest.mark.slow
 def test_fas_20_20_on_129():
     """(20, 20), alpha_bar 19.8: before, the cycles stalled on 65^2 and the solve fell back
     to Newton; now the multigrid converges on 129^2 and agrees with the FE Newton solver

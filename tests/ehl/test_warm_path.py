@@ -53,6 +53,7 @@ def _mesh_path(n=41):
     return 3e5 * (0.7 + 0.3 * np.sin(np.pi * s)), 0.006 + 0.01 * s, 10.0 + 2.0 * s
 
 
+@pytest.mark.slow
 def test_mesh_path_warm_equals_cold_with_few_factorisations(monkeypatch):
     """Positions 30-37 of the benchmark's 41-position gear-mesh path at level 5, where the
     outlet pressure spike moves about a cell per position: each warm solve gives the cold

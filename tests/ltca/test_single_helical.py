@@ -89,6 +89,7 @@ def test_no_load_share_and_no_right_helix_fields_in_the_te_summary(cycle, case):
     assert a.pressure.helix == "left" and a.pressure.where in ("interior", "pinion tip", "gear tip", "face end")
 
 
+@pytest.mark.slow
 def test_stiffness_per_helix_is_the_double_helical_ones(model, cycle, case):
     """The same helix in a grooved double-helical body is 7–18 % stiffer per helix (its axial forces balance,
     the single helix's tilts its body, and the rim goes on under the groove), and carries half the load each:

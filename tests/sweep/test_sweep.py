@@ -56,7 +56,8 @@ def rig_spec(tmp_path, full: bool):
     return parse_sweep(write_sweep(tmp_path, "[grid]" + grid + ("" if full else STATIC), "rig15"))
 
 
-@pytest.mark.parametrize("full", [False, pytest.param(True, marks=pytest.mark.slow)])
+@pytest.mark.slow
+@pytest.mark.parametrize("full", [False, True])
 def test_local_pool_and_dask_cluster_give_identical_results(tmp_path, full):
     distributed = pytest.importorskip("distributed")
     spec = rig_spec(tmp_path, full)
