@@ -25,9 +25,9 @@ def stages():
 
 
 def test_fzg_a_friction_rises_with_load_below_lambda_one_as_iso_mu_mC(stages):
-    """Every stage runs below λ = 1 (the largest local h_c/σ of the path, the λ the share reads), μ̄ rises from
-    stage to stage, and μ̄ normalised by its KS 5 value follows μ_mC normalised alike within ±10 % at every stage
-    (main's Greenwood–Tripp split: −31 % at KS 12)."""
+    """Every stage runs below λ = 1 (the rating's λ_min and the path mean of the local h_c/σ the share reads), μ̄
+    rises from stage to stage, and μ̄ normalised by its KS 5 value follows μ_mC normalised alike within ±10 % at
+    every stage (main's Greenwood–Tripp split: −31 % at KS 12)."""
     assert [r["stage"] for r in stages] == list(range(5, 13))
     assert all(r["film_parameter_mean"] < 1 and r["lambda_min"] < 1 for r in stages)
     mu, iso = (np.array([r[k] for r in stages]) for k in ("mu_mean", "mu_mC_iso"))
