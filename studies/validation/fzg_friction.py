@@ -2,7 +2,7 @@
 the FZG power-loss fit of Schlenk with Fernandes's measured lubricant factor (issue 38, item 2).
 
     PYTHONPATH=$PWD python studies/validation/fzg_friction.py [--coarse] [--gt=ηβσ,σ/β] [--contact=LAW] [--film=FILM]
-        [--state=run-in] [--oil=NAME]
+        [--state=run-in] [--oil=NAME] [--share=B,C] [--ra=R_A]
 
 The pair: FZG A (ISO 14635-1: m 4.5 mm, z 16/24, a 91.5 mm, x 0.8532/−0.5, b 20 mm), bound directly as the
 rating's FZG A pair (:func:`femgear.physics.rating.scuffing.fzg_a_pair`: tip diameters from x and a_w,
@@ -14,8 +14,9 @@ of ISO 14635-1.
 
 femgear (``formula`` level, the load sharing of :mod:`femgear.physics.lubrication.mixed`, by default Greenwood–Tripp
 asperities, the fluid film the mean gap, the scene's default asperity statistics ηβσ 0.04, σ/β 3e-3, μ_b 0.1;
-``--contact``, ``--film``, ``--gt`` and ``--state`` set ``roughness.contact``, ``roughness.fluid_film``, the
-statistics and ``roughness.state``, ``--oil`` the library oil, e.g. ``fva3a``): the flanks' bulk temperature is the oil's plus femgear's own estimate, the fixed
+``--contact``, ``--film``, ``--gt`` and ``--state`` set ``roughness.contact`` (``zhou-hoeprich``: the load share
+exp(−B λ^C) of λ alone), ``roughness.fluid_film``, the statistics and ``roughness.state``, ``--share`` the
+Zhou–Hoeprich B, C, ``--ra`` R_a of both flanks, ``--oil`` the library oil, e.g. ``fva3a``): the flanks' bulk temperature is the oil's plus femgear's own estimate, the fixed
 point ϑ_M = ϑ_oil + 0.7 · mean ΔT (the ISO/TS 6336-21 integral-temperature rule femgear's coupling loop uses,
 ``thermal.bulk_fraction``), fed back as ``thermal.flank_temperature_rise``; μ̄ is the constant μ with femgear's
 mesh loss (Ohlendorf's H_V, ``power_loss.equivalent_mu``), the quantity a power-loss measurement gives.
