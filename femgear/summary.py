@@ -173,7 +173,7 @@ def roughness_summary(case) -> dict[str, Any]:
     f, r = case.flanks, case.roughness
     return {"ra": list(f.ra), "rq": list(f.rq), "sigma": f.sigma, "model": f.model, "source": f.source,
             "finishing": f.finishing, "state": f.state, "run_in_factor": f.run_in_factor, "contact": r.contact,
-            "fluid_film": r.fluid_film}
+            "fluid_film": r.fluid_film, "share_b": r.share_b, "share_c": r.share_c}
 
 
 def scene_summary(case, contact: ContactPath, figures: ContactFigures, ratings: PairRating | None = None

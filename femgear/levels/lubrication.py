@@ -138,15 +138,19 @@ def oil_law(case: Case) -> OilLaw:
     return OilLaw.from_table(case.oil, case.oil_reference_temperature)
 
 
+def flank_asperities(rough, sigma: float) -> Roughness:
+    """The load-sharing :class:`Roughness` of composite σ [m] with the ``[roughness]`` table's laws and statistics."""
+    return Roughness(sigma, rough.eta_beta_sigma, rough.sigma_over_beta, rough.contact, rough.fluid_film,
+                     rough.share_b, rough.share_c)
+
+
 def line_friction(case: Case) -> LineFriction:
     """The ``formula`` level's line-contact friction with the case's oil, steel, traction and roughness."""
     rough, flanks = case.roughness, case.flanks
     mixed = flanks.model == "greenwood-tripp" and flanks.sigma > 0
     return LineFriction(oil=oil_law(case), E_red=reduced_modulus_of(case), solids=solids_of(case.material, case.oil),
                         tau0=case.oil.eyring_stress, limiting_shear=case.oil.limiting_shear_coeff,
-                        roughness=Roughness(flanks.sigma, rough.eta_beta_sigma, rough.sigma_over_beta, rough.contact,
-                                            rough.fluid_film)
-                        if mixed else None, boundary_coefficient=case.friction.boundary_coefficient)
+                        roughness=flank_asperities(rough, flanks.sigma) if mixed else None, boundary_coefficient=case.friction.boundary_coefficient)
 
 
 def tehl_setup(case: Case) -> TEHLSetup:

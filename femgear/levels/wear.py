@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from femgear.case import Case
-from femgear.levels.lubrication import line_friction
+from femgear.levels.lubrication import flank_asperities, line_friction
 from femgear.levels.registry import Registry
 from femgear.physics.geometry import GearPair, PathKinematics
 from femgear.physics.lubrication.mixed import Roughness, split_table
@@ -125,7 +125,7 @@ def wear_roughness(case: Case) -> Roughness:
     "smooth"``: the wear needs the asperities), with the scene's Greenwood–Tripp statistics."""
     rough, flanks = case.roughness, case.flanks
     sigma = flanks.sigma if flanks.sigma > 0 else math.hypot(*flanks.rq)
-    return Roughness(sigma, rough.eta_beta_sigma, rough.sigma_over_beta, rough.contact, rough.fluid_film)
+    return flank_asperities(rough, sigma)
 
 
 def film_inputs(case: Case) -> FilmInputs:

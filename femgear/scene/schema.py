@@ -301,17 +301,24 @@ class SurfaceRoughness(_Frozen):
                                        "of the load at low λ by the load sharing, their law roughness.contact, μ "
                                        "rising towards friction.boundary_coefficient) or smooth (full film "
                                        "everywhere; the ratings still read the roughness)")
-    contact: Literal["greenwood-tripp", "greenwood-williamson"] = Field(
+    contact: Literal["greenwood-tripp", "greenwood-williamson", "zhou-hoeprich"] = Field(
         "greenwood-tripp", description="the asperity contact law of the load sharing: greenwood-tripp (two rough "
-                                       "surfaces, p_C = K E* F_5/2; Akbarzadeh & Khonsari's gear model) or "
+                                       "surfaces, p_C = K E* F_5/2; Akbarzadeh & Khonsari's gear model), "
                                        "greenwood-williamson (a rough surface on a flat, p_C = 4/3 E* ηβσ √(σ/β) "
-                                       "F_3/2; Gelinck & Schipper's Stribeck curves)")
+                                       "F_3/2; Gelinck & Schipper's Stribeck curves) or zhou-hoeprich (the share "
+                                       "W_C/W = exp(−B λ^C) of λ = h_c/σ alone, Zhou & Hoeprich 1991; B, C: "
+                                       "roughness.share_b, share_c)")
     fluid_film: Literal["mean-gap", "separation"] = Field(
         "mean-gap", description="the fluid's film at a nominal separation h of the flanks' mean planes: mean-gap "
                                 "(Patir & Cheng's mean gap σ(tΦ(t) + φ(t)), t = h/σ: the flanks may close below the "
                                 "mean planes, so the asperities take the whole load as the film vanishes) or "
                                 "separation (the film is h ≥ 0: the asperity pressure never exceeds its value at "
                                 "h = 0; femgear's split before this option)")
+    share_b: Pos = Field(1.90, le=20.0, description="B of the Zhou–Hoeprich share exp(−B λ^C) (roughness.contact = "
+                                                  "\"zhou-hoeprich\"; default the rib contact of Wingertszahn et al., "
+                                                  "Lubricants 11:369, 2023, σ 0.24 µm) [-]")
+    share_c: Pos = Field(0.99, le=5.0, description="C of the Zhou–Hoeprich share exp(−B λ^C) (default: Wingertszahn et "
+                                                 "al.'s rib contact) [-]")
     eta_beta_sigma: Pos = Field(0.04, le=1.0, description="Greenwood–Tripp ηβσ (asperity density × radius × σ) [-]")
     sigma_over_beta: Pos = Field(
         3e-3, le=1.0, description="σ/β, roughness over the asperity tip radius (typical 1e-3…1e-2) [-]")

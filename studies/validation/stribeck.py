@@ -9,7 +9,9 @@ entrainment speed swept from 1 mm/s to 20 m/s; λ = h_c/σ with h_c the smooth c
 Johnson–Greenwood–Poon load sharing (:mod:`femgear.physics.lubrication.mixed`), the scene's asperity statistics
 ηβσ 0.04, σ/β 3e-3: Greenwood–Tripp asperities with the fluid film the mean gap (femgear's default) and the
 separation (the split before, bounded by p_C(0)), Greenwood–Williamson asperities (Gelinck & Schipper's law), and
-Greenwood–Tripp with rougher statistics 0.1, 0.03, beside the smooth film.
+Greenwood–Tripp with rougher statistics 0.1, 0.03, and the load share of λ alone of Zhou & Hoeprich (1991),
+exp(−B λ^C) with Wingertszahn et al.'s B 1.90, C 0.99 (``roughness.contact = "zhou-hoeprich"``), beside the smooth
+film.
 """
 
 from __future__ import annotations
@@ -27,7 +29,8 @@ W, R, SRR, T_BULK, SIGMA, MU_B = 3.0e5, 0.010, 0.3, 333.15, 0.3e-6, 0.1
 ASPERITIES = (("Greenwood–Tripp, mean gap (default)", "greenwood-tripp", "mean-gap", 0.04, 3e-3),
               ("Greenwood–Tripp, film = separation (before)", "greenwood-tripp", "separation", 0.04, 3e-3),
               ("Greenwood–Williamson, mean gap", "greenwood-williamson", "mean-gap", 0.04, 3e-3),
-              ("Greenwood–Tripp, mean gap, ηβσ 0.1, σ/β 0.03", "greenwood-tripp", "mean-gap", 0.1, 0.03))
+              ("Greenwood–Tripp, mean gap, ηβσ 0.1, σ/β 0.03", "greenwood-tripp", "mean-gap", 0.1, 0.03),
+              ("Zhou–Hoeprich, W_C/W = exp(−1.90 λ^0.99)", "zhou-hoeprich", "mean-gap", 0.04, 3e-3))
 
 
 def setup(coarse: bool = False) -> np.ndarray:
@@ -78,7 +81,7 @@ def plot(res: dict, path: Path) -> None:
     lam = np.array(res["lambda"])
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     ax.semilogx(lam, res["mu_smooth"], "k--", label="smooth flanks (full film)")
-    for c, colour in zip(res["curves"], ("C0", "C1", "C2", "C3"), strict=True):
+    for c, colour in zip(res["curves"], ("C0", "C1", "C2", "C3", "C4"), strict=True):
         ax.semilogx(lam, c["mu"], colour, label=c["label"])
         ax.semilogx(lam, np.array(c["asperity_fraction"]) * MU_B, colour, ls=":", lw=1)
     ax.axhline(MU_B, color="grey", lw=0.8)

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from scipy import integrate, special
 
+from femgear.physics.lubrication.flash import line_flash_temperature
 from femgear.physics.lubrication.mixed import Roughness, gt_function, jgp_split, mean_gap, mixed_line_friction
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.traction import Solids, line_contact_friction, thermal_central_film
@@ -108,3 +109,43 @@ def test_smooth_limit_is_the_full_film_traction_and_roughness_raises_mu():
         shares.append(split.asperity_fraction[0])
     assert shares[0] == 0.0 and mus[0] == pytest.approx(smooth.mu[0], rel=1e-12)
     assert np.all(np.diff(shares) > 0) and np.all(np.diff(mus) > 0) and mus[-1] < 0.1
+
+
+def test_zhou_hoeprich_share_is_exp_of_lambda_and_weights_the_friction():
+    """Zhou & Hoeprich (J. Tribol. 113:590, 1991, eq. 29): W_C/W = exp(−B λ^C) at λ = h_c/σ, h_c the smooth contact's
+    thermal central film at the whole load (their eq. 30); the friction weighted as Wingertszahn et al.
+    (Lubricants 11:369, 2023, eq. 36) do, μ = φ μ_b + (1 − φ) μ_EHL(W), the fluid's heat by 1 − φ, the asperities'
+    by Blok's flash temperature of μ_b φ."""
+    from femgear.physics.lubrication.mixed import load_split
+
+    mu_b, ue = 0.1, np.array([0.02, 0.3, 1.09, 8.0])
+    r = Roughness(sigma=0.6e-6, contact="zhou-hoeprich", share_b=1.9, share_c=0.99)
+    w, R, srr, T = CASE["w"], CASE["R"], CASE["srr"], CASE["T_bulk"]
+    res, split = mixed_line_friction(w, R, ue, srr, T, OIL, E_RED, SOLIDS, r, mu_b)
+    h = thermal_central_film(w, R, ue, srr, T, OIL, E_RED, SOLIDS)[0]
+    phi = np.exp(-1.9 * (h / 0.6e-6) ** 0.99)
+    np.testing.assert_allclose(split.film_parameter, h / 0.6e-6, rtol=1e-12)
+    np.testing.assert_allclose(split.asperity_fraction, phi, rtol=1e-12)
+    ehl = line_contact_friction(w, R, ue, srr, T, OIL, E_RED, SOLIDS)
+    np.testing.assert_allclose(res.mu, phi * mu_b + (1 - phi) * ehl.mu, rtol=1e-12)
+    blok = line_flash_temperature(mu_b * phi, w, R, ue, srr, E_RED, SOLIDS.B1, SOLIDS.B2)
+    np.testing.assert_allclose(res.flash_max, (1 - phi) * ehl.flash_max + blok, rtol=1e-12)
+    assert np.all(np.diff(split.asperity_fraction) < 0) and np.all(np.diff(res.mu) < 0)   # μ falls as λ rises
+    one = load_split(w, R, _film(CASE), E_RED, r)
+    assert one.asperity_fraction[0] == pytest.approx(np.exp(-1.9 * (_film(CASE)(w, E_RED)[0] / 0.6e-6) ** 0.99))
+
+
+def test_zhou_hoeprich_limits():
+    """Thick film (λ > 10): the share below 1e-8 and μ the smooth μ_EHL; vanishing film (u_e 0.1 µm/s): μ → μ_b."""
+    mu_b = 0.1
+    r = Roughness(sigma=0.05e-6, contact="zhou-hoeprich")
+    fast = dict(CASE, ue=60.0, srr=0.05)
+    res, split = mixed_line_friction(fast["w"], fast["R"], fast["ue"], fast["srr"], fast["T_bulk"], OIL, E_RED, SOLIDS,
+                                     r, mu_b)
+    ehl = line_contact_friction(fast["w"], fast["R"], fast["ue"], fast["srr"], fast["T_bulk"], OIL, E_RED, SOLIDS)
+    assert split.film_parameter[0] > 10 and split.asperity_fraction[0] < 1e-8
+    assert res.mu[0] == pytest.approx(ehl.mu[0], rel=1e-6)
+    slow = Roughness(sigma=0.6e-6, contact="zhou-hoeprich")
+    res, split = mixed_line_friction(CASE["w"], CASE["R"], 1e-7, CASE["srr"], CASE["T_bulk"], OIL, E_RED, SOLIDS, slow,
+                                     mu_b)
+    assert split.asperity_fraction[0] > 0.999 and res.mu[0] == pytest.approx(mu_b, rel=2e-3)

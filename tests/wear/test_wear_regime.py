@@ -99,17 +99,21 @@ def _rates(setup, state):
     return wear_rates(setup, state)
 
 
-def test_the_share_grows_as_the_film_thins():
-    """Johnson–Greenwood–Poon with Greenwood–Tripp asperities: rougher flanks, thinner film parameter, larger
-    asperity share, monotonically (the same pair, the nominal load at the pitch point)."""
+@pytest.mark.parametrize("contact", ["greenwood-tripp", "zhou-hoeprich"])
+def test_the_share_grows_as_the_film_thins(contact):
+    """Johnson–Greenwood–Poon with Greenwood–Tripp asperities, or the Zhou–Hoeprich share exp(−B λ^C) (the wear
+    reads the tribology's ``roughness.contact``): rougher flanks, thinner film parameter, larger asperity share,
+    monotonically (the same pair, the nominal load at the pitch point)."""
     shares, lams = [], []
     for rq in (1e-7, 3e-7, 1e-6, 3e-6):
-        model = wear_levels.of(build_case(load_scene(ZOO / "paper_baseline.toml",
-                                                     STATIC + [f"roughness.rq={rq}"]), warn=False))
+        model = wear_levels.of(build_case(load_scene(ZOO / "paper_baseline.toml", STATIC + [
+            f"roughness.rq={rq}", f'roughness.contact="{contact}"']), warn=False))
         t = model.share_table
         i = t.loads.size // 2
         shares.append(t.fraction[:, i].mean())
         lams.append(t.film_parameter[:, i].mean())
+        if contact == "zhou-hoeprich":
+            np.testing.assert_allclose(t.fraction[:, i], np.exp(-1.90 * t.film_parameter[:, i] ** 0.99), rtol=1e-12)
     assert np.all(np.diff(lams) < 0) and np.all(np.diff(shares) > 0)
     assert shares[0] < 1e-5 and shares[-1] > 0.03
 

@@ -124,7 +124,7 @@ SECTIONS: dict[str, Section] = {
     "roughness": Section({
         **_keys("roughness", PAIR, "ra rq"), **_keys("roughness", NUMBER, "sigma"),
         **_keys("roughness", TEXT, "model source state contact fluid_film"), **_keys("roughness", TEXT, "finishing", optional=True),
-        **_keys("roughness", NUMBER, "run_in_factor")}),
+        **_keys("roughness", NUMBER, "run_in_factor share_b share_c")}),
     "inlet_heating": Section({
         **_keys("inlet_heating.pitch", NUMBER, "thermal_loading phi_murch_wilson phi_gupta position"),
         **_keys("inlet_heating.max", NUMBER, "thermal_loading phi_murch_wilson phi_gupta position")}),

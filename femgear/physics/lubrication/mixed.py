@@ -32,7 +32,22 @@ The fluid's film at the separation h (``fluid_film``):
   pressure cannot exceed its value at h = 0, 0.617 K E* (30 MPa for the default statistics), so at gear pressures
   the asperities never take more than a few per cent of the load, whatever the film.
 
-The share depends strongly on the asperity statistics ηβσ and σ/β (``roughness.eta_beta_sigma``,
+Or the load share from λ alone (``"zhou-hoeprich"``; Zhou & Hoeprich, J. Tribol. 113:590, 1991, eq. 29, their fit to
+the asperity load of measured, run-in ground profiles in a rough-contact analysis): the asperities carry
+
+    W_C/W = exp(−B λ^C),   λ = h_c/σ,
+
+h_c the smooth contact's thermal central film at the whole load (their eq. 30: the isothermal film times the
+thermal reduction factor, here :func:`femgear.physics.lubrication.traction.thermal_central_film`), B and C
+constants of the surfaces (``roughness.share_b``, ``roughness.share_c``; defaults 1.90, 0.99, the rib contact
+of the rougher surfaces, σ 0.24 µm, of Wingertszahn, Koch, Maccioni, Concli & Sauer, Lubricants 11:369, 2023,
+Table 2; their raceway, σ 0.16 µm: 2.32, 0.97; Zhou & Hoeprich: the rougher surface keeps asperity load over a
+wider range of λ, i.e. a smaller B), and the friction weighted as Wingertszahn et al.'s eq. 36 does it,
+μ = φ μ_b + (1 − φ) μ_EHL with φ = W_C/W and μ_EHL the thermal Eyring traction of the smooth contact under the
+whole load (its heat weighted alike).  Where the statistical laws give the share from E* and the asperity
+statistics at a separation, so that at a given λ it falls as 1/p̄ with the load, this share depends on λ alone.
+
+The share of the statistical laws depends strongly on the asperity statistics ηβσ and σ/β (``roughness.eta_beta_sigma``,
 ``roughness.sigma_over_beta``; defaults 0.04, 3e-3: K = 4.2e-4); see docs/models/lubrication.md, "Mixed lubrication
 on gears".
 """
@@ -49,7 +64,7 @@ K_GT = 16.0 * math.sqrt(2.0) / 15.0 * math.pi
 #: R_a of the flank by finishing process [m] (typical values, docs/rating.md; the ratings' default is ground)
 FINISHING_RA = {"ground": 0.4e-6, "honed": 0.3e-6, "shaved": 0.8e-6, "hobbed": 1.6e-6}
 #: the asperity contact laws and the fluid films of the load sharing
-CONTACT_LAWS = ("greenwood-tripp", "greenwood-williamson")
+CONTACT_LAWS = ("greenwood-tripp", "greenwood-williamson", "zhou-hoeprich")
 FLUID_FILMS = ("mean-gap", "separation")
 #: the bracket of the nominal separation t = h/σ searched by the split [-]: F_5/2(−40) = 1e4, F_n(60) underflows to 0
 T_BRACKET = (-40.0, 60.0)
@@ -85,6 +100,8 @@ class Roughness:
     sigma_over_beta: float = 3e-3   #: σ/β [-] (typical 1e-3…1e-2; the geometric middle)
     contact: str = "greenwood-tripp"    #: asperity contact law, one of :data:`CONTACT_LAWS`
     fluid_film: str = "mean-gap"        #: the fluid film at a separation, one of :data:`FLUID_FILMS`
+    share_b: float = 1.90               #: Zhou–Hoeprich B of W_C/W = exp(−B λ^C) [-]
+    share_c: float = 0.99               #: Zhou–Hoeprich C [-]
 
     def __post_init__(self) -> None:
         if self.contact not in CONTACT_LAWS:
@@ -171,10 +188,35 @@ def jgp_split(w, R, film, E_red: float, roughness: Roughness, bisections: int = 
                      separation=np.where(full, h / sigma, hi))
 
 
+def zhou_hoeprich_split(w, R, film, E_red: float, roughness: Roughness) -> LoadSplit:
+    """The load share W_C/W = exp(−B λ^C) of Zhou & Hoeprich (1991) at λ = h_c/σ, h_c = ``film(w, E_red)`` the
+    smooth contacts' central film at the whole load (``separation`` is λ: the law has no mean planes)."""
+    w, R = np.broadcast_arrays(np.atleast_1d(np.asarray(w, float)), np.atleast_1d(np.asarray(R, float)))
+    h = np.reshape(film(w.astype(float), np.full(w.shape, E_red)), w.shape)
+    if not np.all(np.isfinite(h)) or np.any(h < 0):
+        from femgear.errors import ConvergenceError
+
+        raise ConvergenceError("zhou_hoeprich_split", "the smooth film is not finite and positive",
+                               {"film": np.asarray(h)[~np.isfinite(h) | (h < 0)].tolist()})
+    lam = h / roughness.sigma
+    frac = np.exp(-roughness.share_b * lam**roughness.share_c)
+    with np.errstate(divide="ignore"):
+        gamma1 = 1.0 / (1.0 - frac)
+    return LoadSplit(gamma1=gamma1, asperity_fraction=frac, film=h, film_parameter=lam, separation=lam)
+
+
+def load_split(w, R, film, E_red: float, roughness: Roughness) -> LoadSplit:
+    """The load sharing of ``roughness.contact``: :func:`zhou_hoeprich_split` or the JGP split :func:`jgp_split`."""
+    if roughness.contact == "zhou-hoeprich":
+        return zhou_hoeprich_split(w, R, film, E_red, roughness)
+    return jgp_split(w, R, film, E_red, roughness)
+
+
 def split_table(loads, R, ue, srr, T_bulk: float, oil, E_red: float, solids, roughness: Roughness
                 ) -> tuple[np.ndarray, np.ndarray]:
     """(asperity fraction W_a/W, film parameter λ), each (n, m): the JGP split of the thermal central film
-    (:func:`femgear.physics.lubrication.traction.thermal_central_film`, as :func:`mixed_line_friction` takes it)
+    (:func:`femgear.physics.lubrication.traction.thermal_central_film`, as :func:`mixed_line_friction` takes it;
+    the split of ``roughness.contact``, :func:`load_split`)
     at the loads per unit length ``loads`` (m,) [N/m] of each of the n contacts of radius ``R``, entrainment
     speed ``ue`` and slide-to-roll ratio ``srr`` (n,), oil at ``T_bulk`` [K]."""
     from femgear.physics.lubrication.traction import thermal_central_film
@@ -186,19 +228,21 @@ def split_table(loads, R, ue, srr, T_bulk: float, oil, E_red: float, solids, rou
         def h_of(wf, Ef, i=i):
             return thermal_central_film(np.atleast_1d(wf), R[i], ue[i], abs(srr[i]), T_bulk, oil, Ef, solids)[0]
 
-        s = jgp_split(loads, R[i], h_of, E_red, roughness)
+        s = load_split(loads, R[i], h_of, E_red, roughness)
         fraction[i], lam[i] = s.asperity_fraction, s.film_parameter
     return np.clip(fraction, 0.0, 1.0), lam
 
 
 def mixed_line_friction(w, R, ue, srr, T_bulk, oil, E_red: float, solids, roughness: Roughness,
                         boundary_coefficient: float, **traction_kw):
-    """Friction of rough line contacts: the fluid part (thermal Eyring traction of the smooth
-    contact under W/γ₁ with E'/γ₁, :func:`femgear.physics.lubrication.traction.line_contact_friction`)
-    plus μ_b W (1 − 1/γ₁) on the asperities.  The asperities' frictional heat adds Blok's flash temperature of
-    μ_b (1 − 1/γ₁) over the Hertz band to the fluid part's surface and film temperature rises (the surface
-    temperature is linear in the heat flux; adding the two maxima bounds the peak from above, both sources being
-    near-elliptic over the same band).  Returns (TractionResult of the whole load, LoadSplit)."""
+    """Friction of rough line contacts: the fluid part plus μ_b W W_C/W on the asperities.  The fluid part
+    (thermal Eyring traction, :func:`femgear.physics.lubrication.traction.line_contact_friction`): with the JGP
+    split the smooth contact under W/γ₁ with E'/γ₁; with ``"zhou-hoeprich"`` the smooth contact under the whole
+    load, weighted by 1 − W_C/W (its traction, flash and film temperature rises alike: the surface temperature is
+    linear in the heat flux).  The asperities' frictional heat adds Blok's flash temperature of μ_b W_C/W over the
+    Hertz band to the fluid part's surface and film temperature rises (adding the two maxima bounds the peak from
+    above, both sources being near-elliptic over the same band).  Returns (TractionResult of the whole load,
+    LoadSplit)."""
     from dataclasses import replace
 
     from femgear.physics.lubrication.flash import line_flash_temperature
@@ -209,11 +253,16 @@ def mixed_line_friction(w, R, ue, srr, T_bulk, oil, E_red: float, solids, roughn
     def h_of(wf, Ef):
         return thermal_central_film(wf, R, ue, srr, T_bulk, oil, Ef, solids)[0]
 
-    split = jgp_split(w, R, h_of, E_red, roughness)
-    gam = split.gamma1
-    fluid = line_contact_friction(w / gam, R, ue, srr, T_bulk, oil, E_red / gam, solids, **traction_kw)
-    traction = fluid.traction + boundary_coefficient * w * split.asperity_fraction
-    boundary = line_flash_temperature(boundary_coefficient * split.asperity_fraction, w, R, ue, np.abs(srr), E_red,
-                                      solids.B1, solids.B2)
+    split = load_split(w, R, h_of, E_red, roughness)
+    frac = split.asperity_fraction
+    if roughness.contact == "zhou-hoeprich":
+        fluid = line_contact_friction(w, R, ue, srr, T_bulk, oil, E_red, solids, **traction_kw)
+        fluid = replace(fluid, traction=(1 - frac) * fluid.traction, flash_max=(1 - frac) * fluid.flash_max,
+                        film_max=(1 - frac) * fluid.film_max)
+    else:
+        gam = split.gamma1
+        fluid = line_contact_friction(w / gam, R, ue, srr, T_bulk, oil, E_red / gam, solids, **traction_kw)
+    traction = fluid.traction + boundary_coefficient * w * frac
+    boundary = line_flash_temperature(boundary_coefficient * frac, w, R, ue, np.abs(srr), E_red, solids.B1, solids.B2)
     return replace(fluid, mu=traction / w, traction=traction, flash_max=fluid.flash_max + boundary,
                    film_max=fluid.film_max + boundary), split
