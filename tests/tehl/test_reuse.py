@@ -56,6 +56,40 @@ def test_reused_point_solve_is_within_its_tolerance_of_a_direct_solve():
     assert solve.latest.reuse.solved == 1 and mu2[0] != mu[0]
 
 
+def test_reuse_across_a_bulk_temperature_change_is_bounded_by_the_viscosity_coefficient():
+    """The coupling's bulk temperature moves from pass to pass: a solve reused at a temperature 1 mK away (and the
+    same load) is estimated by β ΔT and within the tolerance of a direct solve there; with two solves at different
+    temperatures the load sensitivity is the assumed one; 1 K away the contact is solved again, and β bounds the
+    measured change (so the estimate is conservative)."""
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass
+    from femgear.levels.lubrication import tehl_point_solver
+    from femgear.scene import load_scene
+
+    rep = ReuseReport()
+    hist = [(990.0, _r(0.0399, 19.9), 313.0), (1000.0, _r(0.04, 20.0), 313.5)]
+    assert sensitivity(hist) == ASSUMED_SENSITIVITY
+    assert reusable(hist, 1000.0, rep, 313.5 + 0.9 * REUSE_TOL / 0.04, 0.04) is hist[1][1]
+    assert reusable(hist, 1000.0, rep, 313.5 + 1.1 * REUSE_TOL / 0.04, 0.04) is None
+
+    scene = load_scene(BASELINE, ['physics.lubrication="tehl-point"', "modifications.crowning=10e-6"])
+    case = build_case(scene)
+    cp = contact_pass(case)
+    i, T = 3, scene.operating.ambient_temperature
+    w = float(np.broadcast_to(cp.load_per_length, cp.kin.R.shape)[i])
+    args = dict(w=w, R=cp.kin.R[i], ue=cp.kin.ue[i], srr=abs(cp.kin.srr[i]))
+    solve = tehl_point_solver(case)
+    mu0, dT0 = solve(**args, T=T)
+    mu, dT = solve(**args, T=T + 1e-3)
+    assert solve.latest.reuse.reused == 1 and solve.latest.reuse.max_estimate <= REUSE_TOL
+    mu_d, dT_d = tehl_point_solver(case)(**args, T=T + 1e-3)
+    assert abs(mu[0] / mu_d[0] - 1) <= REUSE_TOL and abs(dT[0] / dT_d[0] - 1) <= REUSE_TOL
+    mu1, dT1 = solve(**args, T=T + 1.0)
+    assert solve.latest.reuse.solved == 1
+    beta = case.oil.temperature_viscosity
+    assert max(abs(mu1[0] / mu0[0] - 1), abs(dT1[0] / dT0[0] - 1)) <= beta * 1.0
+
+
 def test_dense_reuse_converges_to_the_same_point_solution():
     """Newton on reused LU factors (GMRES steps) stops on the same residual test: the same film."""
     from femgear.physics.ehl.point import solve_point

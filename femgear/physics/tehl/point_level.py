@@ -62,15 +62,15 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
     slice_contact`), said in one log line per call; without ``slices`` such a contact is solved as one line
     contact of the same load per length on R_x.  ``details``: a list that receives each contact's result
     (:class:`femgear.physics.tehl.point.TEHLPointResult` or :class:`~femgear.physics.tehl.slices.SliceResult`);
-    a contact queried again (same radii, speeds, temperature) at a load that changed so little that the change
-    of μ and ΔT is estimated below 1e-4 reuses its latest solve (:mod:`femgear.physics.tehl.reuse`;
+    a contact queried again (same radii and speeds) at a load and bulk temperature that changed so little that
+    the change of μ and ΔT is estimated below 1e-4 reuses its latest solve (:mod:`femgear.physics.tehl.reuse`;
     reported in the solver's :attr:`~femgear.physics.tehl.reuse.RecordingSolver.latest`, which also holds the
     inputs and results of the latest call, its reuse and its hand-overs (the film of the run's last pass,
     :meth:`femgear.levels.lubrication.Lubrication.film`)."""
     kw = {**setup.kwargs(), "roughness": roughness, **options}
     level = POINT_LEVEL if level is None else level
 
-    memory: dict = {}     # per contact (R_x, R_y, ue, srr, T): the latest solves [(load, result)], newest last
+    memory: dict = {}     # per contact (R_x, R_y, ue, srr): the latest solves [(load, result, T)], newest last
     sliced = SliceLevel()  # the grid level of the latest face-slice hand-over (the next contact's first try)
 
     def solve(w, R, ue, srr, T):
@@ -83,8 +83,8 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
         results, reuse, handed = [], ReuseReport(), []
         for i in np.ndindex(w.shape):
             args = (float(F[i]), float(Rx[i]), float(ue[i]), abs(float(srr[i])), float(T[i]))
-            key = args[1:] + (float(Ry[i]),)
-            r = reusable(memory.get(key, []), args[0], reuse)
+            key = args[1:4] + (float(Ry[i]),)
+            r = reusable(memory.get(key, []), args[0], reuse, args[4], setup.oil.beta_t)
             if r is None:
                 ratio = float(Rx[i] / Ry[i]) if np.isfinite(Ry[i]) else 0.0
                 if ratio < MIN_POINT_RATIO and slices is not None:
@@ -100,7 +100,7 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
                             handed.append("failed")
                             r = _slices(w[i], R[i], ue[i], srr[i], T[i], Rx[i], Ry[i], slices, setup, line_options,
                                         sliced)
-                memory[key] = (memory.get(key, []) + [(args[0], r)])[-2:]
+                memory[key] = (memory.get(key, []) + [(args[0], r, args[4])])[-2:]
             mu[i], dT[i] = r.mu, r.dT_surface
             results.append(r)
         if handed:

@@ -9,10 +9,14 @@ a contact the point solver cannot hold: ~7 s), four passes × 21–42 contacts.
 Rule: a contact's latest result is reused when the change it would make is estimated below
 :data:`REUSE_TOL` (relative, on μ and on the largest film temperature rise):
 
-    estimate = s · |F − F_prev| / F_prev,   s = max(|Δμ/μ|, |ΔT/T|) / |ΔF/F|
+    estimate = s · |F − F_prev| / F_prev + s_T · |T − T_prev|,   s = max(|Δμ/μ|, |ΔT/T|) / |ΔF/F|
 
-from the contact's two latest distinct solves (its own measured load sensitivity; the baseline's
-contacts: s = 0.07–1.7), or s = :data:`ASSUMED_SENSITIVITY` while only one solve exists.  The
+from the contact's two latest distinct solves at one bulk temperature (its own measured load sensitivity; the
+baseline's contacts: s = 0.07–1.7), or s = :data:`ASSUMED_SENSITIVITY` while only one solve exists (or the two
+were at different bulk temperatures, which the load's share cannot be told from).  The bulk temperature T
+moves from pass to pass with the flanks' bulk rise (the coupling's step 5); s_T is the oil's temperature-viscosity
+coefficient β = −d ln η/dT [1/K], which bounds the relative change per kelvin of the film (h ∝ η^0.7) and of the
+friction and flash temperature (μ ∝ η^n, n ≤ 1 from the Newtonian to the Eyring film).  The
 solver's answer is smooth in the load at this scale (a 1e-6 load change moves μ by 6.5e-8 …
 3.7e-7 relative, linearly), so the estimate is a first-order bound.  Where the estimate
 exceeds the tolerance the contact is solved again: the rule never reuses what its estimate
@@ -50,26 +54,32 @@ class ReuseReport:
 
 
 def sensitivity(history: list) -> float:
-    """max(|Δμ/μ|, |ΔT/T|) / |ΔF/F| from the two latest solves [(load, result)] (the assumed value with fewer,
-    or when their loads are too close to tell)."""
+    """max(|Δμ/μ|, |ΔT/T|) / |ΔF/F| from the two latest solves [(load, result)] or [(load, result, bulk
+    temperature)] (the assumed value with fewer, when their loads are too close to tell, or when their bulk
+    temperatures differ)."""
     if len(history) < 2:
         return ASSUMED_SENSITIVITY
-    (f1, r1), (f2, r2) = history[-2], history[-1]
+    (f1, r1, *t1), (f2, r2, *t2) = history[-2], history[-1]
     df = abs(f2 - f1) / f1
-    if df < 1e-7:
+    if df < 1e-7 or t1 != t2:
         return ASSUMED_SENSITIVITY
     dmu = abs(r2.mu - r1.mu) / max(abs(r1.mu), 1e-12)
     dT = abs(r2.dT_max - r1.dT_max) / max(abs(r1.dT_max), _T_FLOOR)
     return max(dmu, dT) / df
 
 
-def reusable(history: list, load: float, report: ReuseReport):
-    """The latest result of ``history`` [(load, result)] if reusing it at ``load`` is estimated within
-    :data:`REUSE_TOL` (counted in ``report``), else None (a solve is due; counted)."""
+def reusable(history: list, load: float, report: ReuseReport, temperature: float | None = None,
+             temperature_sensitivity: float = 0.0):
+    """The latest result of ``history`` [(load, result)], or [(load, result, bulk temperature)] with
+    ``temperature`` [K] the query's and ``temperature_sensitivity`` s_T [1/K] (module docstring), if reusing it
+    at ``load`` is estimated within :data:`REUSE_TOL` (counted in ``report``), else None (a solve is due;
+    counted)."""
     if history:
-        f_prev, r_prev = history[-1]
+        f_prev, r_prev, *t_prev = history[-1]
         change = abs(load - f_prev) / f_prev
         estimate = sensitivity(history) * change
+        if t_prev and temperature is not None:
+            estimate += temperature_sensitivity * abs(temperature - t_prev[0])
         if estimate <= REUSE_TOL:
             report.reused += 1
             report.max_load_change = max(report.max_load_change, change)

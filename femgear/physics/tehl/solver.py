@@ -110,7 +110,8 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
     thinnest film for its width, which needs the finest grid) picks, kept for the others, so that the fields
     of a path or map are smooth to the solver's tolerance (a level that changed from point to point would step
     them by up to that tolerance); when another contact's estimate then exceeds the tolerance, the whole sequence
-    is solved once more one level finer.  ``start_level``: the level a similar sequence ended on (the face slices
+    is solved once more one level finer (from the first contact that exceeds it: the contacts are solved fastest
+    sliding first, the hottest, where the estimate grows, so that few solves are discarded).  ``start_level``: the level a similar sequence ended on (the face slices
     of the previous contact), tried first instead of the probe's choice, with the same check and refinement: the
     answer still meets the tolerance, and a sequence that needs that level is not solved twice.  ``options`` to
     :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
@@ -132,14 +133,16 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
     else:
         auto = False
     kw.pop("min_level", None)
-    for i in range(w.size):
-        if out[i] is None:
-            progress(i)
-            out[i] = _one(i, w, R, ue, srr, T, {**kw, "level": level})
     tol = kw.get("tol", DEFAULT_TOL)
-    if auto and level < MAX_LEVEL and max(_estimate(r) for r in out) > tol:
-        # a position other than the probe needs more: the whole sequence one level finer, once
-        return tehl_path_results(w, R, ue, srr, T, setup, level=level + 1, **options)
+    # the fastest-sliding (hottest) contacts first: they are the ones whose estimate exceeds the tolerance on the
+    # probe's level, and the sequence is abandoned at the first that does (its other solves would be discarded)
+    for done, i in enumerate(sorted(range(w.size), key=lambda j: -abs(srr.flat[j]) * ue.flat[j])):
+        if out[i] is None:
+            progress(done)
+            out[i] = _one(i, w, R, ue, srr, T, {**kw, "level": level})
+            if auto and level < MAX_LEVEL and _estimate(out[i]) > tol:
+                # a position other than the probe needs more: the whole sequence one level finer, once
+                return tehl_path_results(w, R, ue, srr, T, setup, level=level + 1, **options)
     return out
 
 
