@@ -73,7 +73,9 @@ class LevelFilm:
     """pressure peak at each path position (the Hertz p_0 for the formula films, the EHL pressure spike or peak for the
     numerical levels) [Pa]"""
     temperature_rise: np.ndarray | None = None
-    """maximum film temperature rise at each path position (thermal levels only, else None) [K]"""
+    """the film's peak temperature rise at each path position, its walls included, so never below the flash
+    (surface) rise ``thermal["flash_tehl"]`` (:func:`femgear.physics.tehl.line.film_peaks`; thermal levels only,
+    else None) [K]"""
     error_estimate: np.ndarray | None = None
     """relative discretisation error of each position's films, the larger of h_c's and h_min's two-level
     Richardson estimates (the numerical levels; None for the formula films) [-]"""
@@ -210,6 +212,10 @@ def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
     latest solves at these inputs."""
     def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
         rs = _reused(solve, case, w, T) or solve_path(w, T)
+        hot = [i for i, r in enumerate(rs) if r.dT_surface > r.dT_max]
+        if hot:     # the film's peak includes its walls: a surface above it is a bug, never a figure to report
+            raise FloatingPointError(f"{level} film: the surface temperature rise exceeds the film's peak at path "
+                                     f"positions {hot}")
         est = [max((e for e in getattr(r, "error_estimate", {}).values() if e is not None), default=None) for r in rs]
         return LevelFilm(level=level, method=method, central=np.array([r.hc for r in rs]),
                          minimum=np.array([r.hmin for r in rs]), pressure_max=np.array([r.pmax for r in rs]),

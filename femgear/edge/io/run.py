@@ -155,6 +155,8 @@ def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
                    phi_tehl_pitch=float(th["phi_tehl"][pitch]), phi_murch_wilson_pitch=float(th["phi_murch_wilson"][pitch]),
                    phi_gupta_pitch=float(th["phi_gupta"][pitch]), flash_tehl_max=float(np.max(th["flash_tehl"])),
                    flash_blok_max=float(np.max(th["flash_blok"])))
+    if film.temperature_rise is not None:   # the film's peak with its walls (≥ flash_tehl_max)
+        out["temperature_rise_max"] = float(np.max(film.temperature_rise))
     return out
 
 
