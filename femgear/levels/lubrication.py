@@ -38,7 +38,7 @@ from femgear.physics.contact.hertz import hertz_line
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.ehl.path import ehl_line_solver, line_ehl_path
 from femgear.physics.lubrication.flash import line_flash_temperature
-from femgear.physics.lubrication.map import hertz_level_solver
+from femgear.physics.lubrication.map import MapError, hertz_level_solver
 from femgear.physics.lubrication.mixed import Roughness
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.path import LineFriction, solids_of
@@ -114,6 +114,13 @@ class Lubrication:
 
     def __call__(self, w, R, ue, srr, T) -> tuple[np.ndarray, np.ndarray]:
         return self.solve(w=w, R=R, ue=ue, srr=srr, T=T)
+
+    @property
+    def map_error(self) -> MapError | None:
+        """The measured error of the friction map that stands in for the level's solves (``tehl`` in the
+        coupling loop), once built; None for direct solves."""
+        fmap = self.solve.friction_map() if hasattr(self.solve, "friction_map") else None
+        return None if fmap is None else fmap.error
 
     def film(self, load_per_length, temperature: float | None = None) -> LevelFilm:
         """The film of this level at the loads ``load_per_length`` [N/m] along the path, at the bulk
