@@ -294,7 +294,7 @@ def _tehl(case: Case, repeated: bool = False) -> Lubrication:
     """``repeated``: the solver will be queried many times (the coupling loop): a friction map of the direct
     solves, built on first use."""
     setup, n = tehl_setup(case), case.numerics
-    opts = {"tol": n.ehl_tol, "min_level": n.ehl_level}
+    opts = {"tol": n.ehl_tol, "min_level": n.ehl_level, "spike": True}   # spike-resolving grids: smooth peaks
     solve = tehl_map_solver(setup, tehl_axes(case), **opts) if repeated else tehl_line_solver(setup, **opts)
 
     def path(w, T):

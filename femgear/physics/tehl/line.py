@@ -253,7 +253,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     max_level: int = MAX_LEVEL, nz: int = 16,
                     heat: bool = True, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                     max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0,
-                    x0: float | None = None, estimate: bool = True, reynolds: str = "reduced") -> TEHLResult:
+                    x0: float | None = None, estimate: bool = True, reynolds: str = "reduced",
+                    spike: bool = False) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m], entrainment speed
     ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature ``T_bulk`` [K].
 
@@ -264,7 +265,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     the isothermal solver).  ``heat=False`` switches the heat sources off.  ``estimate=False``: the thermal
     loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
     level the heaviest corner's estimated solve fixed).  ``reynolds``: "reduced" or "generalised" (module
-    docstring).  Surfaces moving in opposite directions (|``srr``| > 2, down to
+    docstring).  ``spike``: grids that resolve the outlet pressure spike (the path and map sequences, whose peak
+    pressure and film temperature are then smooth along the path; :func:`solve_line_fd`).  Surfaces moving in opposite directions (|``srr``| > 2, down to
     zero entrainment): :func:`femgear.physics.tehl.opposite.solve_tehl_opposite`, which carries the thermal wedge
     this reduced, single-direction solve lacks.  Raises
     :class:`ConvergenceError` with the history when the isothermal start, a Newton solve or the thermal
@@ -283,7 +285,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     iso = solve_line_fd(c.M, c.L, tol=tol, level=level, max_level=max_level, x0=x0, viscosity=ehl.viscosity,
                         **({} if min_level is None else {"min_level": min_level}),
                         ph=c.ph, z=ehl.roelands_z() if ehl.viscosity == "roelands" else 0.68,
-                        compressible=compressible, reuse=reuse, rheology_factory=factory)
+                        compressible=compressible, reuse=reuse, rheology_factory=factory, spike=spike)
     t_iso = time.perf_counter() - t0
     prob = LineProblem(c.M, c.L, _domain_of(iso), {}, rheology_factory=factory)
     top = _level_of(iso)
