@@ -50,12 +50,19 @@ class MapError:
     """Interpolation error against fresh solves at random points of the envelope, beside the map's tolerance."""
 
     samples: int
+    """fresh solves at random points of the envelope [-]"""
     mu_max_abs: float
+    """largest |Δμ| at the samples [-]"""
     mu_rms_abs: float
-    mu_max_rel: float          #: max |Δμ| / max(μ, 0.005)
-    dT_max_abs: float          #: [K]
-    mu_tolerance: float = MU_TOLERANCE   #: the tolerance on ``mu_max_rel`` [-]
-    dT_tolerance: float = math.inf       #: the tolerance on ``dT_max_abs`` [K]
+    """root-mean-square Δμ at the samples [-]"""
+    mu_max_rel: float
+    """largest |Δμ| / max(μ, 0.005) at the samples [-]"""
+    dT_max_abs: float
+    """largest |ΔT| error at the samples [K]"""
+    mu_tolerance: float = MU_TOLERANCE
+    """the tolerance on ``mu_max_rel`` [-]"""
+    dT_tolerance: float = math.inf
+    """the tolerance on ``dT_max_abs`` [K]"""
 
     @property
     def within_tolerance(self) -> bool:
