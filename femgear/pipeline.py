@@ -79,7 +79,8 @@ def run_case(case: Case, progress: Callable[[CouplingState], None] | None = None
         **wear_regime(setup.wear if worn else None, st.load_per_length),
         **face_fields(case, setup.thermal, st.flank_temperature_rise, None if setup.face is None else setup.face.grid,
                       st.wear_face if worn else None, st.thermal_face),
-        film=setup.lubrication.film(st.load_per_length, bulk_temperature(case, st.flank_temperature_rise)))
+        film=setup.lubrication.film(st.load_per_length, bulk_temperature(case, st.flank_temperature_rise)),
+        friction_map_error=setup.lubrication.map_error)
     return derived_fields(RunResult(case, contact, stiffness, tribology, coupled, seconds=time.perf_counter() - t0,
                                     transmission_error=te,
                                     rating=case_rating(case, contact, tribology, stiffness, st.amplitudes or None)))

@@ -19,6 +19,7 @@ from femgear.physics.body.fields import BodySection
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.ltca.maps import LoadMaps
 from femgear.physics.ltca.te import TEAnalysis
+from femgear.physics.lubrication.map import MapError
 from femgear.physics.rating import MeshPowerLoss, PittingRating
 from femgear.physics.rating.suite import PairRating
 from femgear.physics.stiffness.iso6336 import IsoStiffness
@@ -72,6 +73,9 @@ class Tribology:
     film: LevelFilm | None = None
     """the film of the lubrication level that ran, at ``load_per_length`` (:mod:`femgear.levels.lubrication`;
     None: lubrication off) [-]"""
+    friction_map_error: MapError | None = None
+    """the measured error of the friction map that stood in for the lubrication level's solves, beside its tolerance
+    (:class:`femgear.physics.lubrication.map.MapError`; ``tehl`` with dynamics; None: direct solves) [-]"""
 
 
 @document_fields

@@ -38,7 +38,7 @@ from femgear.physics.contact.hertz import hertz_line
 from femgear.physics.contact.path import ContactPath
 from femgear.physics.ehl.path import ehl_line_solver, line_ehl_path
 from femgear.physics.lubrication.flash import line_flash_temperature
-from femgear.physics.lubrication.map import hertz_level_solver
+from femgear.physics.lubrication.map import MapError, hertz_level_solver
 from femgear.physics.lubrication.mixed import Roughness
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.path import LineFriction, solids_of
@@ -73,7 +73,9 @@ class LevelFilm:
     """pressure peak at each path position (the Hertz p_0 for the formula films, the EHL pressure spike or peak for the
     numerical levels) [Pa]"""
     temperature_rise: np.ndarray | None = None
-    """maximum film temperature rise at each path position (thermal levels only, else None) [K]"""
+    """the film's peak temperature rise at each path position, its walls included, so never below the flash
+    (surface) rise ``thermal["flash_tehl"]`` (:func:`femgear.physics.tehl.line.film_peaks`; thermal levels only,
+    else None) [K]"""
     error_estimate: np.ndarray | None = None
     """relative discretisation error of each position's films, the larger of h_c's and h_min's two-level
     Richardson estimates (the numerical levels; None for the formula films) [-]"""
@@ -112,6 +114,13 @@ class Lubrication:
 
     def __call__(self, w, R, ue, srr, T) -> tuple[np.ndarray, np.ndarray]:
         return self.solve(w=w, R=R, ue=ue, srr=srr, T=T)
+
+    @property
+    def map_error(self) -> MapError | None:
+        """The measured error of the friction map that stands in for the level's solves (``tehl`` in the
+        coupling loop), once built; None for direct solves."""
+        fmap = self.solve.friction_map() if hasattr(self.solve, "friction_map") else None
+        return None if fmap is None else fmap.error
 
     def film(self, load_per_length, temperature: float | None = None) -> LevelFilm:
         """The film of this level at the loads ``load_per_length`` [N/m] along the path, at the bulk
@@ -214,6 +223,10 @@ def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
     latest solves at these inputs."""
     def film(level: str, w: np.ndarray, T: float, solve: Solver) -> LevelFilm:
         rs = _reused(solve, case, w, T) or solve_path(w, T)
+        hot = [i for i, r in enumerate(rs) if r.dT_surface > r.dT_max]
+        if hot:     # the film's peak includes its walls: a surface above it is a bug, never a figure to report
+            raise FloatingPointError(f"{level} film: the surface temperature rise exceeds the film's peak at path "
+                                     f"positions {hot}")
         est = [max((e for e in getattr(r, "error_estimate", {}).values() if e is not None), default=None) for r in rs]
         return LevelFilm(level=level, method=method, central=np.array([r.hc for r in rs]),
                          minimum=np.array([r.hmin for r in rs]), pressure_max=np.array([r.pmax for r in rs]),
@@ -285,7 +298,7 @@ def _tehl(case: Case, repeated: bool = False) -> Lubrication:
     """``repeated``: the solver will be queried many times (the coupling loop): a friction map of the direct
     solves, built on first use."""
     setup, n = tehl_setup(case), case.numerics
-    opts = {"tol": n.ehl_tol, "min_level": n.ehl_level}
+    opts = {"tol": n.ehl_tol, "min_level": n.ehl_level, "spike": True}   # spike-resolving grids: smooth peaks
     solve = tehl_map_solver(setup, tehl_axes(case), **opts) if repeated else tehl_line_solver(setup, **opts)
 
     def path(w, T):

@@ -177,3 +177,14 @@ def test_the_films_peak_temperature_bounds_its_walls():
     for srr in (0.0, 1.0):
         r = _solve(srr)
         assert r.dT_max >= r.dT_surface > 0
+
+
+def test_every_summary_names_one_film_peak_with_its_walls():
+    """The result and each thermal level report the same quantity, the film's peak with its walls (``film_peaks``):
+    the finest level's summary equals the result's, every level reads its surface (flash) peak beside it and never
+    above it.  (The level summaries once read the layer-centre peak alone, below the result's on the same level.)"""
+    r = _solve(1.0, level=None)
+    fine = r.levels[-1]
+    assert fine["dT_max"] == r.dT_max and fine["dT_surface"] == r.dT_surface
+    assert all(lv["dT_max"] >= lv["dT_surface"] > 0 for lv in r.levels)
+    assert r.dT_max >= float(np.max(r.T_film - case.T0)) - 1e-12

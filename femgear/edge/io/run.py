@@ -7,7 +7,8 @@ Layout (the contract; keys are added, never renamed without a README note):
   (from ``RunResult.figures``; the last two with the ``friction_level`` of their μ, the run's own), ``safety_factors``, ``bending``, ``scuffing``,
   ``micropitting`` (from ``RunResult.rating``, :mod:`femgear.physics.rating.summary`), ``physics`` (the levels), ``stiffness`` (level, mean_total, ripple_total, with ``fe``/``ltca`` body_level [and body_elements],
   and statically mean_per_helix, seconds), ``friction`` (level, mu_pitch/min/max/mean,
-  max_temperature_rise), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
+  max_temperature_rise; where a friction map stood in for the level, ``map_*``: its measured error beside its
+  tolerance, ``map_within_tolerance`` and the line ``map_error``), ``thermal`` (flank_temperature_rise, deviation_pitch_pinion/
   gear, max_deviation), ``wear`` (cycles, max_depth_pinion/gear, statically steps; load: the load that
   wore, "asperity" or "total"; film_parameter_min, asperity_share_max: the film's share along the path; warnings),
   with ``stiffness = "ltca"`` ``transmission_error`` (:func:`femgear.edge.io.ltca.te_summary`: loaded TE
@@ -73,6 +74,11 @@ def tribology_summary(t: Tribology, s: np.ndarray, static: bool, level: str) -> 
     out: dict[str, Any] = {}
     if t.friction_coefficient is not None:
         out["friction"] = _friction_summary(t.friction_coefficient, t.temperature_rise, s, level)
+        e = t.friction_map_error
+        if e is not None:   # the friction map's own error beside its tolerance, flagged above it
+            out["friction"].update(map_samples=e.samples, map_mu_error=e.mu_max_rel, map_mu_tolerance=e.mu_tolerance,
+                                   map_temperature_error=e.dT_max_abs, map_temperature_tolerance=e.dT_tolerance,
+                                   map_within_tolerance=e.within_tolerance, map_error=e.message())
     if t.thermal_deviation is not None:
         out["thermal"] = _thermal_summary(t.flank_temperature_rise, t.thermal_deviation, s)
     if t.wear is not None:
@@ -155,6 +161,8 @@ def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
                    phi_tehl_pitch=float(th["phi_tehl"][pitch]), phi_murch_wilson_pitch=float(th["phi_murch_wilson"][pitch]),
                    phi_gupta_pitch=float(th["phi_gupta"][pitch]), flash_tehl_max=float(np.max(th["flash_tehl"])),
                    flash_blok_max=float(np.max(th["flash_blok"])))
+    if film.temperature_rise is not None:   # the film's peak with its walls (≥ flash_tehl_max)
+        out["temperature_rise_max"] = float(np.max(film.temperature_rise))
     return out
 
 

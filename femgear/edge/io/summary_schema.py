@@ -139,7 +139,11 @@ SECTIONS: dict[str, Section] = {
                           **_keys("stiffness", PAIR, "mean_per_helix"),
                           **_keys("stiffness", TEXT, "level body_elements")}, when="in every run"),
     "friction": Section({**_keys("friction", NUMBER, "mu_pitch mu_min mu_max mu_mean max_temperature_rise"),
-                         **_keys("friction", TEXT, "level")}, _lubricated, 'with a lubrication level other than "none"'),
+                         **_keys("friction", TEXT, "level"),
+                         # where a friction map stood in for the level's solves (tehl with dynamics): its own error
+                         **_keys("friction", NUMBER, "map_samples map_mu_error map_mu_tolerance map_temperature_error "
+                                                     "map_temperature_tolerance"),
+                         **_keys("friction", FLAG, "map_within_tolerance"), **_keys("friction", TEXT, "map_error")}, _lubricated, 'with a lubrication level other than "none"'),
     "thermal": Section(_keys("thermal", NUMBER, "flank_temperature_rise deviation_pitch_pinion deviation_pitch_gear "
                                                 "max_deviation"),
                        lambda scene: scene.physics.spec("thermal").grows, 'with a thermal level other than "none"'),
@@ -153,7 +157,7 @@ SECTIONS: dict[str, Section] = {
                      # formula ones (femgear.edge.io.run.film_summary): present only where the level computes them
                      **_keys("film", NUMBER, "error_estimate_max central_isothermal_pitch thermal_loading_max "
                                              "phi_tehl_pitch phi_murch_wilson_pitch phi_gupta_pitch flash_tehl_max "
-                                             "flash_blok_max")}, when="in every run"),
+                                             "flash_blok_max temperature_rise_max")}, when="in every run"),
     "transmission_error": Section({
         **_keys("transmission_error", NUMBER, "torque force lte_peak_to_peak lte_mean lte_transverse_peak_to_peak "
                                               "nlte_peak_to_peak nlte_max stiffness_mean stiffness_ripple "

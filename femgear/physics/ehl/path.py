@@ -11,7 +11,8 @@ one that needs the finest grid) is solved first to the tolerance, and its level 
 position (at least ``min_level``), so that the fields along the path are smooth to the solver's
 tolerance: a level that changed from one position to the next would step the films by up to that
 tolerance.  Each position is warm-started from the previous one and carries its own two-level
-Richardson estimate.
+Richardson estimate.  The grids resolve the outlet pressure spike (``spike=True`` of
+:func:`femgear.physics.ehl.fd.line.solve_line_fd`), so that its peak, ``pressure_max``, is smooth along the path too.
 """
 
 from __future__ import annotations
@@ -60,14 +61,15 @@ def line_ehl_path(w, R, ue, T, oil: OilLaw, E_red: float, *, tol: float = DEFAUL
                   for wi, Ri, ui, o in zip(w, R, ue, oils)])
     first = int(np.argmax(M))
     floor = MIN_LEVEL if min_level is None else min_level
-    probe = _solve(w[first], R[first], ue[first], E_red, oils[first], dict(tol=tol, min_level=floor))
+    probe = _solve(w[first], R[first], ue[first], E_red, oils[first], dict(tol=tol, min_level=floor, spike=True))
     level = max(_level_of(probe.result), floor)
     out: list[DimensionalEHL | None] = [None] * w.size
     out[first] = probe if _level_of(probe.result) == level else None
     prev, reuse = None, {}
     for i in range(w.size):
         if out[i] is None:
-            out[i] = _solve(w[i], R[i], ue[i], E_red, oils[i], dict(level=level, tol=tol, start=prev, reuse=reuse))
+            out[i] = _solve(w[i], R[i], ue[i], E_red, oils[i], dict(level=level, tol=tol, start=prev, reuse=reuse,
+                                                                              spike=True))
         prev = out[i].result
     est = np.array([max(v for v in r.result.error_estimate.values() if v is not None) for r in out])
     if est.max() > tol and level < MAX_LEVEL and not refined:

@@ -14,6 +14,8 @@ Speeds, loads and radii are interpolated in their logarithms, where μ is smooth
 
 from __future__ import annotations
 
+import logging
+import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -33,15 +35,45 @@ def _coord(name: str, values) -> np.ndarray:
     return np.log(v) if name in _LOG_AXES else v
 
 
+#: the map's tolerance on μ: the largest |Δμ| / max(μ, 0.005) at the validation samples [-].  A choice: μ enters
+#: the dynamics as the friction force, whose error then stays within that of the traction law itself
+MU_TOLERANCE = 0.05
+#: the map's tolerance on the temperature rise: this share of the map's largest ΔT, at least DT_FLOOR [-]
+DT_TOLERANCE = 0.05
+DT_FLOOR = 1.0   #: [K]
+
+log = logging.getLogger("femgear.physics.lubrication")
+
+
 @dataclass(frozen=True)
 class MapError:
-    """Interpolation error against fresh solves at random points of the envelope."""
+    """Interpolation error against fresh solves at random points of the envelope, beside the map's tolerance."""
 
     samples: int
+    """fresh solves at random points of the envelope [-]"""
     mu_max_abs: float
+    """largest |Δμ| at the samples [-]"""
     mu_rms_abs: float
-    mu_max_rel: float          #: max |Δμ| / max(μ, 0.005)
-    dT_max_abs: float          #: [K]
+    """root-mean-square Δμ at the samples [-]"""
+    mu_max_rel: float
+    """largest |Δμ| / max(μ, 0.005) at the samples [-]"""
+    dT_max_abs: float
+    """largest |ΔT| error at the samples [K]"""
+    mu_tolerance: float = MU_TOLERANCE
+    """the tolerance on ``mu_max_rel`` [-]"""
+    dT_tolerance: float = math.inf
+    """the tolerance on ``dT_max_abs`` [K]"""
+
+    @property
+    def within_tolerance(self) -> bool:
+        return self.mu_max_rel <= self.mu_tolerance and self.dT_max_abs <= self.dT_tolerance
+
+    def message(self) -> str:
+        """One line: the errors against the tolerances, and whether they hold."""
+        verdict = "within" if self.within_tolerance else "ABOVE"
+        return (f"friction map error at {self.samples} fresh solves: mu {100 * self.mu_max_rel:.2g} % (tolerance "
+                f"{100 * self.mu_tolerance:g} %), temperature rise {self.dT_max_abs:.3g} K (tolerance "
+                f"{self.dT_tolerance:.3g} K): {verdict} its tolerance")
 
 
 @dataclass(frozen=True)
@@ -92,7 +124,9 @@ class FrictionMap:
         return f_mu(x), f_dT(x)
 
     def validate(self, solver: Solver, samples: int = 200, seed: int = 0) -> FrictionMap:
-        """A copy of the map with its error measured at ``samples`` random points."""
+        """A copy of the map with its error measured at ``samples`` random points, beside its tolerance
+        (:data:`MU_TOLERANCE`; :data:`DT_TOLERANCE` of the map's largest ΔT, at least :data:`DT_FLOOR`); an error
+        above the tolerance is logged as a warning (and the summary of a run flags it)."""
         rng = np.random.default_rng(seed)
         pts = {}
         for name in AXES:
@@ -104,7 +138,10 @@ class FrictionMap:
         err = np.abs(mu - mu_ref)
         e = MapError(samples=samples, mu_max_abs=float(err.max()), mu_rms_abs=float(np.sqrt(np.mean(err**2))),
                      mu_max_rel=float(np.max(err / np.maximum(mu_ref, 0.005))),
-                     dT_max_abs=float(np.max(np.abs(dT - dT_ref))))
+                     dT_max_abs=float(np.max(np.abs(dT - dT_ref))),
+                     dT_tolerance=max(DT_TOLERANCE * float(np.max(np.abs(self.temperature_rise))), DT_FLOOR))
+        if not e.within_tolerance:
+            log.warning(e.message())
         return FrictionMap(self.axes, self.mu, self.temperature_rise, self.build_seconds, e)
 
 

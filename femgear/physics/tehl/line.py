@@ -98,7 +98,7 @@ class TEHLResult:
     hmin: float               #: minimum film [m]
     pmax: float               #: maximum pressure [Pa]
     hc_isothermal: float      #: central film of the isothermal solve [m]
-    dT_max: float             #: maximum film temperature rise, its walls included (≥ ``dT_surface``) [K]
+    dT_max: float             #: the film's peak temperature rise, its walls included (≥ ``dT_surface``, :func:`film_peaks`) [K]
     dT_surface: float         #: maximum surface (flash) temperature rise, both bodies [K]
     mu: float                 #: sliding friction coefficient |μ_couette| [-]
     mu_couette: float         #: ∫τ_c dx / w', signed like v2 − v1 [-]
@@ -120,7 +120,7 @@ class TEHLResult:
     tau: np.ndarray = field(repr=False)        #: Couette shear stress on the cells [Pa]
     hmin_isothermal: float = math.nan          #: minimum film of the isothermal solve [m]
     error_estimate: dict = field(default_factory=dict)  #: relative Richardson estimates of hc, hmin (thermal levels)
-    levels: tuple = ()                         #: per thermal level: nodes, hc, hmin, mu, dT_max, iterations
+    levels: tuple = ()                         #: per thermal level: nodes, Hc, Hmin, mu, dT_max, dT_surface, iterations
     M: float = math.nan                        #: Moes load parameter at the bulk viscosity [-]
     L: float = math.nan                        #: Moes lubricant parameter at the bulk viscosity [-]
     nodes: int = 0                             #: EHL nodes of the finest level
@@ -253,7 +253,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     max_level: int = MAX_LEVEL, nz: int = 16,
                     heat: bool = True, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                     max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0,
-                    x0: float | None = None, estimate: bool = True, reynolds: str = "reduced") -> TEHLResult:
+                    x0: float | None = None, estimate: bool = True, reynolds: str = "reduced",
+                    spike: bool = False) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m], entrainment speed
     ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature ``T_bulk`` [K].
 
@@ -264,7 +265,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     the isothermal solver).  ``heat=False`` switches the heat sources off.  ``estimate=False``: the thermal
     loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
     level the heaviest corner's estimated solve fixed).  ``reynolds``: "reduced" or "generalised" (module
-    docstring).  Surfaces moving in opposite directions (|``srr``| > 2, down to
+    docstring).  ``spike``: grids that resolve the outlet pressure spike (the path and map sequences, whose peak
+    pressure and film temperature are then smooth along the path; :func:`solve_line_fd`).  Surfaces moving in opposite directions (|``srr``| > 2, down to
     zero entrainment): :func:`femgear.physics.tehl.opposite.solve_tehl_opposite`, which carries the thermal wedge
     this reduced, single-direction solve lacks.  Raises
     :class:`ConvergenceError` with the history when the isothermal start, a Newton solve or the thermal
@@ -283,7 +285,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     iso = solve_line_fd(c.M, c.L, tol=tol, level=level, max_level=max_level, x0=x0, viscosity=ehl.viscosity,
                         **({} if min_level is None else {"min_level": min_level}),
                         ph=c.ph, z=ehl.roelands_z() if ehl.viscosity == "roelands" else 0.68,
-                        compressible=compressible, reuse=reuse, rheology_factory=factory)
+                        compressible=compressible, reuse=reuse, rheology_factory=factory, spike=spike)
     t_iso = time.perf_counter() - t0
     prob = LineProblem(c.M, c.L, _domain_of(iso), {}, rheology_factory=factory)
     top = _level_of(iso)
@@ -338,6 +340,17 @@ def peak(values: np.ndarray, x: np.ndarray) -> float:
         if a < 0:
             top = max(top, float(c0 - b * b / (4.0 * a)))
     return top
+
+
+def film_peaks(theta: np.ndarray, surface1: np.ndarray, surface2: np.ndarray, x: np.ndarray) -> dict:
+    """The film's peak temperature rise ``dT_max``, over the film with its two walls, and the surfaces' (flash) peak
+    ``dT_surface`` [K], each read at the :func:`peak` vertex, from the layer temperatures ``theta`` (cells x layers)
+    and the two surface temperature rises on the cells ``x``.  The one film peak every summary reports (the
+    result's and each thermal level's): a surface hotter than every layer centre (heat flowing back into the film
+    near the outlet) bounds the film too, so ``dT_max >= dT_surface`` always holds."""
+    surface = max(peak(surface1, x), peak(surface2, x))
+    film = max(peak(np.maximum(theta.max(axis=1), np.maximum(surface1, surface2)), x), surface)
+    return {"dT_max": film, "dT_surface": surface}
 
 
 def _regrid(theta: np.ndarray, xc0: np.ndarray, xc: np.ndarray, nz: int) -> np.ndarray:
@@ -453,8 +466,8 @@ class _Run:
         i0 = int(np.argmin(np.abs(lv.lv.X)))
         dx = np.diff(lv.xf)
         self.summaries.append({"nodes": lv.lv.n, "Hc": float(H[i0] * c.hs), "Hmin": float(H.min() * c.hs),
-                               "mu": float(abs(st.tau_couette @ dx) / c.w), "dT_max": peak(theta.max(axis=1), lv.xc),
-                               "iterations": self.its})
+                               "mu": float(abs(st.tau_couette @ dx) / c.w),
+                               **film_peaks(theta, st.surface1, st.surface2, lv.xc), "iterations": self.its})
 
     def result(self, iso, t0: float, t_iso: float, est) -> TEHLResult:
         c, lv, st, theta = self.c, self.last, self.st, self.theta
@@ -466,13 +479,10 @@ class _Run:
         mu_p = float(st.tau_poiseuille @ dx / c.w)
         i0 = int(np.argmin(np.abs(X)))
         hs = c.hs
-        # the film's peak is over the film with its two walls: a surface hotter than every layer centre (heat
-        # flowing back into the film near the outlet) bounds the film too
-        surface_peak = max(peak(st.surface1, lv.xc), peak(st.surface2, lv.xc))
-        film_peak = max(peak(np.maximum(theta.max(axis=1), np.maximum(st.surface1, st.surface2)), lv.xc), surface_peak)
+        peaks = film_peaks(theta, st.surface1, st.surface2, lv.xc)
         out = TEHLResult(
             hc=float(H[i0] * hs), hmin=float(H.min() * hs), pmax=float(P.max() * c.ph), hc_isothermal=float(iso.Hc_hertz * hs),
-            dT_max=film_peak, dT_surface=surface_peak,
+            dT_max=peaks["dT_max"], dT_surface=peaks["dT_surface"],
             mu=abs(mu_c), mu_couette=mu_c, mu_poiseuille=mu_p, heat=st.heat, iterations=self.its,
             newton_iterations=self.newton_its, seconds=time.perf_counter() - t0, seconds_isothermal=t_iso, b=c.b,
             ph=c.ph, x=X * c.b, p=P * c.ph, h=H * hs, x_cells=lv.xc, T_film=c.T_bulk + theta,

@@ -188,22 +188,30 @@ def tehl_map(setup: TEHLSetup, axes: dict, level: int | None = None, validate: i
     return fmap.validate(solver, samples=validate, seed=seed) if validate else fmap
 
 
-def tehl_map_solver(setup: TEHLSetup, axes: dict, level: int | None = None, **options):
+#: fresh TEHL solves at random envelope points that measure the ``tehl`` level's friction map (about 7 % of its
+#: 168 solves): its error goes into the run's summary beside its tolerance, flagged above it
+MAP_VALIDATION = 12
+
+
+def tehl_map_solver(setup: TEHLSetup, axes: dict, level: int | None = None, validate: int = MAP_VALIDATION,
+                    **options):
     """The ``tehl`` level for the coupling loop: a :func:`tehl_map` over ``axes`` built on first use
-    (≈ 170 TEHL solves), queried by interpolation.  Queries outside the envelope are
+    (≈ 170 TEHL solves) and measured against ``validate`` fresh solves, queried by interpolation; the
+    solver's ``friction_map()`` is the map (None before the first query).  Queries outside the envelope are
     clamped to its edges (the dynamic load may leave the 0.5–2 × nominal band briefly
     at the ends of the path)."""
     cache: dict = {}
 
     def solve(w, R, ue, srr, T):
         if "map" not in cache:
-            cache["map"] = tehl_map(setup, axes=axes, level=level, **options)
+            cache["map"] = tehl_map(setup, axes=axes, level=level, validate=validate, **options)
         fmap = cache["map"]
         args = [np.clip(np.abs(a) if k == "srr" else np.asarray(a, dtype=float), fmap.axes[k][0], fmap.axes[k][-1])
                 for k, a in zip(("w", "R", "ue", "srr", "T"), (w, R, ue, srr, T))]
         return fmap(*args)
 
     solve.cache = cache
+    solve.friction_map = lambda: cache.get("map")
     return solve
 
 

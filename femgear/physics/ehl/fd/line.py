@@ -213,7 +213,7 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
                   ph: float | None = None, z: float = 0.68, newton_tol: float = NEWTON_TOL,
                   max_iter: int = 60, start: EHLResult | None = None, reuse: dict | None = None,
                   surface=None, graded: bool = True, rheology_factory=None, rigid: bool = False,
-                  fast: bool | None = None) -> EHLResult:
+                  fast: bool | None = None, spike: bool = False, spike_at: float | None = None) -> EHLResult:
     """Isothermal line-contact EHL in Moes line groups (M, L), converged to ``tol``.
 
     ``tol``: relative accuracy of Hc and Hmin by the two-level Richardson estimate (None:
@@ -226,7 +226,9 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
     warm starts along a sequence (module docstring).  ``graded=False``: uniform grids (for
     convergence studies); ``rigid``: no elastic deflection (the rigid limits' checks); ``fast``: the HODLR
     kernel and factorisation on every level (True), the dense ones (False), or by size (None: above
-    :data:`DENSE_NODES`; the answers agree to the Newton tolerance).  Raises
+    :data:`DENSE_NODES`; the answers agree to the Newton tolerance).  ``spike``: the grids resolve the outlet
+    pressure spike (the path solvers: its peak is then smooth along a path), by a bump of the node density at the
+    spike that a first solve on the plain grids locates (``spike_at``: there, :meth:`LineDomain.with_spike`).  Raises
     :class:`ConvergenceError` with the history when no level converges."""
     if not (M > 0 and L >= 0 and np.isfinite(M) and np.isfinite(L)):
         raise ValueError("need finite M > 0 and L >= 0")
@@ -234,8 +236,20 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
         raise SceneError("tol", f"relative tolerance must lie in (0, 1), got {tol!r}")
     if surface is not None and not callable(surface):
         raise ValueError("surface must be a callable R(X) for the FD line solver")
+    if spike and spike_at is None:
+        args = dict(tol=tol, level=level, min_level=min_level, max_level=max_level, x0=x0, x1=x1, viscosity=viscosity,
+                    compressible=compressible, ph=ph, z=z, newton_tol=newton_tol, max_iter=max_iter, surface=surface,
+                    graded=graded, rheology_factory=rheology_factory, rigid=rigid, fast=fast)
+        first = solve_line_fd(M, L, start=start, **args)
+        try:
+            return solve_line_fd(M, L, start=first, reuse=reuse, spike_at=spike_peak(first.x, first.P), **args)
+        except ConvergenceError as exc:   # the bumped grid's coarse levels too poor: the plain grids' answer, said so
+            first.history["spike"] = f"not resolved (the spike grid failed: {str(exc)[:120]})"
+            return first
     H_exp = expected_film(M, L)
     dom = line_domain(H_exp, x0, x1, graded=graded)
+    if spike_at is not None:
+        dom = dom.with_spike(spike_at)
     inlet = acc.inlet_problem(dom.x0, H_exp) if x0 is not None else None
     top = max_level if level is None else level
     prob = LineProblem(M, L, dom, dict(viscosity=viscosity, ph=ph, z=z, compressible=compressible), surface,
@@ -275,11 +289,22 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
         run.record(lv, PI, H0, n0)
     load_error = abs(lv.dual @ PI - lv.load) / lv.load
     P, H = lv.film(PI, H0)
-    hist = {**run.hist.as_dict(), "method": "fd", "domain": [dom.x0, dom.x1, dom.w, dom.A]}
+    hist = {**run.hist.as_dict(), "method": "fd", "domain": dom.as_list()}
     return assemble("line", M, L, lv.X, np.zeros(0), P, H, H0=H0, load_error=load_error, fac=prob.fac,
                     history=hist, iterations=len(run.hist.residual), per_level=run.per_level,
                     seconds=time.perf_counter() - run.t0, tol=DEFAULT_TOL if tol is None else tol,
                     extra_flags=(f"domain: {inlet}",) if inlet else (), estimate=estimate(run.per_level))
+
+
+def spike_peak(X: np.ndarray, P: np.ndarray) -> float:
+    """X of the pressure maximum: the vertex of the parabola through the largest nodal value and its neighbours
+    (within them), so that the spike bump follows the spike smoothly rather than from node to node."""
+    i = int(np.argmax(P))
+    if 0 < i < P.size - 1:
+        a, b, _ = np.polyfit(X[i - 1:i + 2] - X[i], P[i - 1:i + 2], 2)
+        if a < 0:
+            return float(X[i] + np.clip(-b / (2.0 * a), X[i - 1] - X[i], X[i + 1] - X[i]))
+    return float(X[i])
 
 
 def estimate(per_level: list[dict]) -> dict:
