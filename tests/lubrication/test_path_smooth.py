@@ -35,6 +35,7 @@ def baseline_path(baseline_scene):
     return case, contact.line_load
 
 
+@pytest.mark.slow
 def test_ehl_line_peak_pressure_is_smooth_along_the_baseline_path(baseline_path):
     """The ``ehl-line`` films and peak pressure on the baseline's first 12 path positions (one grid level, the path's):
     the peak pressure's second differences were 7 % of it (the outlet spike, narrower than a cell, crossing the
