@@ -23,6 +23,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
+from femgear.docfields import document_fields
+
 AXES = ("w", "R", "ue", "srr", "T")
 _LOG_AXES = frozenset({"w", "R", "ue"})
 
@@ -45,6 +47,7 @@ DT_FLOOR = 1.0   #: [K]
 log = logging.getLogger("femgear.physics.lubrication")
 
 
+@document_fields
 @dataclass(frozen=True)
 class MapError:
     """Interpolation error against fresh solves at random points of the envelope, beside the map's tolerance."""
