@@ -90,7 +90,7 @@ def _reference(model, cycles, transient, per):
     return analyse(sim, transient).amplitudes
 
 
-@pytest.mark.parametrize("rpm", [100.0, 500.0])
+@pytest.mark.parametrize("rpm", [pytest.param(100.0, marks=pytest.mark.slow), 500.0])
 def test_default_step_matches_a_small_step_reference(baseline_path, rpm):
     """Issue 26: the default plan (coarse transient, 8 samples of the top mode while recording) against
     RK4 at 4× the recording steps over the same 12 mesh periods (6 dropped): gear v_y and the other member

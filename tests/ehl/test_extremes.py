@@ -94,6 +94,7 @@ def test_point_extremes_physics_and_regression(name):
     assert ratio == pytest.approx(measured, rel=REGRESSION_REL)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(POINT_RAISES))
 def test_point_extremes_raise(name):
     _check_raise(solve_point, *POINT_RAISES[name])

@@ -83,6 +83,7 @@ def test_point_pressure_ripple_is_johnsons():
     assert _ripple(r.x, r.P[j] - r0.P[j], lam) == pytest.approx(np.pi / 4 * 2 * np.pi / lam * A, rel=0.03)
 
 
+@pytest.mark.slow
 def test_paper_peak_flattened_in_contact_followed_in_inlet(smooth_line):
     """The paper's peak (eq. 22): inside the Hertzian zone the film stays flat and the pressure
     rises under the peak; in the inlet (X = -3, no pressure) the film follows the roughness."""
