@@ -162,13 +162,19 @@ def _crash(sig: int):
 
 
 @pytest.mark.parametrize("sig", [signal.SIGSEGV, signal.SIGKILL])
-def test_a_child_that_dies_of_a_signal_is_an_out_of_memory_line(sig, capsys):
+def test_a_child_that_dies_of_a_signal_is_an_out_of_memory_line(sig, capsys, monkeypatch):
     """CHOLMOD out of memory prints its error and crashes the child (SIGSEGV); the kernel's OOM killer sends
-    SIGKILL: both reach the CLI as one 'out of memory' line naming the stage (exit 1), not an internal error."""
+    SIGKILL: both reach the CLI as one 'out of memory' line naming the stage (exit 1), not an internal error.
+    The forked path is forced: a test worker that ran CHOLMOD in-process earlier is marked unsafe to fork, and
+    the crash would then hit the worker itself."""
     import argparse
 
+    import femgear.perf as perf
     from femgear.edge.cli import _dispatch
     from femgear.perf import interruptible
+
+    monkeypatch.setattr(perf, "_FORK_UNSAFE", [])
+    monkeypatch.delenv("FEMGEAR_FORK", raising=False)
 
     with pytest.raises(MemoryError, match="_crash: the child process"):
         interruptible(_crash, sig)
