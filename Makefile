@@ -53,7 +53,7 @@ TEST_WORKERS ?= 2
 test: $(STAMP)
 	$(BIN)/ruff check femgear tests studies meshes docs/gen docs/examples
 	$(BIN)/mkdocs build --strict --quiet --site-dir $(OUT)/site
-	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS)
 
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -m slow
