@@ -1,6 +1,6 @@
 """Benchmark: the line TEHL over the gear envelope, and the speed figures of issue 43.
 
-    python studies/benchmarks/tehl_envelope.py [--json FILE] [--quick] [--no-base] [--zoo]
+    python studies/benchmarks/tehl_envelope.py [--json FILE] [--quick] [--no-base]
 
 Points (60, corners included): gear contacts built from an oil at its inlet temperature, the entrainment
 speed u_e, the Hertz pressure p_H, the slide-to-roll ratio and the reduced radius R (steel, E' 226 GPa,
@@ -17,9 +17,8 @@ points (targets ≤ 1 s and ≤ 5 s) and the M, L covered.
 Also: opposite sliding at zero entrainment (the thermal-wedge dimple; not with ``--quick``), the isothermal
 (M, L) = (1000, 4.3) to 1 % (target ≤ 0.5 s), the Galerkin (FE) solver of the base tree at
 its own tolerance-driven grid for the same accuracy, the base tree's line TEHL at five contacts where it converges
-(its default level 5 and level 6, against this tree at its tolerance; ``--no-base`` skips both), and with ``--zoo``
-the wall time of the
-``tehl`` zoo cells of the turbo pair and the baseline (target: turbo ≤ 3x baseline).  CPU seconds are process
+(its default level 5 and level 6, against this tree at its tolerance; ``--no-base`` skips both).  The turbo
+pair's ``tehl`` run against the baseline's is ``studies/benchmarks/tehl_pair_cost.py``.  CPU seconds are process
 time (the machine is shared); timings are medians of 3 where marked.
 """
 
@@ -218,25 +217,11 @@ def opposite_sliding() -> list[dict]:
     return rows
 
 
-def zoo_cells() -> dict:
-    """Wall seconds of the ``tehl`` zoo cells of the turbo pair and the baseline (--coarse), in this run."""
-    out = {}
-    for scene in ("paper_baseline", "turbo"):
-        t = time.perf_counter()
-        p = subprocess.run([sys.executable, str(ROOT / "studies" / "validation" / "zoo_matrix.py"), "--coarse",
-                            "--cells", "lubrication=tehl", "--scenes", scene], capture_output=True, text=True,
-                           cwd=ROOT)
-        out[scene] = {"seconds": time.perf_counter() - t, "verdict": (p.stdout.strip().splitlines() or [""])[-2:]}
-    out["ratio"] = out["turbo"]["seconds"] / out["paper_baseline"]["seconds"]
-    return out
-
-
 def main(argv: list[str] | None = None) -> dict:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--json", help="write the figures to this file")
     ap.add_argument("--quick", action="store_true", help="every sixth point only")
     ap.add_argument("--no-base", action="store_true", help="skip the base tree's FE line and TEHL solves")
-    ap.add_argument("--zoo", action="store_true", help="also time the turbo and baseline tehl zoo cells")
     args = ap.parse_args(argv)
     rows = []
     print(f"{'group':7} {'oil':5} {'T':>4} {'u_e':>6} {'p_H':>5} {'SRR':>5} {'M':>8} {'L':>6} conv {'its':>4} "
@@ -291,10 +276,6 @@ def main(argv: list[str] | None = None) -> dict:
                   f"{1e9 * o['rim']:.0f} nm, dimple {1e9 * o['depth']:.0f} nm, p_max/p_H {o['pmax_ph']:.2f}, "
                   f"peak rise {o['dT_max']:.0f} K, mu {o['mu']:.4f}, balance {o['balance']:.1e}, estimate "
                   f"{100 * o['estimate']:.2f} %, {o['cpu']:.1f} s CPU")
-    if args.zoo:
-        out["zoo"] = zoo_cells()
-        print(f"zoo tehl cells: turbo {out['zoo']['turbo']['seconds']:.1f} s, baseline "
-              f"{out['zoo']['paper_baseline']['seconds']:.1f} s: ratio {out['zoo']['ratio']:.2f} (target 3)")
     if args.json:
         Path(args.json).write_text(json.dumps(out, indent=1))
     return out
