@@ -205,7 +205,8 @@ class _Level:
         self.energy_cache: dict = {}   # the energy system's factors, kept across the loop's solves
         v1, v2 = c.speeds
         self.J1 = surface_matrix(self.xf, v1, props.B1, props.k1)
-        self.J2 = surface_matrix(self.xf, v2, props.B2, props.k2)
+        same = (v1, props.B1, props.k1) == (v2, props.B2, props.k2)   # pure rolling, one steel: one operator
+        self.J2 = self.J1 if same else surface_matrix(self.xf, v2, props.B2, props.k2)
 
     def fields(self):
         P, H = self.lv.film(self.PI, self.H0)
