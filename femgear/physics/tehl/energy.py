@@ -116,12 +116,35 @@ def _phi(t: np.ndarray) -> np.ndarray:
     from scipy.special import k0e, k1e
 
     out = np.zeros_like(t)
-    pos, neg = t > 0, t < 0
+    pos, neg, far = (t > 0) & (t < PHI_ASYMPTOTIC), (t < 0) & (t >= -PHI_FAR), t >= PHI_ASYMPTOTIC
     tp = t[pos]
     out[pos] = tp * (k0e(tp) + k1e(tp)) - 1.0
+    tf = t[far]
+    out[far] = np.sqrt(0.5 * math.pi * tf) * np.polynomial.polynomial.polyval(1.0 / tf, _PHI_SERIES) - 1.0
     sn = -t[neg]
     out[neg] = -(sn * np.exp(-2.0 * sn) * (k0e(sn) - k1e(sn)) + 1.0)
+    out[t < -PHI_FAR] = -1.0
     return out
+
+
+def _bessel_series(nu: int, terms: int) -> np.ndarray:
+    """The coefficients a_k of e^x K_ν(x) ~ √(π / 2x) Σ a_k x^−k, a_k = Π_{j ≤ k} (4ν² − (2j − 1)²) / (k! 8^k)
+    (Abramowitz & Stegun 1964, 9.7.2)."""
+    a = np.ones(terms)
+    for k in range(1, terms):
+        a[k] = a[k - 1] * (4 * nu * nu - (2 * k - 1) ** 2) / (8.0 * k)
+    return a
+
+
+#: upstream beyond this distance (τ ≥ PHI_ASYMPTOTIC) Φ is taken from the asymptotic series of K0 + K1 (its 14 terms
+#: at τ ≥ 50: truncation below 1e-17 relative, the 14th term about 1e-18; agrees with the Bessel functions to 1e-15
+#: relative) instead of the Bessel functions (about 0.1 µs an entry each: 8x the series on a turbo contact's cells)
+PHI_ASYMPTOTIC = 50.0
+_PHI_SERIES = _bessel_series(0, 14) + _bessel_series(1, 14)
+
+#: beyond this distance downstream (τ < −PHI_FAR) Φ is −1 to round-off: its other term, σ e^−2σ (K1 − K0)(σ) e^σ ≈
+#: e^−2σ √(π / 2σ) / 2, is below 1e-18 there; the Bessel functions are not evaluated (half the matrix at high Péclet)
+PHI_FAR = 20.0
 
 
 def jaeger_matrix(nt: int, length: float, B: float, v: float) -> np.ndarray:
@@ -247,7 +270,10 @@ def _faces_of(c: np.ndarray) -> np.ndarray:
     return np.concatenate([c[:1], 0.5 * (c[:-1] + c[1:]), c[-1:]])
 
 
-JAEGER_BAND = 2      # cells of the solids' surface operators kept in the preconditioner
+#: cells of the solids' surface operators kept in the preconditioner, either side of the diagonal: one keeps the
+#: band of N at the film's own (nz + 2; two cells doubled it): on a turbo contact's 1024 x 16 cells the banded LU
+#: then takes 21 ms against 130 ms and a solve 2.3 ms against 11 ms, GMRES the same 10 iterations (issue 43)
+JAEGER_BAND = 1
 KRYLOV_TOL = 1e-10   # relative residual of the energy solve (temperatures then equal a direct solve's to ~1e-12 K)
 
 
@@ -257,8 +283,8 @@ def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int, cache: dict | None 
 
     The matrix is split A = N + F: N, the film with the solids' surface operators cut to
     ``JAEGER_BAND`` cells about the diagonal, is factorised (with the unknowns cell by cell,
-    :func:`_cell_order`, N is banded, half-widths 2 nz + 4 and nz + 2: LAPACK's banded LU, 0.5 ms
-    at 192 x 8 cells, against 0.9-1.2 ms for SuperLU with minimum degree on N + N^T and 24 ms for
+    :func:`_cell_order`, N is banded, both half-widths nz + 2 with one cell kept: LAPACK's banded LU, 0.5 ms
+    at 192 x 8 cells with two kept, against 0.9-1.2 ms for SuperLU with minimum degree on N + N^T and 24 ms for
     the sparse LU of A with its 207k entries; measured on the line TEHL, issue 16); F, the far
     field of the surface kernels, is applied as two dense products.  A is solved by GMRES
     preconditioned from the right by N^-1 (:func:`femgear.physics.ehl.fe.krylov.gmres_right`) to the
@@ -338,7 +364,7 @@ def _banded_lu(A: sp.spmatrix):
 def _cell_order(nt: int, nz: int) -> np.ndarray:
     """The unknowns of :func:`_energy_matrix` cell by cell (the cell's nz film temperatures,
     then its two wall fluxes): with the Jaeger operators cut to a band, the matrix is then
-    banded (half-widths ~2 nz + 4) and factorises without a fill-reducing ordering."""
+    banded (half-widths nz + 2 with one cell kept) and factorises without a fill-reducing ordering."""
     cells = np.arange(nt)[:, None]
     return np.concatenate([cells * nz + np.arange(nz)[None, :], nt * nz + cells, nt * (nz + 1) + cells],
                           axis=1).ravel()

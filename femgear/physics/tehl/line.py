@@ -205,7 +205,8 @@ class _Level:
         self.energy_cache: dict = {}   # the energy system's factors, kept across the loop's solves
         v1, v2 = c.speeds
         self.J1 = surface_matrix(self.xf, v1, props.B1, props.k1)
-        self.J2 = surface_matrix(self.xf, v2, props.B2, props.k2)
+        same = (v1, props.B1, props.k1) == (v2, props.B2, props.k2)   # pure rolling, one steel: one operator
+        self.J2 = self.J1 if same else surface_matrix(self.xf, v2, props.B2, props.k2)
 
     def fields(self):
         P, H = self.lv.film(self.PI, self.H0)
@@ -254,7 +255,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     heat: bool = True, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                     max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0,
                     x0: float | None = None, estimate: bool = True, reynolds: str = "reduced",
-                    spike: bool = False) -> TEHLResult:
+                    spike: bool = False, isothermal: dict | None = None) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m], entrainment speed
     ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature ``T_bulk`` [K].
 
@@ -266,7 +267,10 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
     level the heaviest corner's estimated solve fixed).  ``reynolds``: "reduced" or "generalised" (module
     docstring).  ``spike``: grids that resolve the outlet pressure spike (the path and map sequences, whose peak
-    pressure and film temperature are then smooth along the path; :func:`solve_line_fd`).  Surfaces moving in opposite directions (|``srr``| > 2, down to
+    pressure and film temperature are then smooth along the path; :func:`solve_line_fd`).  ``isothermal``: a dict
+    the caller keeps across the solves of one set-up (oil, modulus, options), where the isothermal start of each
+    contact is kept by its load, radius, entrainment, bulk temperature and grid options, so that the contacts that
+    differ only in SRR (the points of a friction map) solve it once (``seconds_isothermal`` is then 0).  Surfaces moving in opposite directions (|``srr``| > 2, down to
     zero entrainment): :func:`femgear.physics.tehl.opposite.solve_tehl_opposite`, which carries the thermal wedge
     this reduced, single-direction solve lacks.  Raises
     :class:`ConvergenceError` with the history when the isothermal start, a Newton solve or the thermal
@@ -280,13 +284,20 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     t0 = time.perf_counter()
     c = _Contact.of(w, R, ue, srr, T_bulk, oil, E_red, compressible)
     factory = _rheology(c, oil, compressible)
-    reuse: dict = {}
-    ehl = c.ehl_oil
-    iso = solve_line_fd(c.M, c.L, tol=tol, level=level, max_level=max_level, x0=x0, viscosity=ehl.viscosity,
-                        **({} if min_level is None else {"min_level": min_level}),
-                        ph=c.ph, z=ehl.roelands_z() if ehl.viscosity == "roelands" else 0.68,
-                        compressible=compressible, reuse=reuse, rheology_factory=factory, spike=spike)
-    t_iso = time.perf_counter() - t0
+    key = (w, R, ue, T_bulk, tol, level, min_level, max_level, x0, compressible, spike)
+    if isothermal is not None and key in isothermal:
+        iso, kept = isothermal[key]
+        reuse, t_iso = dict(kept), 0.0     # the Newton factors as the isothermal solve left them
+    else:
+        reuse = {}
+        ehl = c.ehl_oil
+        iso = solve_line_fd(c.M, c.L, tol=tol, level=level, max_level=max_level, x0=x0, viscosity=ehl.viscosity,
+                            **({} if min_level is None else {"min_level": min_level}),
+                            ph=c.ph, z=ehl.roelands_z() if ehl.viscosity == "roelands" else 0.68,
+                            compressible=compressible, reuse=reuse, rheology_factory=factory, spike=spike)
+        t_iso = time.perf_counter() - t0
+        if isothermal is not None:
+            isothermal[key] = (iso, dict(reuse))
     prob = LineProblem(c.M, c.L, _domain_of(iso), {}, rheology_factory=factory)
     top = _level_of(iso)
     ks = [max(top - THERMAL_LEVELS + 1, MIN_THERMAL_LEVEL) if estimate else top, top]

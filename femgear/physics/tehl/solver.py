@@ -7,7 +7,8 @@ two bodies' [K]: what the flanks' thermal models and the scuffing ratings read, 
 other levels.  (The film's own peak, inside it on the outlet pressure spike, steps from one path position to the
 next as the spike crosses the cells: up to 8 % of its maximum in second differences along the baseline's path,
 against 1 % for the surface temperature; it stays the film's ``temperature_rise``.)
-The isothermal start is shared between points that differ only in SRR (cached per call).
+The isothermal start is shared between the contacts of a sequence that differ only in SRR (the points of a
+friction map: one in seven solved; ``isothermal`` of :func:`solve_tehl_line`).
 """
 
 from __future__ import annotations
@@ -116,7 +117,7 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
     answer still meets the tolerance, and a sequence that needs that level is not solved twice.  ``options`` to
     :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
     w, R, ue, srr = np.broadcast_arrays(*(np.atleast_1d(np.asarray(a, dtype=float)) for a in (w, R, ue, srr)))
-    kw = {**setup.kwargs(), **options}
+    kw = {**setup.kwargs(), **options, "isothermal": {}}   # the contacts that differ only in SRR share their start
     out: list = [None] * w.size
     progress = map_progress("TEHL line solves", w.size, LINE_SECONDS)
     if level is None and start_level is not None:
