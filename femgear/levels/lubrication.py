@@ -299,7 +299,9 @@ def _tehl(case: Case, repeated: bool = False) -> Lubrication:
     solves, built on first use."""
     setup, n = tehl_setup(case), case.numerics
     opts = {"tol": n.ehl_tol, "min_level": n.ehl_level, "spike": True}   # spike-resolving grids: smooth peaks
-    solve = tehl_map_solver(setup, tehl_axes(case), **opts) if repeated else tehl_line_solver(setup, **opts)
+    # the map interpolates μ and the surface rise, integrals that the spike's grid does not move: plain grids
+    plain = {**opts, "spike": False}
+    solve = tehl_map_solver(setup, tehl_axes(case), **plain) if repeated else tehl_line_solver(setup, **opts)
 
     def path(w, T):
         k = case.path

@@ -152,10 +152,26 @@ def _estimate(r) -> float:
 
 
 def _one(i: int, w, R, ue, srr, T, kw) -> TEHLResult:
+    """One contact of a sequence.  A spike-resolving grid whose solve fails (its bump packs the nodes where the
+    Newton steps of a heavy, fast-sliding contact are largest) hands the contact to the plain grid of the same
+    level, said in the result's history (a ``"continuation"`` entry); the plain grid's failure raises with both
+    histories."""
+    args = (float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), T)
     try:
-        return solve_tehl_line(float(w[i]), float(R[i]), float(ue[i]), float(srr[i]), T, **kw)
+        return solve_tehl_line(*args, **kw)
     except ConvergenceError as exc:
-        raise ConvergenceError(f"tehl path position {i}", str(exc), exc.history) from exc
+        if not kw.get("spike"):
+            raise ConvergenceError(f"tehl path position {i}", str(exc), exc.history) from exc
+        first = exc
+    try:
+        r = solve_tehl_line(*args, **{**kw, "spike": False})
+    except ConvergenceError as exc:
+        raise ConvergenceError(f"tehl path position {i}", f"{first}; on the plain grid: {exc}",
+                               {**{f"spike {k}": v for k, v in first.history.items()},
+                                **{f"plain {k}": v for k, v in exc.history.items()}}) from exc
+    r.history.setdefault("continuation", []).append(
+        {"level": _level_of_nodes(r.nodes), "reason": f"spike grid failed, solved on the plain grid: {str(first)[:160]}"})
+    return r
 
 
 def _level_of_nodes(nodes: int) -> int:

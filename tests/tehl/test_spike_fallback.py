@@ -1,0 +1,46 @@
+"""A path sequence's spike-resolving grid that fails on a contact hands that contact to the plain grid (the
+baseline's friction map at twice its load, w' 1.69e5 N/m, SRR 0.68, failed there and ended the ``tehl`` run)."""
+
+from types import SimpleNamespace
+
+import pytest
+
+from femgear.errors import ConvergenceError
+from femgear.physics.tehl import solver
+
+
+def _fake(fail_plain: bool):
+    calls = []
+
+    def solve(w, R, ue, srr, T, spike=False, **kw):
+        calls.append(spike)
+        if spike or fail_plain:
+            raise ConvergenceError("tehl line", "no convergence", {"residual": [1e-3, 2e-4]})
+        return SimpleNamespace(nodes=513, error_estimate={"Hc": 0.001}, history={"continuation": []})
+
+    return solve, calls
+
+
+def test_failing_spike_grid_falls_back_to_the_plain_grid_and_says_so(monkeypatch):
+    solve, calls = _fake(fail_plain=False)
+    monkeypatch.setattr(solver, "solve_tehl_line", solve)
+    r = solver._one(0, [1.687e5], [0.0126], [1.16], [0.6754], 313.0, {"spike": True, "level": 5})
+    assert calls == [True, False]
+    assert "plain grid" in r.history["continuation"][-1]["reason"]
+
+
+def test_both_grids_failing_raises_with_both_histories(monkeypatch):
+    solve, calls = _fake(fail_plain=True)
+    monkeypatch.setattr(solver, "solve_tehl_line", solve)
+    with pytest.raises(ConvergenceError) as exc:
+        solver._one(1, [1e5, 1.687e5], [0.01, 0.0126], [1.0, 1.16], [0.5, 0.6754], 313.0, {"spike": True, "level": 5})
+    assert "tehl path position 1" in str(exc.value) and "plain grid" in str(exc.value)
+    assert set(exc.value.history) == {"spike residual", "plain residual"}
+
+
+def test_plain_sequences_do_not_retry(monkeypatch):
+    solve, calls = _fake(fail_plain=True)
+    monkeypatch.setattr(solver, "solve_tehl_line", solve)
+    with pytest.raises(ConvergenceError):
+        solver._one(0, [1e5], [0.01], [1.0], [0.5], 313.0, {"spike": False})
+    assert calls == [False]
