@@ -5,8 +5,10 @@
 :func:`solve_tehl_line`, the temperature rise is the contact (surface, flash) temperature rise, the larger of the
 two bodies' [K]: what the flanks' thermal models and the scuffing ratings read, as Blok's flash temperature of the
 other levels.  (The film's own peak, inside it on the outlet pressure spike, steps from one path position to the
-next as the spike crosses the cells: up to 8 % of its maximum in second differences along the baseline's path,
-against 1 % for the surface temperature; it stays the film's ``temperature_rise``.)
+next as the spike crosses the cells of the plain grids: up to 8 % of its maximum in second differences along the
+baseline's path, against 1 % for the surface temperature; 0.7 % on the spike-resolving grids the path sequences
+solve on (``spike=True``; the friction map, which interpolates μ and the surface rise, solves on plain grids); it
+stays the film's ``temperature_rise``.)
 The isothermal start is shared between the contacts of a sequence that differ only in SRR (the points of a
 friction map: one in seven solved; ``isothermal`` of :func:`solve_tehl_line`).
 """

@@ -29,7 +29,8 @@ sits inside the contact (X ~ 0.5 on the baseline's path), away from the edge gra
 of the level that meets the films' tolerance: its height does not converge with the grid (627 / 670 / 718 / 749 /
 773 MPa on 513 ... 8193 nodes at the baseline's first contact), and its maximum over the nodes steps from one path
 position to the next as it crosses them (second differences 7 % of the peak on 513 and 1025 nodes, 0.7 % on 8193).
-A third term of the density, A_s sech^2((X - X_s)/w_s) with X_s the spike located by a first solve, puts
+A third term of the density, A_s sech^2((X - X_s)/w_s) with X_s the spike located by a first solve (and moved to
+where the bumped solve finds it: ``solve_line_fd``, :data:`femgear.physics.ehl.fd.line.SPIKE_PASSES`), puts
 :data:`SPIKE_DENSITY` times more nodes across :data:`SPIKE_WIDTH` about it, so that the spike is resolved on every
 level and the peaks along a path are smooth.
 
