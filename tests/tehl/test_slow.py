@@ -27,9 +27,10 @@ def test_regression_sliding_film_reduction_gap_to_gupta():
 
 #: envelope corners (oil, inlet °C, u_e m/s, p_H Pa, SRR, R m): the ones of studies/benchmarks/tehl_envelope.py that
 #: converge, the hottest, coldest, fastest, slowest, heaviest and lightest, and the turbine oil's cold, fast, heavy
-#: rolling corner (the hottest film of the sweep, 117 K above its inlet)
+#: rolling corner (the hottest film of the sweep, 117 K above its inlet); not the turbine oil's 40 °C, 60 m/s pure-sliding
+#: corners, which raise ThermalRunaway (docs/lubrication_envelope.md, beyond physics)
 CORNERS = [("VG220", 20.0, 0.05, 2.5e9, 2.0, 0.01), ("VG220", 150.0, 0.05, 2.5e9, 2.0, 0.01),
-           ("VG220", 20.0, 0.05, 0.5e9, 2.0, 0.01), ("VG32", 40.0, 60.0, 0.5e9, 2.0, 0.02),
+           ("VG220", 20.0, 0.05, 0.5e9, 2.0, 0.01),
            ("VG32", 150.0, 60.0, 0.5e9, 2.0, 0.02), ("VG32", 150.0, 60.0, 2.5e9, 0.0, 0.02),
            ("VG32", 40.0, 60.0, 2.5e9, 0.0, 0.02)]
 
