@@ -5,6 +5,7 @@ import importlib.util
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 _ROOT = Path(__file__).resolve().parents[2]
@@ -58,3 +59,20 @@ def test_grid_convergence_on_the_envelope_corners(corner):
     b = solve_tehl_line(w, R, ue, srr, T + 273.15, o, E_RED, props, level=k + 1, **kw)
     assert b.hc == pytest.approx(a.hc, rel=0.01) and b.mu == pytest.approx(a.mu, rel=0.02)
     assert abs(b.dT_max - a.dT_max) <= 1.0
+
+
+def test_the_baselines_tehl_run_with_its_friction_map_completes():
+    """The paper's baseline at ``lubrication = "tehl"`` with its dynamics (the coupling loop queries the friction map
+    of 168 TEHL solves): the run completes with finite, positive μ and temperatures.  From 2335d29 to 99e6c32 the
+    map solved on the spike-resolving grids and a point at twice the load failed its thermal loop (exit 1)."""
+    from femgear.case import build_case
+    from femgear.pipeline import run_case
+    from femgear.scene import load_scene
+
+    scene = load_scene(Path(__file__).parents[2] / "studies" / "zoo" / "paper_baseline.toml",
+                       ['physics.lubrication="tehl"', "numerics.dynamics_cycles=20", "numerics.transient_cycles=10",
+                        "numerics.path_points=21"])
+    r = run_case(build_case(scene))
+    mu, dT = r.tribology.friction_coefficient, r.tribology.temperature_rise
+    assert np.all(np.isfinite(mu)) and 0.0 < np.max(mu) < 0.2
+    assert np.all(np.isfinite(dT)) and np.max(dT) > 0.0
