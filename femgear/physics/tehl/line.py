@@ -266,8 +266,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     the isothermal solver).  ``heat=False`` switches the heat sources off.  ``estimate=False``: the thermal
     loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
     level the heaviest corner's estimated solve fixed).  ``reynolds``: "reduced" or "generalised" (module
-    docstring).  ``spike``: grids that resolve the outlet pressure spike (the path and map sequences, whose peak
-    pressure and film temperature are then smooth along the path; :func:`solve_line_fd`).  ``isothermal``: a dict
+    docstring).  ``spike``: grids that resolve the outlet pressure spike (the path sequences, whose peak pressure
+    and film temperature are then smooth along the path; :func:`solve_line_fd`).  ``isothermal``: a dict
     the caller keeps across the solves of one set-up (oil, modulus, options), where the isothermal start of each
     contact is kept by its load, radius, entrainment, bulk temperature and grid options, so that the contacts that
     differ only in SRR (the points of a friction map) solve it once (``seconds_isothermal`` is then 0).  Surfaces moving in opposite directions (|``srr``| > 2, down to
