@@ -225,25 +225,55 @@ def _bearing_balance(bf: dict | None, N: list[float], beta_b: float) -> list[str
     return bad
 
 
-def hand_figures(path: Path) -> dict:
-    """The formula figures a cell is held against: F_n per helix, the force scale b/(p_bt cos β_b), the
-    single-contact zone (s_B, s_D) of a spur pair (None for helical), the formula film at the pitch point
-    and the formula-level contact temperature."""
+def hand_figures(path: Path, overrides=()) -> dict:
+    """The formula figures a cell with ``overrides`` is held against: F_n per helix, the force scale
+    b/(p_bt cos β_b), the single-contact zone (s_B, s_D) of a spur pair (None for helical), the formula film at
+    the pitch point and the formula-level contact temperature (Blok's flash of the crowned point contacts
+    where the cell solves those, :func:`_point_flash_scale`).  Of the overrides only the geometry's
+    (``modifications.*``) apply: the formula level is the reference, whatever level the cell runs."""
     from femgear.case import build_case
     from femgear.levels.contact import contact_pass
     from femgear.levels.lubrication import friction_along_path
     from femgear.physics.contact.sharing import single_contact_bounds
 
-    scene = _load(path, ['physics.lubrication="formula"'])
+    geometry = [o for o in overrides if o.startswith("modifications.")]
+    scene = _load(path, geometry + ['physics.lubrication="formula"'])
     case = build_case(scene)
     pair = case.pair
     contact = contact_pass(case)
     _, dT = friction_along_path(case, contact.line_load)
+    if 'physics.lubrication="tehl-point"' in overrides:
+        dT = dT * _point_flash_scale(case, contact.line_load)
     u_B, u_D = single_contact_bounds(pair)
     return {"single_phases": _single_phases(pair), "p_bt": pair.p_bt,"force": case.operating.normal_force / pair.n_helices, "beta_b": pair.beta_b, "helices": pair.n_helices,
             "force_scale": pair.b / (pair.p_bt * math.cos(pair.beta_b)), "face_width": pair.b,
             "single": (min(u_B, u_D) - pair.u_pitch, max(u_B, u_D) - pair.u_pitch) if pair.beta_b == 0 else None,
             "film": float(contact.film_central[contact.pitch_index]), "flash": float(max(dT))}
+
+
+def _point_flash_scale(case, w: np.ndarray) -> np.ndarray | float:
+    """Blok's flash of the crowned point contacts over the line contacts' at the path positions (1 for an
+    uncrowned pair, which the point level hands to line slices unchanged): along the ellipse's centre line the
+    heat source is a Hertzian band of half-width a (the semi-axis across the contact line) and peak p_h, so
+    ΔT_fl ∝ μ p_h √a (:func:`femgear.physics.lubrication.flash.blok_flash_temperature` with w' = π p_h a/2), and
+    the ratio to the line contact of the same line load is (p_h/p_H) √(a/b).  Not below 1: an ellipse longer
+    than the contact line (a light crowning on a wide face) is cut off by the face ends and carries at least
+    the line contact's load per length along its middle."""
+    from femgear.levels.contact import reduced_modulus_of
+    from femgear.physics.contact.crowning import crowned_contact
+    from femgear.physics.contact.hertz import hertz_line, hertz_point
+
+    mods = case.scene.modifications
+    crowning = (mods.member(1).crowning, mods.member(2).crowning)
+    if sum(crowning) <= 0:
+        return 1.0
+    geo, E_red, R = crowned_contact(case.pair, crowning), reduced_modulus_of(case), case.path.R
+    Rx, Ry = geo.radii(R)
+    scale = []
+    for wi, Ri, rx, ry in zip(np.broadcast_to(w, R.shape), R, Rx, Ry):
+        line, point = hertz_line(wi, Ri, E_red), hertz_point(geo.load(wi), rx, ry, E_red)
+        scale.append(max(1.0, point.max_pressure / line.max_pressure * math.sqrt(point.a / line.half_width)))
+    return np.asarray(scale)
 
 
 def _single_phases(pair) -> tuple[float, float]:
@@ -305,7 +335,7 @@ def run_cell(name: str, path: Path, column: str, overrides: list[str], coarse: b
     else:
         summary = json.loads(p.stdout.strip().splitlines()[-1])
         results = json.loads((out / "results.json").read_text())
-        bad = _check(summary, results, hand_figures(path))
+        bad = _check(summary, results, hand_figures(path, ov))
         verdict = "ok" if not bad else "FAIL: " + "; ".join(bad)
     return {"scene": name, "cell": column, "verdict": verdict, "seconds": round(seconds, 1)}
 

@@ -81,3 +81,37 @@ def test_cells_are_judged_by_cpu_time_not_by_the_load():
     assert 0.45 < cpu_spin < 3.0
     with pytest.raises(subprocess.TimeoutExpired):
         zm.run_timed([sys.executable, "-c", "import time; time.sleep(10)"], 0.5)
+
+
+def test_a_crowned_point_cell_is_held_against_blok_flash_of_its_ellipse():
+    """The small spur pair's full cell adds a 10 µm crowning to a 20 mm face: its point contacts run at about 2.8x
+    the line pressure, and the hand flash must be the ellipse's (it was the line contact's, a FAIL by physics).
+    Checked against the Jaeger band integral of the centre line's semi-elliptic heat source."""
+    import numpy as np
+
+    from femgear.case import build_case
+    from femgear.levels.contact import contact_pass, reduced_modulus_of
+    from femgear.physics.contact.crowning import crowned_contact
+    from femgear.physics.contact.hertz import hertz_line, hertz_point
+    from femgear.physics.lubrication.flash import band_flash_temperature
+
+    path = SCENES["small_spur"]
+    full = zm.full_fidelity(path)
+    assert "modifications.crowning=10e-6" in full
+    assert zm.hand_figures(path, full)["flash"] > 2 * zm.hand_figures(path)["flash"]
+    case = build_case(zm._load(path, ["modifications.crowning=10e-6"]))
+    w = contact_pass(case).line_load
+    scale = zm._point_flash_scale(case, w)
+    i = case.path.R.size // 4
+    k, E = case.path, reduced_modulus_of(case)
+    line = hertz_line(w[i], k.R[i], E)
+    Rx, Ry = crowned_contact(case.pair, (10e-6, 10e-6)).radii(k.R[i])
+    point = hertz_point(crowned_contact(case.pair, (10e-6, 10e-6)).load(w[i]), Rx, Ry, E)
+    x = np.linspace(-1, 1, 801)[:-1] + 1 / 800
+    v1, v2 = k.ue[i] * (1 + k.srr[i] / 2), k.ue[i] * (1 - k.srr[i] / 2)
+
+    def peak(p, half):
+        return band_flash_temperature(abs(v1 - v2) * p * np.sqrt(1 - x**2), half, v1, v2, 1.0, 1.0).max()
+
+    assert scale[i] == pytest.approx(peak(point.max_pressure, point.a) / peak(line.max_pressure, line.half_width),
+                                     rel=1e-3)
