@@ -22,6 +22,7 @@ The factories read the Case's typed parts and build the physics' own typed objec
 
 from __future__ import annotations
 
+import logging
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -36,6 +37,8 @@ from femgear.physics.contact.crowning import CrownedContact, crowned_contact
 from femgear.physics.contact.film import line_film
 from femgear.physics.contact.hertz import hertz_line
 from femgear.physics.contact.path import ContactPath
+from femgear.physics.ehl.dimensional import DimensionalEHL
+from femgear.physics.ehl.fd.line import spike_resolved
 from femgear.physics.ehl.path import ehl_line_solver, line_ehl_path
 from femgear.physics.lubrication.flash import line_flash_temperature
 from femgear.physics.lubrication.map import MapError, hertz_level_solver
@@ -43,12 +46,15 @@ from femgear.physics.lubrication.mixed import Roughness
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.path import LineFriction, solids_of
 from femgear.physics.tehl.inlet import inlet_figures
+from femgear.physics.tehl.line import TEHLResult
 from femgear.physics.tehl.path import tehl_path_results
 from femgear.physics.tehl.point_level import POINT_LEVEL
 from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
 from femgear.physics.tehl.reuse import RecordingSolver
-from femgear.physics.tehl.slices import SliceGeometry
+from femgear.physics.tehl.slices import SliceGeometry, SliceResult
 from femgear.physics.tehl.solver import TEHLSetup, check_envelope, tehl_line_solver, tehl_map_axes, tehl_map_solver
+
+log = logging.getLogger("femgear.physics.lubrication")
 
 Solver = Callable[..., tuple[np.ndarray, np.ndarray]]
 """solver(w=, R=, ue=, srr=, T=) -> (mu, temperature_rise) — the signature of friction maps."""
@@ -81,6 +87,11 @@ class LevelFilm:
     Richardson estimates (the numerical levels; None for the formula films) [-]"""
     central_isothermal: np.ndarray | None = None
     """central film of the isothermal solve beside the thermal one (thermal levels only) [m]"""
+    spike_unresolved: np.ndarray | None = None
+    """per path position: True where the grid does not resolve the outlet pressure spike (the numerical line levels'
+    solves and face slices, :func:`femgear.physics.ehl.fd.line.spike_resolved`; None for the formula films and the
+    elliptic point solves): its ``pressure_max`` and ``temperature_rise`` are then the unresolved spike's, low by
+    an amount the ``error_estimate`` of the films does not measure [-]"""
     thermal: dict | None = None
     """per-position thermal figures of the thermal levels (None elsewhere): ``thermal_loading`` L_th =
     β η0 u_e²/k_f, the inlet factors ``phi_murch_wilson`` and ``phi_gupta``, ``phi_tehl`` = h_c/h_c,iso, and the
@@ -203,9 +214,35 @@ def _ehl_line_film(case: Case) -> FilmOf:
                           min_level=n.ehl_level)
         return LevelFilm(level=level, method=f"isothermal line EHL (FD, graded grid level {f.level}, "
                          f"tolerance {100 * n.ehl_tol:g} %)", central=f.central, minimum=f.minimum,
-                         pressure_max=f.pressure_max, error_estimate=f.error_estimate)
+                         pressure_max=f.pressure_max, error_estimate=f.error_estimate,
+                         spike_unresolved=spikes_unresolved(level, f.results))
 
     return film
+
+
+def spikes_unresolved(level: str, results) -> np.ndarray | None:
+    """Per path position (``results``: a film's line solves, :class:`~femgear.physics.tehl.line.TEHLResult`,
+    :class:`~femgear.physics.ehl.dimensional.DimensionalEHL` or face slices, any of whose slices counts): whether
+    the outlet spike is unresolved (:func:`femgear.physics.ehl.fd.line.spike_resolved`); logged as one warning
+    naming ``level`` and the count.  None where no result is a line solve (the elliptic point solves)."""
+    def one(r):
+        if isinstance(r, SliceResult):
+            return any(one(x) for x in r.results)
+        if isinstance(r, TEHLResult):
+            return not spike_resolved(r.x / r.b, r.p / r.ph)
+        if isinstance(r, DimensionalEHL):
+            return not spike_resolved(r.x / r.a, r.p / r.ph)
+        return None
+    flags = [one(r) for r in results]
+    if all(f is None for f in flags):
+        return None
+    out = np.array([bool(f) for f in flags])
+    if out.any():
+        log.warning("%s film: the outlet pressure spike is not resolved at %d of %d path positions (a heavy contact "
+                    "whose Hertzian dome is higher than the spike, or a spike grid that failed): their peak pressure "
+                    "and film peak temperature are low by an amount the film's error estimate does not measure "
+                    "(summary film.spike_unresolved)", level, int(out.sum()), out.size)
+    return out
 
 
 def _reused(solve: Solver, case: Case, w: np.ndarray, T: float) -> tuple | None:
@@ -233,7 +270,7 @@ def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
                          temperature_rise=np.array([r.dT_max for r in rs]),
                          error_estimate=None if None in est else np.array(est, dtype=float),
                          central_isothermal=np.array([r.hc_isothermal for r in rs]),
-                         thermal=_thermal_figures(case, w, T, rs))
+                         spike_unresolved=spikes_unresolved(level, rs), thermal=_thermal_figures(case, w, T, rs))
 
     return film
 

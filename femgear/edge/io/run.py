@@ -153,6 +153,8 @@ def film_summary(film, s: np.ndarray, pitch: int) -> dict[str, Any]:
            "pressure_max": float(np.max(film.pressure_max))}
     if film.error_estimate is not None:
         out["error_estimate_max"] = float(np.max(film.error_estimate))
+    if film.spike_unresolved is not None:   # positions whose outlet spike the grid does not resolve
+        out["spike_unresolved"] = int(np.count_nonzero(film.spike_unresolved))
     if film.central_isothermal is not None:
         out["central_isothermal_pitch"] = float(film.central_isothermal[pitch])
     if film.thermal is not None:
