@@ -282,6 +282,24 @@ def _thermal_figures(case: Case, w: np.ndarray, T: float, results: list) -> dict
                          tehl_setup(case).props)
 
 
+# ---------------------------------------------------------------- the TEHL options
+def tehl_path_options(case: Case) -> dict:
+    """The options of the line TEHL path sequences (:func:`femgear.physics.tehl.solver.tehl_path_results`) of the
+    ``tehl`` level's path and of the ``tehl-point`` level's face slices: the case's EHL tolerance and first grid
+    level, on spike-resolving grids (``spike=True``: the outlet spike's peak pressure and the film's peak
+    temperature on it step from contact to contact on the plain grids, 7 % in second differences along the
+    baseline's path; where a spike grid fails, :func:`~femgear.physics.tehl.solver.tehl_path_results` solves that
+    contact on the plain grid of its level)."""
+    n = case.numerics
+    return {"tol": n.ehl_tol, "min_level": n.ehl_level, "spike": True}
+
+
+def tehl_map_options(case: Case) -> dict:
+    """The options of the line TEHL friction map of the ``tehl`` level: :func:`tehl_path_options` on the plain
+    grids, since a map interpolates μ and the surface rise, integrals that the spike's grid does not move."""
+    return {**tehl_path_options(case), "spike": False}
+
+
 # ---------------------------------------------------------------- ranges checked up front
 def check_tehl_envelope(case: Case) -> None:
     """Refuse a TEHL level up front above the pitch-line speed where its thermal loop does not settle
@@ -335,10 +353,9 @@ def _tehl(case: Case, repeated: bool = False) -> Lubrication:
     """``repeated``: the solver will be queried many times (the coupling loop): a friction map of the direct
     solves, built on first use."""
     setup, n = tehl_setup(case), case.numerics
-    opts = {"tol": n.ehl_tol, "min_level": n.ehl_level, "spike": True}   # spike-resolving grids: smooth peaks
-    # the map interpolates μ and the surface rise, integrals that the spike's grid does not move: plain grids
-    plain = {**opts, "spike": False}
-    solve = tehl_map_solver(setup, tehl_axes(case), **plain) if repeated else tehl_line_solver(setup, **opts)
+    opts = tehl_path_options(case)
+    solve = tehl_map_solver(setup, tehl_axes(case), **tehl_map_options(case)) if repeated else \
+        tehl_line_solver(setup, **opts)
 
     def path(w, T):
         k = case.path
@@ -378,7 +395,7 @@ def tehl_point_solver(case: Case, level: int | None = None, details: list | None
     omega1 = 2.0 * math.pi * case.operating.pinion_rpm / 60.0
     slices = SliceGeometry(omega1=omega1, omega2=omega1 * pair.z1 / pair.z2, beta_b=pair.beta_b,
                            contact_length=geo.contact_length, kappa=geo.kappa)
-    return point_solver(geo, tehl_setup(case), {"tol": case.numerics.ehl_tol, "min_level": case.numerics.ehl_level},
+    return point_solver(geo, tehl_setup(case), tehl_path_options(case),
                         roughness=rough if (rough.peak or rough.synthetic) else None, level=level, details=details,
                         slices=slices, **options)
 

@@ -11,7 +11,7 @@ import pytest
 from femgear.case import build_case
 from femgear.errors import SceneError
 from femgear.levels.contact import contact_pass
-from femgear.levels.lubrication import crowning, lubrication_solver, tehl_point_solver, tehl_setup
+from femgear.levels.lubrication import crowning, lubrication_solver, tehl_path_options, tehl_point_solver, tehl_setup
 from femgear.physics.contact.crowning import CrownedContact, crowned_contact
 from femgear.physics.tehl.point import solve_tehl_point
 from femgear.scene import scene_from_dict
@@ -132,7 +132,7 @@ def test_a_contact_the_point_solver_cannot_hold_is_handed_over_to_face_slices(mo
     Rx, Ry = (float(v) for v in geo.radii(R))
     om1 = 2 * math.pi * case.operating.pinion_rpm / 60
     sl = SliceGeometry(om1, om1 * case.pair.z1 / case.pair.z2, case.pair.beta_b, geo.contact_length, geo.kappa)
-    ref = slice_contact(w, R, ue, srr, T, Rx, Ry, sl, tehl_setup(case), tol=case.numerics.ehl_tol)
+    ref = slice_contact(w, R, ue, srr, T, Rx, Ry, sl, tehl_setup(case), **tehl_path_options(case))
     assert mu[0] == pytest.approx(ref.mu, rel=1e-12) and dT[0] == pytest.approx(ref.dT_surface, rel=1e-12)
     assert "handed over to line TEHL" in caplog.text
 

@@ -44,3 +44,31 @@ def test_plain_sequences_do_not_retry(monkeypatch):
     with pytest.raises(ConvergenceError):
         solver._one(0, [1e5], [0.01], [1.0], [0.5], 313.0, {"spike": False})
     assert calls == [False]
+
+
+def test_the_face_slices_fall_back_to_the_plain_grid_too(monkeypatch):
+    """The ``tehl-point`` level's face slices are path sequences on the spike-resolving grids
+    (:func:`femgear.levels.lubrication.tehl_path_options`): a slice whose spike grid fails is solved on the plain
+    grid, said in its history, and the contact still has its figures."""
+    import math
+
+    from femgear.physics.tehl.slices import SliceGeometry, slice_contact
+
+    calls = []
+
+    def solve(w, R, ue, srr, T, spike=False, **kw):
+        calls.append(spike)
+        if spike:
+            raise ConvergenceError("tehl line", "no convergence", {"residual": [1e-3, 2e-4]})
+        return SimpleNamespace(nodes=513, error_estimate={"hc": 0.001, "hmin": 0.002}, history={}, hc=1e-6,
+                               hmin=5e-7, pmax=1e9, hc_isothermal=1.1e-6, dT_max=20.0, dT_surface=10.0,
+                               mu_couette=-0.03 * math.copysign(1.0, srr))
+
+    monkeypatch.setattr(solver, "solve_tehl_line", solve)
+    om1 = 2 * math.pi * 3000 / 60
+    geo = SliceGeometry(om1, om1 * 21 / 86, math.radians(14.1), 0.04, 0.0)
+    setup = SimpleNamespace(kwargs=lambda: {}, E_red=2.3e11, oil=None)
+    r = slice_contact(4e5, 0.012, 9.0, 0.3, 313.0, 0.012, math.inf, geo, setup, start_level=5, spike=True, tol=0.01)
+    assert calls == [True, False] * len(r.results)
+    assert all("plain grid" in s.history["continuation"][-1]["reason"] for s in r.results)
+    assert r.mu == pytest.approx(0.03) and r.dT_surface == 10.0

@@ -54,8 +54,10 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
 
     ``geo``: the crowned contact of the pair (:func:`femgear.physics.contact.crowning.crowned_contact`; its
     ``kappa`` 0 for an uncrowned pair); ``setup``: oil, solids and traction; ``roughness``: a ``[roughness]``
-    table with stationary features, or None (smooth); ``line_options``: the tolerance options of the line TEHL
-    solves of the hand-over.  ``slices``: the kinematics of the pair's face slices
+    table with stationary features, or None (smooth); ``line_options``: the options of the line TEHL
+    sequences of the hand-over (:func:`femgear.physics.tehl.solver.tehl_path_results`: tolerance, first level and,
+    from :func:`femgear.levels.lubrication.tehl_path_options`, the spike-resolving grids, with its plain-grid
+    fallback per slice).  ``slices``: the kinematics of the pair's face slices
     (:class:`femgear.physics.tehl.slices.SliceGeometry`): a contact more slender than
     :data:`femgear.physics.contact.crowning.MIN_POINT_RATIO` (every contact of an uncrowned pair), or one the
     point solver fails on, is handed over to line TEHL in face slices (:func:`femgear.physics.tehl.slices.
