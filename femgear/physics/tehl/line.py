@@ -270,7 +270,11 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     and film temperature are then smooth along the path; :func:`solve_line_fd`).  ``isothermal``: a dict
     the caller keeps across the solves of one set-up (oil, modulus, options), where the isothermal start of each
     contact is kept by its load, radius, entrainment, bulk temperature and grid options, so that the contacts that
-    differ only in SRR (the points of a friction map) solve it once (``seconds_isothermal`` is then 0).  Surfaces moving in opposite directions (|``srr``| > 2, down to
+    differ only in SRR (the points of a friction map) solve it once (``seconds_isothermal`` is then 0); with
+    ``estimate=False`` it also keeps the converged thermal state of the latest such contact, from which the next
+    one's loop starts (continuation in SRR: the neighbouring SRR's temperatures are far closer than the isothermal
+    film's, a map's turbo contact converges in fewer iterations; the answer is the same fixed point to
+    ``thermal_tol``; a warm start that fails is retried from the isothermal state, said in ``history``).  Surfaces moving in opposite directions (|``srr``| > 2, down to
     zero entrainment): :func:`femgear.physics.tehl.opposite.solve_tehl_opposite`, which carries the thermal wedge
     this reduced, single-direction solve lacks.  Raises
     :class:`ConvergenceError` with the history when the isothermal start, a Newton solve or the thermal
@@ -285,9 +289,11 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     c = _Contact.of(w, R, ue, srr, T_bulk, oil, E_red, compressible)
     factory = _rheology(c, oil, compressible)
     key = (w, R, ue, T_bulk, tol, level, min_level, max_level, x0, compressible, spike)
+    start = None
     if isothermal is not None and key in isothermal:
         iso, kept = isothermal[key]
         reuse, t_iso = dict(kept), 0.0     # the Newton factors as the isothermal solve left them
+        start = isothermal.get(("thermal", key, heat, reynolds)) if not estimate else None
     else:
         reuse = {}
         ehl = c.ehl_oil
@@ -305,8 +311,24 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     loop = dict(thermal_tol=thermal_tol, relax=relax, max_iter=max_iter, max_rise=max_rise, max_step=max_step)
     if reynolds not in ("generalised", "reduced"):
         raise ValueError(f"reynolds must be 'generalised' or 'reduced' (got {reynolds!r})")
-    run = _Run(prob, c, oil, props, opts, loop, nz, reuse, case, (top, iso.P[1:-1], float(iso.H0)),
-               (oil, compressible) if reynolds == "generalised" else None)
+    def fresh():
+        return _Run(prob, c, oil, props, opts, loop, nz, dict(reuse), case, (top, iso.P[1:-1], float(iso.H0)),
+                    (oil, compressible) if reynolds == "generalised" else None)
+
+    warm_failed = None
+    if start is not None:
+        run = fresh()
+        try:
+            state = run.level(top, start[1:], warm=True)
+        except ConvergenceError as exc:   # runaway included: the cold start below decides
+            warm_failed = f"warm start from SRR {start[0]:.4g} failed, solved from the isothermal state: {str(exc)[:160]}"
+        else:
+            run.history["warm_start"] = {"srr": start[0], "iterations": run.its}
+            isothermal[("thermal", key, heat, reynolds)] = (srr, *state)
+            return run.result(iso, t0, t_iso, {"Hc": None, "Hmin": None})
+    run = fresh()
+    if warm_failed:
+        run.history["continuation"].append({"level": top, "reason": warm_failed})
     state = _inject(iso, prob, ks[0])
     k = ks[0]
     while True:
@@ -334,6 +356,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                 k >= top and enough and all(e is not None and e <= tol for e in est.values())):
             break
         k += 1
+    if isothermal is not None and not estimate:
+        isothermal[("thermal", key, heat, reynolds)] = (srr, *state)
     return run.result(iso, t0, t_iso, est)
 
 
@@ -416,11 +440,14 @@ class _Run:
             return st, st.theta
         return run
 
-    def level(self, k: int, state):
+    def level(self, k: int, state, warm: bool = False):
         """Solve the thermal loop on level ``k`` from ``state`` = (PI, H0, theta | None) of the level below
         (or injected from the isothermal solution); returns the state here.  On the isothermal solve's own
         level a cold start is that solution itself (exact: with the heat off the loop returns it untouched);
-        any other start is re-solved at least once."""
+        any other start is re-solved at least once.  ``warm``: ``state`` is the converged state on this level of a
+        contact that differs only in SRR, whose pressure and film then solve this contact's reduced Reynolds
+        equation at its temperatures too (the equation sees the speeds only through u_e; the generalised one
+        sees them all: re-solved first); it fails rather than falling back to the heating's continuation."""
         PI, H0, theta = state
         if self.last is not None and self.last.k == k - 1 and PI.size == self.last.lv.n - 2:
             X = self.prob.dom.nodes(k)
@@ -434,9 +461,9 @@ class _Run:
         lv = _Level(self.prob, k, self.c, self.props, PI.copy(), H0, self.reuse, self.generalised)
         nt = lv.xf.size - 1
         theta = np.zeros((nt, self.layers(k))) if theta is None else theta
-        cold = not np.any(theta)
+        cold = not np.any(theta) and not warm
         try:
-            st, theta = self._loop(lv, theta, 1.0, solved=exact)
+            st, theta = self._loop(lv, theta, 1.0, solved=exact or (warm and self.generalised is None))
         except ThermalRunaway:
             raise
         except ConvergenceError as exc:

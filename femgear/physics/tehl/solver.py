@@ -10,7 +10,9 @@ baseline's path, against 1 % for the surface temperature; 0.7 % on the spike-res
 solve on (``spike=True``; the friction map, which interpolates μ and the surface rise, solves on plain grids); it
 stays the film's ``temperature_rise``.)
 The isothermal start is shared between the contacts of a sequence that differ only in SRR (the points of a
-friction map: one in seven solved; ``isothermal`` of :func:`solve_tehl_line`).
+friction map: one in seven solved; ``isothermal`` of :func:`solve_tehl_line`), and on a map's single level each
+such contact's thermal loop starts from the converged temperatures, pressure and film of its slower-sliding
+neighbour (continuation in SRR).
 """
 
 from __future__ import annotations
@@ -138,8 +140,12 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
     kw.pop("min_level", None)
     tol = kw.get("tol", DEFAULT_TOL)
     # the fastest-sliding (hottest) contacts first: they are the ones whose estimate exceeds the tolerance on the
-    # probe's level, and the sequence is abandoned at the first that does (its other solves would be discarded)
-    for done, i in enumerate(sorted(range(w.size), key=lambda j: -abs(srr.flat[j]) * ue.flat[j])):
+    # probe's level, and the sequence is abandoned at the first that does (its other solves would be discarded);
+    # on a given level the contacts that differ only in SRR one after the other, slowest sliding first, each
+    # starting from the last one's temperatures (``isothermal`` of :func:`solve_tehl_line`)
+    order = (lambda j: -abs(srr.flat[j]) * ue.flat[j]) if auto else \
+        (lambda j: (w.flat[j], R.flat[j], ue.flat[j], abs(srr.flat[j])))
+    for done, i in enumerate(sorted(range(w.size), key=order)):
         if out[i] is None:
             progress(done)
             out[i] = _one(i, w, R, ue, srr, T, {**kw, "level": level})
