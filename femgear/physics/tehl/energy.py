@@ -306,7 +306,8 @@ def linear_solve(args: tuple, rhs: np.ndarray, n_theta: int, cache: dict | None 
     solve took (the band's entries, the film's flows, sources and conductances, move with the temperatures and
     film from one iteration to the next, but by less and less as the loop settles), and the previous solution
     starts GMRES (the stopping test stays |b - A x| <= tol |b|): on the turbo pair's map contacts the banded LU
-    then runs in about one solve in N instead of each (measured in the commit).  Where that does not converge in :data:`QUICK` iterations
+    then runs in one solve in five (24 for 115 solves of two SRR groups of seven) instead of each.  Where that
+    does not converge in :data:`QUICK` iterations
     (slow or resting surfaces under a thin film: conduction across the film then dwarfs the convection
     along it, the wall temperatures are set by the whole, slowly decaying surface operator, and on the
     graded cells its far field is neither small nor of low rank), A is factorised by SuperLU, and with
