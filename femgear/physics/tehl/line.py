@@ -248,6 +248,23 @@ class _Level:
         return len(hist.residual)
 
 
+def _isothermal_start(c, factory, isothermal: dict | None, key: tuple, t0: float, *, min_level, **options):
+    """(isothermal result, its Newton factors, its seconds) of contact ``c``: kept in ``isothermal`` under ``key``
+    (:func:`solve_tehl_line`; the factors as the solve left them, 0 s) or solved (``options`` of
+    :func:`solve_line_fd`) and kept there."""
+    if isothermal is not None and key in isothermal:
+        iso, kept = isothermal[key]
+        return iso, dict(kept), 0.0
+    reuse: dict = {}
+    ehl = c.ehl_oil
+    iso = solve_line_fd(c.M, c.L, viscosity=ehl.viscosity, **({} if min_level is None else {"min_level": min_level}),
+                        ph=c.ph, z=ehl.roelands_z() if ehl.viscosity == "roelands" else 0.68, reuse=reuse,
+                        rheology_factory=factory, **options)
+    if isothermal is not None:
+        isothermal[key] = (iso, dict(reuse))
+    return iso, reuse, time.perf_counter() - t0
+
+
 def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oil: OilLaw, E_red: float,
                     props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
                     tol: float = DEFAULT_TOL, level: int | None = None, min_level: int | None = None,
@@ -289,21 +306,9 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     c = _Contact.of(w, R, ue, srr, T_bulk, oil, E_red, compressible)
     factory = _rheology(c, oil, compressible)
     key = (w, R, ue, T_bulk, tol, level, min_level, max_level, x0, compressible, spike)
-    start = None
-    if isothermal is not None and key in isothermal:
-        iso, kept = isothermal[key]
-        reuse, t_iso = dict(kept), 0.0     # the Newton factors as the isothermal solve left them
-        start = isothermal.get(("thermal", key, heat, reynolds)) if not estimate else None
-    else:
-        reuse = {}
-        ehl = c.ehl_oil
-        iso = solve_line_fd(c.M, c.L, tol=tol, level=level, max_level=max_level, x0=x0, viscosity=ehl.viscosity,
-                            **({} if min_level is None else {"min_level": min_level}),
-                            ph=c.ph, z=ehl.roelands_z() if ehl.viscosity == "roelands" else 0.68,
-                            compressible=compressible, reuse=reuse, rheology_factory=factory, spike=spike)
-        t_iso = time.perf_counter() - t0
-        if isothermal is not None:
-            isothermal[key] = (iso, dict(reuse))
+    iso, reuse, t_iso = _isothermal_start(c, factory, isothermal, key, t0, tol=tol, level=level, max_level=max_level,
+                                          x0=x0, min_level=min_level, compressible=compressible, spike=spike)
+    start = isothermal.get(("thermal", key, heat, reynolds)) if isothermal is not None and not estimate else None
     prob = LineProblem(c.M, c.L, _domain_of(iso), {}, rheology_factory=factory)
     top = _level_of(iso)
     ks = [max(top - THERMAL_LEVELS + 1, MIN_THERMAL_LEVEL) if estimate else top, top]
