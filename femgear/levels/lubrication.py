@@ -51,6 +51,7 @@ from femgear.physics.tehl.path import tehl_path_results
 from femgear.physics.tehl.point_level import POINT_LEVEL
 from femgear.physics.tehl.point_level import tehl_point_solver as point_solver
 from femgear.physics.tehl.reuse import RecordingSolver
+from femgear.physics.tehl.slice_map import all_slender, slice_map_axes, slice_map_solver
 from femgear.physics.tehl.slices import SliceGeometry, SliceResult
 from femgear.physics.tehl.solver import TEHLSetup, check_envelope, tehl_line_solver, tehl_map_axes, tehl_map_solver
 
@@ -367,10 +368,15 @@ def _tehl(case: Case, repeated: bool = False) -> Lubrication:
 
 @REGISTRY.register("tehl-point", check=check_tehl_envelope)
 def _tehl_point(case: Case, repeated: bool = False) -> Lubrication:
-    """Direct solves also when ``repeated`` (a friction map of point solves would cost ~170 of them; the path's
-    21+ direct solves are cheaper)."""
+    """``repeated`` (the coupling loop): direct solves where any contact is an elliptic point contact (a friction
+    map of point solves would cost ~170 of them; the path's 21+ direct solves are cheaper); where every contact is
+    a line contact in face slices (an uncrowned pair, or ellipses all too slender for the point solver), the slices
+    read off a line TEHL friction map over their envelope (:mod:`femgear.physics.tehl.slice_map`: ≈ 170 solves
+    once, instead of seven per contact in every pass).  The film is solved directly either way."""
     solve, details = tehl_point_solver(case), []
     point = tehl_point_solver(case, details=details)
+    if repeated:
+        solve = slice_map_solver_of(case) or solve
 
     def path(w, T):
         k = case.path
@@ -382,22 +388,43 @@ def _tehl_point(case: Case, repeated: bool = False) -> Lubrication:
     return _product(case, "tehl-point", solve, _thermal_film(case, method, path))
 
 
-def tehl_point_solver(case: Case, level: int | None = None, details: list | None = None, **options) -> Solver:
-    """The ``tehl-point`` direct solver of the case (:func:`femgear.physics.tehl.point_level.tehl_point_solver`):
-    its crowned contact, TEHL set-up and stationary roughness; ``level`` the point grid (default
-    :data:`~femgear.physics.tehl.point_level.POINT_LEVEL`), ``details`` receives each contact's result."""
-    pair, rough = case.pair, case.roughness
+def point_geometry(case: Case) -> tuple[CrownedContact, SliceGeometry]:
+    """The case's crowned contact (its ``kappa`` 0 for an uncrowned pair: a line contact along the whole line) and
+    the kinematics of its face slices."""
+    pair = case.pair
     if sum(crowning(case)) > 0:
         geo = crowned_contact(pair, crowning(case))
-    else:   # uncrowned: a line contact along the whole line, handed over to the face slices
+    else:
         geo = CrownedContact(kappa=0.0, beta_b=pair.beta_b,
                              contact_length=pair.b / math.cos(pair.beta_b) * pair.eps_alpha / pair.eps_gamma)
     omega1 = 2.0 * math.pi * case.operating.pinion_rpm / 60.0
     slices = SliceGeometry(omega1=omega1, omega2=omega1 * pair.z1 / pair.z2, beta_b=pair.beta_b,
                            contact_length=geo.contact_length, kappa=geo.kappa)
+    return geo, slices
+
+
+def tehl_point_solver(case: Case, level: int | None = None, details: list | None = None, **options) -> Solver:
+    """The ``tehl-point`` direct solver of the case (:func:`femgear.physics.tehl.point_level.tehl_point_solver`):
+    its crowned contact, TEHL set-up and stationary roughness; ``level`` the point grid (default
+    :data:`~femgear.physics.tehl.point_level.POINT_LEVEL`), ``details`` receives each contact's result."""
+    rough = case.roughness
+    geo, slices = point_geometry(case)
     return point_solver(geo, tehl_setup(case), tehl_path_options(case),
                         roughness=rough if (rough.peak or rough.synthetic) else None, level=level, details=details,
                         slices=slices, **options)
+
+
+def slice_map_solver_of(case: Case) -> Solver | None:
+    """The face slices of every contact read off a line TEHL friction map (:func:`femgear.physics.tehl.slice_map.
+    slice_map_solver`, on the plain grids of :func:`tehl_map_options`) where every contact of the envelope is handed
+    over to face slices; None where some are elliptic point contacts."""
+    geo, slices = point_geometry(case)
+    contact = envelope_contact(case)
+    if not all_slender(geo, np.r_[contact.kin.R, case.path.R.ravel()]):
+        return None
+    setup = tehl_setup(case)
+    axes = slice_map_axes(contact, geo, slices, setup.E_red, case.operating.ambient_temperature)
+    return slice_map_solver(geo, slices, setup, axes, **tehl_map_options(case))
 
 
 # ---------------------------------------------------------------- the case's lubrication

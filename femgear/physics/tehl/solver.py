@@ -191,11 +191,20 @@ def tehl_map_axes(contact, ambient_temperature: float, load_range=(0.5, 2.0),
     """Small map axes over the path of a contact pass (:class:`femgear.physics.contact.path.ContactPath`;
     3 x 2 x 2 x 7 x 2 = 168 TEHL solves); oil from ``ambient_temperature`` to ``temperature_span`` above [K]."""
     k = contact.kin
+    return envelope_axes(contact.load_per_length * np.geomspace(*load_range, 3), k.R, k.ue, k.srr,
+                         ambient_temperature, temperature_span)
+
+
+def envelope_axes(w, R, ue, srr, ambient_temperature: float, temperature_span: float = 40.0) -> dict[str, np.ndarray]:
+    """Map axes over contacts of radii ``R``, entrainment speeds ``ue`` and SRR ``srr`` (arrays, any sign): the
+    load axis ``w`` as given, two radii and two speeds just beyond the contacts' extremes, seven SRR from rolling to
+    just beyond the fastest sliding (denser at low sliding, where μ rises steeply), two oil temperatures
+    (``ambient_temperature`` and ``temperature_span`` above) [K]."""
+    smax = 1.05 * float(np.max(np.abs(srr)))
     T0 = ambient_temperature
-    smax = 1.05 * float(np.max(np.abs(k.srr)))
-    return {"w": contact.load_per_length * np.geomspace(*load_range, 3),
-            "R": np.array([0.98 * k.R.min(), 1.02 * k.R.max()]),
-            "ue": np.array([0.95 * k.ue.min(), 1.05 * k.ue.max()]),
+    return {"w": np.asarray(w, dtype=float),
+            "R": np.array([0.98 * np.min(R), 1.02 * np.max(R)]),
+            "ue": np.array([0.95 * np.min(ue), 1.05 * np.max(ue)]),
             "srr": np.r_[0.0, smax * np.array([0.01, 0.04, 0.12, 0.3, 0.6, 1.0])],
             "T": np.array([T0, T0 + temperature_span])}
 
