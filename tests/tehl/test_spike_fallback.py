@@ -60,7 +60,7 @@ def test_the_face_slices_fall_back_to_the_plain_grid_too(monkeypatch):
         calls.append(spike)
         if spike:
             raise ConvergenceError("tehl line", "no convergence", {"residual": [1e-3, 2e-4]})
-        return SimpleNamespace(nodes=513, error_estimate={"hc": 0.001, "hmin": 0.002}, history={}, hc=1e-6,
+        return SimpleNamespace(nodes=513, layers=16, error_estimate={"hc": 0.001, "hmin": 0.002}, history={}, hc=1e-6,
                                hmin=5e-7, pmax=1e9, hc_isothermal=1.1e-6, dT_max=20.0, dT_surface=10.0,
                                mu_couette=-0.03 * math.copysign(1.0, srr))
 

@@ -78,6 +78,7 @@ from femgear.physics.tehl.rheology import ThermalRheology
 #: would read it three times too small (when the coarsest thermal level is skipped, the two finer ones give the
 #: estimate, order 2 assumed, rather than a third, costlier level above the isothermal one)
 THERMAL_LEVELS = 3
+DEFAULT_LAYERS = 16   #: layers across the film on the isothermal solve's level (and above) by default
 MIN_THERMAL_LEVEL = 2   #: the coarsest thermal level (65 nodes; where its loop does not settle, the hottest contacts, it is skipped)
 
 #: the thermal cells are every THERMAL_STEP-th interval of the EHL grid (2: the nodes of the level below, a
@@ -124,6 +125,8 @@ class TEHLResult:
     M: float = math.nan                        #: Moes load parameter at the bulk viscosity [-]
     L: float = math.nan                        #: Moes lubricant parameter at the bulk viscosity [-]
     nodes: int = 0                             #: EHL nodes of the finest level
+    layers: int = 0                            #: layers across the film on the finest level
+    isothermal_estimate: float | None = None   #: Richardson estimate of the isothermal start on its level [-]
     history: dict = field(default_factory=dict, repr=False)  #: temperature changes per level, continuation
 
     @property
@@ -268,7 +271,7 @@ def _isothermal_start(c, factory, isothermal: dict | None, key: tuple, t0: float
 def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oil: OilLaw, E_red: float,
                     props: ThermalProps, *, model: str = "eyring", tau0: float = 5e6, limiting_shear: float = 0.0,
                     tol: float = DEFAULT_TOL, level: int | None = None, min_level: int | None = None,
-                    max_level: int = MAX_LEVEL, nz: int = 16,
+                    max_level: int = MAX_LEVEL, nz: int = DEFAULT_LAYERS,
                     heat: bool = True, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                     max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0,
                     x0: float | None = None, estimate: bool = True, reynolds: str = "reduced",
@@ -490,8 +493,9 @@ class _Run:
         their Richardson estimate covers both (the cross-film error is as large as the one along it: at 60 m/s,
         0.8 GPa, h_c moves 4 % from 8 to 32 layers, 0.7 % from 16 to 32).  A level beyond the isothermal one keeps
         ``nz`` layers (doubling them would double the dense solids' share of the energy system: 4.4 s to factorise
-        1024 x 32 cells of a slow, heavy contact), so the cross-film error of 16 layers, ≤ 0.7 % where measured, is
-        not in the estimate of such a level."""
+        1024 x 32 cells of a slow, heavy contact), so the cross-film error of 16 layers is not in the estimate of such
+        a level: a path sequence whose estimate the layers hold above the tolerance doubles ``nz`` instead
+        (:func:`femgear.physics.tehl.solver._finer`)."""
         return max(4, int(round(self.nz * 2.0 ** min(k - self.iso[0], 0))))
 
     def _loop(self, lv: _Level, theta, scale: float, solved: bool):
@@ -531,7 +535,9 @@ class _Run:
             ph=c.ph, x=X * c.b, p=P * c.ph, h=H * hs, x_cells=lv.xc, T_film=c.T_bulk + theta,
             T_surface1=c.T_bulk + st.surface1, T_surface2=c.T_bulk + st.surface2, tau=st.tau_couette,
             hmin_isothermal=float(iso.Hmin_hertz * hs), error_estimate={"hc": est["Hc"], "hmin": est["Hmin"]},
-            levels=tuple(self.summaries), M=c.M, L=c.L, nodes=lv.lv.n, history=self.history)
+            levels=tuple(self.summaries), M=c.M, L=c.L, nodes=lv.lv.n, layers=theta.shape[1],
+            isothermal_estimate=max((e for e in iso.error_estimate.values() if e is not None), default=None),
+            history=self.history)
         scalars = [out.hc, out.hmin, out.pmax, out.dT_max, out.mu, out.mu_poiseuille]
         if not all(math.isfinite(s) for s in scalars) or not np.all(np.isfinite(out.T_film)):
             raise ConvergenceError("tehl line", "non-finite result", self.history)

@@ -121,10 +121,12 @@ def tehl_point_solver(geo: CrownedContact, setup: TEHLSetup, line_options: dict,
 
 
 def _slices(w, R, ue, srr, T, Rx, Ry, geo: SliceGeometry, setup: TEHLSetup, options: dict, last: SliceLevel):
-    """The contact in face slices, first tried on ``last.level`` (the previous hand-over's level, updated)."""
+    """The contact in face slices, first tried on ``last.level`` with ``last.layers`` (the previous hand-over's,
+    updated)."""
+    layers = {} if last.layers is None else {"nz": last.layers}
     r = slice_contact(float(w), float(R), float(ue), float(srr), float(T), float(Rx), float(Ry), geo, setup,
-                      start_level=last.level, **options)
-    last.level = r.level
+                      start_level=last.level, **{**options, **layers})
+    last.level, last.layers = r.level, r.layers
     return r
 
 

@@ -64,6 +64,7 @@ class SliceResult:
     mu: float
     error_estimate: dict
     level: int                                 #: the grid level all slices were solved on
+    layers: int                                #: the layers across the film all slices were solved with
     s: np.ndarray = field(repr=False)          #: slice centres along the contact line [m]
     load: np.ndarray = field(repr=False)       #: load per length of each slice [N/m]
     results: tuple = field(repr=False, default=())
@@ -71,11 +72,12 @@ class SliceResult:
 
 @dataclass
 class SliceLevel:
-    """The grid level the latest face-slice hand-over of a solver ended on: the next contact's first try
-    (:func:`slice_contact`'s ``start_level``), so that a contact whose level the probe would miss is not solved
-    twice."""
+    """The grid level and the layers across the film the latest face-slice hand-over of a solver ended on: the next
+    contact's first try (:func:`slice_contact`'s ``start_level`` and ``nz``), so that a contact whose level or
+    layers the probe would miss is not solved twice."""
 
     level: int | None = None
+    layers: int | None = None
 
 
 def slice_rule(count: int, rule: str) -> tuple[np.ndarray, np.ndarray]:
@@ -167,4 +169,4 @@ def slice_contact(w: float, R: float, ue: float, srr: float, T: float, Rx: float
                        hc_isothermal=centre("hc_isothermal"), dT_max=max(r.dT_max for r in rs),
                        dT_surface=max(r.dT_surface for r in rs), mu=abs(force) / float(np.dot(weights, wj)),
                        error_estimate={"hc": max(est), "hmin": max(est)},
-                       level=_level_of_nodes(rs[0].nodes), s=s, load=wj, results=tuple(rs))
+                       level=_level_of_nodes(rs[0].nodes), layers=rs[0].layers, s=s, load=wj, results=tuple(rs))
