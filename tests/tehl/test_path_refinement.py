@@ -47,3 +47,54 @@ def test_the_sequence_is_solved_once_more_with_twice_the_layers(monkeypatch):
                                   320.0, setup, tol=0.01)
     assert [r.layers for r in rs] == [32, 32, 32]
     assert calls[0] == (None, 16) and all(c == (6, 32) for c in calls[-3:])
+
+
+_SETUP = SimpleNamespace(kwargs=lambda: {})
+
+
+def _map_fakes(monkeypatch, film_level: int, differ: float, fail_coarse: bool = False):
+    """solve_tehl_line and tehl_line_solver stand-ins: the films' corner solve ends on ``film_level``; μ on the
+    coarser level is ``1 + differ`` times the film level's; the probes solved are recorded."""
+    calls = []
+    monkeypatch.setattr(solver, "solve_tehl_line", lambda *a, **k: SimpleNamespace(nodes=16 * 2 ** film_level + 1))
+
+    def line_solver(setup, level, estimate, **kw):
+        def solve(w, R, ue, srr, T):
+            calls.append(level)
+            if fail_coarse and level < film_level:
+                raise solver.ConvergenceError("tehl line", "no convergence", {})
+            mu = 0.03 * (1 + differ if level < film_level else 1.0)
+            return np.atleast_1d(mu), np.atleast_1d(10.0)
+        return solve
+
+    monkeypatch.setattr(solver, "tehl_line_solver", line_solver)
+    axes = {"w": np.array([1e5, 2e5, 4e5]), "R": np.array([0.01, 0.02]), "ue": np.array([10.0, 20.0]),
+            "srr": np.array([0.0, 0.01, 0.04, 0.12, 0.3, 0.6, 1.0]), "T": np.array([313.0, 353.0])}
+    return axes, calls
+
+
+def test_a_map_is_built_one_level_coarser_where_its_fields_agree_at_every_probe(monkeypatch):
+    axes, calls = _map_fakes(monkeypatch, 6, differ=0.02)
+    assert solver.map_level(_SETUP, axes, tol=0.01) == 5 and calls.count(5) == calls.count(6) == 8
+
+
+def test_a_map_keeps_its_films_level_at_the_first_probe_that_differs_or_fails(monkeypatch):
+    axes, calls = _map_fakes(monkeypatch, 6, differ=0.03)
+    assert solver.map_level(_SETUP, axes, tol=0.01) == 6 and calls == [5, 6]
+    axes, calls = _map_fakes(monkeypatch, 6, differ=0.0, fail_coarse=True)
+    assert solver.map_level(_SETUP, axes, tol=0.01) == 6 and calls == [5]
+    axes, calls = _map_fakes(monkeypatch, solver.MIN_MAP_LEVEL, differ=0.0)
+    assert solver.map_level(_SETUP, axes) == solver.MIN_MAP_LEVEL and calls == []
+
+
+def test_the_baselines_map_keeps_513_nodes_for_its_light_load_slow_sliding_friction():
+    """Validation of the probe on a real map: at the baseline's lightest load and a slow slide, μ converges at first
+    order (0.00391, 0.00428, 0.00449, 0.00459 on 257 ... 2049 nodes, the Newtonian friction of the spike's
+    viscosity), 7.6 % of 0.005 apart between 257 and 513 nodes: the map stays on its films' 513."""
+    from femgear.case import build_case
+    from femgear.levels.lubrication import tehl_axes, tehl_map_options, tehl_setup
+    from femgear.scene import load_scene
+    from tests.conftest import BASELINE
+
+    case = build_case(load_scene(BASELINE, ['physics.lubrication="tehl"']))
+    assert solver.map_level(tehl_setup(case), tehl_axes(case), **tehl_map_options(case)) == 5

@@ -40,6 +40,7 @@ def _coord(name: str, values) -> np.ndarray:
 #: the map's tolerance on μ: the largest |Δμ| / max(μ, 0.005) at the validation samples [-].  A choice: μ enters
 #: the dynamics as the friction force, whose error then stays within that of the traction law itself
 MU_TOLERANCE = 0.05
+MU_FLOOR = 0.005   #: the μ below which the map's μ errors are measured absolutely (relative to this value) [-]
 #: the map's tolerance on the temperature rise: this share of the map's largest ΔT, at least DT_FLOOR [-]
 DT_TOLERANCE = 0.05
 DT_FLOOR = 1.0   #: [K]
@@ -140,7 +141,7 @@ class FrictionMap:
         mu, dT = self(**pts)
         err = np.abs(mu - mu_ref)
         e = MapError(samples=samples, mu_max_abs=float(err.max()), mu_rms_abs=float(np.sqrt(np.mean(err**2))),
-                     mu_max_rel=float(np.max(err / np.maximum(mu_ref, 0.005))),
+                     mu_max_rel=float(np.max(err / np.maximum(mu_ref, MU_FLOOR))),
                      dT_max_abs=float(np.max(np.abs(dT - dT_ref))),
                      dT_tolerance=max(DT_TOLERANCE * float(np.max(np.abs(self.temperature_rise))), DT_FLOOR))
         if not e.within_tolerance:
