@@ -36,8 +36,7 @@ def all_slender(geo: CrownedContact, R) -> bool:
     :func:`femgear.physics.tehl.point_level.tehl_point_solver`)."""
     if geo.kappa <= 0:
         return True
-    R = np.asarray(R, dtype=float)
-    Rx, Ry = geo.radii(np.r_[R.min(), R.max(), R.ravel()])
+    Rx, Ry = geo.radii(np.ravel(R))
     return bool(np.all(Rx / Ry < MIN_POINT_RATIO))
 
 
@@ -79,12 +78,10 @@ def slice_map_solver(geo: CrownedContact, slices: SliceGeometry, setup: TEHLSetu
         sizes = [p[0].size for p in parts]
         wj, Rj, uej, srrj, Wj = (np.concatenate([p[n] for p in parts]) for n in range(5))
         mu_j, dT_j = fmap(wj, Rj, uej, np.abs(srrj), np.repeat(T.ravel(), sizes))
-        ends = np.cumsum(sizes)[:-1]
-        force = [float(np.dot(W, -np.sign(s) * m * wl)) for W, s, m, wl in
-                 zip(*(np.split(a, ends) for a in (Wj, srrj, mu_j, wj)))]
-        load = [float(np.dot(W, wl)) for W, wl in zip(np.split(Wj, ends), np.split(wj, ends))]
-        mu = np.abs(force) / np.array(load)
-        dT = np.array([float(d.max()) for d in np.split(dT_j, ends)])
+        starts = np.r_[0, np.cumsum(sizes)[:-1]]     # each contact's first slice
+        force = np.add.reduceat(Wj * -np.sign(srrj) * mu_j * wj, starts)
+        mu = np.abs(force) / np.add.reduceat(Wj * wj, starts)
+        dT = np.maximum.reduceat(dT_j, starts)
         return mu.reshape(w.shape), dT.reshape(w.shape)
 
     solve.friction_map = fmap.friction_map
