@@ -56,7 +56,7 @@ def test_grid_convergence_on_the_envelope_corners(corner):
     kw = dict(tau0=5e6, limiting_shear=0.08)
     a = solve_tehl_line(w, R, ue, srr, T + 273.15, o, E_RED, props, **kw)
     k = round(math.log2((a.nodes - 1) / 16))
-    b = solve_tehl_line(w, R, ue, srr, T + 273.15, o, E_RED, props, level=k + 1, **kw)
+    b = solve_tehl_line(w, R, ue, srr, T + 273.15, o, E_RED, props, level=k + 1, nz=2 * a.layers, **kw)
     assert b.hc == pytest.approx(a.hc, rel=0.01) and b.mu == pytest.approx(a.mu, rel=0.02)
     assert abs(b.dT_max - a.dT_max) <= 1.0
 
