@@ -349,6 +349,21 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     run = fresh()
     if warm_failed:
         run.history["continuation"].append({"level": top, "reason": warm_failed})
+    run, state, est, t_est = _thermal_levels(run, fresh, iso, prob, ks, level=level, max_level=max_level, tol=tol,
+                                             temperature_tol=temperature_tol, thermal_tol=thermal_tol,
+                                             estimate=estimate)
+    if isothermal is not None and not estimate:
+        isothermal[("thermal", key, heat, reynolds)] = (srr, *state)
+    return run.result(iso, t0, t_iso, est, t_est)
+
+
+def _thermal_levels(run: _Run, fresh, iso, prob, ks: list[int], *, level, max_level: int, tol: float,
+                    temperature_tol: float, thermal_tol: float, estimate: bool):
+    """The nested thermal levels of :func:`solve_tehl_line` from ``ks[0]`` up to the isothermal solve's level
+    ``ks[-1]`` and on, refined until the estimates meet ``tol`` and ``temperature_tol`` (:func:`_refinement`;
+    ``fresh(layers, run)``: the same solve anew with other layers); returns the run, its state, the films' and the
+    peak rise's estimates."""
+    top = ks[-1]
     state = _inject(iso, prob, ks[0])
     k = ks[0]
     t_est = z_change = before = None
@@ -399,9 +414,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
         elif k >= max_level:
             break
         k += 1
-    if isothermal is not None and not estimate:
-        isothermal[("thermal", key, heat, reynolds)] = (srr, *state)
-    return run.result(iso, t0, t_iso, est, t_est)
+    return run, state, est, t_est
 
 
 def temperature_estimate(summaries: list[dict]) -> tuple[float | None, bool]:
