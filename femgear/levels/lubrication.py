@@ -88,6 +88,10 @@ class LevelFilm:
     Richardson estimates (the numerical levels; None for the formula films) [-]"""
     central_isothermal: np.ndarray | None = None
     """central film of the isothermal solve beside the thermal one (thermal levels only) [m]"""
+    temperature_error_estimate: np.ndarray | None = None
+    """Richardson estimate of each position's ``temperature_rise`` error over the thermal levels (the line TEHL
+    solves, :attr:`femgear.physics.tehl.line.TEHLResult.temperature_estimate`; None where a position's solve has
+    none) [K]"""
     spike_unresolved: np.ndarray | None = None
     """per path position: True where the grid does not resolve the outlet pressure spike (the numerical line levels'
     solves and face slices, :func:`femgear.physics.ehl.fd.line.spike_resolved`; None for the formula films and the
@@ -266,11 +270,13 @@ def _thermal_film(case: Case, method: str, solve_path: Callable) -> FilmOf:
             raise FloatingPointError(f"{level} film: the surface temperature rise exceeds the film's peak at path "
                                      f"positions {hot}")
         est = [max((e for e in getattr(r, "error_estimate", {}).values() if e is not None), default=None) for r in rs]
+        t_est = [getattr(r, "temperature_estimate", None) for r in rs]
         return LevelFilm(level=level, method=method, central=np.array([r.hc for r in rs]),
                          minimum=np.array([r.hmin for r in rs]), pressure_max=np.array([r.pmax for r in rs]),
                          temperature_rise=np.array([r.dT_max for r in rs]),
                          error_estimate=None if None in est else np.array(est, dtype=float),
                          central_isothermal=np.array([r.hc_isothermal for r in rs]),
+                         temperature_error_estimate=None if None in t_est else np.array(t_est, dtype=float),
                          spike_unresolved=spikes_unresolved(level, rs), thermal=_thermal_figures(case, w, T, rs))
 
     return film

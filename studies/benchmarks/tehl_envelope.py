@@ -97,7 +97,8 @@ def solve_point(p: dict, solver=None) -> dict:
     return {**p, "converged": True, "M": r.M, "L": r.L, "iterations": r.iterations, "newton": r.newton_iterations,
             "nodes": r.nodes, "cpu": time.process_time() - t, "ratio": r.hc / r.hc_isothermal,
             "balance": abs(r.heat["balance_error"]), "estimate": max(r.error_estimate.values()), "mu": r.mu,
-            "dT_max": r.dT_max, "continuation": len(r.history["continuation"])}
+            "dT_max": r.dT_max, "layers": r.layers, "temperature_estimate": r.temperature_estimate,
+            "continuation": len(r.history["continuation"])}
 
 
 def isothermal_heavy(base: bool) -> dict:
@@ -225,14 +226,15 @@ def main(argv: list[str] | None = None) -> dict:
     args = ap.parse_args(argv)
     rows = []
     print(f"{'group':7} {'oil':5} {'T':>4} {'u_e':>6} {'p_H':>5} {'SRR':>5} {'M':>8} {'L':>6} conv {'its':>4} "
-          f"{'nodes':>5} {'CPU s':>6} {'hc/iso':>7} {'balance':>8} {'estimate':>8}")
+          f"{'nodes':>5} {'nz':>3} {'CPU s':>6} {'hc/iso':>7} {'balance':>8} {'estimate':>8} {'dT K':>6} {'est K':>5}")
     for p in points(args.quick):
         r = solve_point(p)
         rows.append(r)
         if r["converged"]:
             print(f"{p['group']:7} {p['oil']:5} {p['T']:4.0f} {p['ue']:6.2f} {p['ph'] / 1e9:5.2f} {p['srr']:5.1f} "
-                  f"{r['M']:8.3g} {r['L']:6.3g} {'yes':4} {r['iterations']:4d} {r['nodes']:5d} {r['cpu']:6.2f} "
-                  f"{r['ratio']:7.3f} {r['balance']:8.1e} {100 * r['estimate']:7.2f}%", flush=True)
+                  f"{r['M']:8.3g} {r['L']:6.3g} {'yes':4} {r['iterations']:4d} {r['nodes']:5d} {r['layers']:3d} "
+                  f"{r['cpu']:6.2f} {r['ratio']:7.3f} {r['balance']:8.1e} {100 * r['estimate']:7.2f}% "
+                  f"{r['dT_max']:6.1f} {r['temperature_estimate'] or 0.0:5.2f}", flush=True)
         else:
             print(f"{p['group']:7} {p['oil']:5} {p['T']:4.0f} {p['ue']:6.2f} {p['ph'] / 1e9:5.2f} {p['srr']:5.1f} "
                   f"FAILED ({r['cpu']:.1f} s): {r['error']}", flush=True)
@@ -242,11 +244,13 @@ def main(argv: list[str] | None = None) -> dict:
                "cpu_max": float(np.max(cpu)) if cpu else None,
                "balance_max": max((r["balance"] for r in ok), default=None),
                "estimate_max": max((r["estimate"] for r in ok), default=None),
+               "temperature_estimate_max": max((r["temperature_estimate"] or 0.0 for r in ok), default=None),
                "M_range": [min(r["M"] for r in ok), max(r["M"] for r in ok)] if ok else None,
                "L_range": [min(r["L"] for r in ok), max(r["L"] for r in ok)] if ok else None}
     print(f"\n{summary['converged']}/{summary['points']} converged; CPU median {summary['cpu_median']:.2f} s, "
           f"max {summary['cpu_max']:.2f} s (targets 1 / 5 s); energy balance <= {summary['balance_max']:.1e}; "
-          f"error estimate <= {100 * summary['estimate_max']:.2f} %; M {summary['M_range'][0]:.3g}–"
+          f"error estimate <= {100 * summary['estimate_max']:.2f} %, peak rise <= "
+          f"{summary['temperature_estimate_max']:.2f} K; M {summary['M_range'][0]:.3g}–"
           f"{summary['M_range'][1]:.4g}, L {summary['L_range'][0]:.3g}–{summary['L_range'][1]:.3g}")
     iso = isothermal_heavy(not args.no_base)
     print(f"isothermal (1000, 4.3) to 1 %: FD Hc {iso['fd']['Hc']:.4f} Hmin {iso['fd']['Hmin']:.4f} on "

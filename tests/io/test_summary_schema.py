@@ -104,7 +104,7 @@ def test_a_runs_summary_is_in_the_schema(overrides):
 FILM_KEYS = {"ehl-line": {"film.error_estimate_max"},
              "tehl": {"film.error_estimate_max", "film.central_isothermal_pitch", "film.thermal_loading_max",
                       "film.phi_tehl_pitch", "film.phi_murch_wilson_pitch", "film.phi_gupta_pitch",
-                      "film.flash_tehl_max", "film.flash_blok_max"}}
+                      "film.flash_tehl_max", "film.flash_blok_max", "film.temperature_error_estimate_max"}}
 
 
 @pytest.mark.parametrize("level", list(FILM_KEYS))

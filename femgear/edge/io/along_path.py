@@ -29,6 +29,8 @@ def along_path(result: RunResult) -> dict[str, np.ndarray]:
             fields["film_temperature_rise"] = t.film.temperature_rise
         if t.film.error_estimate is not None:
             fields["film_error_estimate"] = t.film.error_estimate
+        if t.film.temperature_error_estimate is not None:
+            fields["film_temperature_error_estimate"] = t.film.temperature_error_estimate
         if t.film.central_isothermal is not None:
             fields["film_central_isothermal"] = t.film.central_isothermal
         for key, name in THERMAL_FIELDS.items():

@@ -157,7 +157,8 @@ SECTIONS: dict[str, Section] = {
                      # formula ones (femgear.edge.io.run.film_summary): present only where the level computes them
                      **_keys("film", NUMBER, "error_estimate_max central_isothermal_pitch thermal_loading_max "
                                              "phi_tehl_pitch phi_murch_wilson_pitch phi_gupta_pitch flash_tehl_max "
-                                             "flash_blok_max temperature_rise_max spike_unresolved")}, when="in every run"),
+                                             "flash_blok_max temperature_rise_max temperature_error_estimate_max "
+                                             "spike_unresolved")}, when="in every run"),
     "transmission_error": Section({
         **_keys("transmission_error", NUMBER, "torque force lte_peak_to_peak lte_mean lte_transverse_peak_to_peak "
                                               "nlte_peak_to_peak nlte_max stiffness_mean stiffness_ripple "

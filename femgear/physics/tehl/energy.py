@@ -2,9 +2,18 @@
 
 Film (reduced form, documented): ``nz`` layers across the film (mapped coordinate
 ζ = z/h, body 1 at z = 0 moving at v1, body 2 at z = h moving at v2) on ``nt`` cells
-along x; conservative finite volumes, first-order upwind in x and across the layers
-(upwinding of the energy equation, notes §7.6), conduction across the film, conduction
-along x neglected (high Péclet number).  Shear heating per layer from the layer shear
+along x; conservative finite volumes, upwind in x and across the layers (upwinding of the
+energy equation, notes §7.6), conduction across the film, conduction along x neglected (high
+Péclet number).  The convected face temperatures are second order: the upwind cell's value
+plus a limited linear reconstruction (MUSCL with van Leer's limiter: van Leer 1979,
+*J. Comput. Phys.* 32:101; the reconstruction is bounded by the neighbours, so no new extrema),
+applied as a deferred correction: the matrix is the first-order upwind one, and the
+reconstruction's part of the face fluxes, from the temperatures the viscosities are frozen
+at, goes to the right-hand side, so that it is exact at the thermal loop's fixed point
+(:func:`convection_correction`).  Measured at the VG 32, 40 °C, 60 m/s, 2.5 GPa rolling corner,
+the film's peak rise 114.4 / 117.1 / 118.1 K on 513 / 1025 / 2049 nodes (16 layers) with first-order
+upwinding, 117.3 / 119.3 / 119.7 K with the reconstruction; across the film (1025 nodes) 111.2 /
+117.1 / 118.9 / 119.4 K on 8 / 16 / 32 / 64 layers, 113.5 / 119.3 / 120.4 / 120.6 K with it.  Shear heating per layer from the layer shear
 rates (Ree–Eyring or Newtonian, the shear stress τ_c constant across the film, so that
 τ_c = τ0 asinh(η_e γ̇/τ0) with η_e the harmonic cross-film mean viscosity — Johnson &
 Tevaarwerk 1977).  Advection by the flow of the reduced Reynolds equation: the linear
@@ -243,7 +252,7 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
     c = props.c_oil
     args = (m, G, a_comp, dx, dz, c, props.k_oil, J1, J2)
     rhs = np.zeros(nt * (nz + 2))
-    rhs[:nt * nz] = (src_shear + a_comp * T_bulk).ravel()
+    rhs[:nt * nz] = (src_shear + a_comp * T_bulk - c * convection_correction(theta, m, G, xf)).ravel()
     sol = linear_solve(args, rhs, nt * nz, cache)
     if not np.all(np.isfinite(sol)):
         raise ConvergenceError("tehl energy", "non-finite temperatures")
@@ -259,6 +268,44 @@ def solve_energy(x_faces: np.ndarray, p_faces: np.ndarray, h_cells: np.ndarray, 
               "convected": conv, "balance_error": (gen - s1 - s2 - conv) / scale}
     return EnergyState(theta=th, surface1=J1 @ q1, surface2=J2 @ q2, tau_couette=tau_c,
                        tau_poiseuille=0.5 * h * dpdx, heat=heat_d)
+
+
+def convection_correction(theta: np.ndarray, m: np.ndarray, G: np.ndarray, x_faces: np.ndarray) -> np.ndarray:
+    """The second-order part of the convected heat per cell (nt, nz) [kg/(m s) K; times c: W/m], the net outflow
+    Σ_faces F (T_face − T_upwind) of a MUSCL reconstruction (:func:`_limited_outflow`) along x (face fluxes ``m``,
+    (nt + 1, nz)) and across the layers (``G``, (nt, nz + 1), uniform in the mapped coordinate), for the film
+    temperatures ``theta``.  Interior faces only: the boundary faces stay first order, so the correction sums to
+    zero over the film and the energy balance of the upwind scheme holds as before."""
+    xc = 0.5 * (x_faces[:-1] + x_faces[1:])
+    along = _limited_outflow(theta, m, xc, x_faces)
+    zc = np.arange(theta.shape[1]) + 0.5
+    across = _limited_outflow(theta.T, G.T, zc, np.arange(theta.shape[1] + 1.0)).T
+    return along + across
+
+
+def _limited_outflow(theta: np.ndarray, flux: np.ndarray, centres: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """Along axis 0 of ``theta`` (n, ...), cells at ``centres`` between ``faces`` (n + 1,), with the face fluxes
+    ``flux`` (n + 1, ...): the net outflow of each cell of the difference between the reconstructed face value,
+    T_up + (x_f − x_up) s_up with van Leer's limited slope s = 2 s_b s_f / (s_b + s_f) where the one-sided slopes
+    s_b, s_f agree in sign (else 0; the end cells 0), and the upwind value T_up."""
+    n = theta.shape[0]
+    out = np.zeros_like(theta)
+    if n < 3:
+        return out
+    shape = (-1,) + (1,) * (theta.ndim - 1)
+    s = np.diff(theta, axis=0) / np.diff(centres).reshape(shape)
+    sb, sf = s[:-1], s[1:]
+    prod = sb * sf
+    slope = np.zeros_like(theta)
+    slope[1:-1] = np.where(prod > 0.0, 2.0 * prod / np.where(prod > 0.0, sb + sf, 1.0), 0.0)
+    f = flux[1:-1]
+    xf = faces[1:-1]
+    from_left = (xf - centres[:-1]).reshape(shape) * slope[:-1]     # face f from cell f − 1 (flow along +x)
+    from_right = (xf - centres[1:]).reshape(shape) * slope[1:]      # from cell f (flow along −x)
+    dF = f * np.where(f > 0.0, from_left, from_right)
+    out[:-1] += dF
+    out[1:] -= dF
+    return out
 
 
 def _mass_flux(xf: np.ndarray, p: np.ndarray, h: np.ndarray, rho: np.ndarray, eta: np.ndarray, ue: float) -> float:

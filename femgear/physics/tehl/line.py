@@ -79,6 +79,10 @@ from femgear.physics.tehl.rheology import ThermalRheology
 #: estimate, order 2 assumed, rather than a third, costlier level above the isothermal one)
 THERMAL_LEVELS = 3
 DEFAULT_LAYERS = 16   #: layers across the film on the isothermal solve's level (and above) by default
+MAX_LAYERS = 64       #: the most layers across the film a solve (or a path sequence) refines to
+#: the accuracy of the film's peak temperature rise [K] a tolerance-driven solve refines for (its Richardson estimate
+#: over the thermal levels, :func:`temperature_estimate`; issue 43: 2x refinement moves it by at most 1 K)
+TEMPERATURE_TOL = 1.0
 MIN_THERMAL_LEVEL = 2   #: the coarsest thermal level (65 nodes; where its loop does not settle, the hottest contacts, it is skipped)
 
 #: the thermal cells are every THERMAL_STEP-th interval of the EHL grid (2: the nodes of the level below, a
@@ -127,6 +131,7 @@ class TEHLResult:
     nodes: int = 0                             #: EHL nodes of the finest level
     layers: int = 0                            #: layers across the film on the finest level
     isothermal_estimate: float | None = None   #: Richardson estimate of the isothermal start on its level [-]
+    temperature_estimate: float | None = None  #: Richardson estimate of ``dT_max``'s error over the thermal levels [K]
     history: dict = field(default_factory=dict, repr=False)  #: temperature changes per level, continuation
 
     @property
@@ -275,13 +280,17 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     heat: bool = True, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                     max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0,
                     x0: float | None = None, estimate: bool = True, reynolds: str = "reduced",
-                    spike: bool = False, isothermal: dict | None = None) -> TEHLResult:
+                    spike: bool = False, isothermal: dict | None = None,
+                    temperature_tol: float = TEMPERATURE_TOL) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m], entrainment speed
     ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature ``T_bulk`` [K].
 
     ``tol``: the relative accuracy of h_c and h_min (the isothermal solve picks its level for it, at least
     ``min_level``, the thermal levels are refined until their own Richardson estimate meets it, up to
-    ``max_level``); ``level``: the finest level instead (no refinement).  Thermal loop to ``thermal_tol`` [K] with
+    ``max_level``), and ``temperature_tol`` [K] that of the film's peak temperature rise: where either estimate
+    misses and the isothermal start met ``tol`` on its level, the thermal levels are solved again with twice the
+    ``nz`` layers across the film (up to :data:`MAX_LAYERS`), else on the next finer level; ``level``: the finest
+    level instead (no refinement, ``nz`` kept).  Thermal loop to ``thermal_tol`` [K] with
     damping ``relax`` and at most ``max_step`` [K] per iteration; ``x0`` the inlet [b] (default: sized by
     the isothermal solver).  ``heat=False`` switches the heat sources off.  ``estimate=False``: the thermal
     loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
@@ -319,9 +328,12 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     loop = dict(thermal_tol=thermal_tol, relax=relax, max_iter=max_iter, max_rise=max_rise, max_step=max_step)
     if reynolds not in ("generalised", "reduced"):
         raise ValueError(f"reynolds must be 'generalised' or 'reduced' (got {reynolds!r})")
-    def fresh():
-        return _Run(prob, c, oil, props, opts, loop, nz, dict(reuse), case, (top, iso.P[1:-1], float(iso.H0)),
-                    (oil, compressible) if reynolds == "generalised" else None)
+    def fresh(layers: int = nz, before: _Run | None = None):
+        r = _Run(prob, c, oil, props, opts, loop, layers, dict(reuse), case, (top, iso.P[1:-1], float(iso.H0)),
+                 (oil, compressible) if reynolds == "generalised" else None)
+        if before is not None:   # the same solve with more layers: its history and iteration counts go on
+            r.history, r.its, r.newton_its = before.history, before.its, before.newton_its
+        return r
 
     warm_failed = None
     if start is not None:
@@ -337,8 +349,24 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     run = fresh()
     if warm_failed:
         run.history["continuation"].append({"level": top, "reason": warm_failed})
+    run, state, est, t_est = _thermal_levels(run, fresh, iso, prob, ks, level=level, max_level=max_level, tol=tol,
+                                             temperature_tol=temperature_tol, thermal_tol=thermal_tol,
+                                             estimate=estimate)
+    if isothermal is not None and not estimate:
+        isothermal[("thermal", key, heat, reynolds)] = (srr, *state)
+    return run.result(iso, t0, t_iso, est, t_est)
+
+
+def _thermal_levels(run: _Run, fresh, iso, prob, ks: list[int], *, level, max_level: int, tol: float,
+                    temperature_tol: float, thermal_tol: float, estimate: bool):
+    """The nested thermal levels of :func:`solve_tehl_line` from ``ks[0]`` up to the isothermal solve's level
+    ``ks[-1]`` and on, refined until the estimates meet ``tol`` and ``temperature_tol`` (:func:`_refinement`;
+    ``fresh(layers, run)``: the same solve anew with other layers); returns the run, its state, the films' and the
+    peak rise's estimates."""
+    top = ks[-1]
     state = _inject(iso, prob, ks[0])
     k = ks[0]
+    t_est = z_change = before = None
     while True:
         try:
             state = run.level(k, state)
@@ -353,20 +381,87 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
             # no heating to speak of: the isothermal solution on its own level is the answer (one energy solve)
             k, state = top, _inject(iso, prob, top)
             run.level(k, state)
-            est = dict(iso.error_estimate)
+            est, t_est = dict(iso.error_estimate), 0.0
             break
         est = acc.error_estimate(run.summaries) if estimate else {"Hc": None, "Hmin": None}
         if not estimate:
             break
+        t_est, t_asymptotic = temperature_estimate(run.summaries)
         skipped = any("skipped" in c["reason"] for c in run.history["continuation"])
         enough = len(run.summaries) >= THERMAL_LEVELS or level is not None or (skipped and len(run.summaries) >= 2)
-        if k >= max_level or (level is not None and k >= top) or (
-                k >= top and enough and all(e is not None and e <= tol for e in est.values())):
+        h_miss = not all(e is not None and e <= tol for e in est.values())
+        if before is not None and k == before[0]:   # the level of the last doubling: what it moved
+            z_change = _moved(before[1], run.summaries[-1])
+        # the peak rise counts where its levels converge (an outlet spike that the plain grid does not resolve
+        # moves the peak from level to level, and no refinement along x catches it: its estimate is reported)
+        t_miss = t_est is not None and t_est > temperature_tol and t_asymptotic
+        if (level is not None and k >= top) or (k >= top and enough and not (h_miss or t_miss)):
+            break
+        if k >= top and enough and level is None:
+            step = _refinement(h_miss, t_miss, run.nz < MAX_LAYERS and _resolved_along(iso, tol), z_change, tol,
+                               temperature_tol, k < max_level and (h_miss or k <= top))
+            if step is None:
+                break
+            if step == "layers":
+                # the excess lies across the film (the isothermal film is resolved on this level), which only more
+                # layers reduce: the thermal levels again, with twice the layers
+                run.history["continuation"].append({"level": k, "reason": (
+                    f"{2 * run.nz} layers: estimates h {_fmt(est)}, peak rise {t_est:.3g} K on {run.nz}")})
+                before = (k, run.summaries[-1])
+                run = fresh(2 * run.nz, run)
+                k, state = ks[0], _inject(iso, prob, ks[0])
+                continue
+        elif k >= max_level:
             break
         k += 1
-    if isothermal is not None and not estimate:
-        isothermal[("thermal", key, heat, reynolds)] = (srr, *state)
-    return run.result(iso, t0, t_iso, est)
+    return run, state, est, t_est
+
+
+def temperature_estimate(summaries: list[dict]) -> tuple[float | None, bool]:
+    """Richardson estimate [K] of the film's peak temperature rise on the last of the thermal levels' ``summaries``
+    (the consecutive ones, nodes growing; :func:`femgear.physics.ehl.core.accuracy.richardson`; None with one), and
+    whether the levels are in the asymptotic range: three or more, the last two changes of one sign and the last at
+    most half the one before (observed order ≥ 1)."""
+    run = summaries[-1:]
+    for s in reversed(summaries[:-1]):
+        if s["nodes"] >= run[0]["nodes"]:
+            break
+        run.insert(0, s)
+    v = [s["dT_max"] for s in run]
+    e = acc.richardson(v)
+    d = np.diff(v)
+    asymptotic = d.size >= 2 and d[-1] * d[-2] >= 0.0 and abs(d[-1]) <= 0.5 * abs(d[-2])
+    return (None if e is None else e * abs(v[-1])), bool(asymptotic)
+
+
+def _refinement(h_miss: bool, t_miss: bool, layers_ok: bool, z_change: dict | None, tol: float,
+                temperature_tol: float, finer_ok: bool) -> str | None:
+    """The next refinement of a solve that missed a tolerance (``h_miss``: a film's, ``t_miss``: the peak rise's):
+    "layers" (twice the layers, where ``layers_ok``: the isothermal film is resolved and fewer than
+    :data:`MAX_LAYERS`) first, and again while the last doubling moved a quantity that misses by more than half its
+    tolerance (``z_change``: :func:`_moved`, None before any doubling): there the error lies across the film; else
+    "level" (one finer along x, where ``finer_ok``: below the finest level, and for the peak alone at most one above
+    the isothermal solve's); None: stop there."""
+    if layers_ok and (z_change is None or (h_miss and z_change["h"] > 0.5 * tol)
+                      or (t_miss and z_change["dT_max"] > 0.5 * temperature_tol)):
+        return "layers"
+    return "level" if finer_ok else None
+
+
+def _moved(a: dict, b: dict) -> dict:
+    """What a doubling of the layers moved between the level summaries ``a`` and ``b``: the films (relative, the
+    larger of h_c and h_min) and the peak rise [K]."""
+    return {"h": max(abs(b[q] / a[q] - 1.0) for q in ("Hc", "Hmin")), "dT_max": abs(b["dT_max"] - a["dT_max"])}
+
+
+def _resolved_along(iso, tol: float) -> bool:
+    """Whether the isothermal start met ``tol`` on its level (its films resolved along the contact)."""
+    e = [v for v in iso.error_estimate.values() if v is not None]
+    return bool(e) and max(e) <= tol
+
+
+def _fmt(est: dict) -> str:
+    return ", ".join("none" if v is None else f"{v:.2%}" for v in est.values())
 
 
 def peak(values: np.ndarray, x: np.ndarray) -> float:
@@ -516,7 +611,7 @@ class _Run:
                                "mu": float(abs(st.tau_couette @ dx) / c.w),
                                **film_peaks(theta, st.surface1, st.surface2, lv.xc), "iterations": self.its})
 
-    def result(self, iso, t0: float, t_iso: float, est) -> TEHLResult:
+    def result(self, iso, t0: float, t_iso: float, est, t_est: float | None = None) -> TEHLResult:
         c, lv, st, theta = self.c, self.last, self.st, self.theta
         P, H = lv.fields()
         X = lv.lv.X
@@ -537,6 +632,7 @@ class _Run:
             hmin_isothermal=float(iso.Hmin_hertz * hs), error_estimate={"hc": est["Hc"], "hmin": est["Hmin"]},
             levels=tuple(self.summaries), M=c.M, L=c.L, nodes=lv.lv.n, layers=theta.shape[1],
             isothermal_estimate=max((e for e in iso.error_estimate.values() if e is not None), default=None),
+            temperature_estimate=t_est,
             history=self.history)
         scalars = [out.hc, out.hmin, out.pmax, out.dT_max, out.mu, out.mu_poiseuille]
         if not all(math.isfinite(s) for s in scalars) or not np.all(np.isfinite(out.T_film)):

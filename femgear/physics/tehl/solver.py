@@ -32,7 +32,7 @@ from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.lubrication.path import solids_of
 from femgear.physics.lubrication.traction import Solids
 from femgear.physics.tehl.energy import ThermalProps
-from femgear.physics.tehl.line import DEFAULT_LAYERS, TEHLResult, ehl_oil_at, solve_tehl_line
+from femgear.physics.tehl.line import DEFAULT_LAYERS, MAX_LAYERS, TEHLResult, ehl_oil_at, solve_tehl_line
 from femgear.physics.tehl.reuse import LatestSolve, RecordingSolver
 
 LINE_SECONDS = 0.3    #: rough wall time of one TEHL line solve (announce and progress only) [s]
@@ -113,12 +113,14 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
                       start_level: int | None = None, **options) -> list[TEHLResult]:
     """TEHL line solves at the contacts (arrays ``w``, ``R``, ``ue``, ``srr``; oil at ``T`` [K]) on one grid
     level: ``level``, or the one that the tolerance-driven solve of the contact with the largest Moes M (the
-    thinnest film for its width, which needs the finest grid) picks, kept for the others, so that the fields
+    thinnest film for its width, which needs the finest grid) picks, with its layers across the film (refined for
+    its films and its peak temperature rise, :func:`solve_tehl_line`), kept for the others, so that the fields
     of a path or map are smooth to the solver's tolerance (a level that changed from point to point would step
     them by up to that tolerance); when another contact's estimate then exceeds the tolerance, the whole sequence
     is solved once more, finer where that contact's error lies (:func:`_finer`: twice the layers across the film, or
     one level finer along it; from the first contact that exceeds it: the contacts are solved fastest
-    sliding first, the hottest, where the estimate grows, so that few solves are discarded).  ``start_level``: the level a similar sequence ended on (the face slices
+    sliding first, the hottest, where the estimate grows, so that few solves are discarded; the others are checked
+    on their films' estimate, their peak rise's estimate is reported in each result).  ``start_level``: the level a similar sequence ended on (the face slices
     of the previous contact), tried first instead of the probe's choice, with the same check and refinement: the
     answer still meets the tolerance, and a sequence that needs that level is not solved twice.  ``options`` to
     :func:`solve_tehl_line` (``tol``, ``min_level``, ...)."""
@@ -136,6 +138,8 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
         progress(0)
         out[first] = _one(first, w, R, ue, srr, T, kw)
         level = _level_of_nodes(out[first].nodes)
+        options = {**options, "nz": out[first].layers}   # the probe's layers too (refined for its peak rise)
+        kw["nz"] = out[first].layers
         auto = True
     else:
         auto = False
@@ -155,10 +159,6 @@ def tehl_path_results(w, R, ue, srr, T: float, setup: TEHLSetup, *, level: int |
             if finer is not None:   # a position other than the probe needs more: the whole sequence finer, once
                 return tehl_path_results(w, R, ue, srr, T, setup, **finer)
     return out
-
-
-#: the most layers across the film a sequence refines to (:func:`_finer`)
-MAX_LAYERS = 64
 
 
 def _finer(r: TEHLResult, level: int, options: dict, tol: float) -> dict | None:
