@@ -419,15 +419,11 @@ def _thermal_levels(run: _Run, fresh, iso, prob, ks: list[int], *, level, max_le
 
 def temperature_estimate(summaries: list[dict]) -> tuple[float | None, bool]:
     """Richardson estimate [K] of the film's peak temperature rise on the last of the thermal levels' ``summaries``
-    (the consecutive ones, nodes growing; :func:`femgear.physics.ehl.core.accuracy.richardson`; None with one), and
+    (:func:`femgear.physics.ehl.core.accuracy.consecutive_levels`, :func:`~femgear.physics.ehl.core.accuracy.richardson`;
+    None with one), and
     whether the levels are in the asymptotic range: three or more, the last two changes of one sign and the last at
     most half the one before (observed order ≥ 1)."""
-    run = summaries[-1:]
-    for s in reversed(summaries[:-1]):
-        if s["nodes"] >= run[0]["nodes"]:
-            break
-        run.insert(0, s)
-    v = [s["dT_max"] for s in run]
+    v = [s["dT_max"] for s in acc.consecutive_levels(summaries)]
     e = acc.richardson(v)
     d = np.diff(v)
     asymptotic = d.size >= 2 and d[-1] * d[-2] >= 0.0 and abs(d[-1]) <= 0.5 * abs(d[-2])

@@ -63,18 +63,25 @@ def error_estimate(per_level: Sequence[dict]) -> dict[str, float | None]:
     the asymptotic range for the whole film shape and both quantities get the larger
     estimate (a judgement; the line contact at (1000, 10) on levels 5/6 has Hc change
     0.9 % and Hmin 205 %, and Hc then still moves 7 % on finer grids)."""
-    levels = list(per_level)
-    run = levels[-1:]
-    for lv in reversed(levels[:-1]):
-        if lv["nodes"] >= run[0]["nodes"]:
-            break
-        run.insert(0, lv)
+    run = consecutive_levels(per_level)
     est = {k: richardson([lv[k] for lv in run]) for k in ("Hc", "Hmin")}
     if len(run) >= 2 and None not in est.values() and any(
             abs(run[-1][k] - run[-2][k]) > NON_ASYMPTOTIC * abs(run[-1][k]) for k in est):
         worst = max(est.values())
         est = {k: worst for k in est}
     return est
+
+
+def consecutive_levels(per_level: Sequence[dict]) -> list[dict]:
+    """The last run of level summaries whose ``nodes`` grow to the last one (a continuation on one grid, or a solve
+    begun again, ends the run before it)."""
+    levels = list(per_level)
+    run = levels[-1:]
+    for lv in reversed(levels[:-1]):
+        if lv["nodes"] >= run[0]["nodes"]:
+            break
+        run.insert(0, lv)
+    return run
 
 
 def inlet_distance(H_hertz: float) -> float:
