@@ -27,9 +27,10 @@ Layout (the contract; keys are added, never renamed without a README note):
   films, and the tribology fields: load_per_length, friction_coefficient,
   temperature_rise, thermal_deviation_pinion/gear, wear_pinion/gear); ``film_central``,
   ``film_minimum`` (and ``film_pressure_max``, the numerical levels ``film_error_estimate``, thermal levels
-  ``film_temperature_rise`` with ``film_temperature_error_estimate`` [K], ``film_central_isothermal``, ``thermal_loading``, ``inlet_factor_murch_wilson``,
-  ``inlet_factor_gupta``, ``film_ratio_thermal``, ``flash_temperature_tehl``, ``flash_temperature_blok``) are those
-  of the lubrication level that ran (``summary.film``: level, method, pitch and minimum values,
+  ``film_temperature_rise`` with ``film_temperature_error_estimate`` [K], ``film_central_isothermal``,
+  ``thermal_loading``, ``inlet_factor_murch_wilson``, ``inlet_factor_gupta``, ``film_ratio_thermal``,
+  ``flash_temperature_tehl``, ``flash_temperature_blok``) are those of the lubrication level that ran
+  (``summary.film``: level, method, pitch and minimum values,
   ``error_estimate_max``, the thermal levels' pitch and extreme figures, ``temperature_error_estimate_max``), the
   formula films stay as ``film_*_formula``; ``specific_film`` λ = h_min / R_a (R_a the mean of both
   flanks, ``roughness.ra`` or its default by ``roughness.finishing``: ``summary.roughness``);
