@@ -13,10 +13,11 @@ at, goes to the right-hand side, so that it is exact at the thermal loop's fixed
 (:func:`convection_correction`).  Measured at the VG 32, 40 °C, 60 m/s, 2.5 GPa rolling corner,
 the film's peak rise 114.4 / 117.1 / 118.1 K on 513 / 1025 / 2049 nodes (16 layers) with first-order
 upwinding, 117.3 / 119.3 / 119.7 K with the reconstruction; across the film (1025 nodes) 111.2 /
-117.1 / 118.9 / 119.4 K on 8 / 16 / 32 / 64 layers, 113.5 / 119.3 / 120.4 / 120.6 K with it.  Shear heating per layer from the layer shear
-rates (Ree–Eyring or Newtonian, the shear stress τ_c constant across the film, so that
-τ_c = τ0 asinh(η_e γ̇/τ0) with η_e the harmonic cross-film mean viscosity — Johnson &
-Tevaarwerk 1977).  Advection by the flow of the reduced Reynolds equation: the linear
+117.1 / 118.9 / 119.4 K on 8 / 16 / 32 / 64 layers, 113.5 / 119.3 / 120.4 / 120.6 K with it.
+
+Shear heating per layer from the layer shear rates (Ree–Eyring or Newtonian, the shear stress
+τ_c constant across the film, so that τ_c = τ0 asinh(η_e γ̇/τ0) with η_e the harmonic cross-film
+mean viscosity — Johnson & Tevaarwerk 1977).  Advection by the flow of the reduced Reynolds equation: the linear
 Couette profile plus the Poiseuille parabola at the film-mean viscosity.  (Advecting
 with the layer shear-rate profile made the flow split depend on every layer's
 temperature; in the inlet back-flow a layer with almost no flow along x then took its
