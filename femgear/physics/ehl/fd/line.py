@@ -327,9 +327,9 @@ def solve_line_fd(M: float, L: float, *, tol: float | None = DEFAULT_TOL, level:
 def spike_index(P: np.ndarray) -> int:
     """Index of the outlet pressure spike of ``P``: the local maximum nearest the outlet above a fifth of the
     largest pressure (the largest nodal value where there is no interior one).  Not the largest pressure: on a heavy
-    contact the Hertzian dome is higher than the spike (the marine zoo pair, M 16, L 11.7: the spike 0.92-1.06 GPa
-    resolved, under the dome's 1.1 GPa; a bump put at the dome left the spike on the plain grid's cells,
-    0.65-0.75 GPa, and the film's peak temperature on it up to 1.7 times low)."""
+    contact the plain grid's spike is lower than the Hertzian dome, and a bump put at the dome never resolves it
+    (the marine zoo pair, M 16, L 11.7: the spike 0.65-0.75 GPa on the plain 1025-node grid, 0.92-1.06 GPa
+    resolved; the film's peak temperature on it up to 2 times low)."""
     inner = np.flatnonzero((P[1:-1] > P[:-2]) & (P[1:-1] >= P[2:]) & (P[1:-1] > 0.2 * P.max())) + 1
     return int(inner[-1]) if inner.size else int(np.argmax(P))
 
