@@ -2,20 +2,23 @@
 Wilson (1975) and Gupta et al. (1992), over the thermal loading L_th = β η0 u_e² / k_f.
 
     python studies/ehl/tehl_gupta.py [--lth 0.1,0.3,1,3,10] [--ph 0.5,1,1.5] [--srr 0,0.5,1] [--oil VG32,VG100]
-                                     [--json out/tehl_gupta.json]
+                                     [--walls steel|bulk] [--json out/tehl_gupta.json]
 
 The contacts: steel on steel (E' 226 GPa), R 20 mm, the benchmark's oils (studies/benchmarks/tehl_envelope.py:
 turbine oil VG 32 at 50 °C, VG 100 at 80 °C), Eyring τ0 5 MPa and limiting shear 0.08 p, the entrainment speed
 set by L_th and the load per length by the Hertz pressure, w' = 2π R p_H² / E'.  Solved to the default tolerance
-(1 %).  Columns: φ, Murch & Wilson's 3.94/(3.94 + L_th^0.62) (rolling, no load dependence), Gupta's fit with
+(1 %).  ``--walls bulk``: the surfaces held at the bulk temperature (effusivity 10^6 times steel's, surface rise
+below 1 mK), the assumption of Murch & Wilson's inlet-zone analysis as we recall it (unverified, as the forms).  Columns: φ, Murch & Wilson's 3.94/(3.94 + L_th^0.62) (rolling, no load dependence), Gupta's fit with
 S = SRR = (v1 − v2)/u_e and with the slide-to-sum reading S = SRR/2, and φ over each
 (:mod:`femgear.physics.tehl.inlet`: both forms as recalled in the project notes; the papers are not in the stored
 library, so u_e (not the sum speed) and the two S readings are assumptions reported side by side).
 
 Reading (tests/tehl/test_inlet_heating.py): rolling, over both oils, p_H 0.5–1.5 GPa and L_th 0.1–10, φ/Gupta
-is 0.971–1.137 and φ/Murch-Wilson 0.854–1.091 (the largest gap to the load-independent Murch & Wilson factor at
-1.5 GPa, L_th = 10).  With sliding femgear's film stays above Gupta's fit (tests/tehl/test_slow.py: φ/G 1.1–1.45
-with S = SRR, 1.05–1.2 with S = SRR/2).
+is 0.970–1.138 and φ/Murch-Wilson 0.850–1.083 (the largest gap to the load-independent Murch & Wilson factor at
+1.5 GPa, L_th = 10); with ``--walls bulk`` φ/Murch-Wilson 0.879–1.109 (estimates ≤ 1 %; 3 Dec 2026).  With sliding femgear's film stays above Gupta's fit (tests/tehl/test_slow.py: φ/G 1.1–1.45
+with S = SRR, 1.05–1.2 with S = SRR/2).  The largest gap, VG 32 at 1.5 GPa and L_th = 10: φ 0.413 (estimate
+0.6 %), 14.99 % below Murch & Wilson's 0.486 and 3.6 % above Gupta's 0.399 (the two factors 22 % apart there); with
+the walls at the bulk temperature φ 0.427, 12.1 % below Murch & Wilson's.
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse
+import dataclasses
 import json
 import math
 import sys
@@ -32,14 +36,16 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 R = 0.02
+BULK_WALLS = 1e6
+"""the solids' effusivity factor of ``--walls bulk`` (module docstring) [-]"""
 
 
 def _floats(text: str) -> list[float]:
     return [float(v) for v in text.split(",")]
 
 
-def case(oil: str, T_C: float, lth: float, ph: float, srr: float) -> dict:
-    """One contact: φ and the two factors."""
+def case(oil: str, T_C: float, lth: float, ph: float, srr: float, walls: str = "steel") -> dict:
+    """One contact: φ and the two factors; ``walls`` "steel" (the benchmark's solids) or "bulk" (module docstring)."""
     sys.path.insert(0, str(ROOT / "studies" / "benchmarks"))
     from tehl_envelope import E_RED, _setup
 
@@ -48,6 +54,10 @@ def case(oil: str, T_C: float, lth: float, ph: float, srr: float) -> dict:
     from femgear.physics.tehl.line import solve_tehl_line
 
     o, props = _setup(oil)
+    if walls == "bulk":
+        props = dataclasses.replace(props, B1=BULK_WALLS * props.B1, B2=BULK_WALLS * props.B2, k1=None, k2=None)
+    elif walls != "steel":
+        raise ValueError(f"walls must be 'steel' or 'bulk' (got {walls!r})")
     T = T_C + 273.15
     eta = float(o.viscosity(0.0, T))
     ue = math.sqrt(lth * props.k_oil / (o.beta_t * eta))
@@ -55,7 +65,7 @@ def case(oil: str, T_C: float, lth: float, ph: float, srr: float) -> dict:
     r = solve_tehl_line(w, R, ue, srr, T, o, E_RED, props, tau0=5e6, limiting_shear=0.08)
     phi = r.hc / r.hc_isothermal
     g = [float(gupta_thermal_factor(ph, E_RED, s, ue, eta, o.beta_t, props.k_oil)) for s in (srr, srr / 2)]
-    return {"oil": oil, "T": T_C, "L_th": lth, "ph": ph, "srr": srr, "ue": ue, "M": r.M, "L": r.L, "phi": phi,
+    return {"oil": oil, "T": T_C, "walls": walls, "L_th": lth, "ph": ph, "srr": srr, "ue": ue, "M": r.M, "L": r.L, "phi": phi,
             "murch_wilson": float(murch_wilson_factor(lth)), "gupta": g[0], "gupta_half": g[1],
             "estimate": max(r.error_estimate.values())}
 
@@ -67,6 +77,7 @@ def setup(argv: list[str] | None = None) -> argparse.Namespace:
     ap.add_argument("--ph", default="0.5,1,1.5", help="Hertz pressures [GPa]")
     ap.add_argument("--srr", default="0")
     ap.add_argument("--oil", default="VG32,VG100")
+    ap.add_argument("--walls", default="steel", choices=("steel", "bulk"))
     ap.add_argument("--json", default=str(ROOT / "out" / "tehl_gupta.json"))
     return ap.parse_args(argv)
 
@@ -82,7 +93,7 @@ def run(args: argparse.Namespace, report=None) -> list[dict]:
         for ph in _floats(args.ph):
             for srr in _floats(args.srr):
                 for lth in _floats(args.lth):
-                    rows.append(case(oil, TEMPERATURES[oil], lth, ph * 1e9, srr))
+                    rows.append(case(oil, TEMPERATURES[oil], lth, ph * 1e9, srr, args.walls))
                     if report is not None:
                         report(rows[-1])
     return rows

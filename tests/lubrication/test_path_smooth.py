@@ -7,6 +7,8 @@ at the load steps where the number of teeth in contact changes the fields step w
 smooth them.  Reference: a smooth function sampled on the path's grid has second differences of order
 (Δs/ℓ)^2, 0.003-0.1 % here (the load and SRR of the baseline themselves), far below the 2 %."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -70,6 +72,29 @@ def test_tehl_point_peaks_are_smooth_along_the_baseline_path():
     mask = smooth_mask(r.tribology.load_per_length, np.abs(case.path.srr))
     mask = mask & np.r_[True, mask[:-1]] & np.r_[mask[1:], True]      # and one position either side
     assert mask.sum() >= 50
+    for name in ("pressure_max", "temperature_rise"):
+        d2 = second_differences(getattr(film, name))[mask]
+        assert d2.max() < 0.02, (name, d2.max())
+
+
+@pytest.mark.slow
+def test_tehl_film_peak_is_smooth_along_the_marine_path():
+    """The marine zoo pair (M ≈ 16, L ≈ 11.7: the Hertzian dome higher than the outlet spike), ``tehl``, dynamics
+    off: the film's peak temperature rise and the peak pressure have second differences below 2 % of their maximum
+    wherever the load is smooth, and every position's spike is resolved.  With the bump at the dome the peak sat on
+    the plain grid's spike: 4.31 %, 62 of 62 positions unresolved; with the bump at the spike, the slow-sliding
+    positions fell back to the plain grid where the steep bump stalled: 30 %.  Measured 0.58 % and 1.27 %.
+    About 3 min."""
+    marine = Path(__file__).resolve().parents[2] / "studies" / "zoo" / "marine.toml"
+    case = build_case(load_scene(marine, ['physics.lubrication="tehl"', 'physics.wear="none"',
+                                          "numerics.path_points=61", 'physics.coupling="one-way"',
+                                          'physics.dynamics="none"']))
+    r = run_case(case)
+    film = r.tribology.film
+    assert not film.spike_unresolved.any()
+    mask = smooth_mask(r.tribology.load_per_length, np.abs(case.path.srr))
+    mask = mask & np.r_[True, mask[:-1]] & np.r_[mask[1:], True]
+    assert mask.sum() >= 40
     for name in ("pressure_max", "temperature_rise"):
         d2 = second_differences(getattr(film, name))[mask]
         assert d2.max() < 0.02, (name, d2.max())

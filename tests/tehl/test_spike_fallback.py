@@ -69,6 +69,31 @@ def test_the_face_slices_fall_back_to_the_plain_grid_too(monkeypatch):
     geo = SliceGeometry(om1, om1 * 21 / 86, math.radians(14.1), 0.04, 0.0)
     setup = SimpleNamespace(kwargs=lambda: {}, E_red=2.3e11, oil=None)
     r = slice_contact(4e5, 0.012, 9.0, 0.3, 313.0, 0.012, math.inf, geo, setup, start_level=5, spike=True, tol=0.01)
-    assert calls == [True, False] * len(r.results)
+    # the first contact's failure sends the sequence to the gentle bump once (_gentler), where every spike grid
+    # fails too: each contact on the plain grid
+    assert calls == [True, False] * (len(r.results) + 1)
     assert all("plain grid" in s.history["continuation"][-1]["reason"] for s in r.results)
     assert r.mu == pytest.approx(0.03) and r.dT_surface == 10.0
+
+
+def test_a_stalled_steep_bump_resolves_the_whole_sequence_on_the_gentle_one(monkeypatch):
+    """The marine zoo pair's case: the steep bump's thermal loop stalls at the slow-sliding contacts; the sequence is
+    solved again on :data:`SPIKE_DENSITY_GENTLE`, every contact on it (one grid along the path, no plain fallback)."""
+    from femgear.physics.ehl.fd.line_grid import SPIKE_DENSITY, SPIKE_DENSITY_GENTLE
+
+    calls = []
+
+    def solve(w, R, ue, srr, T, spike=False, spike_density=SPIKE_DENSITY, **kw):
+        calls.append((srr, spike, spike_density))
+        if spike and spike_density > SPIKE_DENSITY_GENTLE and srr < 0.05:
+            raise ConvergenceError("tehl line", "thermal loop: no convergence", {"temperature_change": [2.0, 2.1]})
+        return SimpleNamespace(nodes=1025, layers=16, error_estimate={"hc": 0.001}, isothermal_estimate=0.001,
+                               history={"continuation": []})
+
+    monkeypatch.setattr(solver, "solve_tehl_line", solve)
+    setup = SimpleNamespace(kwargs=lambda: {})
+    rs = solver.tehl_path_results([1e5] * 3, [0.02] * 3, [5.0] * 3, [0.3, 0.0, 0.2], 333.0, setup, level=6,
+                                  spike=True)
+    assert len(rs) == 3 and all(not r.history["continuation"] for r in rs)
+    assert calls[-3:] == [(s, True, SPIKE_DENSITY_GENTLE) for s in sorted((0.3, 0.0, 0.2))]
+    assert any(d == SPIKE_DENSITY for _, _, d in calls)

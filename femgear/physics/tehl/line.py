@@ -63,7 +63,7 @@ from femgear.physics.ehl.fd.line import (
     direction,
     solve_line_fd,
 )
-from femgear.physics.ehl.fd.line_grid import LineDomain
+from femgear.physics.ehl.fd.line_grid import SPIKE_DENSITY, LineDomain
 from femgear.physics.ehl.fe.newton import _newton
 from femgear.physics.lubrication.oil import OilLaw
 from femgear.physics.tehl import generalised as gf
@@ -280,7 +280,7 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
                     heat: bool = True, compressible: bool = True, thermal_tol: float = 0.1, relax: float = 0.8,
                     max_iter: int = 100, max_rise: float = 400.0, max_step: float = 25.0,
                     x0: float | None = None, estimate: bool = True, reynolds: str = "reduced",
-                    spike: bool = False, isothermal: dict | None = None,
+                    spike: bool = False, spike_density: float = SPIKE_DENSITY, isothermal: dict | None = None,
                     temperature_tol: float = TEMPERATURE_TOL) -> TEHLResult:
     """Thermal EHL line contact: load per length ``w`` [N/m], reduced radius ``R`` [m], entrainment speed
     ``ue`` = (v1 + v2)/2 [m/s], ``srr`` = (v1 − v2)/ue, bulk temperature ``T_bulk`` [K].
@@ -296,7 +296,8 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     loop on the isothermal solve's level only, no thermal error estimate (the points of a friction map, whose
     level the heaviest corner's estimated solve fixed).  ``reynolds``: "reduced" or "generalised" (module
     docstring).  ``spike``: grids that resolve the outlet pressure spike (the path sequences, whose peak pressure
-    and film temperature are then smooth along the path; :func:`solve_line_fd`).  ``isothermal``: a dict
+    and film temperature are then smooth along the path; :func:`solve_line_fd`), its bump of amplitude
+    ``spike_density``.  ``isothermal``: a dict
     the caller keeps across the solves of one set-up (oil, modulus, options), where the isothermal start of each
     contact is kept by its load, radius, entrainment, bulk temperature and grid options, so that the contacts that
     differ only in SRR (the points of a friction map) solve it once (``seconds_isothermal`` is then 0); with
@@ -317,9 +318,10 @@ def solve_tehl_line(w: float, R: float, ue: float, srr: float, T_bulk: float, oi
     t0 = time.perf_counter()
     c = _Contact.of(w, R, ue, srr, T_bulk, oil, E_red, compressible)
     factory = _rheology(c, oil, compressible)
-    key = (w, R, ue, T_bulk, tol, level, min_level, max_level, x0, compressible, spike)
+    key = (w, R, ue, T_bulk, tol, level, min_level, max_level, x0, compressible, spike, spike_density)
     iso, reuse, t_iso = _isothermal_start(c, factory, isothermal, key, t0, tol=tol, level=level, max_level=max_level,
-                                          x0=x0, min_level=min_level, compressible=compressible, spike=spike)
+                                          x0=x0, min_level=min_level, compressible=compressible, spike=spike,
+                                          spike_density=spike_density)
     start = isothermal.get(("thermal", key, heat, reynolds)) if isothermal is not None and not estimate else None
     prob = LineProblem(c.M, c.L, _domain_of(iso), {}, rheology_factory=factory)
     top = _level_of(iso)
@@ -629,7 +631,7 @@ class _Run:
             levels=tuple(self.summaries), M=c.M, L=c.L, nodes=lv.lv.n, layers=theta.shape[1],
             isothermal_estimate=max((e for e in iso.error_estimate.values() if e is not None), default=None),
             temperature_estimate=t_est,
-            history=self.history)
+            history={**self.history, **({"spike": iso.history["spike"]} if "spike" in iso.history else {})})
         scalars = [out.hc, out.hmin, out.pmax, out.dT_max, out.mu, out.mu_poiseuille]
         if not all(math.isfinite(s) for s in scalars) or not np.all(np.isfinite(out.T_film)):
             raise ConvergenceError("tehl line", "non-finite result", self.history)
