@@ -199,7 +199,7 @@ def _gentler(r: TEHLResult, kw: dict) -> bool:
     baseline's first face slices, M 3.6, L 15.1: 5-10 nodes across on 513 nodes, the peak pressure 9 % low)."""
     if not kw.get("spike") or kw.get("spike_density", SPIKE_DENSITY) <= SPIKE_DENSITY_GENTLE:
         return False
-    return any(str(c.get("reason", "")).startswith("spike grid failed") for c in r.history.get("continuation", ()))
+    return any(str(c.get("reason", "")).startswith(SPIKE_LOST) for c in r.history.get("continuation", ()))
 
 
 def _gentle(options: dict, level: int, nz: int | None, auto: bool) -> dict:
@@ -212,6 +212,10 @@ def _gentle(options: dict, level: int, nz: int | None, auto: bool) -> dict:
 
 def _estimate(r) -> float:
     return max((e for e in r.error_estimate.values() if e is not None), default=0.0)
+
+
+SPIKE_LOST = "spike grid failed, solved on the plain grid"
+"""the ``continuation`` reason of a contact whose spike grid failed (:func:`_one`, read by :func:`_gentler`)"""
 
 
 def _one(i: int, w, R, ue, srr, T, kw) -> TEHLResult:
@@ -233,7 +237,7 @@ def _one(i: int, w, R, ue, srr, T, kw) -> TEHLResult:
                                {**{f"spike {k}": v for k, v in first.history.items()},
                                 **{f"plain {k}": v for k, v in exc.history.items()}}) from exc
     r.history.setdefault("continuation", []).append(
-        {"level": _level_of_nodes(r.nodes), "reason": f"spike grid failed, solved on the plain grid: {str(first)[:160]}"})
+        {"level": _level_of_nodes(r.nodes), "reason": f"{SPIKE_LOST}: {str(first)[:160]}"})
     return r
 
 
